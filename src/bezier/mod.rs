@@ -1,0 +1,1 @@
+//! Bézier curves and patches.

@@ -1,0 +1,5 @@
+//! The `cagd` command line.
+
+fn main() {
+    println!("cagd");
+}

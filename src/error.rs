@@ -1,0 +1,102 @@
+//! The crate's one error type.
+//!
+//! Every fallible entry point returns [`Result<T>`]; each variant carries the offending data so
+//! that a caller (and the command line) can say exactly what was wrong. Algorithms never panic
+//! on user input.
+
+use thiserror::Error;
+
+use crate::scalar::Scalar;
+
+/// Result alias used throughout the crate.
+pub type Result<T, E = Error> = std::result::Result<T, E>;
+
+/// Everything that can be wrong with the input of a construction.
+#[derive(Debug, Clone, PartialEq, Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// A curve or patch was given no control points (or a net with an empty direction).
+    #[error("{what}: expected at least {min} control point(s), got {found}")]
+    TooFewPoints {
+        /// Which argument.
+        what: &'static str,
+        /// The least number accepted.
+        min: usize,
+        /// The number given.
+        found: usize,
+    },
+    /// Points, rows or columns of different sizes were mixed.
+    #[error("{what}: expected {expected}, found {found}")]
+    ShapeMismatch {
+        /// Which argument.
+        what: &'static str,
+        /// The expected size or shape, in words.
+        expected: String,
+        /// The size or shape found.
+        found: String,
+    },
+    /// A coordinate or parameter is NaN or infinite. The crate rejects non-finite input at every
+    /// entry point instead of propagating NaN silently.
+    #[error("{what}: value at index {index} is not finite ({value})")]
+    NonFinite {
+        /// Which argument.
+        what: &'static str,
+        /// Flat index (column-major, as Octave counts) of the first offending value.
+        index: usize,
+        /// The value itself.
+        value: f64,
+    },
+    /// A derivative of order higher than the degree was asked for.
+    #[error("derivative order {order} exceeds the degree {degree}")]
+    DerivativeOrder {
+        /// The order asked for.
+        order: usize,
+        /// The degree of the curve or patch direction.
+        degree: usize,
+    },
+    /// A parameter list or sample grid is empty.
+    #[error("{what}: expected at least {min} parameter value(s), got {found}")]
+    EmptyGrid {
+        /// Which argument.
+        what: &'static str,
+        /// The least number accepted.
+        min: usize,
+        /// The number given.
+        found: usize,
+    },
+    /// An interval `[a, b]` with `a >= b`.
+    #[error("{what}: interval [{a}, {b}] is empty (expected a < b)")]
+    EmptyInterval {
+        /// Which argument.
+        what: &'static str,
+        /// Left end.
+        a: f64,
+        /// Right end.
+        b: f64,
+    },
+    /// Other invalid argument, with a sentence saying what was expected.
+    #[error("{what}: {message}")]
+    InvalidArgument {
+        /// Which argument.
+        what: &'static str,
+        /// What was wrong and what was expected.
+        message: String,
+    },
+}
+
+/// Checks that every value is finite; reports the first one that is not.
+pub(crate) fn check_finite<'a, T: Scalar>(
+    what: &'static str,
+    values: impl IntoIterator<Item = &'a T>,
+) -> Result<()> {
+    for (index, value) in values.into_iter().enumerate() {
+        if !value.is_finite_value() {
+            return Err(Error::NonFinite {
+                what,
+                index,
+                value: value.to_f64(),
+            });
+        }
+    }
+    Ok(())
+}

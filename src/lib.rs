@@ -1,0 +1,28 @@
+//! # cagd — curves and surfaces for computer-aided geometric design
+//!
+//! A faithful, bug-fixed reimplementation of the GNU Octave code of the thesis
+//! *Bézierove in Gordon-Coons krpe* (I. Čavdek, Koper 2014), proven number by number against
+//! GNU Octave, and grown into a small CAGD toolkit.
+//!
+//! The crate has two layers:
+//! - the **native API**: [`bernstein`], [`bezier::BezierCurve`], [`bezier::BezierPatch`], the
+//!   Coons and Gordon constructions, all built on the [`param::Curve`] / [`param::Surface`]
+//!   traits and generic over the [`scalar::Scalar`] (`f64` or exact `BigRational`);
+//! - the **Octave-compatible layer** [`octave`]: the thesis functions under their own names
+//!   (`de_casteljau`, `ploskev_b`, …) with the thesis array layouts, and Octave's text file
+//!   format.
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod bernstein;
+pub mod bezier;
+pub mod error;
+pub mod linspace;
+pub mod octave;
+pub mod param;
+pub mod scalar;
+
+pub use error::{Error, Result};
+pub use linspace::linspace;
+pub use param::{Curve, FnCurve, SampledCurve, Surface};
+pub use scalar::Scalar;

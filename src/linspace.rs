@@ -1,0 +1,76 @@
+//! `linspace` exactly as GNU Octave 7 computes it.
+//!
+//! The thesis samples every curve and patch at `linspace(0,1,N)`. To reproduce its numbers to
+//! the last bit we must produce the very same doubles. Octave 7 (liboctave `linspace`) does not
+//! compute `a + i*(b-a)/(n-1)` for every `i`: it sets both end points exactly, fills the vector
+//! symmetrically from both ends (`a + i*δ` from the left, `b - i*δ` from the right, with
+//! `δ = (b-a)/(n-1)`), and sets the middle element of an odd-length vector to `(a+b)/2` (or to
+//! exactly `0` when `a == -b`). `linspace(a, b, 1)` is `[b]`, and `n < 1` gives an empty vector.
+//! The test `tests/octave_reference.rs` checks this against Octave's own output for n = 1…200.
+
+/// `n` points from `a` to `b`, bit for bit as Octave 7's `linspace(a, b, n)`.
+///
+/// ```
+/// let t = cagd::linspace(0.0, 1.0, 5);
+/// assert_eq!(t, vec![0.0, 0.25, 0.5, 0.75, 1.0]);
+/// assert_eq!(cagd::linspace(0.0, 1.0, 1), vec![1.0]);
+/// assert!(cagd::linspace(0.0, 1.0, 0).is_empty());
+/// ```
+pub fn linspace(a: f64, b: f64, n: usize) -> Vec<f64> {
+    match n {
+        0 => return Vec::new(),
+        1 => return vec![b],
+        _ => {}
+    }
+    if a == b {
+        return vec![b; n];
+    }
+    let mut out = vec![0.0; n];
+    out[0] = a;
+    out[n - 1] = b;
+    let mut delta = (b - a) / (n - 1) as f64;
+    let delta_is_nan = delta.is_infinite();
+    if delta_is_nan {
+        delta = f64::NAN;
+    }
+    let half = n / 2;
+    for i in 1..half {
+        out[i] = a + i as f64 * delta;
+        out[n - 1 - i] = b - i as f64 * delta;
+    }
+    if n % 2 == 1 {
+        out[half] = if a == -b {
+            0.0
+        } else if !delta_is_nan {
+            (a + b) / 2.0
+        } else {
+            a + half as f64 * delta
+        };
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::linspace;
+
+    #[test]
+    fn ends_are_exact() {
+        for n in 2..50 {
+            let t = linspace(0.0, 1.0, n);
+            assert_eq!(t[0], 0.0);
+            assert_eq!(t[n - 1], 1.0);
+            assert!(t.windows(2).all(|w| w[0] < w[1]));
+        }
+    }
+
+    #[test]
+    fn symmetric_about_the_middle() {
+        // Filling from both ends makes linspace(-1,1,n) exactly antisymmetric.
+        let t = linspace(-1.0, 1.0, 11);
+        for i in 0..11 {
+            assert_eq!(t[i], -t[10 - i]);
+        }
+        assert_eq!(t[5], 0.0);
+    }
+}

@@ -1,0 +1,1 @@
+//! The Octave-compatible layer.

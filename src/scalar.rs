@@ -1,0 +1,142 @@
+//! The number type every rational algorithm of the crate is written over.
+//!
+//! Bernstein polynomials, de Casteljau, Coons, Gordon/Lagrange and the spline solves only add,
+//! subtract, multiply and divide, so the same code runs in `f64` (fast, what Octave does) and
+//! in exact rationals ([`BigRational`]), where a worked example from the thesis can be checked
+//! to the last digit (Primer 2.4 gives exactly (7/2, 3/2, 3/4)).
+
+use std::fmt::{Debug, Display};
+use std::ops::Neg;
+
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{FromPrimitive, Num, Signed, ToPrimitive};
+
+/// A field element: `f64` or an exact rational.
+///
+/// `from_f64` is exact for rationals (every finite double is a dyadic rational), so data typed
+/// as decimals can be lifted into exact arithmetic; use [`Scalar::from_ratio`] for values such
+/// as 1/3 that no double holds.
+pub trait Scalar:
+    Clone + PartialEq + PartialOrd + Debug + Display + Num + Neg<Output = Self> + Signed + 'static
+{
+    /// The exact value of a finite double; `None` for NaN and ±∞.
+    fn from_f64(x: f64) -> Option<Self>;
+    /// The value `num / den` (rounded to nearest for `f64`). `den` must not be zero.
+    fn from_ratio(num: i64, den: i64) -> Self;
+    /// The nearest double.
+    fn to_f64(&self) -> f64;
+    /// Whether the value is a finite number (always true for rationals).
+    fn is_finite_value(&self) -> bool;
+    /// `n` as a scalar.
+    fn from_usize(n: usize) -> Self {
+        Self::from_ratio(n as i64, 1)
+    }
+}
+
+impl Scalar for f64 {
+    #[inline]
+    fn from_f64(x: f64) -> Option<Self> {
+        x.is_finite().then_some(x)
+    }
+    #[inline]
+    fn from_ratio(num: i64, den: i64) -> Self {
+        num as f64 / den as f64
+    }
+    #[inline]
+    fn to_f64(&self) -> f64 {
+        *self
+    }
+    #[inline]
+    fn is_finite_value(&self) -> bool {
+        self.is_finite()
+    }
+    #[inline]
+    fn from_usize(n: usize) -> Self {
+        n as f64
+    }
+}
+
+impl Scalar for BigRational {
+    fn from_f64(x: f64) -> Option<Self> {
+        <BigRational as FromPrimitive>::from_f64(x)
+    }
+    fn from_ratio(num: i64, den: i64) -> Self {
+        BigRational::new(BigInt::from(num), BigInt::from(den))
+    }
+    fn to_f64(&self) -> f64 {
+        ToPrimitive::to_f64(self).unwrap_or(f64::NAN)
+    }
+    fn is_finite_value(&self) -> bool {
+        true
+    }
+}
+
+/// Parses an exact decimal such as `"0.2"` or `"-3.25e-1"` into a rational (so that `0.2` means
+/// 1/5, not the nearest double). Returns `None` if the text is not a plain decimal number.
+pub fn rational_from_decimal(text: &str) -> Option<BigRational> {
+    let text = text.trim();
+    let (mantissa, exponent) = match text.find(['e', 'E']) {
+        Some(pos) => (&text[..pos], text[pos + 1..].parse::<i32>().ok()?),
+        None => (text, 0),
+    };
+    let (negative, digits) = match mantissa.strip_prefix('-') {
+        Some(rest) => (true, rest),
+        None => (false, mantissa.strip_prefix('+').unwrap_or(mantissa)),
+    };
+    let (int_part, frac_part) = match digits.find('.') {
+        Some(pos) => (&digits[..pos], &digits[pos + 1..]),
+        None => (digits, ""),
+    };
+    if int_part.is_empty() && frac_part.is_empty() {
+        return None;
+    }
+    if !int_part
+        .bytes()
+        .chain(frac_part.bytes())
+        .all(|b| b.is_ascii_digit())
+    {
+        return None;
+    }
+    let all_digits = format!("{int_part}{frac_part}");
+    let mut value = BigRational::from_integer(BigInt::from_str_radix(&all_digits, 10).ok()?);
+    let scale = exponent - frac_part.len() as i32;
+    let ten = BigRational::from_integer(BigInt::from(10));
+    let power = num_traits::pow(ten, scale.unsigned_abs() as usize);
+    if scale >= 0 {
+        value *= power;
+    } else {
+        value /= power;
+    }
+    Some(if negative { -value } else { value })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn decimal_is_exact() {
+        assert_eq!(
+            rational_from_decimal("0.2"),
+            Some(BigRational::from_ratio(1, 5))
+        );
+        assert_eq!(
+            rational_from_decimal("-3.25e-1"),
+            Some(BigRational::from_ratio(-13, 40))
+        );
+        assert_eq!(
+            rational_from_decimal("12e2"),
+            Some(BigRational::from_ratio(1200, 1))
+        );
+        assert_eq!(rational_from_decimal("abc"), None);
+        assert_eq!(rational_from_decimal("."), None);
+    }
+
+    #[test]
+    fn f64_lift_is_exact() {
+        let r = <BigRational as Scalar>::from_f64(0.5).unwrap();
+        assert_eq!(r, BigRational::from_ratio(1, 2));
+        assert!(<BigRational as Scalar>::from_f64(f64::NAN).is_none());
+    }
+}
