@@ -1,0 +1,512 @@
+//! Gordon surfaces: interpolation of a network of curves (thesis §4.5, Izrek 4.4, appendix D).
+//!
+//! A network consists of `m+1` curves `g(u_i, v)` (functions of `v`, one per node `u_i`) and
+//! `n+1` curves `g(u, v_j)` (functions of `u`, one per node `v_j`), all over `[0, 1]`, meeting
+//! at the `(m+1)(n+1)` points `g(u_i, v_j)`. The Gordon surface
+//!
+//! ```text
+//! g = g1 + g2 − g12,
+//!   g1(u,v)  = Σ_i g(u_i, v) L_i(u)                  (4.9)
+//!   g2(u,v)  = Σ_j g(u, v_j) L_j(v)                  (4.10)
+//!   g12(u,v) = Σ_i Σ_j g(u_i, v_j) L_i(u) L_j(v)     (4.11)
+//! ```
+//!
+//! interpolates every curve of the network (Izrek 4.4), `L_i`, `L_j` being the Lagrange bases
+//! of the nodes `u_0 < … < u_m` and `v_0 < … < v_n` — two separate node vectors, `m ≠ n`
+//! allowed. (The thesis code, `krpaGordon`, uses one node vector and one count for both
+//! directions; the Coons patch is the case `m = n = 1` with nodes `{0, 1}`.)
+//!
+//! **Reading appendix D's data.** The thesis lists `c0, c1, c2` as functions of `u`
+//! (`c_j = [u; v_j; v_j + u − u²]`, with `y = v_j = 0, 0.5, 1`), so they are the curves
+//! `g(u, v_j)`; and `d0, d1, d2` as functions of `v` (`d_i = [u_i; v; …]`, `x = u_i`), the
+//! curves `g(u_i, v)`. The intersection points are printed as `g_ab` with the *first* index on
+//! the `c` curves: `g01 = [0.5 0 0.25] = c0(0.5) = d1(0) = g(u_1, v_0)`, i.e. `g_ab = g(u_b, v_a)`.
+//! Accordingly the matrix `g_uv = [g00 g10 g20; g01 g11 g21; g02 g12 g22]` holds `g(u_i, v_j)`
+//! in row `i`, column block `j`, which is how `krpaGordon` uses it
+//! (`g_uv(l, 3s−2:3s)` with `L_l(u) L_s(v)`). The network is compatible: every `c_j(u_i)`
+//! equals `d_i(v_j)`. The thesis code, however, mixes the roles up in its loop: it weights
+//! `g_u(:, l)` — a *sample* of the sampled curve `c0`, not the curve `c_l` — by `L_l(v)`.
+
+use nalgebra::DVector;
+
+use crate::coons::Tolerance;
+use crate::error::{Error, Result};
+use crate::lagrange::{check_nodes, Lagrange, LebesgueEstimate};
+use crate::param::{Curve, Surface};
+use crate::scalar::Scalar;
+
+/// A Gordon surface (Izrek 4.4) over a compatible curve network.
+///
+/// ```
+/// use cagd::gordon::GordonSurface;
+/// use cagd::{FnCurve, Surface};
+/// use nalgebra::{dvector, DVector};
+/// type F = fn(f64) -> DVector<f64>;
+/// // Appendix D: d_i = g(u_i, v), c_j = g(u, v_j), nodes [0 0.5 1] in both directions.
+/// let d: [F; 3] = [|v| dvector![0.0, v, v], |v| dvector![0.5, v, 0.25 + v], |v| dvector![1.0, v, v]];
+/// let c: [F; 3] = [
+///     |u| dvector![u, 0.0, u - u * u],
+///     |u| dvector![u, 0.5, 0.5 + u - u * u],
+///     |u| dvector![u, 1.0, 1.0 + u - u * u],
+/// ];
+/// let nodes = vec![0.0, 0.5, 1.0];
+/// let g = GordonSurface::new(
+///     nodes.clone(), nodes,
+///     Vec::from(d.map(|f| FnCurve::new(3, f))),
+///     Vec::from(c.map(|f| FnCurve::new(3, f))),
+/// ).unwrap();
+/// // The network is the surface (u, v, v + u − u²), which Gordon reproduces.
+/// let p = g.eval(0.25, 0.75);
+/// assert!((p - dvector![0.25, 0.75, 0.75 + 0.25 - 0.0625]).amax() < 1e-15);
+/// ```
+#[derive(Debug, Clone)]
+pub struct GordonSurface<C, T: Scalar = f64> {
+    u_basis: Lagrange<T>,
+    v_basis: Lagrange<T>,
+    curves_at_u: Vec<C>,
+    curves_at_v: Vec<C>,
+    /// `points[i][j] = g(u_i, v_j)`.
+    points: Vec<Vec<DVector<T>>>,
+    tolerance: Tolerance,
+}
+
+/// A point of a Gordon surface with its three parts: `g = g1 + g2 − g12`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GordonPoint<T: Scalar = f64> {
+    /// `g(u, v)`.
+    pub g: DVector<T>,
+    /// `g1 = Σ_i g(u_i, v) L_i(u)` (4.9).
+    pub g1: DVector<T>,
+    /// `g2 = Σ_j g(u, v_j) L_j(v)` (4.10).
+    pub g2: DVector<T>,
+    /// `g12 = Σ_i Σ_j g(u_i, v_j) L_i(u) L_j(v)` (4.11).
+    pub g12: DVector<T>,
+}
+
+/// The conditioning of a Gordon surface's blending: the Lebesgue constants of its two node
+/// vectors on `[0, 1]`. A perturbation `ε` of the network moves `g1`, `g2`, `g12` by at most
+/// `Λ_u ε`, `Λ_v ε`, `Λ_u Λ_v ε`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Conditioning {
+    /// For the nodes `u_i`.
+    pub u: LebesgueEstimate,
+    /// For the nodes `v_j`.
+    pub v: LebesgueEstimate,
+}
+
+impl Conditioning {
+    /// The bound `Λ_u + Λ_v + Λ_u Λ_v` on the amplification of network errors.
+    pub fn amplification(&self) -> f64 {
+        self.u.value + self.v.value + self.u.value * self.v.value
+    }
+}
+
+impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
+    /// The Gordon surface of the curves `curves_at_u[i] = g(u_i, ·)` (functions of `v`) and
+    /// `curves_at_v[j] = g(·, v_j)` (functions of `u`) at the nodes `u_nodes`, `v_nodes`, with
+    /// the network checked at the default tolerance (relative `1e-10`, see [`Tolerance`]).
+    /// The crossing points `g(u_i, v_j)` are taken from `curves_at_u`.
+    ///
+    /// # Errors
+    /// - [`Error::TooFewCurves`]: fewer than 2 curves in a direction;
+    /// - [`Error::ShapeMismatch`]: node and curve counts differ, or curves of different
+    ///   dimensions;
+    /// - [`Error::DuplicateNodes`], [`Error::UnsortedNodes`], [`Error::NonFinite`]: bad nodes;
+    /// - [`Error::NetworkMismatch`]: `g(u_i, ·)` at `v_j` is not `g(·, v_j)` at `u_i`, naming
+    ///   the worst pair, its gap and the tolerance.
+    pub fn new(
+        u_nodes: Vec<T>,
+        v_nodes: Vec<T>,
+        curves_at_u: Vec<C>,
+        curves_at_v: Vec<C>,
+    ) -> Result<Self> {
+        Self::with_tolerance(
+            u_nodes,
+            v_nodes,
+            curves_at_u,
+            curves_at_v,
+            Tolerance::default(),
+        )
+    }
+
+    /// [`GordonSurface::new`] with a chosen network tolerance.
+    ///
+    /// # Errors
+    /// As [`GordonSurface::new`].
+    pub fn with_tolerance(
+        u_nodes: Vec<T>,
+        v_nodes: Vec<T>,
+        curves_at_u: Vec<C>,
+        curves_at_v: Vec<C>,
+        tolerance: Tolerance,
+    ) -> Result<Self> {
+        let (u_basis, v_basis) =
+            Self::check(&u_nodes, &v_nodes, &curves_at_u, &curves_at_v, &tolerance)?;
+        let points: Vec<Vec<DVector<T>>> = curves_at_u
+            .iter()
+            .map(|c| v_nodes.iter().map(|v| c.eval(v.clone())).collect())
+            .collect();
+        Self::finish(
+            u_basis,
+            v_basis,
+            curves_at_u,
+            curves_at_v,
+            points,
+            tolerance,
+        )
+    }
+
+    /// The Gordon surface with the crossing points given, `points[i][j] = g(u_i, v_j)` (the
+    /// thesis's `g_uv`); each is checked against both curves through it.
+    ///
+    /// # Errors
+    /// As [`GordonSurface::new`]; a wrong number or dimension of points is an
+    /// [`Error::ShapeMismatch`].
+    pub fn with_points(
+        u_nodes: Vec<T>,
+        v_nodes: Vec<T>,
+        curves_at_u: Vec<C>,
+        curves_at_v: Vec<C>,
+        points: Vec<Vec<DVector<T>>>,
+        tolerance: Tolerance,
+    ) -> Result<Self> {
+        let (u_basis, v_basis) =
+            Self::check(&u_nodes, &v_nodes, &curves_at_u, &curves_at_v, &tolerance)?;
+        let dim = curves_at_u[0].dim();
+        let shape_ok = points.len() == u_nodes.len()
+            && points
+                .iter()
+                .all(|row| row.len() == v_nodes.len() && row.iter().all(|p| p.len() == dim));
+        if !shape_ok {
+            return Err(Error::ShapeMismatch {
+                what: "Gordon crossing points g(u_i, v_j)",
+                expected: format!(
+                    "{} × {} points of dimension {dim}",
+                    u_nodes.len(),
+                    v_nodes.len()
+                ),
+                found: format!(
+                    "{} rows of lengths {:?}",
+                    points.len(),
+                    points.iter().map(Vec::len).collect::<Vec<_>>()
+                ),
+            });
+        }
+        for row in &points {
+            for p in row {
+                crate::error::check_finite("Gordon crossing points g(u_i, v_j)", p.iter())?;
+            }
+        }
+        let mut worst: Option<(usize, usize, T, T)> = None;
+        let mut count = 0;
+        for (i, u) in u_nodes.iter().enumerate() {
+            for (j, v) in v_nodes.iter().enumerate() {
+                for q in [
+                    curves_at_u[i].eval(v.clone()),
+                    curves_at_v[j].eval(u.clone()),
+                ] {
+                    let (gap, allowed) = tolerance.gap(&points[i][j], &q);
+                    record(&mut worst, &mut count, i, j, gap, allowed);
+                }
+            }
+        }
+        if let Some(e) = mismatch(worst, count, &u_nodes, &v_nodes, tolerance) {
+            return Err(e);
+        }
+        Self::finish(
+            u_basis,
+            v_basis,
+            curves_at_u,
+            curves_at_v,
+            points,
+            tolerance,
+        )
+    }
+
+    fn check(
+        u_nodes: &[T],
+        v_nodes: &[T],
+        curves_at_u: &[C],
+        curves_at_v: &[C],
+        tolerance: &Tolerance,
+    ) -> Result<(Lagrange<T>, Lagrange<T>)> {
+        for (what, curves) in [
+            ("Gordon curves g(u_i, v)", curves_at_u),
+            ("Gordon curves g(u, v_j)", curves_at_v),
+        ] {
+            if curves.len() < 2 {
+                return Err(Error::TooFewCurves {
+                    what,
+                    min: 2,
+                    found: curves.len(),
+                });
+            }
+        }
+        for (what, nodes, curves) in [
+            ("Gordon nodes u_i", u_nodes, curves_at_u.len()),
+            ("Gordon nodes v_j", v_nodes, curves_at_v.len()),
+        ] {
+            if nodes.len() != curves {
+                return Err(Error::ShapeMismatch {
+                    what,
+                    expected: format!("{curves} nodes (one per curve)"),
+                    found: format!("{} nodes", nodes.len()),
+                });
+            }
+            check_nodes(what, nodes, 2)?;
+        }
+        if let Tolerance::Relative(t) | Tolerance::Absolute(t) = tolerance {
+            if !(t.is_finite() && *t >= 0.0) {
+                return Err(Error::InvalidArgument {
+                    what: "tolerance",
+                    message: format!("expected a finite value >= 0, got {t}"),
+                });
+            }
+        }
+        let dim = curves_at_u[0].dim();
+        for c in curves_at_u.iter().chain(curves_at_v.iter()) {
+            if c.dim() != dim {
+                return Err(Error::ShapeMismatch {
+                    what: "Gordon network curves",
+                    expected: format!("curves of one dimension ({dim})"),
+                    found: format!("a curve of dimension {}", c.dim()),
+                });
+            }
+        }
+        // Compatibility: g(u_i, ·)(v_j) against g(·, v_j)(u_i).
+        let mut worst: Option<(usize, usize, T, T)> = None;
+        let mut count = 0;
+        for (i, u) in u_nodes.iter().enumerate() {
+            for (j, v) in v_nodes.iter().enumerate() {
+                let p = curves_at_u[i].eval(v.clone());
+                let q = curves_at_v[j].eval(u.clone());
+                if p.len() != dim || q.len() != dim {
+                    return Err(Error::ShapeMismatch {
+                        what: "Gordon network curves",
+                        expected: format!("points of dimension {dim}"),
+                        found: format!("points of dimension {} and {}", p.len(), q.len()),
+                    });
+                }
+                crate::error::check_finite("Gordon network crossing", p.iter().chain(q.iter()))?;
+                let (gap, allowed) = tolerance.gap(&p, &q);
+                record(&mut worst, &mut count, i, j, gap, allowed);
+            }
+        }
+        if let Some(e) = mismatch(worst, count, u_nodes, v_nodes, *tolerance) {
+            return Err(e);
+        }
+        Ok((
+            Lagrange::new(u_nodes.to_vec())?,
+            Lagrange::new(v_nodes.to_vec())?,
+        ))
+    }
+
+    fn finish(
+        u_basis: Lagrange<T>,
+        v_basis: Lagrange<T>,
+        curves_at_u: Vec<C>,
+        curves_at_v: Vec<C>,
+        points: Vec<Vec<DVector<T>>>,
+        tolerance: Tolerance,
+    ) -> Result<Self> {
+        Ok(GordonSurface {
+            u_basis,
+            v_basis,
+            curves_at_u,
+            curves_at_v,
+            points,
+            tolerance,
+        })
+    }
+
+    /// `g(u, v)` with its parts `g1`, `g2`, `g12`.
+    pub fn eval_parts(&self, u: T, v: T) -> GordonPoint<T> {
+        let lu = self.u_basis.basis(&u);
+        let lv = self.v_basis.basis(&v);
+        let at_u: Vec<_> = self.curves_at_u.iter().map(|c| c.eval(v.clone())).collect();
+        let at_v: Vec<_> = self.curves_at_v.iter().map(|c| c.eval(u.clone())).collect();
+        self.combine(&lu, &lv, &at_u, &at_v)
+    }
+
+    /// Combines the curve values `at_u[i] = g(u_i, v)`, `at_v[j] = g(u, v_j)` with the basis
+    /// values `lu`, `lv`.
+    fn combine(
+        &self,
+        lu: &[T],
+        lv: &[T],
+        at_u: &[DVector<T>],
+        at_v: &[DVector<T>],
+    ) -> GordonPoint<T> {
+        let dim = self.dim();
+        let mut out = GordonPoint {
+            g: DVector::from_element(dim, T::zero()),
+            g1: DVector::from_element(dim, T::zero()),
+            g2: DVector::from_element(dim, T::zero()),
+            g12: DVector::from_element(dim, T::zero()),
+        };
+        for k in 0..dim {
+            let mut g1 = T::zero();
+            for (l, p) in lu.iter().zip(at_u) {
+                g1 = g1 + p[k].clone() * l.clone();
+            }
+            let mut g2 = T::zero();
+            for (l, p) in lv.iter().zip(at_v) {
+                g2 = g2 + p[k].clone() * l.clone();
+            }
+            let mut g12 = T::zero();
+            for (li, row) in lu.iter().zip(&self.points) {
+                for (lj, p) in lv.iter().zip(row) {
+                    g12 = g12 + p[k].clone() * li.clone() * lj.clone();
+                }
+            }
+            out.g[k] = g1.clone() + g2.clone() - g12.clone();
+            out.g1[k] = g1;
+            out.g2[k] = g2;
+            out.g12[k] = g12;
+        }
+        out
+    }
+}
+
+impl<T: Scalar, C> GordonSurface<C, T> {
+    /// The nodes `u_0 < … < u_m`.
+    pub fn u_nodes(&self) -> &[T] {
+        self.u_basis.nodes()
+    }
+
+    /// The nodes `v_0 < … < v_n`.
+    pub fn v_nodes(&self) -> &[T] {
+        self.v_basis.nodes()
+    }
+
+    /// The curves `g(u_i, v)`, functions of `v`.
+    pub fn curves_at_u(&self) -> &[C] {
+        &self.curves_at_u
+    }
+
+    /// The curves `g(u, v_j)`, functions of `u`.
+    pub fn curves_at_v(&self) -> &[C] {
+        &self.curves_at_v
+    }
+
+    /// The crossing points, `points()[i][j] = g(u_i, v_j)`.
+    pub fn points(&self) -> &[Vec<DVector<T>>] {
+        &self.points
+    }
+
+    /// The tolerance the network was checked against.
+    pub fn tolerance(&self) -> Tolerance {
+        self.tolerance
+    }
+
+    /// The Lagrange bases in `u` and `v`.
+    pub fn bases(&self) -> (&Lagrange<T>, &Lagrange<T>) {
+        (&self.u_basis, &self.v_basis)
+    }
+
+    /// The Lebesgue constants of the two node vectors on `[0, 1]`, estimated on a grid of
+    /// `max(2001, 200·(nodes+1))` points.
+    ///
+    /// ```
+    /// # use cagd::gordon::GordonSurface;
+    /// # use cagd::{FnCurve, Surface};
+    /// # use nalgebra::{dvector, DVector};
+    /// # type F = fn(f64) -> DVector<f64>;
+    /// # let d: [F; 3] = [|v| dvector![0.0, v, v], |v| dvector![0.5, v, 0.25 + v], |v| dvector![1.0, v, v]];
+    /// # let c: [F; 3] = [|u| dvector![u, 0.0, u - u * u], |u| dvector![u, 0.5, 0.5 + u - u * u], |u| dvector![u, 1.0, 1.0 + u - u * u]];
+    /// # let nodes = vec![0.0, 0.5, 1.0];
+    /// # let g = GordonSurface::new(nodes.clone(), nodes, Vec::from(d.map(|f| FnCurve::new(3, f))), Vec::from(c.map(|f| FnCurve::new(3, f)))).unwrap();
+    /// // Nodes [0, 0.5, 1]: Λ = 1.25, at t = 1/4 and 3/4 (the grid contains both).
+    /// let k = g.conditioning();
+    /// assert!((k.u.value - 1.25).abs() < 1e-12 && (k.v.value - 1.25).abs() < 1e-12);
+    /// ```
+    pub fn conditioning(&self) -> Conditioning {
+        let samples = |b: &Lagrange<T>| (200 * (b.nodes().len() + 1)).max(2001);
+        Conditioning {
+            u: self
+                .u_basis
+                .lebesgue_constant(0.0, 1.0, samples(&self.u_basis)),
+            v: self
+                .v_basis
+                .lebesgue_constant(0.0, 1.0, samples(&self.v_basis)),
+        }
+    }
+}
+
+/// Keeps the worst gap over the tolerance and counts such gaps.
+fn record<T: Scalar>(
+    worst: &mut Option<(usize, usize, T, T)>,
+    count: &mut usize,
+    i: usize,
+    j: usize,
+    gap: T,
+    allowed: T,
+) {
+    if gap > allowed {
+        *count += 1;
+        let worse = match worst {
+            None => true,
+            Some((_, _, g, _)) => gap > *g,
+        };
+        if worse {
+            *worst = Some((i, j, gap, allowed));
+        }
+    }
+}
+
+fn mismatch<T: Scalar>(
+    worst: Option<(usize, usize, T, T)>,
+    count: usize,
+    u_nodes: &[T],
+    v_nodes: &[T],
+    tolerance: Tolerance,
+) -> Option<Error> {
+    worst.map(|(i, j, gap, allowed)| Error::NetworkMismatch {
+        u_curve: i,
+        v_curve: j,
+        u: u_nodes[i].to_f64(),
+        v: v_nodes[j].to_f64(),
+        gap: gap.to_f64(),
+        allowed: allowed.to_f64(),
+        tolerance,
+        count,
+    })
+}
+
+impl<T: Scalar, C: Curve<T>> Surface<T> for GordonSurface<C, T> {
+    fn dim(&self) -> usize {
+        self.points[0][0].len()
+    }
+
+    fn eval(&self, u: T, v: T) -> DVector<T> {
+        self.eval_parts(u, v).g
+    }
+
+    /// The surface on the grid `us × vs`, shape `(us.len(), vs.len(), d)` (the layout of
+    /// `P = tenzor(R)` in `krpaGordon`); each network curve and each Lagrange basis is evaluated
+    /// once per grid line.
+    fn eval_grid(&self, us: &[T], vs: &[T]) -> ndarray::Array3<T> {
+        let lu: Vec<_> = us.iter().map(|u| self.u_basis.basis(u)).collect();
+        let lv: Vec<_> = vs.iter().map(|v| self.v_basis.basis(v)).collect();
+        // at_u[j][i] = g(u_i, vs[j]); at_v[i][j] = g(us[i], v_j).
+        let at_u: Vec<Vec<_>> = vs
+            .iter()
+            .map(|v| self.curves_at_u.iter().map(|c| c.eval(v.clone())).collect())
+            .collect();
+        let at_v: Vec<Vec<_>> = us
+            .iter()
+            .map(|u| self.curves_at_v.iter().map(|c| c.eval(u.clone())).collect())
+            .collect();
+        let dim = self.dim();
+        let mut grid = ndarray::Array3::from_elem((us.len(), vs.len(), dim), T::zero());
+        for i in 0..us.len() {
+            for j in 0..vs.len() {
+                let p = self.combine(&lu[i], &lv[j], &at_u[j], &at_v[i]);
+                for k in 0..dim {
+                    grid[[i, j, k]] = p.g[k].clone();
+                }
+            }
+        }
+        grid
+    }
+}
