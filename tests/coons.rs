@@ -16,6 +16,8 @@ use nalgebra::{dmatrix, dvector, DMatrix, DVector};
 use support::{q, qv, random_surface, Poly, PolySurface, Q};
 
 type QF = fn(Q) -> DVector<Q>;
+type PolyBoundary = CoonsBoundary<Poly<Q>, Q>;
+type PolyCross = CrossDerivatives<Poly<Q>>;
 
 /// Primer 4.3's curves: c1 = (u, 0, u − u²), c2 = (u, 1, u), d1 = (0, v², v − v²), d2 = (1, v, v).
 fn primer_4_3() -> [FnCurve<QF, QF>; 4] {
@@ -517,13 +519,7 @@ fn blending_functions_breaking_the_conditions_are_named() {
 // ---------------------------------------------------------------- bicubic
 
 /// The boundary, cross-boundary derivatives and corner twists of a polynomial surface.
-fn bicubic_data(
-    s: &PolySurface<Q>,
-) -> (
-    CoonsBoundary<Poly<Q>, Q>,
-    CrossDerivatives<Poly<Q>>,
-    [DVector<Q>; 4],
-) {
+fn bicubic_data(s: &PolySurface<Q>) -> (PolyBoundary, PolyCross, [DVector<Q>; 4]) {
     let [c1, c2, d1, d2] = boundary_of(s);
     let boundary = CoonsBoundary::new(c1, c2, d1, d2, Tolerance::Exact).unwrap();
     let su = s.partial(1, 0);
@@ -622,11 +618,7 @@ fn zero_twist_misses_the_cross_derivatives_where_the_data_twist() {
 fn incompatible_twist_data(
     s: &PolySurface<Q>,
     e: DVector<Q>,
-) -> (
-    CoonsBoundary<Poly<Q>, Q>,
-    CrossDerivatives<Poly<Q>>,
-    Poly<Q>,
-) {
+) -> (PolyBoundary, PolyCross, Poly<Q>) {
     let (boundary, mut cross, _) = bicubic_data(s);
     let mut coeffs = cross.du0.coeffs.clone();
     while coeffs.len() < 3 {

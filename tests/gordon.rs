@@ -14,9 +14,10 @@ use nalgebra::{dvector, DMatrix, DVector};
 use support::{q, qv, random_surface, Poly, Q};
 
 type QF = fn(Q) -> DVector<Q>;
+type QCurves = Vec<FnCurve<QF, QF>>;
 
 /// Appendix D: `d_i = g(u_i, v)` (functions of v) and `c_j = g(u, v_j)` (functions of u).
-fn appendix_d() -> (Vec<FnCurve<QF, QF>>, Vec<FnCurve<QF, QF>>) {
+fn appendix_d() -> (QCurves, QCurves) {
     let d: [QF; 3] = [
         |v| dvector![q(0, 1), v.clone(), v],
         |v| dvector![q(1, 2), v.clone(), q(1, 4) + v],
@@ -220,8 +221,9 @@ fn coons_is_gordon_with_two_curves_each_way() {
 }
 
 type F = fn(f64) -> DVector<f64>;
+type FCurves = Vec<FnCurve<F, F>>;
 
-fn f64_network() -> (Vec<FnCurve<F, F>>, Vec<FnCurve<F, F>>) {
+fn f64_network() -> (FCurves, FCurves) {
     let d: [F; 3] = [
         |v| dvector![0.0, v, v],
         |v| dvector![0.5, v, 0.25 + v],
