@@ -907,7 +907,7 @@ fn banded_solver_agrees_with_nalgebra_dense_lu() {
     let mask = Mask::from_alpha(0.4);
     for (m, n) in [(7usize, 4usize), (4, 9), (12, 12)] {
         let z = DMatrix::from_fn(m + 1, n + 1, |i, j| ((i * 7 + j * 3) as f64).sin());
-        let banded = solve_mask(&[z.clone()], &mask).unwrap();
+        let banded = solve_mask(std::slice::from_ref(&z), &mask).unwrap();
         // Dense system in the natural numbering.
         let idx = |i: usize, j: usize| (i - 1) * (n - 1) + (j - 1);
         let size = (m - 1) * (n - 1);
@@ -960,7 +960,7 @@ fn a_large_net_is_solved_by_the_band_solver() {
         let (s, t) = (i as f64 / m as f64, j as f64 / n as f64);
         (3.0 * s).sin() + t * t + s * t
     });
-    let a = solve_mask(&[z.clone()], &Mask::coons()).unwrap();
+    let a = solve_mask(std::slice::from_ref(&z), &Mask::coons()).unwrap();
     let b = discrete_coons(&[z]).unwrap();
     assert!((&a[0] - &b[0]).amax() < 1e-9, "{}", (&a[0] - &b[0]).amax());
 }
