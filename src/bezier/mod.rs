@@ -19,7 +19,7 @@
 //! `3 × (n+1)` control matrices); a patch keeps one `(m+1) × (n+1)` matrix per coordinate, entry
 //! `(i, j)` belonging to `b_{i,j}`, `i` along `u`, `j` along `v`, as in the thesis.
 //!
-//! Everything is generic over [`Scalar`](crate::Scalar): the same code runs in `f64` and exactly
+//! Everything is generic over [`Scalar`]: the same code runs in `f64` and exactly
 //! in `BigRational`.
 
 mod bilinear;
