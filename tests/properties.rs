@@ -393,6 +393,7 @@ proptest! {
         for (a, &u) in us.iter().enumerate() {
             for (b, &v) in vs.iter().enumerate() {
                 let x = p.eval(u, v);
+                prop_assert_eq!(&p.scheme(u, v).point_on_surface(), &x);
                 prop_assert!(max_diff(&x, &p.eval_bernstein(u, v)) <= tol);
                 for k in 0..3 {
                     prop_assert!((grid[[a, b, k]] - x[k]).abs() <= tol,

@@ -138,6 +138,15 @@ impl<T: Scalar> BezierCurve<T> {
     ///
     /// # Errors
     /// [`Error::NonFinite`] for a non-finite end, [`Error::EmptyInterval`] unless `a < b`.
+    ///
+    /// ```
+    /// use cagd::bezier::BezierCurve;
+    /// let c = BezierCurve::from_points(&[[0.0], [8.0]])?.with_interval(-1.0, 1.0)?;
+    /// assert_eq!(c.interval(), (&-1.0, &1.0));
+    /// assert_eq!(c.local_parameter(0.0), 0.5);
+    /// assert_eq!(c.eval(0.0).as_slice(), &[4.0]);
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
     pub fn with_interval(self, a: T, b: T) -> Result<Self> {
         check_interval("Bézier curve interval", &a, &b)?;
         Ok(BezierCurve { a, b, ..self })
@@ -159,6 +168,14 @@ impl<T: Scalar> BezierCurve<T> {
     }
 
     /// The control point `b_i` (`None` for `i > n`).
+    ///
+    /// ```
+    /// use cagd::bezier::BezierCurve;
+    /// let c = BezierCurve::from_points(&[[0.0, 1.0], [2.0, 3.0]])?;
+    /// assert_eq!(c.control_point(1).unwrap().as_slice(), &[2.0, 3.0]);
+    /// assert!(c.control_point(2).is_none());
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
     pub fn control_point(&self, i: usize) -> Option<DVector<T>> {
         (i < self.control.ncols()).then(|| self.control.column(i).into_owned())
     }
@@ -226,6 +243,14 @@ impl<T: Scalar> BezierCurve<T> {
     ///
     /// # Errors
     /// [`Error::NonFinite`] for a NaN or infinite `u`.
+    ///
+    /// ```
+    /// use cagd::bezier::BezierCurve;
+    /// let c = BezierCurve::from_points(&[[0.0], [2.0]])?;
+    /// assert_eq!(c.try_eval(0.25)?.as_slice(), &[0.5]);
+    /// assert!(c.try_eval(f64::NAN).is_err());
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
     pub fn try_eval(&self, u: T) -> Result<DVector<T>> {
         check_param("Bézier curve parameter", &u)?;
         Ok(self.eval(u))
@@ -360,6 +385,14 @@ impl<T: Scalar> BezierCurve<T> {
 
     /// The first derivative at `u` straight from the scheme:
     /// `n (b_1^{n−1} − b_0^{n−1}) / (b − a)`; the zero vector for degree 0.
+    ///
+    /// ```
+    /// use cagd::bezier::BezierCurve;
+    /// // x(t) = t² (control values 0, 0, 1): x'(0.5) = 1.
+    /// let c = BezierCurve::from_points(&[[0.0], [0.0], [1.0]])?;
+    /// assert_eq!(c.eval_derivative(0.5).as_slice(), &[1.0]);
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
     pub fn eval_derivative(&self, u: T) -> DVector<T> {
         let n = self.degree();
         if n == 0 {

@@ -4,7 +4,7 @@ use nalgebra::{DMatrix, DVector};
 use ndarray::Array3;
 
 use super::curve::BezierCurve;
-use super::scheme::{patch_step, patch_steps, PatchScheme};
+use super::scheme::{patch_step_in_place, patch_steps, PatchScheme};
 use super::{check_param, check_params, mat_mul};
 use crate::bernstein::{basis_matrix, bernstein_all, falling_factorial};
 use crate::error::{check_finite, Error, Result};
@@ -22,7 +22,8 @@ use crate::scalar::Scalar;
 /// | [`V0`](Edge::V0) | `x(u, 0)` | `b_{0,0}, …, b_{m,0}` | `i` (parameter `u`) |
 /// | [`V1`](Edge::V1) | `x(u, 1)` | `b_{0,n}, …, b_{m,n}` | `i` (parameter `u`) |
 ///
-/// (thesis §3.4, property 5: the boundary curves of a Bézier patch are Bézier curves.)
+/// (thesis §3.4, property 5: the boundary curves of a Bézier patch are Bézier curves. Its proof
+/// writes `Σ_j b_{i,j} B_j^n(v)` for `x(0, v)` where `b_{0,j}` is meant.)
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Edge {
     /// `u = 0`: the curve `v ↦ x(0, v)`, control points `b_{0,j}`, `j = 0..=n`.
@@ -51,7 +52,8 @@ impl Edge {
 /// allowed, and so is degree 0 in either direction.
 ///
 /// **Evaluation.** [`eval`](Self::eval) (and [`Surface::eval`]) run the tensor de Casteljau
-/// algorithm of thesis §3.2: `min(m, n)` bilinear steps
+/// algorithm of thesis §3.2 (whose formula raises both level indices together,
+/// `b^{p,r}` from `b^{p−1,r−1}`, and so only reaches `b^{m,n}_{0,0}` when `m = n`): `min(m, n)` bilinear steps
 /// `(1−u)(1−v) b_{i,j} + u(1−v) b_{i+1,j} + (1−u)v b_{i,j+1} + uv b_{i+1,j+1}` (that term order,
 /// as the fixed Octave `bilinearna`), then `|m − n|` linear steps `(1−u) b_{i,j} + u b_{i+1,j}`
 /// (or the same in `v`) in the direction whose degree remains.
@@ -277,23 +279,26 @@ impl<T: Scalar> BezierPatch<T> {
     /// ```
     pub fn eval(&self, u: T, v: T) -> DVector<T> {
         let (m, n) = self.degree();
-        let mut steps = patch_steps(m, n);
-        let Some(first) = steps.next() else {
-            return self
-                .control_point(0, 0)
-                .unwrap_or_else(|| DVector::zeros(0));
-        };
-        let mut net = patch_step(&self.coords, first, &u, &v);
-        for step in steps {
-            net = patch_step(&net, step, &u, &v);
+        let mut work = self.coords.clone();
+        let mut shape = (m + 1, n + 1);
+        for step in patch_steps(m, n) {
+            shape = patch_step_in_place(&mut work, shape, step, &u, &v);
         }
-        DVector::from_iterator(net.len(), net.iter().map(|x| x[(0, 0)].clone()))
+        DVector::from_iterator(work.len(), work.iter().map(|x| x[(0, 0)].clone()))
     }
 
     /// [`eval`](Self::eval) with the parameters checked.
     ///
     /// # Errors
     /// [`Error::NonFinite`] for a NaN or infinite `u` or `v`.
+    ///
+    /// ```
+    /// use cagd::bezier::BezierPatch;
+    /// let p: BezierPatch = BezierPatch::hyperbolic_paraboloid();
+    /// assert_eq!(p.try_eval(1.0, 0.5)?.as_slice(), &[1.0, 0.5, 0.5]);
+    /// assert!(p.try_eval(f64::INFINITY, 0.5).is_err());
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
     pub fn try_eval(&self, u: T, v: T) -> Result<DVector<T>> {
         check_param("Bézier patch parameter u", &u)?;
         check_param("Bézier patch parameter v", &v)?;
@@ -302,6 +307,16 @@ impl<T: Scalar> BezierPatch<T> {
 
     /// Every level of the tensor de Casteljau algorithm at `(u, v)`; the last point equals
     /// [`eval`](Self::eval) bit for bit.
+    ///
+    /// ```
+    /// use cagd::bezier::BezierPatch;
+    /// let p: BezierPatch = BezierPatch::hyperbolic_paraboloid();
+    /// let s = p.scheme(0.5, 0.5);
+    /// assert_eq!(s.level_count(), 2);
+    /// assert_eq!(s.point(0, 1, 1).unwrap().as_slice(), &[1.0, 1.0, 1.0]);
+    /// assert_eq!(s.point_on_surface(), p.eval(0.5, 0.5));
+    /// println!("{s}");
+    /// ```
     pub fn scheme(&self, u: T, v: T) -> PatchScheme<T> {
         PatchScheme::compute(&self.coords, u, v)
     }
@@ -343,6 +358,12 @@ impl<T: Scalar> BezierPatch<T> {
     /// with `Δ^{(r,s)}` the forward differences taken `r` times along `i` and `s` times along
     /// `j` (`Δ^{(1,1)} b_{i,j} = b_{i+1,j+1} − b_{i,j+1} − b_{i+1,j} + b_{i,j}`), scaled once at
     /// the end. `(0, 0)` gives a copy.
+    ///
+    /// Notes on the thesis text: the proof of Trditev 3.3 writes `b_{i+j,j} − b_{i,j}` where
+    /// `Δ^{(1,0)} b_{i,j} = b_{i+1,j} − b_{i,j}` is meant; the higher-order formulas write
+    /// `∂/∂u^r` for `∂^r/∂u^r` and cite an equation (2.6) that is the unnumbered r-th derivative
+    /// formula of §2.4; the mixed case `r, s > 0` of higher order is not stated there but
+    /// follows in the same way, since the differences in `i` and `j` commute.
     ///
     /// # Errors
     /// [`Error::DerivativeOrder`] if `r > m` or `s > n`.

@@ -228,6 +228,61 @@ pub(crate) fn patch_step<T: Scalar>(
     }
 }
 
+/// One patch step in place on the leading `rows × cols` block of every coordinate matrix (the
+/// arithmetic of [`patch_step`], bit for bit); returns the new active shape. Entries are
+/// overwritten in increasing `(i, j)`, so every read of `(i + 1, j)` or `(i, j + 1)` still sees
+/// the previous level.
+pub(crate) fn patch_step_in_place<T: Scalar>(
+    net: &mut [DMatrix<T>],
+    (rows, cols): (usize, usize),
+    step: PatchStep,
+    u: &T,
+    v: &T,
+) -> (usize, usize) {
+    match step {
+        PatchStep::Bilinear => {
+            let w = BilinearWeights::new(u, v);
+            for x in net.iter_mut() {
+                for i in 0..rows - 1 {
+                    for j in 0..cols - 1 {
+                        x[(i, j)] = w.combine(
+                            &x[(i, j)],
+                            &x[(i + 1, j)],
+                            &x[(i, j + 1)],
+                            &x[(i + 1, j + 1)],
+                        );
+                    }
+                }
+            }
+            (rows - 1, cols - 1)
+        }
+        PatchStep::LinearU => {
+            let s = T::one() - u.clone();
+            for x in net.iter_mut() {
+                for i in 0..rows - 1 {
+                    for j in 0..cols {
+                        x[(i, j)] =
+                            s.clone() * x[(i, j)].clone() + u.clone() * x[(i + 1, j)].clone();
+                    }
+                }
+            }
+            (rows - 1, cols)
+        }
+        PatchStep::LinearV => {
+            let s = T::one() - v.clone();
+            for x in net.iter_mut() {
+                for i in 0..rows {
+                    for j in 0..cols - 1 {
+                        x[(i, j)] =
+                            s.clone() * x[(i, j)].clone() + v.clone() * x[(i, j + 1)].clone();
+                    }
+                }
+            }
+            (rows, cols - 1)
+        }
+    }
+}
+
 /// The steps of the tensor de Casteljau algorithm for degree `(m, n)`: `min(m, n)` bilinear
 /// steps, then `|m − n|` linear steps in the direction whose degree remains.
 pub(crate) fn patch_steps(m: usize, n: usize) -> impl Iterator<Item = PatchStep> {
