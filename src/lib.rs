@@ -25,6 +25,7 @@ pub mod octave;
 pub mod param;
 pub mod scalar;
 
+pub use bezier::{BezierCurve, BezierPatch, Edge};
 pub use coons::{CoonsPatch, Tolerance};
 pub use error::{Error, Result};
 pub use gordon::GordonSurface;
