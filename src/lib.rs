@@ -22,6 +22,7 @@ pub mod octave;
 pub mod param;
 pub mod scalar;
 
+pub use bezier::{BezierCurve, BezierPatch, Edge};
 pub use error::{Error, Result};
 pub use linspace::linspace;
 pub use param::{Curve, FnCurve, SampledCurve, Surface};

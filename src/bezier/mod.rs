@@ -1,1 +1,128 @@
-//! Bézier curves and patches.
+//! Bézier curves and patches (thesis chapters 2 and 3).
+//!
+//! - [`BezierCurve`]: a polynomial curve of any degree in any dimension, evaluated by de
+//!   Casteljau's algorithm ([`BezierCurve::eval`]), the Bernstein form
+//!   ([`BezierCurve::eval_bernstein`]) or the matrix (monomial) form of the course notes
+//!   ([`BezierCurve::matrix_form`]); the whole de Casteljau triangle is a
+//!   [`DeCasteljauScheme`]. Derivatives are again Bézier curves
+//!   ([`BezierCurve::derivative`]); curves can be split ([`BezierCurve::subdivide`]), raised in
+//!   degree ([`BezierCurve::elevate`]) and defined over any interval `[a, b]`.
+//! - [`BezierPatch`]: a tensor-product patch of degree `(m, n)`, `m ≠ n` allowed, evaluated by
+//!   the tensor de Casteljau algorithm ([`BezierPatch::eval`], all levels in a [`PatchScheme`]),
+//!   the Bernstein form, or on a whole grid through basis matrices
+//!   ([`BezierPatch::try_eval_grid`]). Partial derivatives are patches
+//!   ([`BezierPatch::derivative`]); the four boundary curves are [`BezierCurve`]s
+//!   ([`BezierPatch::boundary`], [`Edge`]). The bilinear patch (hyperbolic paraboloid) of thesis
+//!   §3.1 is [`BezierPatch::bilinear`].
+//!
+//! Layouts: a curve's control points are the **columns** of a `d × (n+1)` matrix (the thesis's
+//! `3 × (n+1)` control matrices); a patch keeps one `(m+1) × (n+1)` matrix per coordinate, entry
+//! `(i, j)` belonging to `b_{i,j}`, `i` along `u`, `j` along `v`, as in the thesis.
+//!
+//! Everything is generic over [`Scalar`]: the same code runs in `f64` and exactly
+//! in `BigRational`.
+
+mod bilinear;
+mod curve;
+mod matrix_form;
+mod patch;
+mod scheme;
+
+pub use bilinear::bilinear_interpolate;
+pub use curve::BezierCurve;
+pub use matrix_form::{bezier_to_monomial_matrix, cubic_bezier_matrix, MatrixForm};
+pub use patch::{BezierPatch, Edge};
+pub use scheme::{DeCasteljauScheme, PatchScheme, PatchStep};
+
+use std::any::Any;
+
+use nalgebra::DMatrix;
+
+use crate::error::{check_finite, Error, Result};
+use crate::scalar::Scalar;
+
+/// Checks a list of parameter values: non-empty and finite.
+pub(crate) fn check_params<T: Scalar>(what: &'static str, ts: &[T]) -> Result<()> {
+    if ts.is_empty() {
+        return Err(Error::EmptyGrid {
+            what,
+            min: 1,
+            found: 0,
+        });
+    }
+    check_finite(what, ts.iter())
+}
+
+/// Checks one parameter value.
+pub(crate) fn check_param<T: Scalar>(what: &'static str, t: &T) -> Result<()> {
+    check_finite(what, std::iter::once(t))
+}
+
+/// The matrix product `a · b`. For `f64` this is nalgebra's product (a blocked GEMM); for other
+/// scalars a plain triple loop in the order `Σ_k a[i,k] b[k,j]`, `k` ascending.
+pub(crate) fn mat_mul<T: Scalar>(a: &DMatrix<T>, b: &DMatrix<T>) -> DMatrix<T> {
+    let (a_any, b_any): (&dyn Any, &dyn Any) = (a, b);
+    if let (Some(a64), Some(b64)) = (
+        a_any.downcast_ref::<DMatrix<f64>>(),
+        b_any.downcast_ref::<DMatrix<f64>>(),
+    ) {
+        let product: Box<dyn Any> = Box::new(a64 * b64);
+        if let Ok(p) = product.downcast::<DMatrix<T>>() {
+            return *p;
+        }
+    }
+    let (rows, inner, cols) = (a.nrows(), a.ncols(), b.ncols());
+    DMatrix::from_fn(rows, cols, |i, j| {
+        (0..inner).fold(T::zero(), |acc, k| {
+            acc + a[(i, k)].clone() * b[(k, j)].clone()
+        })
+    })
+}
+
+/// Formats one point as `(x, y, z)`, honouring a precision given to the formatter.
+pub(crate) fn format_point<'a, T: Scalar>(
+    coords: impl IntoIterator<Item = &'a T>,
+    precision: Option<usize>,
+) -> String {
+    let parts: Vec<String> = coords
+        .into_iter()
+        .map(|x| match precision {
+            Some(p) => format!("{x:.p$}"),
+            None => format!("{x}"),
+        })
+        .collect();
+    format!("({})", parts.join(", "))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use num_rational::BigRational;
+
+    #[test]
+    fn mat_mul_agrees_for_both_scalars() {
+        let a = DMatrix::from_row_slice(2, 3, &[1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
+        let b = DMatrix::from_row_slice(3, 2, &[1.0, 0.0, 0.0, 1.0, 1.0, 1.0]);
+        let p = mat_mul(&a, &b);
+        assert_eq!(p, DMatrix::from_row_slice(2, 2, &[4.0, 5.0, 10.0, 11.0]));
+        let lift = |m: &DMatrix<f64>| m.map(|x| <BigRational as Scalar>::from_f64(x).unwrap());
+        let pq = mat_mul(&lift(&a), &lift(&b));
+        assert_eq!(pq, lift(&p));
+        // Empty inner dimension: a zero matrix, not a panic.
+        let e = mat_mul(&DMatrix::<f64>::zeros(2, 0), &DMatrix::<f64>::zeros(0, 3));
+        assert_eq!(e, DMatrix::zeros(2, 3));
+    }
+
+    #[test]
+    fn params_are_checked() {
+        assert!(matches!(
+            check_params::<f64>("ts", &[]),
+            Err(Error::EmptyGrid { found: 0, .. })
+        ));
+        assert!(matches!(
+            check_params("ts", &[0.0, f64::INFINITY]),
+            Err(Error::NonFinite { index: 1, .. })
+        ));
+        assert!(check_params("ts", &[0.0, 1.0]).is_ok());
+    }
+}
