@@ -1,4 +1,4 @@
-% Case "lagrange": the Lagrange basis of the fixed Lagrange.m (product form).
+% Case "lagrange_basis": the Lagrange basis of the fixed Lagrange.m (product form).
 %
 % Node sets: x1 = [0 0.5 1] (appendix D), x2 = 6 sorted uniform nodes in [0, 1], x3 = the 9
 % Chebyshev-Lobatto points (1 - cos(pi*(0:8)/8))/2.  Parameters: t1 = linspace(0,1,21),
@@ -28,4 +28,4 @@ for k = 1:3
     eval(sprintf('L%d = L;', k));
     names(end+1:end+3) = {sprintf('x%d', k), sprintf('t%d', k), sprintf('L%d', k)};
 end;
-save('-text', fullfile(outdir, 'lagrange.txt'), names{:});
+save('-text', fullfile(outdir, 'lagrange_basis.txt'), names{:});
