@@ -27,8 +27,9 @@
 //! equals `d_i(v_j)`. The thesis code, however, mixes the roles up in its loop: it weights
 //! `g_u(:, l)` — a *sample* of the sampled curve `c0`, not the curve `c_l` — by `L_l(v)`.
 
-use nalgebra::DVector;
+use nalgebra::{DMatrix, DVector};
 
+use crate::bezier::{BezierCurve, BezierPatch};
 use crate::coons::Tolerance;
 use crate::error::{Error, Result};
 use crate::lagrange::{check_nodes, Lagrange, LebesgueEstimate};
@@ -508,5 +509,185 @@ impl<T: Scalar, C: Curve<T>> Surface<T> for GordonSurface<C, T> {
             }
         }
         grid
+    }
+}
+
+// ------------------------------------------------------------------------------------------
+// Gordon surfaces of Bézier networks as one Bézier patch
+
+/// `C(n, k)` in the scalar, by the product `Π (n − k + i)/i` (exact in rationals, and in `f64`
+/// while the values stay below 2^53).
+fn binomial<T: Scalar>(n: usize, k: usize) -> T {
+    let k = k.min(n - k);
+    (1..=k).fold(T::one(), |acc, i| {
+        acc * T::from_usize(n - k + i) / T::from_usize(i)
+    })
+}
+
+/// The Bernstein coefficients of the product of two polynomials given by their Bernstein
+/// coefficients (degrees `p = a.len() − 1`, `q = b.len() − 1`):
+/// `c_k = Σ_{i+j=k} C(p,i) C(q,j) / C(p+q,k) · a_i b_j`.
+fn bernstein_product<T: Scalar>(a: &[T], b: &[T]) -> Vec<T> {
+    let (p, q) = (a.len() - 1, b.len() - 1);
+    (0..=p + q)
+        .map(|k| {
+            let sum = (k.saturating_sub(q)..=k.min(p)).fold(T::zero(), |sum, i| {
+                let j = k - i;
+                sum + binomial::<T>(p, i) * binomial::<T>(q, j) * a[i].clone() * b[j].clone()
+            });
+            sum / binomial::<T>(p + q, k)
+        })
+        .collect()
+}
+
+/// Degree elevation of Bernstein coefficients from `a.len() − 1` to `to`:
+/// `c_k = Σ_i C(r,i) C(to − r, k − i) / C(to, k) · a_i`.
+fn bernstein_elevate<T: Scalar>(a: &[T], to: usize) -> Vec<T> {
+    let r = a.len() - 1;
+    if r == to {
+        return a.to_vec();
+    }
+    (0..=to)
+        .map(|k| {
+            let sum = (k.saturating_sub(to - r)..=k.min(r)).fold(T::zero(), |sum, i| {
+                sum + binomial::<T>(r, i) * binomial::<T>(to - r, k - i) * a[i].clone()
+            });
+            sum / binomial::<T>(to, k)
+        })
+        .collect()
+}
+
+/// The Bernstein coefficients, at degree `to ≥ m`, of the Lagrange basis `L_0..L_m` of `nodes`
+/// (row `i` = `L_i`), built as products of the linear factors `(t − t_j)/(t_i − t_j)`, whose
+/// Bernstein coefficients are `[−t_j, 1 − t_j]/(t_i − t_j)`.
+fn lagrange_in_bernstein_form<T: Scalar>(nodes: &[T], to: usize) -> Vec<Vec<T>> {
+    nodes
+        .iter()
+        .enumerate()
+        .map(|(i, ti)| {
+            let mut poly = vec![T::one()];
+            for (j, tj) in nodes.iter().enumerate() {
+                if j != i {
+                    let den = ti.clone() - tj.clone();
+                    let factor = [-tj.clone() / den.clone(), (T::one() - tj.clone()) / den];
+                    poly = bernstein_product(&poly, &factor);
+                }
+            }
+            bernstein_elevate(&poly, to)
+        })
+        .collect()
+}
+
+/// The control points of a Bézier curve on `[0, 1]`, elevated to degree `to`, as one vector of
+/// coefficients per coordinate.
+fn elevated_control<T: Scalar>(
+    curve: &BezierCurve<T>,
+    to: usize,
+    what: &'static str,
+) -> Result<Vec<Vec<T>>> {
+    let (a, b) = curve.interval();
+    if !(a.is_zero() && b.is_one()) {
+        return Err(Error::InvalidArgument {
+            what,
+            message: format!(
+                "the exact Bézier form needs curves over [0, 1], found one over [{a}, {b}]"
+            ),
+        });
+    }
+    let c = curve.control();
+    Ok((0..c.nrows())
+        .map(|k| {
+            let row: Vec<T> = c.row(k).iter().cloned().collect();
+            bernstein_elevate(&row, to)
+        })
+        .collect())
+}
+
+/// The tensor-product Bézier net of `g1 + g2 − g12` for Bézier network curves: see
+/// [`GordonSurface::to_bezier`].
+pub(crate) fn gordon_bezier_net<T: Scalar>(
+    u_nodes: &[T],
+    v_nodes: &[T],
+    curves_at_u: &[BezierCurve<T>],
+    curves_at_v: &[BezierCurve<T>],
+    points: &[Vec<DVector<T>>],
+) -> Result<BezierPatch<T>> {
+    let (m, n) = (u_nodes.len() - 1, v_nodes.len() - 1);
+    let p = curves_at_v.iter().map(|c| c.degree()).max().unwrap_or(0);
+    let q = curves_at_u.iter().map(|c| c.degree()).max().unwrap_or(0);
+    let (deg_u, deg_v) = (m.max(p), n.max(q));
+    let lu = lagrange_in_bernstein_form(u_nodes, deg_u);
+    let lv = lagrange_in_bernstein_form(v_nodes, deg_v);
+    let at_u = curves_at_u
+        .iter()
+        .map(|c| elevated_control(c, deg_v, "Gordon curves g(u_i, v)"))
+        .collect::<Result<Vec<_>>>()?;
+    let at_v = curves_at_v
+        .iter()
+        .map(|c| elevated_control(c, deg_u, "Gordon curves g(u, v_j)"))
+        .collect::<Result<Vec<_>>>()?;
+    let dim = points[0][0].len();
+    let coords = (0..dim)
+        .map(|d| {
+            DMatrix::from_fn(deg_u + 1, deg_v + 1, |k, l| {
+                let mut g1 = T::zero();
+                for (li, ci) in lu.iter().zip(&at_u) {
+                    g1 = g1 + li[k].clone() * ci[d][l].clone();
+                }
+                let mut g2 = T::zero();
+                for (lj, cj) in lv.iter().zip(&at_v) {
+                    g2 = g2 + lj[l].clone() * cj[d][k].clone();
+                }
+                let mut g12 = T::zero();
+                for (li, row) in lu.iter().zip(points) {
+                    for (lj, pt) in lv.iter().zip(row) {
+                        g12 = g12 + li[k].clone() * lj[l].clone() * pt[d].clone();
+                    }
+                }
+                g1 + g2 - g12
+            })
+        })
+        .collect();
+    BezierPatch::new(coords)
+}
+
+impl<T: Scalar> GordonSurface<BezierCurve<T>, T> {
+    /// The Gordon surface of a network of Bézier curves (over `[0, 1]`), exactly, as one
+    /// tensor-product Bézier patch.
+    ///
+    /// With `p` the largest degree of the curves `g(u, v_j)` and `q` that of the curves
+    /// `g(u_i, v)`, the patch has degree `(max(m, p), max(n, q))`: each Lagrange basis function
+    /// is converted to Bernstein form (a product of linear factors), the network curves are
+    /// degree-elevated to the common degree, and `g1`, `g2`, `g12` are summed control point by
+    /// control point. The conversion is exact in rationals; in `f64` it agrees with
+    /// [`Surface::eval`] to round-off.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] if a curve is defined over an interval other than `[0, 1]`.
+    ///
+    /// ```
+    /// use cagd::bezier::BezierCurve;
+    /// use cagd::gordon::GordonSurface;
+    /// use cagd::Surface;
+    /// use nalgebra::dmatrix;
+    /// // The Coons case: four straight edges of the unit square, nodes {0, 1}.
+    /// let line = |x0: f64, y0: f64, x1: f64, y1: f64| BezierCurve::new(dmatrix![x0, x1; y0, y1]).unwrap();
+    /// let g = GordonSurface::new(
+    ///     vec![0.0, 1.0], vec![0.0, 1.0],
+    ///     vec![line(0.0, 0.0, 0.0, 1.0), line(1.0, 0.0, 1.0, 1.0)],
+    ///     vec![line(0.0, 0.0, 1.0, 0.0), line(0.0, 1.0, 1.0, 1.0)],
+    /// ).unwrap();
+    /// let patch = g.to_bezier().unwrap();
+    /// assert_eq!(patch.degree(), (1, 1));
+    /// assert_eq!(patch.eval(0.25, 0.5), g.eval(0.25, 0.5));
+    /// ```
+    pub fn to_bezier(&self) -> Result<BezierPatch<T>> {
+        gordon_bezier_net(
+            self.u_nodes(),
+            self.v_nodes(),
+            &self.curves_at_u,
+            &self.curves_at_v,
+            &self.points,
+        )
     }
 }

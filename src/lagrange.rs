@@ -15,8 +15,10 @@
 //! L. N. Trefethen, *Barycentric Lagrange interpolation*, SIAM Review 46 (2004)):
 //!
 //! ```text
-//! w_i = 1 / Π_{j≠i} (t_i − t_j),       L_i(t) = (w_i / (t − t_i)) / Σ_j (w_j / (t − t_j)),
+//! w_i = 1 / Π_{j≠i} (t_i − t_j),       L_i(t) = ℓ(t) · w_i / (t − t_i),   ℓ(t) = Π_j (t − t_j),
 //! ```
+//!
+//! (the first barycentric form; see [`Lagrange::basis`] for why not the second)
 //!
 //! with `L_i(t_k) = δ_ik` exactly at the nodes. Everything is generic over the [`Scalar`], so
 //! the basis is exact in rationals.
@@ -161,7 +163,7 @@ pub struct LebesgueEstimate {
     pub samples: usize,
 }
 
-/// The Lagrange basis of a set of distinct nodes, in barycentric form.
+/// The Lagrange basis of a set of distinct nodes, in barycentric form (Berrut–Trefethen).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Lagrange<T: Scalar = f64> {
     nodes: Vec<T>,
@@ -215,21 +217,30 @@ impl<T: Scalar> Lagrange<T> {
         self.nodes.len() - 1
     }
 
-    /// `[L_0(t), …, L_m(t)]` by the barycentric formula; exactly the unit vector at a node.
+    /// `[L_0(t), …, L_m(t)]` by the first barycentric form (the "modified Lagrange formula",
+    /// Berrut–Trefethen §3): `ℓ(t) = Π_j (t − t_j)` once, then `L_i(t) = ℓ(t) · w_i/(t − t_i)`,
+    /// `O(m)` operations per point; exactly the unit vector at a node.
+    ///
+    /// Each value carries a relative error of a few `m·ε`, like the product form, and the
+    /// formula is backward stable (Higham 2004). The second ("true") barycentric form
+    /// `(w_i/(t − t_i)) / Σ_j w_j/(t − t_j)` divides by a sum with cancellation, and its
+    /// values can be off by `Λ·ε` relative to the largest one (about 1000 ULPs for six random
+    /// nodes on `[−0.1, 1.1]`, see the Octave reference test `octave_lagrange_basis`).
     pub fn basis(&self, t: &T) -> Vec<T> {
         if let Some(k) = self.nodes.iter().position(|x| x == t) {
             let mut out = vec![T::zero(); self.nodes.len()];
             out[k] = T::one();
             return out;
         }
-        let terms: Vec<T> = self
+        let ell = self
             .nodes
             .iter()
+            .fold(T::one(), |p, x| p * (t.clone() - x.clone()));
+        self.nodes
+            .iter()
             .zip(self.weights.iter())
-            .map(|(x, w)| w.clone() / (t.clone() - x.clone()))
-            .collect();
-        let sum = terms.iter().fold(T::zero(), |a, b| a + b.clone());
-        terms.into_iter().map(|q| q / sum.clone()).collect()
+            .map(|(x, w)| ell.clone() * (w.clone() / (t.clone() - x.clone())))
+            .collect()
     }
 
     /// `Σ_i y_i L_i(t)` for values `y_i` (one per column of `values`, d × (m+1)).

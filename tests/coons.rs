@@ -1046,3 +1046,231 @@ fn coons_mask_eigenvalues_are_positive() {
         assert!((l - want).abs() < 1e-15);
     }
 }
+
+// ---------------------------------------------------------------- against GNU Octave
+
+mod common;
+
+use cagd::bezier::BezierCurve;
+use common::{array3, expected, matrix, row};
+use ndarray::{Array, Dimension};
+
+/// `common::assert_close` for arrays of any fixed dimension.
+fn assert_close<D: Dimension>(name: &str, ours: &Array<f64, D>, octave: &Array<f64, D>) {
+    common::assert_close(name, ours.view().into_dyn(), octave.view().into_dyn());
+}
+
+/// `common::assert_identical` for arrays of any fixed dimension.
+fn assert_identical<D: Dimension>(name: &str, ours: &Array<f64, D>, octave: &Array<f64, D>) {
+    common::assert_identical(name, ours.view().into_dyn(), octave.view().into_dyn());
+}
+use ndarray::{Array2, Array3};
+
+fn to_dmatrix(a: &Array2<f64>) -> DMatrix<f64> {
+    DMatrix::from_fn(a.nrows(), a.ncols(), |i, j| a[[i, j]])
+}
+
+fn column(a: &Array2<f64>) -> DVector<f64> {
+    assert_eq!(a.ncols(), 1);
+    DVector::from_iterator(a.nrows(), a.column(0).iter().copied())
+}
+
+fn as_array2(v: &DVector<f64>) -> Array2<f64> {
+    Array2::from_shape_fn((v.len(), 1), |(i, _)| v[i])
+}
+
+fn sampled(t: &[f64], samples: &Array2<f64>) -> SampledCurve<f64> {
+    SampledCurve::new(t.to_vec(), to_dmatrix(samples)).unwrap()
+}
+
+/// The grid packed as the thesis's R: `R(i, 3j−2:3j) = x(u_i, v_j)`.
+fn packed(grid: &Array3<f64>) -> Array2<f64> {
+    let (nu, nv, d) = grid.dim();
+    Array2::from_shape_fn((nu, d * nv), |(i, c)| grid[[i, c / d, c % d]])
+}
+
+#[test]
+fn octave_primer_4_3_vrednost_coons() {
+    let ws = expected("coons_thesis");
+    type F = fn(f64) -> DVector<f64>;
+    let c: [F; 4] = [
+        |u| dvector![u, 0.0, u - u * u],
+        |u| dvector![u, 1.0, u],
+        |v| dvector![0.0, v * v, v - v * v],
+        |v| dvector![1.0, v, v],
+    ];
+    let [c1, c2, d1, d2] = c.map(|f| FnCurve::new(3, f));
+    let (u, v) = (ws.scalar("ex_u").unwrap(), ws.scalar("ex_v").unwrap());
+    // The inputs are the curve values Octave computed (u^2 there, u*u here: the same double).
+    for (name, curve, t) in [
+        ("ex_c1", &c1, u),
+        ("ex_c2", &c2, u),
+        ("ex_d1", &d1, v),
+        ("ex_d2", &d2, v),
+    ] {
+        assert_identical(name, &as_array2(&curve.eval(t)), &matrix(&ws, name));
+    }
+    let corners = ["P1", "P2", "P3", "P4"].map(|p| column(&matrix(&ws, p)));
+    let patch = CoonsPatch::with_corners(c1, c2, d1, d2, corners, Tolerance::default()).unwrap();
+    let p = patch.eval_parts(u, v);
+    for (name, ours) in [
+        ("ex_T", &p.x),
+        ("ex_rc", &p.rc),
+        ("ex_rd", &p.rd),
+        ("ex_rcd", &p.rcd),
+    ] {
+        assert_identical(name, &as_array2(ours), &matrix(&ws, name));
+    }
+}
+
+#[test]
+fn octave_appendix_c_krpa_coons() {
+    let ws = expected("coons_thesis");
+    let corners = ["P1", "P2", "P3", "P4"].map(|p| column(&matrix(&ws, p)));
+    for n in [2, 3, 10, 101] {
+        let t = row(&ws, &format!("t_N{n}"));
+        assert_eq!(t, cagd::linspace(0.0, 1.0, n));
+        let [c1, c2, d1, d2] =
+            ["c1", "c2", "d1", "d2"].map(|c| sampled(&t, &matrix(&ws, &format!("{c}_N{n}"))));
+        let patch = CoonsPatch::with_corners(c1, c2, d1, d2, corners.clone(), Tolerance::default())
+            .unwrap();
+        let grid = patch.eval_grid(&t, &t);
+        // Same curve values, same term order: bit for bit.
+        assert_identical(&format!("P_N{n}"), &grid, &array3(&ws, &format!("P_N{n}")));
+        assert_close(&format!("P_N{n}"), &grid, &array3(&ws, &format!("P_N{n}")));
+        if n <= 3 {
+            assert_identical(
+                &format!("R_N{n}"),
+                &packed(&grid),
+                &matrix(&ws, &format!("R_N{n}")),
+            );
+        }
+    }
+    common::report_worst("coons_thesis");
+}
+
+/// `(1−t) a + t b + (t(1−t)) (α + β t)`, coordinate by coordinate, in the operation order of
+/// `octave_ref/cases/coons_random.m`.
+fn random_edge(
+    a: DVector<f64>,
+    b: DVector<f64>,
+    alpha: DVector<f64>,
+    beta: DVector<f64>,
+) -> Box<dyn Curve<f64>> {
+    Box::new(FnCurve::new(3, move |t: f64| {
+        DVector::from_fn(3, |k, _| {
+            (1.0 - t) * a[k] + t * b[k] + (t * (1.0 - t)) * (alpha[k] + beta[k] * t)
+        })
+    }))
+}
+
+#[test]
+fn octave_random_coons_patches() {
+    let ws = expected("coons_random");
+    for r in 1..=3 {
+        let get = |name: &str| matrix(&ws, &format!("r{r}_{name}"));
+        let (q, a, b) = (
+            to_dmatrix(&get("Q")),
+            to_dmatrix(&get("A")),
+            to_dmatrix(&get("B")),
+        );
+        let col = |m: &DMatrix<f64>, k: usize| m.column(k).into_owned();
+        // c1: P1 → P2, c2: P3 → P4, d1: P1 → P3, d2: P2 → P4.
+        let ends = [(0, 1), (2, 3), (0, 2), (1, 3)];
+        let curves: Vec<Box<dyn Curve<f64>>> = ends
+            .iter()
+            .enumerate()
+            .map(|(k, &(s, e))| random_edge(col(&q, s), col(&q, e), col(&a, k), col(&b, k)))
+            .collect();
+        let t = row(&ws, &format!("r{r}_t"));
+        for (k, name) in ["c1", "c2", "d1", "d2"].iter().enumerate() {
+            let ours = Array2::from_shape_fn((3, t.len()), |(i, j)| curves[k].eval(t[j])[i]);
+            assert_identical(&format!("r{r}_{name}"), &ours, &get(name));
+        }
+        let [c1, c2, d1, d2]: [Box<dyn Curve<f64>>; 4] = curves.try_into().ok().unwrap();
+        let corners = [0, 1, 2, 3].map(|k| col(&q, k));
+        let patch =
+            CoonsPatch::with_corners(c1, c2, d1, d2, corners, Tolerance::default()).unwrap();
+        let grid = patch.eval_grid(&t, &t);
+        assert_close(&format!("r{r}_P"), &grid, &array3(&ws, &format!("r{r}_P")));
+        assert_identical(&format!("r{r}_P"), &grid, &array3(&ws, &format!("r{r}_P")));
+        let uv = get("uv");
+        let names = ["T", "rc", "rd", "rcd"];
+        let mut ours: Vec<Array2<f64>> = names
+            .iter()
+            .map(|_| Array2::zeros((3, uv.ncols())))
+            .collect();
+        for k in 0..uv.ncols() {
+            let p = patch.eval_parts(uv[[0, k]], uv[[1, k]]);
+            for (o, part) in ours.iter_mut().zip([&p.x, &p.rc, &p.rd, &p.rcd]) {
+                for i in 0..3 {
+                    o[[i, k]] = part[i];
+                }
+            }
+        }
+        for (name, o) in names.iter().zip(&ours) {
+            assert_close(&format!("r{r}_{name}"), o, &get(name));
+        }
+    }
+    common::report_worst("coons_random");
+}
+
+#[test]
+fn octave_nurbs_nrbcoons_of_bezier_boundaries() {
+    // octave-nurbs builds the Coons patch as a NURBS surface (ruled surfaces and a bilinear
+    // patch, degree-elevated, knots merged) and evaluates it by de Boor: another operation
+    // order, so agreement is to round-off relative to the size of the data, not bit for bit.
+    let ws = expected("nrbcoons_bezier");
+    for r in 1..=2 {
+        let get = |name: &str| matrix(&ws, &format!("r{r}_{name}"));
+        let [c1, c2, d1, d2] =
+            ["c1", "c2", "d1", "d2"].map(|c| BezierCurve::new(to_dmatrix(&get(c))).unwrap());
+        let patch = CoonsPatch::new(c1, c2, d1, d2).unwrap();
+        let (tu, tv) = (row(&ws, &format!("r{r}_tu")), row(&ws, &format!("r{r}_tv")));
+        let octave = array3(&ws, &format!("r{r}_P"));
+        assert_close(
+            &format!("r{r}_P (CoonsPatch)"),
+            &patch.eval_grid(&tu, &tv),
+            &octave,
+        );
+        let bezier = patch.to_bezier().unwrap();
+        assert_close(
+            &format!("r{r}_P (as one Bézier patch)"),
+            &bezier.eval_grid(&tu, &tv),
+            &octave,
+        );
+    }
+    common::report_worst("nrbcoons_bezier");
+}
+
+#[test]
+fn coons_of_bezier_curves_as_one_bezier_patch_is_exact() {
+    let mut seed = 61;
+    let mut curve = |a: &DVector<Q>, b: &DVector<Q>, deg: usize| {
+        let mut c = DMatrix::from_fn(3, deg + 1, |_, _| support::lcg_rational(&mut seed, 2));
+        c.set_column(0, a);
+        c.set_column(deg, b);
+        BezierCurve::new(c).unwrap()
+    };
+    let p: Vec<DVector<Q>> = (0..4)
+        .map(|k| qv(&[(k, 1), (k * k, 3), (1 - k, 2)]))
+        .collect();
+    let patch = CoonsPatch::with_tolerance(
+        curve(&p[0], &p[1], 4),
+        curve(&p[2], &p[3], 2),
+        curve(&p[0], &p[2], 3),
+        curve(&p[1], &p[3], 1),
+        Tolerance::Exact,
+    )
+    .unwrap();
+    let bezier = patch.to_bezier().unwrap();
+    assert_eq!(bezier.degree(), (4, 3));
+    for u in params() {
+        for v in params() {
+            assert_eq!(
+                bezier.eval(u.clone(), v.clone()),
+                patch.eval(u.clone(), v.clone())
+            );
+        }
+    }
+}

@@ -523,3 +523,291 @@ fn chebyshev_nodes_are_symmetric_and_sorted() {
         0.5
     );
 }
+
+// ---------------------------------------------------------------- against GNU Octave
+
+mod common;
+
+use cagd::bezier::BezierCurve;
+use cagd::SampledCurve;
+use common::{array3, expected, matrix, row};
+use ndarray::{Array, Dimension};
+
+/// `common::assert_close` for arrays of any fixed dimension.
+fn assert_close<D: Dimension>(name: &str, ours: &Array<f64, D>, octave: &Array<f64, D>) {
+    common::assert_close(name, ours.view().into_dyn(), octave.view().into_dyn());
+}
+
+/// `common::assert_identical` for arrays of any fixed dimension.
+fn assert_identical<D: Dimension>(name: &str, ours: &Array<f64, D>, octave: &Array<f64, D>) {
+    common::assert_identical(name, ours.view().into_dyn(), octave.view().into_dyn());
+}
+use ndarray::Array2;
+
+/// Curve `k` of a family sampled side by side: columns `k·N .. (k+1)·N` of `family` (3 × K·N).
+fn sampled_curve(t: &[f64], family: &Array2<f64>, k: usize) -> SampledCurve<f64> {
+    let n = t.len();
+    SampledCurve::new(
+        t.to_vec(),
+        DMatrix::from_fn(family.nrows(), n, |i, j| family[[i, k * n + j]]),
+    )
+    .unwrap()
+}
+
+/// `points[i][j] = g(u_i, v_j)` from the packed `(m+1) × 3(n+1)` matrix.
+fn crossings(g_uv: &Array2<f64>) -> Vec<Vec<DVector<f64>>> {
+    (0..g_uv.nrows())
+        .map(|i| {
+            (0..g_uv.ncols() / 3)
+                .map(|j| DVector::from_fn(3, |k, _| g_uv[[i, 3 * j + k]]))
+                .collect()
+        })
+        .collect()
+}
+
+#[test]
+fn octave_appendix_d_krpa_gordon() {
+    let ws = expected("gordon_thesis");
+    let x = row(&ws, "x");
+    let points = crossings(&matrix(&ws, "g_uv"));
+    for n in [3, 10, 101] {
+        let t = row(&ws, &format!("t_N{n}"));
+        assert_eq!(t, cagd::linspace(0.0, 1.0, n));
+        let g_u = matrix(&ws, &format!("g_u_N{n}")); // [c0 c1 c2]: g(u, v_j)
+        let g_v = matrix(&ws, &format!("g_v_N{n}")); // [d0 d1 d2]: g(u_i, v)
+        let at_u: Vec<_> = (0..3).map(|i| sampled_curve(&t, &g_v, i)).collect();
+        let at_v: Vec<_> = (0..3).map(|j| sampled_curve(&t, &g_u, j)).collect();
+        // With N = 10 the node 0.5 is not a sample: the polylines through the samples miss
+        // the quadratic curves c_j there by up to h²/4 = 0.003, so the network of polylines is
+        // compatible only to 1e-2. (N = 3 and 101 sample the nodes exactly.)
+        let tolerance = if n == 10 {
+            Tolerance::Absolute(1e-2)
+        } else {
+            Tolerance::default()
+        };
+        let g =
+            GordonSurface::with_points(x.clone(), x.clone(), at_u, at_v, points.clone(), tolerance)
+                .unwrap();
+        let grid = g.eval_grid(&t, &t);
+        assert_close(&format!("P_N{n}"), &grid, &array3(&ws, &format!("P_N{n}")));
+    }
+    common::report_worst("gordon_thesis");
+}
+
+/// `S(u, v) = Σ_k A(:,k) U[ea_k] V[eb_k]`, `U = cumprod([1 u u u u])`, `V = cumprod([1 v v v])`,
+/// in the operation order of `octave_ref/cases/gordon_random.m`.
+fn random_surface_f64(
+    a: DMatrix<f64>,
+    ea: Vec<usize>,
+    eb: Vec<usize>,
+) -> impl Fn(f64, f64) -> DVector<f64> + Clone {
+    move |u: f64, v: f64| {
+        let mut us = [1.0; 5];
+        let mut vs = [1.0; 4];
+        for k in 1..5 {
+            us[k] = us[k - 1] * u;
+        }
+        for k in 1..4 {
+            vs[k] = vs[k - 1] * v;
+        }
+        DVector::from_fn(3, |r, _| {
+            (0..ea.len()).fold(0.0, |acc, k| acc + a[(r, k)] * (us[ea[k]] * vs[eb[k]]))
+        })
+    }
+}
+
+/// The Gordon surface of a sampled network on its sampling grid, in exact rationals from the
+/// given doubles (on the grid only samples are used).
+fn exact_gordon_grid(
+    xu: &[f64],
+    xv: &[f64],
+    t: &[f64],
+    g_u: &Array2<f64>,
+    g_v: &Array2<f64>,
+    g_uv: &Array2<f64>,
+) -> ndarray::Array3<f64> {
+    let lift = |x: f64| <Q as Scalar>::from_f64(x).unwrap();
+    let n = t.len();
+    let tq: Vec<Q> = t.iter().map(|&x| lift(x)).collect();
+    let family = |m: &Array2<f64>, k: usize| {
+        SampledCurve::new(
+            tq.clone(),
+            DMatrix::from_fn(3, n, |i, j| lift(m[[i, k * n + j]])),
+        )
+        .unwrap()
+    };
+    let at_u: Vec<_> = (0..xu.len()).map(|i| family(g_v, i)).collect();
+    let at_v: Vec<_> = (0..xv.len()).map(|j| family(g_u, j)).collect();
+    let points: Vec<Vec<DVector<Q>>> = crossings(g_uv)
+        .iter()
+        .map(|r| r.iter().map(|p| p.map(lift)).collect())
+        .collect();
+    // Between the samples the polylines are not the network: no compatibility to check.
+    let g = GordonSurface::with_points(
+        xu.iter().map(|&x| lift(x)).collect(),
+        xv.iter().map(|&x| lift(x)).collect(),
+        at_u,
+        at_v,
+        points,
+        Tolerance::Absolute(1e3),
+    )
+    .unwrap();
+    g.eval_grid(&tq, &tq).map(|x| x.to_f64())
+}
+
+#[test]
+fn octave_random_gordon_networks() {
+    let ws = expected("gordon_random");
+    for r in 1..=3 {
+        let get = |name: &str| matrix(&ws, &format!("r{r}_{name}"));
+        let a = DMatrix::from_fn(3, get("A").ncols(), |i, j| get("A")[[i, j]]);
+        let ea: Vec<usize> = row(&ws, &format!("r{r}_ea"))
+            .iter()
+            .map(|&e| e as usize)
+            .collect();
+        let eb: Vec<usize> = row(&ws, &format!("r{r}_eb"))
+            .iter()
+            .map(|&e| e as usize)
+            .collect();
+        let (xu, xv, t) = (
+            row(&ws, &format!("r{r}_xu")),
+            row(&ws, &format!("r{r}_xv")),
+            row(&ws, &format!("r{r}_t")),
+        );
+        let s = random_surface_f64(a, ea, eb);
+        // The network as closures on the surface; their samples are Octave's, bit for bit.
+        type Boxed = Box<dyn Curve<f64>>;
+        let at_u: Vec<Boxed> = xu
+            .iter()
+            .map(|&u| {
+                let s = s.clone();
+                Box::new(FnCurve::new(3, move |v: f64| s(u, v))) as Boxed
+            })
+            .collect();
+        let at_v: Vec<Boxed> = xv
+            .iter()
+            .map(|&v| {
+                let s = s.clone();
+                Box::new(FnCurve::new(3, move |u: f64| s(u, v))) as Boxed
+            })
+            .collect();
+        let n = t.len();
+        let g_u = Array2::from_shape_fn((3, xv.len() * n), |(k, c)| at_v[c / n].eval(t[c % n])[k]);
+        let g_v = Array2::from_shape_fn((3, xu.len() * n), |(k, c)| at_u[c / n].eval(t[c % n])[k]);
+        assert_identical(&format!("r{r}_g_u"), &g_u, &get("g_u"));
+        assert_identical(&format!("r{r}_g_v"), &g_v, &get("g_v"));
+        let g = GordonSurface::new(xu.clone(), xv.clone(), at_u, at_v).unwrap();
+        let points = crossings(&get("g_uv"));
+        assert_eq!(g.points(), &points[..]);
+        let ours = g.eval_grid(&t, &t);
+        let octave = array3(&ws, &format!("r{r}_P"));
+        let kappa = g.conditioning().amplification();
+        if kappa < 10.0 {
+            assert_close(&format!("r{r}_P"), &ours, &octave);
+            continue;
+        }
+        // Clustered random nodes make the blending ill-conditioned (κ = Λ_u + Λ_v + Λ_u Λ_v
+        // is 1810 for r1 and 175 for r2): any two operation orders then differ by up to
+        // κ·ε relative, more than 1e-14. Both are checked against the exact (rational) Gordon
+        // surface of the same doubles, and against each other within κ·ε.
+        let exact = exact_gordon_grid(&xu, &xv, &t, &get("g_u"), &get("g_v"), &get("g_uv"));
+        let scale = octave.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let bound = kappa * f64::EPSILON * scale;
+        let max_diff = |a: &ndarray::Array3<f64>, b: &ndarray::Array3<f64>| {
+            a.iter()
+                .zip(b.iter())
+                .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()))
+        };
+        let (ours_err, octave_err, diff) = (
+            max_diff(&ours, &exact),
+            max_diff(&octave, &exact),
+            max_diff(&ours, &octave),
+        );
+        eprintln!(
+            "[gordon_random r{r}] κ = {kappa:.1}: |ours − exact| = {ours_err:.2e}, |Octave − exact| = {octave_err:.2e}, |ours − Octave| = {diff:.2e} = {:.2e} of the scale {scale:.3}",
+            diff / scale
+        );
+        assert!(
+            ours_err <= bound,
+            "r{r}: ours {ours_err:e} from exact, bound {bound:e}"
+        );
+        assert!(
+            octave_err <= bound,
+            "r{r}: Octave {octave_err:e} from exact, bound {bound:e}"
+        );
+        assert!(
+            diff <= bound.max(1e-14 * scale),
+            "r{r}: {diff:e} apart, bound {bound:e}"
+        );
+    }
+    common::report_worst("gordon_random");
+}
+
+#[test]
+fn octave_lagrange_basis() {
+    let ws = expected("lagrange_basis");
+    for k in 1..=3 {
+        let x = row(&ws, &format!("x{k}"));
+        let t = row(&ws, &format!("t{k}"));
+        let octave = matrix(&ws, &format!("L{k}"));
+        let basis = Lagrange::new(x.clone()).unwrap();
+        let barycentric = Array2::from_shape_fn((x.len(), t.len()), |(i, j)| basis.basis(&t[j])[i]);
+        let product =
+            Array2::from_shape_fn((x.len(), t.len()), |(i, j)| basis_product(&x, i, &t[j]));
+        assert_identical(&format!("L{k} (product form)"), &product, &octave);
+        assert_close(&format!("L{k} (barycentric)"), &barycentric, &octave);
+    }
+    common::report_worst("lagrange_basis");
+}
+
+#[test]
+fn gordon_of_bezier_curves_as_one_bezier_patch_is_exact() {
+    let mut seed = 71;
+    let s = random_surface(&mut seed, 5, 3, 3);
+    let un = vec![q(0, 1), q(1, 4), q(2, 3), q(1, 1)];
+    let vn = vec![q(0, 1), q(1, 2), q(1, 1)];
+    // Each network curve of the polynomial surface as a Bézier curve (monomial → Bernstein:
+    // b_k = Σ_{i≤k} C(k,i)/C(n,i) a_i).
+    let to_bezier = |p: &Poly<Q>| {
+        let n = p.coeffs.len() - 1;
+        let binom = |n: usize, k: usize| {
+            (0..k).fold(q(1, 1), |acc, i| acc * q((n - i) as i64, (i + 1) as i64))
+        };
+        let control = DMatrix::from_fn(3, n + 1, |d, k| {
+            (0..=k).fold(q(0, 1), |acc, i| {
+                acc + binom(k, i) / binom(n, i) * p.coeffs[i][d].clone()
+            })
+        });
+        BezierCurve::new(control).unwrap()
+    };
+    let at_u: Vec<_> = un.iter().map(|u| to_bezier(&s.curve_at_u(u))).collect();
+    let at_v: Vec<_> = vn.iter().map(|v| to_bezier(&s.curve_at_v(v))).collect();
+    for (c, u) in at_u.iter().zip(&un) {
+        assert_eq!(c.eval(q(1, 3)), s.eval(u, &q(1, 3)));
+    }
+    let g = GordonSurface::with_tolerance(un, vn, at_u, at_v, Tolerance::Exact).unwrap();
+    let patch = g.to_bezier().unwrap();
+    assert_eq!(patch.degree(), (5, 3));
+    for u in params() {
+        for v in params() {
+            assert_eq!(
+                patch.eval(u.clone(), v.clone()),
+                g.eval(u.clone(), v.clone())
+            );
+        }
+    }
+    // A curve over another interval has no exact form here.
+    let shifted =
+        BezierCurve::new_on_interval(DMatrix::from_element(3, 2, q(0, 1)), q(0, 1), q(2, 1))
+            .unwrap();
+    let line = BezierCurve::new(DMatrix::from_element(3, 2, q(0, 1))).unwrap();
+    let z = vec![q(0, 1), q(1, 1)];
+    let g = GordonSurface::new(
+        z.clone(),
+        z,
+        vec![shifted, line.clone()],
+        vec![line.clone(), line],
+    )
+    .unwrap();
+    assert!(matches!(g.to_bezier(), Err(Error::InvalidArgument { .. })));
+}

@@ -143,3 +143,44 @@ impl<T: Scalar, C: Curve<T>> Surface<T> for CoonsPatch<C, T> {
         self.boundary.blend_grid(us, vs, &f, &g)
     }
 }
+
+impl<T: Scalar> CoonsPatch<crate::bezier::BezierCurve<T>, T> {
+    /// The Coons patch of four Bézier curves (over `[0, 1]`), exactly, as one tensor-product
+    /// Bézier patch of degree `(max(1, deg c1, deg c2), max(1, deg d1, deg d2))`: the Gordon
+    /// surface with nodes `{0, 1}` in both directions (its Lagrange basis is `1 − t, t`), see
+    /// [`crate::gordon::GordonSurface::to_bezier`]. The corners used are the patch's `P1..P4`.
+    ///
+    /// # Errors
+    /// [`crate::Error::InvalidArgument`] if a curve is defined over an interval other than
+    /// `[0, 1]`.
+    ///
+    /// ```
+    /// use cagd::bezier::BezierCurve;
+    /// use cagd::coons::CoonsPatch;
+    /// use cagd::Surface;
+    /// use nalgebra::dmatrix;
+    /// let c1 = BezierCurve::new(dmatrix![0.0, 0.5, 1.0; 0.0, -0.5, 0.0]).unwrap();
+    /// let c2 = BezierCurve::new(dmatrix![0.0, 1.0; 1.0, 1.0]).unwrap();
+    /// let d1 = BezierCurve::new(dmatrix![0.0, 0.0; 0.0, 1.0]).unwrap();
+    /// let d2 = BezierCurve::new(dmatrix![1.0, 1.0; 0.0, 1.0]).unwrap();
+    /// let coons = CoonsPatch::new(c1, c2, d1, d2).unwrap();
+    /// let patch = coons.to_bezier().unwrap();
+    /// assert_eq!(patch.degree(), (2, 1));
+    /// assert!((patch.eval(0.3, 0.6) - coons.eval(0.3, 0.6)).amax() < 1e-15);
+    /// ```
+    pub fn to_bezier(&self) -> Result<crate::bezier::BezierPatch<T>> {
+        let (c1, c2, d1, d2) = self.boundary.curves();
+        let p = self.boundary.corners();
+        let nodes = [T::zero(), T::one()];
+        crate::gordon::gordon_bezier_net(
+            &nodes,
+            &nodes,
+            &[d1.clone(), d2.clone()],
+            &[c1.clone(), c2.clone()],
+            &[
+                vec![p[0].clone(), p[2].clone()],
+                vec![p[1].clone(), p[3].clone()],
+            ],
+        )
+    }
+}

@@ -55,7 +55,7 @@ pub use bicubic::{
 };
 pub use bilinear::CoonsPatch;
 pub use discrete::discrete_coons;
-pub use generalized::{BlendingPair, GeneralizedCoonsPatch};
+pub use generalized::{BlendingPair, GeneralizedCoonsPatch, BLEND_TOLERANCE};
 pub use gregory::GregoryTwist;
 pub use mask::{solve_mask, Mask};
 
