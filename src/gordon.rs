@@ -691,3 +691,61 @@ impl<T: Scalar> GordonSurface<BezierCurve<T>, T> {
         )
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use num_rational::BigRational as Q;
+
+    fn q(n: i64, d: i64) -> Q {
+        <Q as Scalar>::from_ratio(n, d)
+    }
+
+    /// Evaluates Bernstein coefficients at `t` by the definition.
+    fn eval(c: &[Q], t: &Q) -> Q {
+        let n = c.len() - 1;
+        c.iter().enumerate().fold(q(0, 1), |acc, (i, ci)| {
+            let mut b = binomial::<Q>(n, i);
+            for _ in 0..i {
+                b *= t.clone();
+            }
+            for _ in i..n {
+                b *= q(1, 1) - t.clone();
+            }
+            acc + b * ci.clone()
+        })
+    }
+
+    #[test]
+    fn binomials() {
+        assert_eq!(binomial::<Q>(6, 2), q(15, 1));
+        assert_eq!(binomial::<f64>(30, 15), 155117520.0);
+        assert_eq!(binomial::<Q>(4, 0), q(1, 1));
+    }
+
+    #[test]
+    fn product_and_elevation_of_bernstein_coefficients() {
+        let a = [q(1, 2), q(-3, 1), q(2, 5)];
+        let b = [q(7, 3), q(0, 1)];
+        let c = bernstein_product(&a, &b);
+        let e = bernstein_elevate(&a, 5);
+        assert_eq!(c.len(), 4);
+        for t in [q(0, 1), q(1, 3), q(4, 5), q(1, 1), q(3, 2)] {
+            assert_eq!(eval(&c, &t), eval(&a, &t) * eval(&b, &t));
+            assert_eq!(eval(&e, &t), eval(&a, &t));
+        }
+    }
+
+    #[test]
+    fn lagrange_basis_in_bernstein_form_is_the_basis() {
+        let nodes = [q(-1, 2), q(0, 1), q(2, 3), q(1, 1)];
+        let basis = Lagrange::new(nodes.to_vec()).unwrap();
+        let coeffs = lagrange_in_bernstein_form(&nodes, 5);
+        for t in [q(1, 7), q(1, 2), q(9, 10), q(-1, 3)] {
+            let want = basis.basis(&t);
+            for (i, c) in coeffs.iter().enumerate() {
+                assert_eq!(eval(c, &t), want[i]);
+            }
+        }
+    }
+}

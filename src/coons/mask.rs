@@ -345,3 +345,37 @@ impl<T: Scalar> Band<T> {
         Some(b)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn band_solver_pivots() {
+        // [[0 1 0], [1 0 1], [0 1 1]] x = [1, 2, 3] needs a row swap at the first step;
+        // x = (0, 1, 2).
+        let mut band = Band::<f64>::new(3, 1);
+        for (r, c, v) in [
+            (0, 1, 1.0),
+            (1, 0, 1.0),
+            (1, 2, 1.0),
+            (2, 1, 1.0),
+            (2, 2, 1.0),
+        ] {
+            band.set(r, c, v);
+        }
+        let x = band
+            .solve(DMatrix::from_column_slice(3, 1, &[1.0, 2.0, 3.0]))
+            .unwrap();
+        assert_eq!(x.as_slice(), &[0.0, 1.0, 2.0]);
+    }
+
+    #[test]
+    fn band_solver_reports_an_exactly_singular_matrix() {
+        let mut band = Band::<f64>::new(2, 1);
+        for (r, c, v) in [(0, 0, 1.0), (0, 1, 2.0), (1, 0, 2.0), (1, 1, 4.0)] {
+            band.set(r, c, v);
+        }
+        assert!(band.solve(DMatrix::from_element(2, 1, 1.0)).is_none());
+    }
+}
