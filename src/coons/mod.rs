@@ -255,19 +255,20 @@ impl<T: Scalar, C: Curve<T>> CoonsBoundary<C, T> {
     /// non-finite tolerance.
     ///
     /// ```
-    /// use cagd::coons::{CoonsBoundary, Tolerance};
-    /// use cagd::{Error, FnCurve};
+    /// use cagd::coons::{CoonsBoundary, Corner, Tolerance};
+    /// use cagd::{Curve, Error, FnCurve};
     /// use nalgebra::dvector;
-    /// let c1 = FnCurve::new(2, |u: f64| dvector![u, 0.0]);
-    /// let c2 = FnCurve::new(2, |u: f64| dvector![u, 1.0]);
-    /// let d1 = FnCurve::new(2, |v: f64| dvector![0.0, v]);
-    /// let d2 = FnCurve::new(2, |v: f64| dvector![1.0, v + 0.5]); // wrong at both ends
-    /// let b: Vec<Box<dyn cagd::Curve>> = vec![Box::new(c1), Box::new(c2), Box::new(d1), Box::new(d2)];
-    /// let [c1, c2, d1, d2]: [Box<dyn cagd::Curve>; 4] = b.try_into().ok().unwrap();
+    /// // Closures are of different types: box them to pass them as one curve type.
+    /// let c1: Box<dyn Curve> = Box::new(FnCurve::new(2, |u: f64| dvector![u, 0.0]));
+    /// let c2: Box<dyn Curve> = Box::new(FnCurve::new(2, |u: f64| dvector![u, 1.0]));
+    /// let d1: Box<dyn Curve> = Box::new(FnCurve::new(2, |v: f64| dvector![0.0, v]));
+    /// let d2: Box<dyn Curve> = Box::new(FnCurve::new(2, |v: f64| dvector![1.0, v + 0.5])); // off at both ends
     /// match CoonsBoundary::new(c1, c2, d1, d2, Tolerance::default()) {
     ///     Err(Error::CornerMismatch { gaps, .. }) => {
-    ///         assert_eq!(gaps.len(), 2); // x(1,0) and x(1,1)
+    ///         assert_eq!(gaps.len(), 2);
+    ///         assert_eq!((gaps[0].corner, gaps[0].first, gaps[0].second), (Corner::U1V0, "c1(1)", "d2(0)"));
     ///         assert_eq!(gaps[0].gap, 0.5);
+    ///         assert_eq!(gaps[1].corner, Corner::U1V1);
     ///     }
     ///     _ => panic!("expected a corner mismatch"),
     /// }
