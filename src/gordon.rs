@@ -256,14 +256,7 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
             }
             check_nodes(what, nodes, 2)?;
         }
-        if let Tolerance::Relative(t) | Tolerance::Absolute(t) = tolerance {
-            if !(t.is_finite() && *t >= 0.0) {
-                return Err(Error::InvalidArgument {
-                    what: "tolerance",
-                    message: format!("expected a finite value >= 0, got {t}"),
-                });
-            }
-        }
+        tolerance.validate()?;
         let dim = curves_at_u[0].dim();
         for c in curves_at_u.iter().chain(curves_at_v.iter()) {
             if c.dim() != dim {

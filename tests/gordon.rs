@@ -369,6 +369,18 @@ fn bad_nodes_and_too_few_curves() {
             ..
         }
     ));
+    // A negative tolerance.
+    let (d, c) = f64_network();
+    let nodes = vec![0.0, 0.5, 1.0];
+    assert!(matches!(
+        GordonSurface::with_tolerance(nodes.clone(), nodes, d, c, Tolerance::Absolute(-1.0))
+            .err()
+            .unwrap(),
+        Error::InvalidArgument {
+            what: "tolerance",
+            ..
+        }
+    ));
     // Curves of different dimensions.
     let (mut d, c) = f64_network();
     d[0] = FnCurve::new(2, |v| dvector![0.0, v]);

@@ -125,7 +125,8 @@ impl Tolerance {
         (gap, allowed)
     }
 
-    fn validate(&self) -> Result<()> {
+    /// Rejects a negative or non-finite tolerance ([`Error::InvalidArgument`]).
+    pub(crate) fn validate(&self) -> Result<()> {
         match self {
             Tolerance::Relative(t) | Tolerance::Absolute(t) if !(t.is_finite() && *t >= 0.0) => {
                 Err(Error::InvalidArgument {
