@@ -24,8 +24,16 @@
 //! Accordingly the matrix `g_uv = [g00 g10 g20; g01 g11 g21; g02 g12 g22]` holds `g(u_i, v_j)`
 //! in row `i`, column block `j`, which is how `krpaGordon` uses it
 //! (`g_uv(l, 3s−2:3s)` with `L_l(u) L_s(v)`). The network is compatible: every `c_j(u_i)`
-//! equals `d_i(v_j)`. The thesis code, however, mixes the roles up in its loop: it weights
-//! `g_u(:, l)` — a *sample* of the sampled curve `c0`, not the curve `c_l` — by `L_l(v)`.
+//! equals `d_i(v_j)`.
+//!
+//! **The thesis code** (`krpaGordon`, `Lagrange`) does not run as printed; the fixed Octave
+//! reference (`octave_ref/fixed/krpaGordon.m`) lists each fix: `Lagrange` starts its product at
+//! zero (so every blending function is 0); `krpaGordon` takes the curve counts from the number
+//! of sample columns (`size(g_u)(2)` = 3N), weights `g_u(:, l)` — sample `l` of the first
+//! sampled curve, not the curve `c_l` at the current parameter — by `L_l(v)`, adds the row
+//! `g_uv(l, 3s−2:3s)` to the columns `g1`, `g2` (which Octave broadcasts to a 3 × 3 matrix),
+//! and uses one node vector and one count for both directions. This type evaluates the same
+//! formula as the fixed reference; on the thesis data it agrees with it to a few ULPs.
 
 use nalgebra::{DMatrix, DVector};
 
