@@ -16,6 +16,8 @@
 
 pub mod bernstein;
 pub mod bezier;
+pub mod nurbs;
+pub mod bspline;
 pub mod error;
 pub mod linspace;
 pub mod octave;
