@@ -16,6 +16,10 @@
 
 pub mod bernstein;
 pub mod bezier;
+pub mod interpolation;
+pub mod spline;
+pub mod hermite;
+pub mod conversion;
 pub mod nurbs;
 pub mod bspline;
 pub mod error;
