@@ -51,7 +51,10 @@ fn int_matrix<T: Scalar>(rows: [[i64; 4]; 4], den: i64) -> DMatrix<T> {
 /// assert_eq!(m.row(2).iter().copied().collect::<Vec<_>>(), vec![1.0, -2.0, 1.0, 0.0]);
 /// ```
 pub fn hermite_matrix<T: Scalar>() -> DMatrix<T> {
-    int_matrix([[2, -3, 0, 1], [-2, 3, 0, 0], [1, -2, 1, 0], [1, -1, 0, 0]], 1)
+    int_matrix(
+        [[2, -3, 0, 1], [-2, 3, 0, 0], [1, -2, 1, 0], [1, -1, 0, 0]],
+        1,
+    )
 }
 
 /// `M_H⁻¹`, computed by [`invert`]. Row `k` holds the Hermite data `[x(0), x(1), x'(0),
@@ -73,7 +76,10 @@ pub fn bezier_matrix<T: Scalar>() -> DMatrix<T> {
 /// This is also the right `M_S` for the "Coons B-spline surface" `vᵀ M_Sᵀ X_S M_S u`; seed 004
 /// prints `M_B` there by mistake.
 pub fn bspline_matrix<T: Scalar>() -> DMatrix<T> {
-    int_matrix([[-1, 3, -3, 1], [3, -6, 0, 4], [-3, 3, 3, 1], [1, 0, 0, 0]], 6)
+    int_matrix(
+        [[-1, 3, -3, 1], [3, -6, 0, 4], [-3, 3, 3, 1], [1, 0, 0, 0]],
+        6,
+    )
 }
 
 /// The basis matrix of a form.

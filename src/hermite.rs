@@ -35,7 +35,12 @@ pub fn hermite_basis<T: Scalar>(u: T) -> [T; 4] {
         let c = |k: i64| T::from_ratio(k, 1);
         ((c(c3) * u.clone() + c(c2)) * u.clone() + c(c1)) * u.clone() + c(c0)
     };
-    [h(2, -3, 0, 1), h(-2, 3, 0, 0), h(1, -2, 1, 0), h(1, -1, 0, 0)]
+    [
+        h(2, -3, 0, 1),
+        h(-2, 3, 0, 0),
+        h(1, -2, 1, 0),
+        h(1, -1, 0, 0),
+    ]
 }
 
 /// The derivatives `[f'_1, f'_2, f'_3, f'_4](u)` of the Hermite basis.
@@ -182,9 +187,9 @@ impl<T: Scalar> HermiteCubic<T> {
 /// `Σ_i w[i] g[:, i]`, `i` ascending.
 fn combine4<T: Scalar>(g: &DMatrix<T>, w: &[T; 4]) -> DVector<T> {
     DVector::from_fn(g.nrows(), |r, _| {
-        w.iter()
-            .enumerate()
-            .fold(T::zero(), |acc, (i, wi)| acc + wi.clone() * g[(r, i)].clone())
+        w.iter().enumerate().fold(T::zero(), |acc, (i, wi)| {
+            acc + wi.clone() * g[(r, i)].clone()
+        })
     })
 }
 

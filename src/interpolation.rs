@@ -129,7 +129,10 @@ impl<T: Scalar> LagrangePolynomial<T> {
         let n = self.xs.len();
         let mut c = vec![T::zero(); n];
         for (i, y) in self.ys.iter().enumerate() {
-            for (k, b) in lagrange_basis_coefficients(&self.xs, i).into_iter().enumerate() {
+            for (k, b) in lagrange_basis_coefficients(&self.xs, i)
+                .into_iter()
+                .enumerate()
+            {
                 c[k] = c[k].clone() + y.clone() * b;
             }
         }
@@ -180,7 +183,10 @@ impl<T: Scalar> PiecewiseLinear<T> {
         if let Some(k) = xs.windows(2).position(|w| w[0] >= w[1]) {
             return Err(Error::InvalidArgument {
                 what,
-                message: format!("nodes must strictly increase, but node {k} is not below node {}", k + 1),
+                message: format!(
+                    "nodes must strictly increase, but node {k} is not below node {}",
+                    k + 1
+                ),
             });
         }
         Ok(PiecewiseLinear { xs, ys })
@@ -189,7 +195,11 @@ impl<T: Scalar> PiecewiseLinear<T> {
     /// The value at `x`: `y_i + (y_{i+1} − y_i)/(x_{i+1} − x_i) · (x − x_i)`.
     pub fn eval(&self, x: T) -> T {
         let last = self.xs.len() - 2;
-        let i = self.xs.partition_point(|p| p <= &x).saturating_sub(1).min(last);
+        let i = self
+            .xs
+            .partition_point(|p| p <= &x)
+            .saturating_sub(1)
+            .min(last);
         let slope = (self.ys[i + 1].clone() - self.ys[i].clone())
             / (self.xs[i + 1].clone() - self.xs[i].clone());
         self.ys[i].clone() + slope * (x - self.xs[i].clone())
@@ -222,9 +232,9 @@ pub fn blending_matrix<T: Scalar>(params: &[T]) -> Result<DMatrix<T>> {
 ///
 /// The parameters need not increase: with `(0, ½, ¼, 1)` ("what happens if the sequence is not
 /// monotone?") the curve still passes through every point, but at the parameters given, so it
-/// visits them in the order `x_1, x_3, x_2, x_4` — it runs past `x_2`, turns back to `x_3`…
-/// and forms a loop or a cusp-like turn instead of following the polygon (a test shows it on
-/// collinear points, where the curve leaves the segment between the end points).
+/// visits them in the order `x_1, x_3, x_2, x_4` instead of following the polygon. On the
+/// evenly spaced collinear points 0, 1, 2, 3 it runs along the line to 2, back to 1, further
+/// back to ¼ (at `u = ¾`) and then out to 3 (checked exactly in the tests).
 ///
 /// ```
 /// use cagd::interpolation::ParametricInterpolant;

@@ -78,7 +78,13 @@ pub fn solve_tridiagonal<T: Scalar>(
         return Err(Error::ShapeMismatch {
             what: "tridiagonal system",
             expected: format!("{n} entries in every band and right-hand side"),
-            found: format!("{}, {}, {}, {}", sub.len(), diag.len(), sup.len(), rhs.len()),
+            found: format!(
+                "{}, {}, {}, {}",
+                sub.len(),
+                diag.len(),
+                sup.len(),
+                rhs.len()
+            ),
         });
     }
     let mut c = vec![T::zero(); n];
@@ -87,7 +93,10 @@ pub fn solve_tridiagonal<T: Scalar>(
         let (pivot, prev) = if k == 0 {
             (diag[0].clone(), None)
         } else {
-            (diag[k].clone() - sub[k].clone() * c[k - 1].clone(), Some(&d[k - 1]))
+            (
+                diag[k].clone() - sub[k].clone() * c[k - 1].clone(),
+                Some(&d[k - 1]),
+            )
         };
         if pivot.is_zero() {
             return Err(Error::Singular {
@@ -157,8 +166,7 @@ pub fn solve_cyclic_tridiagonal<T: Scalar>(
     let fact: Vec<T> = (0..dim)
         .map(|r| (x[0][r].clone() + ratio.clone() * x[n - 1][r].clone()) / denom.clone())
         .collect();
-    Ok(x
-        .iter()
+    Ok(x.iter()
         .zip(&z)
         .map(|(xk, zk)| {
             DVector::from_fn(dim, |r, _| xk[r].clone() - fact[r].clone() * zk[0].clone())
@@ -222,7 +230,11 @@ impl<T: Scalar> CubicSpline<T> {
         let m = points.ncols();
         let min = if closed { 3 } else { 2 };
         if m < min {
-            return Err(Error::TooFewPoints { what, min, found: m });
+            return Err(Error::TooFewPoints {
+                what,
+                min,
+                found: m,
+            });
         }
         let d = points.nrows();
         if d == 0 {
@@ -276,7 +288,12 @@ impl<T: Scalar> CubicSpline<T> {
             let rhs = DVector::from_fn(d, |r, _| {
                 three.clone() * (hn.clone() * dp[r].clone() + hp.clone() * dn[r].clone())
             });
-            (hn.clone(), two.clone() * (hp.clone() + hn.clone()), hp.clone(), rhs)
+            (
+                hn.clone(),
+                two.clone() * (hp.clone() + hn.clone()),
+                hp.clone(),
+                rhs,
+            )
         };
         let mut sub = Vec::with_capacity(m);
         let mut diag = Vec::with_capacity(m);
@@ -364,7 +381,10 @@ impl<T: Scalar> CubicSpline<T> {
         if k >= self.segment_count() {
             return Err(Error::InvalidArgument {
                 what: "spline segment",
-                message: format!("index {k}, but the spline has {} segments", self.segment_count()),
+                message: format!(
+                    "index {k}, but the spline has {} segments",
+                    self.segment_count()
+                ),
             });
         }
         let m = self.points.ncols();
@@ -406,11 +426,13 @@ impl<T: Scalar> CubicSpline<T> {
             let y = self.points[(r, k)].clone();
             let (m0, m1) = (self.tangents[(r, k)].clone(), self.tangents[(r, j)].clone());
             let delta = (self.points[(r, j)].clone() - y.clone()) / h.clone();
-            let c2 = (three.clone() * delta.clone() - two.clone() * m0.clone() - m1.clone())
-                / h.clone();
+            let c2 =
+                (three.clone() * delta.clone() - two.clone() * m0.clone() - m1.clone()) / h.clone();
             let c3 = (m0.clone() + m1 - two.clone() * delta) / (h.clone() * h.clone());
-            out[0][r] = y + s.clone() * (m0.clone() + s.clone() * (c2.clone() + s.clone() * c3.clone()));
-            out[1][r] = m0 + s.clone() * (two.clone() * c2.clone() + three.clone() * s.clone() * c3.clone());
+            out[0][r] =
+                y + s.clone() * (m0.clone() + s.clone() * (c2.clone() + s.clone() * c3.clone()));
+            out[1][r] = m0
+                + s.clone() * (two.clone() * c2.clone() + three.clone() * s.clone() * c3.clone());
             out[2][r] = two.clone() * c2 + T::from_usize(6) * s.clone() * c3;
         }
         out

@@ -20,7 +20,6 @@ use common::{array, assert_close, expected, matrix, report_worst, row};
 use nalgebra::{DMatrix, DVector};
 use ndarray::{Array2, Array3, Axis};
 
-
 /// `assert_close` for arrays of any dimension given by reference.
 fn close<D: ndarray::Dimension>(
     name: &str,
@@ -76,13 +75,25 @@ fn bspline_curves_match_octave_nurbs() {
         let u = row(&ws, &format!("u_{key}"));
         let curve = BSplineCurve::new(p, knots.clone(), c.clone()).unwrap();
         let ours = curve.eval_many(&u).unwrap();
-        close(&format!("P_{key}"), &nd(&ours), &matrix(&ws, &format!("P_{key}")));
+        close(
+            &format!("P_{key}"),
+            &nd(&ours),
+            &matrix(&ws, &format!("P_{key}")),
+        );
         let by_de_boor = DMatrix::from_fn(ours.nrows(), u.len(), |r, k| {
             curve.de_boor(u[k]).unwrap()[r]
         });
-        close(&format!("P_{key} (de Boor)"), &nd(&by_de_boor), &matrix(&ws, &format!("P_{key}")));
+        close(
+            &format!("P_{key} (de Boor)"),
+            &nd(&by_de_boor),
+            &matrix(&ws, &format!("P_{key}")),
+        );
         let d = curve.derivative().unwrap().eval_many(&u).unwrap();
-        close(&format!("dP_{key}"), &nd(&d), &matrix(&ws, &format!("dP_{key}")));
+        close(
+            &format!("dP_{key}"),
+            &nd(&d),
+            &matrix(&ws, &format!("dP_{key}")),
+        );
         // Spans (0-based in both) and the non-zero basis functions.
         let spans = row(&ws, &format!("S_{key}"));
         let b = matrix(&ws, &format!("B_{key}"));
@@ -99,8 +110,16 @@ fn bspline_curves_match_octave_nurbs() {
         // Knot insertion.
         let ins = row(&ws, &format!("ins_{key}"));
         let refined = curve.insert_knots(&ins).unwrap();
-        close(&format!("IC_{key}"), &nd(refined.control()), &matrix(&ws, &format!("IC_{key}")));
-        assert_eq!(refined.knots().as_slice(), row(&ws, &format!("IK_{key}")).as_slice(), "IK_{key}");
+        close(
+            &format!("IC_{key}"),
+            &nd(refined.control()),
+            &matrix(&ws, &format!("IC_{key}")),
+        );
+        assert_eq!(
+            refined.knots().as_slice(),
+            row(&ws, &format!("IK_{key}")).as_slice(),
+            "IK_{key}"
+        );
     }
     report_worst("bspline curves");
 }
@@ -124,8 +143,15 @@ fn bspline_surfaces_match_octave_nurbs() {
             coords,
         )
         .unwrap();
-        let grid = s.eval_grid(&row(&ws, &format!("gu_{key}")), &row(&ws, &format!("gv_{key}")));
-        close(&format!("S_{key}"), &grid, &octave_grid(&ws, &format!("S_{key}")));
+        let grid = s.eval_grid(
+            &row(&ws, &format!("gu_{key}")),
+            &row(&ws, &format!("gv_{key}")),
+        );
+        close(
+            &format!("S_{key}"),
+            &grid,
+            &octave_grid(&ws, &format!("S_{key}")),
+        );
     }
     report_worst("bspline surfaces");
 }
@@ -140,9 +166,17 @@ fn nurbs_curves_match_octave_nurbs() {
         let c = NurbsCurve::from_homogeneous(BSplineCurve::new(p, knots, h).unwrap()).unwrap();
         let u = row(&ws, &format!("u_{key}"));
         let pts = DMatrix::from_fn(3, u.len(), |r, k| c.try_eval(u[k]).unwrap()[r]);
-        close(&format!("P_{key}"), &nd(&pts), &matrix(&ws, &format!("P_{key}")));
+        close(
+            &format!("P_{key}"),
+            &nd(&pts),
+            &matrix(&ws, &format!("P_{key}")),
+        );
         let tan = DMatrix::from_fn(3, u.len(), |r, k| c.try_eval_derivative(u[k]).unwrap()[r]);
-        close(&format!("T_{key}"), &nd(&tan), &matrix(&ws, &format!("T_{key}")));
+        close(
+            &format!("T_{key}"),
+            &nd(&tan),
+            &matrix(&ws, &format!("T_{key}")),
+        );
         let ins = row(&ws, &format!("ins_{key}"));
         let refined = c.insert_knots(&ins).unwrap();
         close(
@@ -161,7 +195,11 @@ fn circles_match_nrbcirc() {
     for k in 1..=6 {
         let a = row(&ws, &format!("circ_{k}_args"));
         let c = NurbsCurve::arc(a[0], &a[1..4], a[4], a[5]).unwrap();
-        assert_eq!(c.knots(), row(&ws, &format!("circ_{k}_knots")).as_slice(), "circle {k}");
+        assert_eq!(
+            c.knots(),
+            row(&ws, &format!("circ_{k}_knots")).as_slice(),
+            "circle {k}"
+        );
         close(
             &format!("circ_{k}_H"),
             &nd(c.homogeneous().control()),
@@ -169,11 +207,18 @@ fn circles_match_nrbcirc() {
         );
         let u = row(&ws, &format!("circ_{k}_u"));
         let pts = DMatrix::from_fn(3, u.len(), |r, j| c.try_eval(u[j]).unwrap()[r]);
-        close(&format!("circ_{k}_P"), &nd(&pts), &matrix(&ws, &format!("circ_{k}_P")));
+        close(
+            &format!("circ_{k}_P"),
+            &nd(&pts),
+            &matrix(&ws, &format!("circ_{k}_P")),
+        );
         for j in 0..u.len() {
             let x = pts.column(j);
             let r = ((x[0] - a[1]).powi(2) + (x[1] - a[2]).powi(2)).sqrt();
-            assert!((r - a[0]).abs() <= 4.0 * f64::EPSILON * a[0].max(1.0) * 4.0, "circle {k}: radius {r}");
+            assert!(
+                (r - a[0]).abs() <= 4.0 * f64::EPSILON * a[0].max(1.0) * 4.0,
+                "circle {k}: radius {r}"
+            );
         }
     }
     report_worst("circles");
@@ -187,7 +232,8 @@ fn nurbs_surface_and_ruled_surface_match_octave_nurbs() {
     let coords = coordinate_slices(&ws, "srf_H");
     let (nu, nv) = coords[0].shape();
     let (p, q) = (ku.len() - nu - 1, kv.len() - nv - 1);
-    let s = NurbsSurface::from_homogeneous(BSplineSurface::new(p, q, ku, kv, coords).unwrap()).unwrap();
+    let s =
+        NurbsSurface::from_homogeneous(BSplineSurface::new(p, q, ku, kv, coords).unwrap()).unwrap();
     let grid = s.eval_grid(&row(&ws, "srf_gu"), &row(&ws, "srf_gv"));
     close("srf_S", &grid, &octave_grid(&ws, "srf_S"));
 
@@ -197,7 +243,8 @@ fn nurbs_surface_and_ruled_surface_match_octave_nurbs() {
         let p = k.len() - h.ncols() - 1;
         NurbsCurve::from_homogeneous(BSplineCurve::new(p, k, h).unwrap()).unwrap()
     };
-    let ruled = NurbsSurface::ruled(&curve("rul_H1", "rul_k1"), &curve("rul_H2", "rul_k2")).unwrap();
+    let ruled =
+        NurbsSurface::ruled(&curve("rul_H1", "rul_k1"), &curve("rul_H2", "rul_k2")).unwrap();
     let grid = ruled.eval_grid(&row(&ws, "rul_gu"), &row(&ws, "rul_gv"));
     close("rul_S", &grid, &octave_grid(&ws, "rul_S"));
     report_worst("nurbs surfaces");
@@ -216,12 +263,21 @@ fn splines_match_octave_spline_and_csape() {
         } else if key.starts_with("natural") {
             EndCondition::Natural
         } else {
-            let v = |n: &str| DVector::from_column_slice(matrix(&ws, &format!("{n}_{key}")).as_slice().unwrap());
-            EndCondition::Clamped { start: v("s0"), end: v("sn") }
+            let v = |n: &str| {
+                DVector::from_column_slice(matrix(&ws, &format!("{n}_{key}")).as_slice().unwrap())
+            };
+            EndCondition::Clamped {
+                start: v("s0"),
+                end: v("sn"),
+            }
         };
         let s = CubicSpline::interpolate_with_params(y, t, end).unwrap();
         let e = row(&ws, &format!("e_{key}"));
-        close(&format!("V_{key}"), &nd(&s.eval_many(&e)), &matrix(&ws, &format!("V_{key}")));
+        close(
+            &format!("V_{key}"),
+            &nd(&s.eval_many(&e)),
+            &matrix(&ws, &format!("V_{key}")),
+        );
     }
     report_worst("splines");
 }
@@ -233,7 +289,11 @@ fn hermite_cubics_match_two_point_complete_splines() {
     for k in 1..=4 {
         let c = HermiteCubic::from_geometry(dm(&matrix(&ws, &format!("G_{k}")))).unwrap();
         let ours = DMatrix::from_fn(c.dim(), u.len(), |r, j| c.eval(u[j])[r]);
-        close(&format!("V_{k}"), &nd(&ours), &matrix(&ws, &format!("V_{k}")));
+        close(
+            &format!("V_{k}"),
+            &nd(&ours),
+            &matrix(&ws, &format!("V_{k}")),
+        );
     }
     report_worst("hermite");
 }
@@ -257,7 +317,10 @@ fn lagrange_and_linear_interpolation_match_polyfit_and_interp1() {
         let oc = row(&ws, &format!("c_{key}"));
         let scale_c = oc.iter().fold(0.0f64, |m, v| m.max(v.abs()));
         for (a, b) in c.iter().zip(&oc) {
-            assert!((a - b).abs() <= 1e-10 * scale_c, "c_{key}: ours {a}, Octave {b}");
+            assert!(
+                (a - b).abs() <= 1e-10 * scale_c,
+                "c_{key}: ours {a}, Octave {b}"
+            );
         }
         let ol = row(&ws, &format!("L_{key}"));
         let scale_l = ol.iter().fold(0.0f64, |m, v| m.max(v.abs()));
@@ -269,10 +332,19 @@ fn lagrange_and_linear_interpolation_match_polyfit_and_interp1() {
         };
         for (k, ek) in e.iter().enumerate() {
             let ours = f.eval(*ek);
-            assert!((ours - ol[k]).abs() <= 1e-10 * scale_l, "L_{key}({k}): ours {ours}, Octave {}", ol[k]);
+            assert!(
+                (ours - ol[k]).abs() <= 1e-10 * scale_l,
+                "L_{key}({k}): ours {ours}, Octave {}",
+                ol[k]
+            );
             use cagd::Scalar;
-            let ex = exact.eval(<num_rational::BigRational as Scalar>::from_f64(*ek).unwrap()).to_f64();
-            assert!((ours - ex).abs() <= 1e-14 * scale_l, "L_{key}({k}): ours {ours}, exact {ex}");
+            let ex = exact
+                .eval(<num_rational::BigRational as Scalar>::from_f64(*ek).unwrap())
+                .to_f64();
+            assert!(
+                (ours - ex).abs() <= 1e-14 * scale_l,
+                "L_{key}({k}): ours {ours}, exact {ex}"
+            );
         }
         // interp1 sorts the nodes; PiecewiseLinear wants them increasing.
         let mut xy: Vec<(f64, f64)> = x.into_iter().zip(y).collect();

@@ -107,13 +107,16 @@ pub fn cox_de_boor<T: Scalar>(i: usize, p: usize, knots: &[T], u: &T) -> T {
         let inside = a <= u && u < b;
         // Close the last non-empty span at the right end of the whole knot vector.
         let at_end = u == b && a < b && knots[i + 1..].iter().all(|k| k == b) && *b == knots[last];
-        return if inside || at_end { T::one() } else { T::zero() };
+        return if inside || at_end {
+            T::one()
+        } else {
+            T::zero()
+        };
     }
     let mut value = T::zero();
     let d1 = knots[i + p].clone() - knots[i].clone();
     if !d1.is_zero() {
-        value = value
-            + (u.clone() - knots[i].clone()) / d1 * cox_de_boor(i, p - 1, knots, u);
+        value = value + (u.clone() - knots[i].clone()) / d1 * cox_de_boor(i, p - 1, knots, u);
     }
     let d2 = knots[i + p + 1].clone() - knots[i + 1].clone();
     if !d2.is_zero() {

@@ -108,7 +108,9 @@ impl<T: Scalar> BSplineCurve<T> {
                 .chain(0..n)
                 .chain([n - 1, n - 1])
                 .collect();
-            DMatrix::from_fn(points.nrows(), idx.len(), |r, c| points[(r, idx[c])].clone())
+            DMatrix::from_fn(points.nrows(), idx.len(), |r, c| {
+                points[(r, idx[c])].clone()
+            })
         } else {
             points.clone()
         };
@@ -236,8 +238,8 @@ impl<T: Scalar> BSplineCurve<T> {
             }
             let tmp = pt.clone() / h;
             for r in 0..self.dim() {
-                q[(r, i)] = tmp.clone()
-                    * (self.control[(r, i + 1)].clone() - self.control[(r, i)].clone());
+                q[(r, i)] =
+                    tmp.clone() * (self.control[(r, i + 1)].clone() - self.control[(r, i)].clone());
             }
         }
         Ok(BSplineCurve {
@@ -368,7 +370,9 @@ pub(crate) fn combine<T: Scalar>(control: &DMatrix<T>, first: usize, n: &[T]) ->
 
 /// `a · x + b · y`, coordinate-wise.
 pub(crate) fn blend<T: Scalar>(x: &DVector<T>, a: T, y: &DVector<T>, b: T) -> DVector<T> {
-    DVector::from_fn(x.len(), |r, _| a.clone() * x[r].clone() + b.clone() * y[r].clone())
+    DVector::from_fn(x.len(), |r, _| {
+        a.clone() * x[r].clone() + b.clone() * y[r].clone()
+    })
 }
 
 /// Clamps `u` to `[lo, hi]` (NaN stays NaN).

@@ -112,7 +112,9 @@ impl<T: Scalar> KnotVector<T> {
         let m = self.knots.len();
         m >= 2 * (p + 1)
             && self.knots[..=p].iter().all(|k| *k == self.knots[0])
-            && self.knots[m - p - 1..].iter().all(|k| *k == self.knots[m - 1])
+            && self.knots[m - p - 1..]
+                .iter()
+                .all(|k| *k == self.knots[m - 1])
     }
 
     /// The domain `[u_p, u_n]` of a degree-`p` spline with `n` control points (`n + p + 1`

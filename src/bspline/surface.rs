@@ -64,7 +64,10 @@ impl<T: Scalar> BSplineSurface<T> {
             if c.shape() != shape {
                 return Err(Error::ShapeMismatch {
                     what,
-                    expected: format!("{}×{} in every coordinate (as coordinate 0)", shape.0, shape.1),
+                    expected: format!(
+                        "{}×{} in every coordinate (as coordinate 0)",
+                        shape.0, shape.1
+                    ),
                     found: format!("{}×{} in coordinate {k}", c.nrows(), c.ncols()),
                 });
             }

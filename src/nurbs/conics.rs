@@ -56,6 +56,13 @@ impl ConicKind {
 /// # Ok::<(), cagd::Error>(())
 /// ```
 pub fn conic_arc<T: Scalar>(points: DMatrix<T>, w: T) -> Result<NurbsCurve<T>> {
-    let knots = vec![T::zero(), T::zero(), T::zero(), T::one(), T::one(), T::one()];
+    let knots = vec![
+        T::zero(),
+        T::zero(),
+        T::zero(),
+        T::one(),
+        T::one(),
+        T::one(),
+    ];
     NurbsCurve::new(2, knots, points, vec![T::one(), w, T::one()])
 }

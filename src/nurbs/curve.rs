@@ -141,7 +141,11 @@ impl<T: Scalar> NurbsCurve<T> {
     pub fn basis(&self, u: &T) -> Result<Vec<T>> {
         let n = self.homogeneous.basis(u)?;
         let w = self.weights();
-        let wn: Vec<T> = n.iter().zip(&w).map(|(a, b)| a.clone() * b.clone()).collect();
+        let wn: Vec<T> = n
+            .iter()
+            .zip(&w)
+            .map(|(a, b)| a.clone() * b.clone())
+            .collect();
         let sum = wn.iter().fold(T::zero(), |s, x| s + x.clone());
         Ok(wn.into_iter().map(|x| x / sum.clone()).collect())
     }
@@ -217,9 +221,15 @@ impl NurbsCurve<f64> {
         } else if sweep.abs() <= PI {
             (2, vec![0., 0., 0., 0.5, 0.5, 1., 1., 1.])
         } else if sweep.abs() <= 3.0 * PI / 2.0 {
-            (3, vec![0., 0., 0., 1. / 3., 1. / 3., 2. / 3., 2. / 3., 1., 1., 1.])
+            (
+                3,
+                vec![0., 0., 0., 1. / 3., 1. / 3., 2. / 3., 2. / 3., 1., 1., 1.],
+            )
         } else {
-            (4, vec![0., 0., 0., 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1., 1., 1.])
+            (
+                4,
+                vec![0., 0., 0., 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1., 1., 1.],
+            )
         };
         let dsweep = sweep / (2.0 * narcs as f64);
         let wm = dsweep.cos();
