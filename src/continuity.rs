@@ -90,7 +90,7 @@ pub fn joint<T: Scalar>(
             }
         }
     }
-    let g1 = c0 && parallel && dot.is_positive();
+    let g1 = c0 && parallel && dot > T::zero();
     Ok(Joint { c0, c1, g1 })
 }
 

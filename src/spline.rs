@@ -422,6 +422,7 @@ impl<T: Scalar> CubicSpline<T> {
             DVector::from_element(d, T::zero()),
             DVector::from_element(d, T::zero()),
         ];
+        #[allow(clippy::needless_range_loop)] // r indexes three outputs and two matrices
         for r in 0..d {
             let y = self.points[(r, k)].clone();
             let (m0, m1) = (self.tangents[(r, k)].clone(), self.tangents[(r, j)].clone());

@@ -288,7 +288,7 @@ fn seed_004_bezier_hermite_equivalence() {
         assert_eq!(h.geometry().column(2).into_owned(), qv(&[3, 6]));
         assert_eq!(
             h.geometry().column(3).into_owned(),
-            qv(&[3, 3 * (3 - x2[1] as i64)])
+            qv(&[3, 3 * (3 - x2[1])])
         );
         for k in 0..=8 {
             let u = q(k, 8);

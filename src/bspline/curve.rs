@@ -312,8 +312,8 @@ impl<T: Scalar> BSplineCurve<T> {
         let b = find_span(d, nc, k, &u[r])? + 1;
         let mut ic: Vec<DVector<T>> = vec![DVector::from_element(c.nrows(), T::zero()); nc + nu];
         let mut ik = vec![T::zero(); k.len() + nu];
-        for j in 0..=a - d {
-            ic[j] = c.column(j).into_owned();
+        for (j, slot) in ic.iter_mut().enumerate().take(a - d + 1) {
+            *slot = c.column(j).into_owned();
         }
         for j in b - 1..=n {
             ic[j + r + 1] = c.column(j).into_owned();

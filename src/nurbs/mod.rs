@@ -6,7 +6,7 @@
 //! control points are the homogeneous points `(w_k P_k, w_k)` (seed 001, last paragraph of
 //! §1.3). That is how [`NurbsCurve`] and [`NurbsSurface`] are stored and evaluated, as in
 //! octave-nurbs (`nrbmak` takes exactly these homogeneous `coefs`). B-splines (all weights 1)
-//! and Bézier curves are special cases; conic sections are exact ([`conics`]).
+//! and Bézier curves are special cases; conic sections are exact ([`conic_arc`]).
 
 mod conics;
 mod curve;
@@ -59,7 +59,7 @@ pub(crate) fn check_weights<'a, T: Scalar>(
                 value: w.to_f64(),
             });
         }
-        if !w.is_positive() {
+        if w.partial_cmp(&T::zero()) != Some(std::cmp::Ordering::Greater) {
             return Err(Error::NonPositiveWeight {
                 what,
                 index,
