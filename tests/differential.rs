@@ -166,7 +166,11 @@ fn tenzor_case(rng: &mut Rng) -> Case {
 fn linspace_case(rng: &mut Rng) -> Case {
     let s = rng.scale();
     let a = rng.range(-s, s);
-    let b = if rng.chance(0.1) { -a } else { rng.range(-s, s) };
+    let b = if rng.chance(0.1) {
+        -a
+    } else {
+        rng.range(-s, s)
+    };
     let n = rng.int(0, 120);
     let y = compat::linspace(a, b, n).expect("linspace");
     Case {

@@ -198,7 +198,10 @@ fn bilinearna_bug_script_nets_give_the_patch() {
             array![[1., 2., 3., 4., 5., 6., 7., 8., 9.]],
             [2.5, 3.5, 4.5],
         ),
-        (array![[1., 2., 3.], [4., 5., 6.], [7., 8., 9.]], [4.0, 5.0, 6.0]),
+        (
+            array![[1., 2., 3.], [4., 5., 6.], [7., 8., 9.]],
+            [4.0, 5.0, 6.0],
+        ),
     ];
     for (net, want) in cases {
         let l = compat::bilinearna(net.view(), 0.5, 0.25, 5).unwrap();
@@ -247,7 +250,10 @@ fn tenzor_rejects_partial_points() {
 fn linspace_twin_matches_octave_bit_for_bit() {
     let ws = expected("linspace_samples");
     let mut compared = 0;
-    for name in ws.names().filter(|n| n.starts_with("lin_") && n.ends_with("_a")) {
+    for name in ws
+        .names()
+        .filter(|n| n.starts_with("lin_") && n.ends_with("_a"))
+    {
         let key = &name[4..name.len() - 2];
         let a = ws.scalar(name).unwrap();
         let b = ws.scalar(&format!("lin_{key}_b")).unwrap();
@@ -375,7 +381,12 @@ fn snapshots() -> Vec<(&'static str, &'static str, Vec<Shown>)> {
             "T = de_casteljau(P, 5): thesis Primer 2.4 (appendix A, Algoritem 1); the columns \
              of T are the curve at t = linspace(0,1,5)",
             vec![
-                shown("P", p.clone().into_dyn(), "compat_snapshots", "snap_P_primer_2_4"),
+                shown(
+                    "P",
+                    p.clone().into_dyn(),
+                    "compat_snapshots",
+                    "snap_P_primer_2_4",
+                ),
                 shown(
                     "t",
                     compat::linspace(0.0, 1.0, 5).unwrap().into_dyn(),
@@ -583,7 +594,9 @@ fn display_reads_back_exactly() {
         123456789012345680.0,
         f64::MAX,
     ];
-    let a = Array2::from_shape_vec((2, 5), values.to_vec()).unwrap().into_dyn();
+    let a = Array2::from_shape_vec((2, 5), values.to_vec())
+        .unwrap()
+        .into_dyn();
     let text = show("x", &a.view());
     let back = parse_display(&text);
     for (x, y) in back["x"].iter().zip(a.iter()) {
