@@ -31,6 +31,23 @@ fn linspace_keys(ws: &cagd::octave::Workspace) -> Vec<String> {
         .collect()
 }
 
+/// Every file Octave wrote under `octave_ref/expected/` reads without error.
+#[test]
+fn every_reference_file_reads() {
+    let dir = common::octave_ref_dir().join("expected");
+    let mut files: Vec<_> = std::fs::read_dir(&dir)
+        .expect("octave_ref/expected")
+        .map(|e| e.expect("directory entry").path())
+        .filter(|p| p.extension().is_some_and(|e| e == "txt"))
+        .collect();
+    files.sort();
+    assert!(files.len() >= 4, "reference files in {}", dir.display());
+    for f in &files {
+        let ws = cagd::octave::read_text_file(f).unwrap_or_else(|e| panic!("{}: {e}", f.display()));
+        assert!(!ws.is_empty(), "{}: no variables", f.display());
+    }
+}
+
 #[test]
 fn linspace_matches_octave_bit_for_bit() {
     let ws = expected("linspace_samples");

@@ -26,7 +26,7 @@ B1 = tenzor(B);
 for k=1:min(m,n)
     for i = 1:(m-k+1)
         for j = 1:(n-k+1)
-            T(i,j,:) = (1-u)*(1-v)*B1(i,j,:)+u*(1-v)*B1(i+1,j,:)+(1-u)*v*B1(i,j+1,:)+u*v*B1(i+1,j+1,:);
+            T(i,j,:) = (1-u)*(1-v)*B1(i,j,:) + u*(1-v)*B1(i+1,j,:) + (1-u)*v*B1(i,j+1,:) + u*v*B1(i+1,j+1,:);
         end;
     end;
     B1=T;

@@ -10,7 +10,8 @@
 %   line 2: "\mathbf{2} \ \mathrm{T} = \mathrm{zeros}(\mathrm{N},\mathrm{N},3);" read as
 %           "T = zeros(N,N,3);"
 %   line 3: the line number "3" was OCR'd as "s"; dropped.
-%   line 9: every "^*" (LaTeX superscript debris) read as "*", and "\ = \ " as " = ".
+%   line 9: every "^*" (LaTeX superscript debris) read as "*", and "\ = \ " as " = "; the
+%           spaces around "+" are kept as OCR'd.
 % Everything else is exactly as printed.
 function L = bilinearna(B,u,v,N)
 T = zeros(N,N,3);
@@ -20,7 +21,7 @@ B1 = tenzor(B);
 for k=1:m
     for i = 1:(m-k+1)
         for j = 1:(n-k+1)
-            T(i,j,:) = (1-u)*(1-v)*B1(i,j,:)+u*(1-v)*B1(i+1,j,:)+(1-u)*v*B1(i,j+1,:)+u*v*B1(i+1,j+1,:);
+            T(i,j,:) = (1-u)*(1-v)*B1(i,j,:) + u*(1-v)*B1(i+1,j,:) + (1-u)*v*B1(i,j+1,:) + u*v*B1(i+1,j+1,:);
         end;
     end;
     B1=T;
