@@ -1,9 +1,13 @@
 //! The Octave-compatible layer.
 //!
+//! - [`compat`]: the thesis functions under their own names (`de_casteljau`, `ploskev_b`,
+//!   `bilinearna`, `tenzor`, `linspace`, …), taking and returning `ndarray` arrays in the thesis
+//!   layouts, each a thin layer over the native API;
 //! - [`text_format`]: GNU Octave's `save -text` file format (reader and writer) and the plain
 //!   numeric text of `save -ascii` / `dlmwrite`; every reference number of the crate's tests is
 //!   read through it.
 
+pub mod compat;
 pub mod text_format;
 
 pub use text_format::{

@@ -1,0 +1,7 @@
+% plot3.m -- stand-in for Octave's plot3 while the bug scripts run the original thesis code: it draws
+% nothing and records the call (name and arguments) in the global cell CAGD_PLOTS, so that a
+% script can print the data the original would have drawn.  Used only by octave_ref/bugs/.
+function plot3(varargin)
+    global CAGD_PLOTS;
+    CAGD_PLOTS{end+1} = [{'plot3'}, varargin];
+end
