@@ -1,1 +1,4 @@
 //! The Octave-compatible layer.
+
+pub mod literal;
+pub mod script;
