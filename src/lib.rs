@@ -16,10 +16,12 @@
 
 pub mod bernstein;
 pub mod bezier;
+pub mod cli;
 pub mod error;
 pub mod linspace;
 pub mod octave;
 pub mod param;
+pub mod plot;
 pub mod scalar;
 
 pub use error::{Error, Result};

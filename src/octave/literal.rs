@@ -743,6 +743,54 @@ pub fn parse_params<T: LiteralScalar>(text: &str) -> Result<Vec<T>, LiteralError
     vector_of(m, e.at)
 }
 
+/// Parses one plain decimal number (optional sign, digits with an optional point, optional
+/// exponent `e`/`E`/`d`/`D`), as numeric text files hold them. `None` for anything else,
+/// including `Inf` and `NaN`, and for numbers out of range (more than 400 characters, an
+/// exponent beyond ±10000, or not finite in `T`).
+///
+/// ```
+/// use cagd::octave::literal::parse_number;
+/// assert_eq!(parse_number::<f64>("-1.5e+00"), Some(-1.5));
+/// assert_eq!(parse_number::<f64>("Inf"), None);
+/// assert_eq!(parse_number::<f64>("1e999"), None);
+/// ```
+pub fn parse_number<T: LiteralScalar>(text: &str) -> Option<T> {
+    if text.is_empty() || text.len() > 400 {
+        return None;
+    }
+    let body = text.strip_prefix(['+', '-']).unwrap_or(text);
+    let (mantissa, exponent) = match body.find(['e', 'E', 'd', 'D']) {
+        Some(k) => (&body[..k], Some(&body[k + 1..])),
+        None => (body, None),
+    };
+    let mut digits = 0;
+    let mut points = 0;
+    for c in mantissa.chars() {
+        match c {
+            '0'..='9' => digits += 1,
+            '.' => points += 1,
+            _ => return None,
+        }
+    }
+    if digits == 0 || points > 1 {
+        return None;
+    }
+    let mut normalized = format!("{}{mantissa}", &text[..text.len() - body.len()]);
+    if let Some(e) = exponent {
+        let unsigned = e.strip_prefix(['+', '-']).unwrap_or(e);
+        if unsigned.is_empty() || !unsigned.bytes().all(|b| b.is_ascii_digit()) {
+            return None;
+        }
+        if unsigned.len() > 6 || unsigned.parse::<u32>().ok()? > 10_000 {
+            return None;
+        }
+        normalized.push('e');
+        normalized.push_str(e);
+    }
+    let nearest = normalized.parse::<f64>().ok()?;
+    T::from_literal(&normalized, nearest)
+}
+
 /// The elements of a row or column vector (or scalar), in order.
 pub(crate) fn vector_of<T: LiteralScalar>(
     m: DMatrix<T>,

@@ -1,0 +1,112 @@
+//! The one error type of the command line, and how each error reads and exits.
+
+use crate::octave::literal::LiteralError;
+
+/// What kind of thing went wrong, with the typed error underneath where there is one.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum ErrorKind {
+    /// A literal, expression or data script did not parse or evaluate.
+    Literal(LiteralError),
+    /// A file could not be read or written (the I/O error kind).
+    Io(std::io::ErrorKind),
+    /// A numeric text file is malformed (ragged rows, a token that is not a number).
+    Data,
+    /// Inputs of the wrong shape or size for the command (e.g. `--n 1` for a grid).
+    Shape,
+    /// A construction of the library refused its input.
+    Library(crate::Error),
+    /// Command-line usage: an unknown option, a missing or conflicting argument.
+    Usage,
+    /// A valid request this build cannot serve yet.
+    Unsupported,
+    /// A picture could not be drawn.
+    Plot,
+    /// A fault of the program itself (exit code 1).
+    Internal,
+}
+
+/// A command-line error: which argument, what was wrong, and the form that was expected.
+///
+/// It reads as one line, `<argument>: <problem>; expected <form>`, which the binary prints as
+/// `cagd: error: …` on standard error before exiting with [`CliError::exit_code`] (2 for
+/// every input error, 1 for internal faults).
+///
+/// ```
+/// use cagd::cli::{CliError, ErrorKind};
+/// let e = CliError::new("--n", "N = 1 is too small", "an integer N ≥ 2", ErrorKind::Shape);
+/// assert_eq!(e.to_string(), "--n: N = 1 is too small; expected an integer N ≥ 2");
+/// assert_eq!(e.exit_code(), 2);
+/// ```
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{argument}: {problem}; expected {expected}")]
+pub struct CliError {
+    /// The argument (option name, positional name, or file) the error is about.
+    pub argument: String,
+    /// What was wrong.
+    pub problem: String,
+    /// The form that would have been accepted.
+    pub expected: String,
+    /// The kind, with the underlying typed error.
+    pub kind: ErrorKind,
+}
+
+impl CliError {
+    /// An error about `argument`.
+    pub fn new(
+        argument: impl Into<String>,
+        problem: impl Into<String>,
+        expected: impl Into<String>,
+        kind: ErrorKind,
+    ) -> Self {
+        CliError {
+            argument: argument.into(),
+            problem: one_line(&problem.into()),
+            expected: one_line(&expected.into()),
+            kind,
+        }
+    }
+
+    /// A literal or script error about `argument`.
+    pub fn literal(argument: impl Into<String>, error: LiteralError, expected: &str) -> Self {
+        Self::new(
+            argument,
+            error.to_string(),
+            expected,
+            ErrorKind::Literal(error),
+        )
+    }
+
+    /// An I/O error about `argument` (usually a file name).
+    pub fn io(argument: impl Into<String>, error: &std::io::Error, expected: &str) -> Self {
+        let problem = match error.kind() {
+            std::io::ErrorKind::NotFound => "no such file or directory".to_string(),
+            std::io::ErrorKind::PermissionDenied => "permission denied".to_string(),
+            _ => error.to_string(),
+        };
+        Self::new(argument, problem, expected, ErrorKind::Io(error.kind()))
+    }
+
+    /// A library error about `argument`.
+    pub fn library(argument: impl Into<String>, error: crate::Error, expected: &str) -> Self {
+        Self::new(
+            argument,
+            error.to_string(),
+            expected,
+            ErrorKind::Library(error),
+        )
+    }
+
+    /// The process exit code: 1 for [`ErrorKind::Internal`], 2 for everything else.
+    pub fn exit_code(&self) -> i32 {
+        match self.kind {
+            ErrorKind::Internal => 1,
+            _ => 2,
+        }
+    }
+}
+
+/// Collapses line breaks so that every message stays on one line.
+fn one_line(s: &str) -> String {
+    s.split_whitespace().collect::<Vec<_>>().join(" ")
+}
