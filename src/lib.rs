@@ -19,6 +19,7 @@ pub mod bezier;
 pub mod cli;
 pub mod error;
 pub mod linspace;
+pub mod mesh;
 pub mod octave;
 pub mod param;
 pub mod plot;

@@ -70,7 +70,7 @@ pub struct CurveParamArgs {
     )]
     pub t: Option<String>,
     /// Sample at linspace(0,1,N), like the thesis's N.
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
     pub n: Option<usize>,
 }
 
@@ -84,7 +84,7 @@ pub struct SurfaceParamArgs {
     #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
     pub v: Option<String>,
     /// Sample u and v at linspace(0,1,N), like the thesis's N.
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
     pub n: Option<usize>,
 }
 

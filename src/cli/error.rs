@@ -110,3 +110,81 @@ impl CliError {
 fn one_line(s: &str) -> String {
     s.split_whitespace().collect::<Vec<_>>().join(" ")
 }
+
+impl CliError {
+    /// A mesh export error about `argument` (usually `--mesh FILE`).
+    pub fn mesh(argument: impl Into<String>, error: &crate::mesh::MeshError) -> Self {
+        use crate::mesh::MeshError as M;
+        let (problem, expected, kind) = match error {
+            M::UnknownExtension { .. } => (
+                "unknown mesh format".to_string(),
+                "a file name ending in .stl, .obj or .ply".to_string(),
+                ErrorKind::Usage,
+            ),
+            M::Shape { nu, nv, dim } => (
+                format!("the surface grid has shape ({nu}, {nv}, {dim})"),
+                "a grid of 3-D points, at least 2 × 2 (e.g. --n 2 or more)".to_string(),
+                ErrorKind::Shape,
+            ),
+            M::NonFinite { index } => (
+                format!("grid value {index} is not finite"),
+                "finite coordinates".to_string(),
+                ErrorKind::Shape,
+            ),
+            M::TooLarge { points, limit } => (
+                format!("the grid has {points} points"),
+                format!("at most {limit} grid points"),
+                ErrorKind::Shape,
+            ),
+            M::Io { message, .. } => (
+                message.clone(),
+                "a writable path in an existing directory".to_string(),
+                ErrorKind::Io(std::io::ErrorKind::Other),
+            ),
+        };
+        Self::new(argument, problem, expected, kind)
+    }
+
+    /// A picture error about `argument` (usually `--plot FILE`).
+    pub fn plot(argument: impl Into<String>, error: &crate::plot::PlotError) -> Self {
+        use crate::plot::PlotError as P;
+        let (problem, expected, kind) = match error {
+            P::UnknownExtension { .. } => (
+                "unknown picture format".to_string(),
+                "a file name ending in .svg or .png".to_string(),
+                ErrorKind::Usage,
+            ),
+            P::Empty => (
+                "nothing to draw".to_string(),
+                "a result with points".to_string(),
+                ErrorKind::Plot,
+            ),
+            P::Shape { label, message } => (
+                format!("`{label}`: {message}"),
+                "curves and surfaces of 2-D or 3-D points".to_string(),
+                ErrorKind::Plot,
+            ),
+            P::NonFinite { label, index } => (
+                format!("`{label}`: coordinate {index} is not finite"),
+                "finite coordinates".to_string(),
+                ErrorKind::Plot,
+            ),
+            P::Size { width, height } => (
+                format!("picture size {width}×{height}"),
+                "100 to 10000 pixels per side".to_string(),
+                ErrorKind::Plot,
+            ),
+            P::Io { message, .. } => (
+                message.clone(),
+                "a writable path in an existing directory".to_string(),
+                ErrorKind::Io(std::io::ErrorKind::Other),
+            ),
+            _ => (
+                error.to_string(),
+                "a picture the drawing library can render".to_string(),
+                ErrorKind::Internal,
+            ),
+        };
+        Self::new(argument, problem, expected, kind)
+    }
+}
