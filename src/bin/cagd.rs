@@ -18,8 +18,8 @@ use cagd::cli::args::{
     CurveParamArgs, MeshArgs, OutputArgs, PlotArgs, ScriptArgs, SurfaceParamArgs,
 };
 use cagd::cli::{
-    load_expression, load_params, load_script, render, samples, CliError, ErrorKind,
-    PendingWrites, Report, Value, CURVE_FORM,
+    load_expression, load_params, load_script, render, samples, CliError, ErrorKind, PendingWrites,
+    Report, Value, CURVE_FORM,
 };
 use cagd::octave::literal::{Env, LiteralScalar, Warning};
 use cagd::octave::script::{Binding, Script};
@@ -246,10 +246,7 @@ fn add_plot(files: &mut PendingWrites, path: &Path, figure: &Figure) -> Result<(
 fn curve<T: LiteralScalar>(cmd: &CurveCommand) -> Result<Outcome, CliError> {
     let loaded = prepare_script::<T>(&cmd.script, cmd.params.n)?;
     let expr = load_expression("EXPR", &cmd.expr, loaded.as_ref())?;
-    let mut env = loaded
-        .as_ref()
-        .map(|s| s.env().clone())
-        .unwrap_or_default();
+    let mut env = loaded.as_ref().map(|s| s.env().clone()).unwrap_or_default();
     let params = expr.parameters(&env);
     let param = match params.as_slice() {
         [] => "t",
@@ -302,10 +299,7 @@ fn curve<T: LiteralScalar>(cmd: &CurveCommand) -> Result<Outcome, CliError> {
 fn surface<T: LiteralScalar>(cmd: &SurfaceCommand) -> Result<Outcome, CliError> {
     let loaded = prepare_script::<T>(&cmd.script, cmd.params.n)?;
     let expr = load_expression("EXPR", &cmd.expr, loaded.as_ref())?;
-    let mut env = loaded
-        .as_ref()
-        .map(|s| s.env().clone())
-        .unwrap_or_default();
+    let mut env = loaded.as_ref().map(|s| s.env().clone()).unwrap_or_default();
     let grid_samples = |given: &Option<String>, name: &str| -> Result<Vec<T>, CliError> {
         match given {
             Some(text) => load_params(name, text),
@@ -314,12 +308,22 @@ fn surface<T: LiteralScalar>(cmd: &SurfaceCommand) -> Result<Outcome, CliError> 
     };
     let us = grid_samples(&cmd.params.u, "--u")?;
     let vs = grid_samples(&cmd.params.v, "--v")?;
-    let grid = expr
-        .sample_surface(&mut env, &us, &vs)
-        .map_err(|e| CliError::literal("EXPR", e, "an expression in u and v such as \"[u; v; u.*v]\""))?;
+    let grid = expr.sample_surface(&mut env, &us, &vs).map_err(|e| {
+        CliError::literal(
+            "EXPR",
+            e,
+            "an expression in u and v such as \"[u; v; u.*v]\"",
+        )
+    })?;
     let mut report = Report::new();
-    report.push("u", Value::Matrix(DMatrix::from_row_slice(1, us.len(), &us)));
-    report.push("v", Value::Matrix(DMatrix::from_row_slice(1, vs.len(), &vs)));
+    report.push(
+        "u",
+        Value::Matrix(DMatrix::from_row_slice(1, us.len(), &us)),
+    );
+    report.push(
+        "v",
+        Value::Matrix(DMatrix::from_row_slice(1, vs.len(), &vs)),
+    );
     let grid_f64: Array3<f64> = grid.map(|x| x.to_f64());
     report.push("result", Value::Grid(grid));
     let mut files = PendingWrites::new();
@@ -349,9 +353,8 @@ fn script<T: LiteralScalar>(cmd: &ScriptCommand) -> Result<Outcome, CliError> {
     let args = ScriptArgs {
         script: Some(cmd.file.clone()),
     };
-    let loaded = prepare_script::<T>(&args, cmd.n)?.ok_or_else(|| {
-        CliError::new("FILE", "no script", "a script file", ErrorKind::Internal)
-    })?;
+    let loaded = prepare_script::<T>(&args, cmd.n)?
+        .ok_or_else(|| CliError::new("FILE", "no script", "a script file", ErrorKind::Internal))?;
     let mut report = Report::new();
     for name in loaded.names() {
         match loaded.get(name) {
@@ -440,11 +443,9 @@ fn usage_error(e: clap::Error) -> i32 {
             "no subcommand given".into(),
             format!("one of {subcommands} (see cagd --help)"),
         ),
-        ClapKind::MissingRequiredArgument => (
-            arg,
-            "missing".into(),
-            "the argument (see --help)".into(),
-        ),
+        ClapKind::MissingRequiredArgument => {
+            (arg, "missing".into(), "the argument (see --help)".into())
+        }
         ClapKind::ArgumentConflict => (
             arg,
             format!(
