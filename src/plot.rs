@@ -510,7 +510,7 @@ impl Figure {
                         }
                     }
                     // Painter's algorithm: far cells first.
-                    cells.sort_by(|a, b| b.0.cmp(&a.0));
+                    cells.sort_by_key(|c| std::cmp::Reverse(c.0));
                     let (zlo, zhi) = bz;
                     let anno = chart
                         .draw_series(cells.iter().map(|(_, height, quad)| {
@@ -776,7 +776,9 @@ fn axis_name_positions(
     });
     let centre = (width as i32 / 2, height as i32 / 2);
     std::array::from_fn(|axis| {
-        let mut best: Option<((i32, i32), [f64; 3], [f64; 3])> = None;
+        // (depth sum, screen y sum) of the best edge so far, and its two ends.
+        type Edge = ((i32, i32), [f64; 3], [f64; 3]);
+        let mut best: Option<Edge> = None;
         for i in (0..3).filter(|&i| i != axis) {
             let j = 3 - axis - i;
             for end_j in ends(j) {
@@ -789,7 +791,7 @@ fn axis_name_positions(
                 let (_, y1) = coord.translate(&(s[0], s[1], s[2]));
                 let (_, y2) = coord.translate(&(e[0], e[1], e[2]));
                 let key = (depth(s) + depth(e), y1 + y2);
-                if best.as_ref().is_none_or(|b| key < b.0) {
+                if best.as_ref().map_or(true, |b| key < b.0) {
                     best = Some((key, s, e));
                 }
             }

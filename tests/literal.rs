@@ -6,6 +6,9 @@
 //! followed by the expression named in each comment, e.g. `p(0:0.1:1)`, run by
 //! `octave --no-gui --quiet`. `%.17g` round-trips doubles, so equality is bit-for-bit.
 
+// The expected values are copied as Octave prints them, with 17 significant digits.
+#![allow(clippy::excessive_precision)]
+
 use nalgebra::DMatrix;
 use num_rational::BigRational;
 use proptest::prelude::*;

@@ -395,7 +395,16 @@ fn usage_error(e: clap::Error) -> i32 {
         return 0;
     }
     let context = |k: ContextKind| e.get(k).map(|v| v.to_string());
-    let arg = context(ContextKind::InvalidArg).unwrap_or_else(|| "cagd".into());
+    // Clap names an option with its value placeholder (`--format <FORMAT>`); keep the name.
+    let strip = |s: String| -> String {
+        s.split(", ")
+            .map(|a| a.split_whitespace().next().unwrap_or(a))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let arg = context(ContextKind::InvalidArg)
+        .map(strip)
+        .unwrap_or_else(|| "cagd".into());
     let value = context(ContextKind::InvalidValue).unwrap_or_default();
     let subcommands = Cli::command()
         .get_subcommands()
@@ -450,7 +459,9 @@ fn usage_error(e: clap::Error) -> i32 {
             arg,
             format!(
                 "cannot be used together with {}",
-                context(ContextKind::PriorArg).unwrap_or_else(|| "another option".into())
+                context(ContextKind::PriorArg)
+                    .map(strip)
+                    .unwrap_or_else(|| "another option".into())
             ),
             "only one of them".into(),
         ),

@@ -7,7 +7,7 @@ use crate::octave::literal::LiteralError;
 #[non_exhaustive]
 pub enum ErrorKind {
     /// A literal, expression or data script did not parse or evaluate.
-    Literal(LiteralError),
+    Literal(Box<LiteralError>),
     /// A file could not be read or written (the I/O error kind).
     Io(std::io::ErrorKind),
     /// A numeric text file is malformed (ragged rows, a token that is not a number).
@@ -15,7 +15,7 @@ pub enum ErrorKind {
     /// Inputs of the wrong shape or size for the command (e.g. `--n 1` for a grid).
     Shape,
     /// A construction of the library refused its input.
-    Library(crate::Error),
+    Library(Box<crate::Error>),
     /// Command-line usage: an unknown option, a missing or conflicting argument.
     Usage,
     /// A valid request this build cannot serve yet.
@@ -73,7 +73,7 @@ impl CliError {
             argument,
             error.to_string(),
             expected,
-            ErrorKind::Literal(error),
+            ErrorKind::Literal(Box::new(error)),
         )
     }
 
@@ -93,7 +93,7 @@ impl CliError {
             argument,
             error.to_string(),
             expected,
-            ErrorKind::Library(error),
+            ErrorKind::Library(Box::new(error)),
         )
     }
 

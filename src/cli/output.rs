@@ -142,15 +142,10 @@ pub fn render<T: LiteralScalar>(report: &Report<T>, format: Format) -> Result<St
 
 /// Right-aligned columns with two spaces before each, indented by two more.
 fn aligned(m: &DMatrix<String>) -> String {
-    let mut widths = vec![0; m.ncols()];
-    for j in 0..m.ncols() {
-        widths[j] = m
-            .column(j)
-            .iter()
-            .map(|s| s.chars().count())
-            .max()
-            .unwrap_or(0);
-    }
+    let widths: Vec<usize> = m
+        .column_iter()
+        .map(|c| c.iter().map(|s| s.chars().count()).max().unwrap_or(0))
+        .collect();
     let mut out = String::new();
     for i in 0..m.nrows() {
         out.push_str("  ");

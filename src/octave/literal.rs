@@ -402,7 +402,7 @@ pub trait LiteralScalar: Scalar {
     /// The value as a non-negative integer count or index, if it is one.
     fn to_count(&self) -> Option<usize>;
 
-    /// `linspace(a, b, n)`: Octave's doubles ([`crate::linspace`]) for `f64`; exact
+    /// `linspace(a, b, n)`: Octave's doubles ([`crate::linspace()`]) for `f64`; exact
     /// `a + i(b−a)/(n−1)` for rationals.
     fn linspace(a: &Self, b: &Self, n: usize) -> Vec<Self>;
 
