@@ -419,3 +419,84 @@ fn error_lines_read_well() {
     ]
     .join("\n"));
 }
+
+// ---------------------------------------------------------------------------------------
+// The library behind the binary: matrix arguments
+
+mod matrix_arguments {
+    use cagd::cli::{load_matrix, ErrorKind};
+    use cagd::octave::literal::{Env, LiteralError};
+    use nalgebra::DMatrix;
+    use num_rational::BigRational;
+
+    const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/");
+
+    fn b() -> DMatrix<f64> {
+        DMatrix::from_row_slice(4, 3, &[0., 0., 0., 0., 2., 2., 8., 2., 0., 4., 0., 0.1])
+    }
+
+    #[test]
+    fn literal_and_octave_written_text_files_agree() {
+        let literal = load_matrix::<f64>("--control", "[0 0 0; 0 2 2; 8 2 0; 4 0 0.1]", None);
+        assert_eq!(literal.unwrap(), b());
+        for file in ["octave_save_ascii.txt", "octave_dlmwrite.csv"] {
+            let m = load_matrix::<f64>("--control", &format!("{DATA}{file}"), None).unwrap();
+            assert_eq!(m, b(), "{file}");
+        }
+        // Exact: 1.00000000e-01 is exactly 1/10.
+        let m =
+            load_matrix::<BigRational>("--control", &format!("{DATA}octave_save_ascii.txt"), None)
+                .unwrap();
+        assert_eq!(m[(3, 2)], BigRational::new(1.into(), 10.into()));
+    }
+
+    #[test]
+    fn octave_text_format_is_recognised() {
+        // INTEGRATION POINT: until the `save -text` reader is merged this is a typed error.
+        let e = load_matrix::<f64>("--control", &format!("{DATA}octave_save_text.txt"), None)
+            .unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Unsupported);
+    }
+
+    #[test]
+    fn missing_files_and_bad_files() {
+        let e = load_matrix::<f64>("--control", "no/such/points.csv", None).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Io(std::io::ErrorKind::NotFound));
+        assert_eq!(
+            e.to_string(),
+            "--control no/such/points.csv: no such file or directory; expected an Octave matrix literal such as \"[0 0 0; 1 2 0]'\", a numeric text or CSV file, or - for standard input"
+        );
+        let dir = tempfile::tempdir().unwrap();
+        let ragged = dir.path().join("ragged.txt");
+        std::fs::write(&ragged, "1 2 3\n# comment\n4 5\n").unwrap();
+        let e = load_matrix::<f64>("--control", ragged.to_str().unwrap(), None).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Data);
+        assert!(e
+            .problem
+            .starts_with("line 3: the row has 2 value(s), the first row 3"));
+        let nan = dir.path().join("nan.csv");
+        std::fs::write(&nan, "1,NaN\n").unwrap();
+        let e = load_matrix::<f64>("--control", nan.to_str().unwrap(), None).unwrap_err();
+        assert!(e
+            .problem
+            .contains("value 2 (`NaN`) is not a finite decimal number"));
+    }
+
+    #[test]
+    fn literals_may_use_script_variables() {
+        let script = cagd::octave::script::run::<f64>(
+            "P1 = [0;0;0]; P2 = [1;0;0]; c1 = [u;0;u-u^2];",
+            Env::new(),
+        )
+        .unwrap();
+        let m = load_matrix("--control", "[P1 P2]", Some(&script)).unwrap();
+        assert_eq!(m.shape(), (3, 2));
+        let e = load_matrix("--control", "[P1 c1]", Some(&script)).unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Shape);
+        let e = load_matrix("--control", "[P1 P9]", Some(&script)).unwrap_err();
+        assert!(matches!(
+            e.kind,
+            ErrorKind::Literal(ref l) if matches!(**l, LiteralError::UnknownVariable { .. })
+        ));
+    }
+}

@@ -100,7 +100,10 @@ pub fn load_matrix<T: LiteralScalar>(
     script: Option<&Script<T>>,
 ) -> Result<DMatrix<T>, CliError> {
     let trimmed = text.trim();
-    if trimmed == "-" || (!trimmed.starts_with('[') && Path::new(trimmed).is_file()) {
+    // A variable of the script wins over a file of the same name.
+    let is_variable = script.is_some_and(|s| s.get(trimmed).is_some());
+    if trimmed == "-" || (!is_variable && !trimmed.starts_with('[') && Path::new(trimmed).is_file())
+    {
         let contents = read_text(argument, trimmed)?;
         let shown = if trimmed == "-" {
             argument.to_string()
@@ -109,7 +112,7 @@ pub fn load_matrix<T: LiteralScalar>(
         };
         return parse_data_text(&shown, &contents);
     }
-    if looks_like_path(trimmed) {
+    if !is_variable && looks_like_path(trimmed) {
         return Err(CliError::io(
             format!("{argument} {trimmed}"),
             &std::io::Error::from(std::io::ErrorKind::NotFound),
