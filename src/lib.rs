@@ -9,8 +9,13 @@
 //!   Coons and Gordon constructions, all built on the [`param::Curve`] / [`param::Surface`]
 //!   traits and generic over the [`scalar::Scalar`] (`f64` or exact `BigRational`);
 //! - the **Octave-compatible layer** [`octave`]: the thesis functions under their own names
-//!   (`de_casteljau`, `ploskev_b`, …) with the thesis array layouts, and Octave's text file
-//!   format.
+//!   (`de_casteljau`, `ploskev_b`, …) with the thesis array layouts, Octave's text file
+//!   format, and the Octave syntax users type ([`octave::literal`]: matrix literals, ranges,
+//!   curve expressions; [`octave::script`]: the thesis's data scripts).
+//!
+//! Around them: [`plot`] (pictures as the thesis's Octave code draws them), [`mesh`]
+//! (triangulated surfaces as STL, OBJ, PLY) and [`cli`] (the command line as a library:
+//! inputs, output formats, atomic files, one-line errors).
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
