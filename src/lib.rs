@@ -12,14 +12,20 @@
 //!   [`nurbs`] and the [`surfaces`] of the notes, all built on the [`param::Curve`] / [`param::Surface`]
 //!   traits and generic over the [`scalar::Scalar`] (`f64` or exact `BigRational`);
 //! - the **Octave-compatible layer** [`octave`]: the thesis functions under their own names
-//!   (`de_casteljau`, `ploskev_b`, …) with the thesis array layouts, and Octave's text file
-//!   format.
+//!   (`de_casteljau`, `ploskev_b`, …) with the thesis array layouts, Octave's text file
+//!   format, and the Octave syntax users type ([`octave::literal`]: matrix literals, ranges,
+//!   curve expressions; [`octave::script`]: the thesis's data scripts).
+//!
+//! Around them: [`plot`] (pictures as the thesis's Octave code draws them), [`mesh`]
+//! (triangulated surfaces as STL, OBJ, PLY) and [`cli`] (the command line as a library:
+//! inputs, output formats, atomic files, one-line errors).
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 pub mod bernstein;
 pub mod bezier;
 pub mod bspline;
+pub mod cli;
 pub mod continuity;
 pub mod conversion;
 pub mod coons;
@@ -29,9 +35,11 @@ pub mod hermite;
 pub mod interpolation;
 pub mod lagrange;
 pub mod linspace;
+pub mod mesh;
 pub mod nurbs;
 pub mod octave;
 pub mod param;
+pub mod plot;
 pub mod scalar;
 pub mod spline;
 pub mod surfaces;
