@@ -14,6 +14,17 @@ use nalgebra::DMatrix;
 use ndarray::Array3;
 use num_rational::BigRational;
 
+#[path = "cagd/bezier.rs"]
+mod bezier;
+#[path = "cagd/common.rs"]
+mod common;
+#[path = "cagd/course.rs"]
+mod course;
+#[path = "cagd/patches.rs"]
+mod patches;
+#[path = "cagd/thesis.rs"]
+mod thesis;
+
 use cagd::cli::args::{
     CurveParamArgs, MeshArgs, OutputArgs, PlotArgs, ScriptArgs, SurfaceParamArgs,
 };
@@ -35,6 +46,147 @@ struct Cli {
 
 #[derive(Debug, Subcommand)]
 enum Command {
+    /// Reproduce every worked example and appendix run of the thesis, with steps and pictures.
+    #[command(after_help = "\
+Needs no input. Prints Primer 2.4 (de Casteljau scheme at t = 1/2 and the curve), a Bézier
+patch example in place of Primer 3.2 (whose net is garbled in the source and whose printed
+z-values are inconsistent), Primer 4.3 (r_c, r_d, r_cd and x at (0.2, 0.5), exactly), the
+appendix C Coons patch (data script with its N and P4 bugs fixed) and the appendix D Gordon
+surface (g1, g2, g12 at a point, the grid, the conditioning). Pictures (SVG and PNG) and
+meshes (STL, OBJ, PLY) go to --out, written atomically.
+
+Example:
+  cagd thesis --out cagd-out")]
+    Thesis(thesis::ThesisCommand),
+    /// Points of a Bézier curve by de Casteljau's algorithm (thesis algorithm 1).
+    #[command(after_help = "\
+Input: control points b_0..b_n as the columns of a d×(n+1) matrix (rows with --rows): a
+literal, a numeric text/CSV file, an Octave save -text file (FILE or FILE:NAME; else its first
+numeric variable), or - for standard input.
+Layout: result is d×k, one point per column (like T in deCasteljau); t is 1×k.
+--steps prints the whole scheme b_i^r(t) for each t, columns r = 0..n, as in Primer 2.4.
+
+Examples:
+  cagd decasteljau \"[0 0 0; 0 2 2; 8 2 0; 4 0 0]'\" --t 0.5 --steps --exact
+  cagd decasteljau \"[0 0 0; 0 2 2; 8 2 0; 4 0 0]\" --rows --n 50 --plot curve.svg")]
+    Decasteljau(bezier::DeCasteljauCommand),
+    /// Points of a Bézier patch (thesis algorithms 2-4, ploskevB/bilinearna/tenzor).
+    #[command(after_help = "\
+Input: the net packed (m+1)×3(n+1) as ploskevB takes it (row i = [b_i0 b_i1 ... b_in], x y z
+side by side), or an Octave save -text file with an (m+1)×(n+1)×3 array.
+Layout: with single --u and --v, result is the 3×1 point; otherwise result is the grid
+nu×nv×3 (result(i,j,:) at (u(i), v(j)), like P in ploskevB).
+--steps prints the tensor de Casteljau scheme for each (u, v).
+
+Examples:
+  cagd bezier-patch \"[0 0 0 0 2 1 0 4 0; 2 0 1 2 2 4 2 4 1; 4 0 0 4 2 1 4 4 0]\" --u 0.5 --v 0.5 --steps
+  cagd bezier-patch net.txt --n 20 --plot patch.png --mesh patch.stl")]
+    BezierPatch(bezier::BezierPatchCommand),
+    /// A bilinearly blended Coons patch x = r_c + r_d - r_cd (thesis 4.1, algorithms 5, 6).
+    #[command(after_help = "\
+Input: --c1 x(u,0), --c2 x(u,1) (expressions in u), --d1 x(0,v), --d2 x(1,v) (in v), as the
+thesis writes them, e.g. \"[u;0;u-u^2]\"; a constant matrix or data file instead gives the
+control points (columns) of a Bézier curve. Or --script FILE: the appendix C data script
+(sampled c1, c2, d1, d2 and corners P1..P4); --n binds its N.
+Layout: single --u and --v give the 3×1 point; otherwise the grid nu×nv×3 (like P).
+--steps also prints rc, rd, rcd (same layout). --plot draws the surface with c1, c2 in red and
+d1, d2 in green, as appendix C does.
+
+Examples:
+  cagd coons --c1 \"[u;0;u-u^2]\" --c2 \"[u;1;u]\" --d1 \"[0;v^2;v-v^2]\" --d2 \"[1;v;v]\" --u 0.2 --v 0.5 --steps --exact
+  cagd coons --script appendix_c.m --n 10 --plot coons.png --mesh coons.obj")]
+    Coons(patches::CoonsCommand),
+    /// A bicubically blended Coons patch with cross-boundary derivatives (thesis 4.3).
+    #[command(after_help = "\
+Input: the boundaries as for coons, and the cross-boundary derivative curves --c1v x_v(u,0),
+--c2v x_v(u,1) (in u), --d1u x_u(0,v), --d2u x_u(1,v) (in v). --twist zero|gregory|given
+chooses the corner twists x_uv (given: --twists, a d×4 matrix for P1..P4; gregory needs
+Bézier cross-boundary curves, whose derivatives it uses).
+Layout: as for coons.
+
+Example:
+  cagd coons-bicubic --c1 \"[u;0;0]\" --c2 \"[u;1;0]\" --d1 \"[0;v;0]\" --d2 \"[1;v;0]\" --c1v \"[0;1;0]\" --c2v \"[0;1;0]\" --d1u \"[1;0;0]\" --d2u \"[1;0;0]\" --n 5")]
+    CoonsBicubic(patches::CoonsBicubicCommand),
+    /// The discrete Coons patch: interior control points from the boundary of a net.
+    #[command(after_help = "\
+Input: a net as for bezier-patch; only its boundary rows and columns are used.
+Layout: result is the full net (m+1)×(n+1)×3.
+--mask=ALPHA,BETA solves the affine mask instead (alpha + beta = 1/4).
+
+Examples:
+  cagd discrete-coons \"[0 0 0 0 1 0 0 2 0; 1 0 0 0 0 0 1 2 1; 2 0 0 2 1 1 2 2 0]\"
+  cagd discrete-coons net.txt --mask=0,0.25")]
+    DiscreteCoons(patches::DiscreteCoonsCommand),
+    /// A Gordon surface g = g1 + g2 - g12 of a curve network (thesis 4.4, algorithm 7).
+    #[command(after_help = "\
+Input: repeated --u-curve g(u_i, v) (expressions in v) and --v-curve g(u, v_j) (in u), in node
+order, with --u-nodes and --v-nodes (default equally spaced); or --script FILE with appendix
+D's packed g_u (3×kN), g_v, g_uv (k×3k) and nodes x.
+Layout: single --u and --v give the 3×1 point; otherwise the grid nu×nv×3. --steps also prints
+g1, g2, g12. The conditioning line gives the Lebesgue constants of the node vectors.
+
+Examples:
+  cagd gordon --v-curve \"[u;0;u-u^2]\" --v-curve \"[u;0.5;0.5+u-u^2]\" --v-curve \"[u;1;1+u-u^2]\" \\
+              --u-curve \"[0;v;v]\" --u-curve \"[0.5;v;0.25+v]\" --u-curve \"[1;v;v]\" --u 0.25 --v 0.75 --steps --exact
+  cagd gordon --script appendix_d.m --n 10 --plot gordon.png")]
+    Gordon(patches::GordonCommand),
+    /// Lagrange basis polynomials, or the polynomial interpolating values at nodes.
+    #[command(after_help = "\
+Layout: without --points, result is k×(m+1): row = parameter, column = L_0..L_m. With --points
+(d×(m+1), one column per node), result is d×k, the interpolant at each t.
+
+Examples:
+  cagd lagrange --nodes \"[0 0.5 1]\" --t 0.25 --exact
+  cagd lagrange --nodes 1:5 --points \"[1 2 3 2 1]\" --t 1:0.5:5")]
+    Lagrange(patches::LagrangeCommand),
+    /// Bernstein polynomial values B_i^n(t).
+    #[command(after_help = "\
+Layout: t is k×1, result k×(n+1) (row = parameter, column = B_0^n..B_n^n), or k×1 with --i.
+
+Examples:
+  cagd bernstein --degree 3 --t 0.5 --exact
+  cagd bernstein --degree 3 --i 1 --n 5")]
+    Bernstein(bezier::BernsteinCommand),
+    /// Control points (and values) of the r-th derivative of a Bézier curve.
+    #[command(after_help = "\
+Layout: control is d×(n-r+1), the points n!/(n-r)! Δ^r b_i as columns; with --t, result is d×k.
+
+Example:
+  cagd derivative \"[0 0 0; 0 2 2; 8 2 0; 4 0 0]'\" --order 1 --t 0.5 --exact")]
+    Derivative(bezier::DerivativeCommand),
+    /// An interpolating cubic spline (seed 004): tangents at the points and curve samples.
+    #[command(after_help = "\
+Input: points as columns (rows with --rows); --end clamped (with --start-tangent and
+--end-tangent), natural or closed. Segment k runs over [k, k+1].
+Layout: tangents is d×m (one per point); result d×k at --t (default: 10 samples per segment).
+
+Example:
+  cagd spline \"[0 0; 2 1; 4 4; 6 0]'\" --end clamped --start-tangent \"[1;1]\" --end-tangent \"[-1;1]\" --exact")]
+    Spline(course::SplineCommand),
+    /// A Hermite (Ferguson) cubic from end points and end tangents (seed 004).
+    #[command(after_help = "\
+Layout: result d×k at the parameters; --steps prints the Hermite basis values and the Bézier
+control points of the same cubic.
+
+Example:
+  cagd hermite --p0 \"[0;0]\" --p1 \"[1;0]\" --t0 \"[1;1]\" --t1 \"[1;-1]\" --t 0.5 --exact")]
+    Hermite(course::HermiteCommand),
+    /// A B-spline curve by de Boor's algorithm (seeds 001, 004).
+    #[command(after_help = "\
+Input: control points as columns, --degree p, --knots (n+p+2 values; default clamped uniform).
+Layout: result d×k at the parameters; --steps prints the basis functions N_i,p(t) (k×(n+1)).
+
+Example:
+  cagd bspline \"[0 0; 1 2; 3 2; 4 0]'\" --degree 2 --knots \"[0 0 0 0.5 1 1 1]\" --t 0.25 --steps --exact")]
+    Bspline(course::BSplineCommand),
+    /// A NURBS curve (seed 001): rational B-spline with weights.
+    #[command(after_help = "\
+Input: control points as columns, --weights (one per point, positive), --degree, --knots.
+Layout: result d×k; --steps prints the rational basis functions R_i,p(t).
+
+Example (a quarter circle):
+  cagd nurbs \"[1 0; 1 1; 0 1]'\" --weights \"[1 0.7071067811865476 1]\" --degree 2 --n 5")]
+    Nurbs(course::NurbsCommand),
     /// Sample a curve given as an expression in its parameter, as the thesis writes curves.
     #[command(after_help = "\
 Layout: the result is d × k, one point per column (like T in the thesis's deCasteljau).
@@ -109,14 +261,13 @@ struct ScriptCommand {
     output: OutputArgs,
 }
 
-/// Samples taken when neither `--t`/`--u`/`--v` nor `--n` is given: 0:0.1:1.
-const DEFAULT_SAMPLES: usize = 11;
+use common::DEFAULT_SAMPLES;
 
 /// What a command produced: text for standard output, files, warnings.
-struct Outcome {
-    stdout: String,
-    files: PendingWrites,
-    warnings: Vec<(String, Warning)>,
+pub struct Outcome {
+    pub stdout: String,
+    pub files: PendingWrites,
+    pub warnings: Vec<(String, Warning)>,
 }
 
 fn main() {
@@ -153,6 +304,33 @@ fn run() -> i32 {
         Command::Surface(c) => surface::<f64>(c),
         Command::Script(c) if c.output.exact => script::<BigRational>(c),
         Command::Script(c) => script::<f64>(c),
+        Command::Thesis(c) => thesis::thesis(c),
+        Command::Decasteljau(c) if c.output.exact => bezier::decasteljau::<BigRational>(c),
+        Command::Decasteljau(c) => bezier::decasteljau::<f64>(c),
+        Command::BezierPatch(c) if c.output.exact => bezier::bezier_patch::<BigRational>(c),
+        Command::BezierPatch(c) => bezier::bezier_patch::<f64>(c),
+        Command::Coons(c) if c.output.exact => patches::coons::<BigRational>(c),
+        Command::Coons(c) => patches::coons::<f64>(c),
+        Command::CoonsBicubic(c) if c.output.exact => patches::coons_bicubic::<BigRational>(c),
+        Command::CoonsBicubic(c) => patches::coons_bicubic::<f64>(c),
+        Command::DiscreteCoons(c) if c.output.exact => patches::discrete::<BigRational>(c),
+        Command::DiscreteCoons(c) => patches::discrete::<f64>(c),
+        Command::Gordon(c) if c.output.exact => patches::gordon::<BigRational>(c),
+        Command::Gordon(c) => patches::gordon::<f64>(c),
+        Command::Lagrange(c) if c.output.exact => patches::lagrange::<BigRational>(c),
+        Command::Lagrange(c) => patches::lagrange::<f64>(c),
+        Command::Bernstein(c) if c.output.exact => bezier::bernstein::<BigRational>(c),
+        Command::Bernstein(c) => bezier::bernstein::<f64>(c),
+        Command::Derivative(c) if c.output.exact => bezier::derivative::<BigRational>(c),
+        Command::Derivative(c) => bezier::derivative::<f64>(c),
+        Command::Spline(c) if c.output.exact => course::spline::<BigRational>(c),
+        Command::Spline(c) => course::spline::<f64>(c),
+        Command::Hermite(c) if c.output.exact => course::hermite::<BigRational>(c),
+        Command::Hermite(c) => course::hermite::<f64>(c),
+        Command::Bspline(c) if c.output.exact => course::bspline::<BigRational>(c),
+        Command::Bspline(c) => course::bspline::<f64>(c),
+        Command::Nurbs(c) if c.output.exact => course::nurbs::<BigRational>(c),
+        Command::Nurbs(c) => course::nurbs::<f64>(c),
     };
     match result.and_then(finish) {
         Ok(()) => 0,
@@ -186,7 +364,7 @@ fn finish(outcome: Outcome) -> Result<(), CliError> {
 }
 
 /// Runs `--script` if given, binding `N` first.
-fn prepare_script<T: LiteralScalar>(
+pub fn prepare_script<T: LiteralScalar>(
     script: &ScriptArgs,
     n: Option<usize>,
 ) -> Result<Option<Script<T>>, CliError> {
@@ -215,7 +393,7 @@ fn script_warnings<T: LiteralScalar>(
 }
 
 /// The result text (to standard output, or to `-o FILE`).
-fn emit<T: LiteralScalar>(
+pub fn emit<T: LiteralScalar>(
     report: &Report<T>,
     output: &OutputArgs,
     files: &mut PendingWrites,

@@ -6,7 +6,11 @@
 //! - a path to a plain numeric text file: numbers separated by spaces, tabs, commas or
 //!   semicolons, one matrix row per line, `#` and `%` comments — what Octave's
 //!   `save -ascii` and `dlmwrite`/`csvwrite` write;
-//! - a path to an Octave `save -text` file (recognised by its `# name:` header);
+//! - a path to an Octave `save -text` file (recognised by its `# name:` header): the
+//!   variable named after a colon (`net.txt:B`), or else the first numeric variable of the
+//!   file (scalars, matrices, ranges and logical arrays count; strings, structs and cells are
+//!   skipped). With `--exact`, each stored double is read as the shortest decimal that
+//!   round-trips (`0.10000000000000001` is read as 1/10);
 //! - `-` for standard input (either file format).
 //!
 //! **Parameter arguments** (`--t`, `--u`, `--v`) are a number, a list literal
@@ -102,6 +106,13 @@ pub fn load_matrix<T: LiteralScalar>(
     let trimmed = text.trim();
     // A variable of the script wins over a file of the same name.
     let is_variable = script.is_some_and(|s| s.get(trimmed).is_some());
+    if let Some((path, variable)) = split_variable(trimmed) {
+        if !is_variable {
+            let contents = read_text(argument, path)?;
+            let shown = format!("{argument} {trimmed}");
+            return parse_data_text_variable(&shown, &contents, Some(variable));
+        }
+    }
     if trimmed == "-" || (!is_variable && !trimmed.starts_with('[') && Path::new(trimmed).is_file())
     {
         let contents = read_text(argument, trimmed)?;
@@ -141,21 +152,122 @@ pub fn load_matrix<T: LiteralScalar>(
         .map_err(|e| CliError::literal(argument, e, MATRIX_FORM))
 }
 
-/// Parses the contents of a data file: Octave `save -text` (integration point) or plain
-/// numeric text.
+/// `file.txt:name` with an existing file `file.txt` and an Octave identifier `name`.
+fn split_variable(text: &str) -> Option<(&str, &str)> {
+    let (path, name) = text.rsplit_once(':')?;
+    let valid = name.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
+        && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+    (valid && Path::new(path).is_file()).then_some((path, name))
+}
+
+/// The form of an Octave text file argument, for error messages.
+const OCTAVE_FILE_FORM: &str =
+    "an Octave `save -text` file with a numeric variable (choose one with FILE:NAME)";
+
+/// Reads an Octave `save -text` file and picks a numeric variable: `variable` if given, else
+/// the first numeric one. The result keeps Octave's dimensions (2 or more).
+pub fn read_octave_array(
+    argument: &str,
+    contents: &str,
+    variable: Option<&str>,
+) -> Result<(String, ndarray::ArrayD<f64>), CliError> {
+    use crate::octave::text_format;
+    let ws = text_format::read_text(contents).map_err(|e| {
+        CliError::new(argument, e.to_string(), OCTAVE_FILE_FORM, ErrorKind::Data)
+    })?;
+    let name = match variable {
+        Some(name) => name.to_string(),
+        None => ws
+            .iter()
+            .find(|(_, v)| v.to_array().is_some())
+            .map(|(n, _)| n.to_string())
+            .ok_or_else(|| {
+                CliError::new(
+                    argument,
+                    "the file holds no numeric variable",
+                    OCTAVE_FILE_FORM,
+                    ErrorKind::Data,
+                )
+            })?,
+    };
+    let names: Vec<&str> = ws.names().collect();
+    let array = ws.array(&name).map_err(|e| {
+        CliError::new(
+            argument,
+            e.to_string(),
+            format!("one of the numeric variables {}", names.join(", ")),
+            ErrorKind::Data,
+        )
+    })?;
+    Ok((name, array))
+}
+
+/// A stored double as a scalar: itself for `f64`; for rationals the shortest decimal that
+/// reads back to it (so that `0.1` as written by Octave is 1/10).
+pub fn scalar_from_double<T: LiteralScalar>(x: f64) -> Option<T> {
+    if !x.is_finite() {
+        return None;
+    }
+    if T::EXACT {
+        crate::octave::literal::parse_number::<T>(&format!("{x:e}"))
+    } else {
+        T::from_f64(x)
+    }
+}
+
+fn array_to_scalars<T: LiteralScalar>(
+    argument: &str,
+    a: &ndarray::ArrayD<f64>,
+) -> Result<ndarray::ArrayD<T>, CliError> {
+    let mut out = Vec::with_capacity(a.len());
+    for (k, x) in a.iter().enumerate() {
+        out.push(scalar_from_double::<T>(*x).ok_or_else(|| {
+            CliError::new(
+                argument,
+                format!("value {} is not finite", k + 1),
+                "finite numbers",
+                ErrorKind::Data,
+            )
+        })?);
+    }
+    Ok(ndarray::ArrayD::from_shape_vec(a.raw_dim(), out).expect("same number of elements"))
+}
+
+/// Parses the contents of a data file: Octave `save -text` (the first numeric variable) or
+/// plain numeric text.
+///
+/// ```
+/// let text = "# name: s\n# type: string\n# elements: 1\n# length: 1\nx\n\n\
+///             # name: B\n# type: matrix\n# rows: 1\n# columns: 2\n 1 0.5\n";
+/// let m = cagd::cli::parse_data_text::<f64>("--control", text).unwrap();
+/// assert_eq!(m, nalgebra::DMatrix::from_row_slice(1, 2, &[1.0, 0.5]));
+/// ```
 pub fn parse_data_text<T: LiteralScalar>(
     argument: &str,
     contents: &str,
 ) -> Result<DMatrix<T>, CliError> {
-    if is_octave_text(contents) {
-        // INTEGRATION POINT (branch `octave`): read with
-        // `crate::octave::text_format` once it is merged, taking the first (or only) variable.
-        return Err(CliError::new(
-            argument,
-            "reading Octave `save -text` files is not available in this build",
-            "a plain numeric text file (as `save -ascii` or `dlmwrite` write it) or a matrix literal",
-            ErrorKind::Unsupported,
-        ));
+    parse_data_text_variable(argument, contents, None)
+}
+
+/// [`parse_data_text`] choosing the variable of an Octave text file by name.
+pub fn parse_data_text_variable<T: LiteralScalar>(
+    argument: &str,
+    contents: &str,
+    variable: Option<&str>,
+) -> Result<DMatrix<T>, CliError> {
+    if is_octave_text(contents) || variable.is_some() {
+        let (name, array) = read_octave_array(argument, contents, variable)?;
+        if array.ndim() != 2 {
+            return Err(CliError::new(
+                argument,
+                format!("`{name}` has {} dimensions", array.ndim()),
+                "a 2-D matrix",
+                ErrorKind::Shape,
+            ));
+        }
+        let a = array_to_scalars::<T>(argument, &array)?;
+        let (r, c) = (a.shape()[0], a.shape()[1]);
+        return Ok(DMatrix::from_fn(r, c, |i, j| a[[i, j]].clone()));
     }
     parse_numeric_text(contents).map_err(|(line, problem)| {
         CliError::new(
@@ -165,6 +277,70 @@ pub fn parse_data_text<T: LiteralScalar>(
             ErrorKind::Data,
         )
     })
+}
+
+/// Loads a Bézier control net: an Octave `save -text` file holding an
+/// `(m+1) × (n+1) × d` array (as `tenzor` produces), or any matrix argument in the packed
+/// layout of the thesis's `ploskevB`, `(m+1) × 3(n+1)`, whose row `i` is
+/// `[b_i0 b_i1 … b_in]` with each point's three coordinates side by side.
+///
+/// ```
+/// let net = cagd::cli::load_net::<f64>("NET", "[0 0 0 0 1 0; 1 0 0 1 1 1]", None).unwrap();
+/// assert_eq!(net.dim(), (2, 2, 3));
+/// assert_eq!(net[[1, 1, 2]], 1.0);
+/// ```
+pub fn load_net<T: LiteralScalar>(
+    argument: &str,
+    text: &str,
+    script: Option<&Script<T>>,
+) -> Result<ndarray::Array3<T>, CliError> {
+    let trimmed = text.trim();
+    let is_variable = script.is_some_and(|s| s.get(trimmed).is_some());
+    let file = if is_variable {
+        None
+    } else if let Some((path, variable)) = split_variable(trimmed) {
+        Some((path, Some(variable)))
+    } else if trimmed != "-" && Path::new(trimmed).is_file() {
+        Some((trimmed, None))
+    } else {
+        None
+    };
+    if let Some((path, variable)) = file {
+        let contents = read_text(argument, path)?;
+        if is_octave_text(&contents) {
+            let shown = format!("{argument} {trimmed}");
+            let (_, array) = read_octave_array(&shown, &contents, variable)?;
+            if array.ndim() == 3 {
+                let a = array_to_scalars::<T>(&shown, &array)?;
+                let s = a.shape().to_vec();
+                return Ok(ndarray::Array3::from_shape_fn((s[0], s[1], s[2]), |(i, j, k)| {
+                    a[[i, j, k]].clone()
+                }));
+            }
+        }
+    }
+    let packed = load_matrix::<T>(argument, text, script)?;
+    unpack_net(argument, &packed)
+}
+
+/// Unpacks the thesis's `(m+1) × 3(n+1)` net into an `(m+1) × (n+1) × 3` array (`tenzor`).
+pub fn unpack_net<T: LiteralScalar>(
+    argument: &str,
+    packed: &DMatrix<T>,
+) -> Result<ndarray::Array3<T>, CliError> {
+    let (rows, cols) = packed.shape();
+    if rows == 0 || cols == 0 || cols % 3 != 0 {
+        return Err(CliError::new(
+            argument,
+            format!("the net is {rows}×{cols}"),
+            "a packed (m+1)×3(n+1) net as ploskevB takes it, row i = [b_i0 b_i1 … b_in] with x y z side by side, or an Octave (m+1)×(n+1)×3 array file",
+            ErrorKind::Shape,
+        ));
+    }
+    Ok(ndarray::Array3::from_shape_fn(
+        (rows, cols / 3, 3),
+        |(i, j, k)| packed[(i, 3 * j + k)].clone(),
+    ))
 }
 
 /// Parses plain numeric text: one matrix row per line, numbers separated by white space,

@@ -18,7 +18,8 @@ mod output;
 pub use atomic::{write_atomic, PendingWrites};
 pub use error::{CliError, ErrorKind};
 pub use input::{
-    load_expression, load_matrix, load_params, load_script, parse_data_text, parse_numeric_text,
-    read_text, samples, CURVE_FORM, MATRIX_FORM, MAX_INPUT_BYTES, PARAMS_FORM,
+    load_expression, load_matrix, load_net, load_params, load_script, parse_data_text,
+    parse_data_text_variable, parse_numeric_text, read_octave_array, read_text, samples,
+    scalar_from_double, unpack_net, CURVE_FORM, MATRIX_FORM, MAX_INPUT_BYTES, PARAMS_FORM,
 };
 pub use output::{number_text, render, Format, Item, Report, Value};

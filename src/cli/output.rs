@@ -22,10 +22,11 @@ pub enum Format {
     /// slice `name(:,:,k)` at a time (as Octave displays them).
     #[default]
     Text,
-    /// Octave's `save -text` format, loadable with `load`.
-    // INTEGRATION POINT (branch `octave`): render through `crate::octave::text_format`'s
-    // writer, the result in a variable named `result`; remove `skip` once it is merged.
-    #[value(skip)]
+    /// Octave's `save -text` format, loadable with `load`: every item is a variable (the
+    /// answer is `result`; curve points d×k with points as columns, like `T` in
+    /// `deCasteljau`; surface grids nu×nv×d, like `P` in `ploskevB`; steps such as `rc`,
+    /// `rd`, `rcd` as further variables; text as strings). Octave has no rationals, so with
+    /// `--exact` the nearest doubles are written.
     Octave,
     /// Comma-separated values: a matrix row per line; a grid one point per line as
     /// `i,j,x1,…,xd` (1-based indices). With several items, each is preceded by a `# name`
@@ -131,13 +132,51 @@ pub fn render<T: LiteralScalar>(report: &Report<T>, format: Format) -> Result<St
         Format::Text => Ok(render_text(report)),
         Format::Csv => Ok(render_csv(report)),
         Format::Json => render_json(report),
-        Format::Octave => Err(CliError::new(
-            "--format",
-            "the Octave text format writer is not available in this build",
-            "text, csv or json",
-            ErrorKind::Unsupported,
-        )),
+        Format::Octave => render_octave(report),
     }
+}
+
+/// An Octave identifier made from an item name (`r_c` stays, `b^1` becomes `b_1`).
+fn octave_name(name: &str) -> String {
+    let mut out: String = name
+        .chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+        .collect();
+    if !out.starts_with(|c: char| c.is_ascii_alphabetic()) {
+        out.insert(0, 'x');
+    }
+    out
+}
+
+fn render_octave<T: LiteralScalar>(report: &Report<T>) -> Result<String, CliError> {
+    use crate::octave::text_format::{self, CharMatrix, Value as OValue, Workspace};
+    let mut ws = Workspace::new();
+    for item in &report.items {
+        let value = match &item.value {
+            Value::Matrix(m) => {
+                let a = ndarray::Array2::from_shape_fn(m.shape(), |(i, j)| m[(i, j)].to_f64());
+                OValue::from(a)
+            }
+            Value::Grid(g) => OValue::Matrix(g.map(|x| x.to_f64()).into_dyn()),
+            Value::Text(t) => {
+                // A char matrix needs rows of one length: pad with spaces, as Octave's char().
+                let lines: Vec<&str> = t.lines().collect();
+                let width = lines.iter().map(|l| l.len()).max().unwrap_or(0);
+                let mut c = CharMatrix::new("");
+                c.rows = lines.iter().map(|l| format!("{l:<width$}")).collect();
+                OValue::Str(c)
+            }
+        };
+        ws.insert(octave_name(&item.name), value);
+    }
+    text_format::write_text(&ws).map_err(|e| {
+        CliError::new(
+            "--format octave",
+            e.to_string(),
+            "results Octave can store",
+            ErrorKind::Internal,
+        )
+    })
 }
 
 /// Right-aligned columns with two spaces before each, indented by two more.
@@ -184,6 +223,9 @@ fn render_text<T: LiteralScalar>(report: &Report<T>) -> String {
                     text_matrix(&format!("{}(:,:,{})", item.name, k + 1), &slice, &mut out);
                 }
             }
+            Value::Text(t) if t.contains('\n') => {
+                let _ = writeln!(out, "{}:\n{}\n", item.name, t.trim_end());
+            }
             Value::Text(t) => {
                 let _ = writeln!(out, "{} = {t}\n", item.name);
             }
@@ -211,7 +253,9 @@ fn csv_item<T: LiteralScalar>(value: &Value<T>, out: &mut String) {
             }
         }
         Value::Text(t) => {
-            let _ = writeln!(out, "# {t}");
+            for line in t.lines() {
+                let _ = writeln!(out, "# {line}");
+            }
         }
     }
 }

@@ -1,0 +1,277 @@
+//! `decasteljau`, `bezier-patch`, `bernstein`, `derivative`.
+
+use clap::Args;
+use nalgebra::DMatrix;
+
+use cagd::bezier::{BezierCurve, BezierPatch};
+use cagd::cli::args::{
+    CurveParamArgs, MeshArgs, OutputArgs, PlotArgs, RowsArgs, ScriptArgs, StepsArgs,
+    SurfaceParamArgs,
+};
+use cagd::cli::{load_net, CliError, PendingWrites, Report, Value};
+use cagd::octave::literal::{Env, LiteralScalar};
+use cagd::plot::{Colour, Figure};
+
+use super::common::*;
+use super::{emit, prepare_script, Outcome};
+
+#[derive(Debug, Args)]
+pub struct DeCasteljauCommand {
+    /// Control points b_0..b_n: a matrix literal, a data file (FILE or FILE.txt:NAME for an
+    /// Octave save -text file) or - for standard input; one point per column.
+    #[arg(value_name = "CONTROL", allow_hyphen_values = true)]
+    pub control: String,
+    #[command(flatten)]
+    pub params: CurveParamArgs,
+    #[command(flatten)]
+    pub rows: RowsArgs,
+    #[command(flatten)]
+    pub steps: StepsArgs,
+    #[command(flatten)]
+    pub script: ScriptArgs,
+    #[command(flatten)]
+    pub output: OutputArgs,
+    #[command(flatten)]
+    pub plot: PlotArgs,
+}
+
+/// Curve points by de Casteljau's algorithm (thesis algorithm 1, `deCasteljau`).
+pub fn decasteljau<T: LiteralScalar>(cmd: &DeCasteljauCommand) -> Result<Outcome, CliError> {
+    let script = prepare_script::<T>(&cmd.script, None)?;
+    let control = points("CONTROL", &cmd.control, script.as_ref(), cmd.rows.rows)?;
+    let curve = BezierCurve::new(control).map_err(lib(
+        "CONTROL",
+        "control points b_0..b_n, one per column (or per row with --rows)",
+    ))?;
+    let ts: Vec<T> = params_or_samples("--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
+    let values = curve
+        .eval_many(&ts)
+        .map_err(lib("--t", "finite parameter values"))?;
+    let mut report = Report::new();
+    if cmd.steps.steps {
+        for (k, t) in ts.iter().enumerate() {
+            let name = if ts.len() == 1 {
+                "scheme".to_string()
+            } else {
+                format!("scheme_{}", k + 1)
+            };
+            report.push(name, Value::Text(curve.scheme(t.clone()).to_string()));
+        }
+    }
+    report.push("t", Value::Matrix(row(&ts)));
+    report.push("result", Value::Matrix(values.clone()));
+    let mut files = PendingWrites::new();
+    if let Some(path) = &cmd.plot.plot {
+        // The picture always shows the whole curve over [0, 1], as the thesis's plot3.
+        let dense: Vec<T> = T::linspace(&T::zero(), &T::one(), 101);
+        let line = curve.eval_many(&dense).map_err(lib("--plot", "a curve"))?;
+        let mut figure = Figure::new("Bézier curve (de Casteljau)")
+            .curve(to_f64(&line), Colour::Blue, "curve")
+            .control_polygon(to_f64(curve.control()), "control polygon");
+        if cmd.params.t.is_some() {
+            figure = figure.boundary(to_f64(&values), Colour::Black, "points at t");
+        }
+        add_plot(&mut files, "--plot", path, &figure)?;
+    }
+    let stdout = emit(&report, &cmd.output, &mut files)?;
+    Ok(Outcome {
+        stdout,
+        files,
+        warnings: warnings(&cmd.script.script, script.as_ref(), &mut Env::new()),
+    })
+}
+
+#[derive(Debug, Args)]
+pub struct BezierPatchCommand {
+    /// The control net: packed (m+1)×3(n+1) like ploskevB's input (row i = [b_i0 b_i1 …
+    /// b_in], each point's x y z side by side), or an Octave save -text file holding an
+    /// (m+1)×(n+1)×3 array (FILE or FILE.txt:NAME).
+    #[arg(value_name = "NET", allow_hyphen_values = true)]
+    pub net: String,
+    #[command(flatten)]
+    pub params: SurfaceParamArgs,
+    #[command(flatten)]
+    pub steps: StepsArgs,
+    #[command(flatten)]
+    pub script: ScriptArgs,
+    #[command(flatten)]
+    pub output: OutputArgs,
+    #[command(flatten)]
+    pub plot: PlotArgs,
+    #[command(flatten)]
+    pub mesh: MeshArgs,
+}
+
+/// Whether `--u` and `--v` ask for one point.
+pub fn point_mode(params: &SurfaceParamArgs) -> bool {
+    let single = |s: &Option<String>| {
+        s.as_ref()
+            .is_some_and(|t| cagd::cli::load_params::<f64>("", t).is_ok_and(|v| v.len() == 1))
+    };
+    params.n.is_none() && single(&params.u) && single(&params.v)
+}
+
+/// Points of a Bézier patch (thesis algorithms 2–4, `ploskevB`, `bilinearna`, `tenzor`).
+pub fn bezier_patch<T: LiteralScalar>(cmd: &BezierPatchCommand) -> Result<Outcome, CliError> {
+    let script = prepare_script::<T>(&cmd.script, cmd.params.n)?;
+    let net = load_net::<T>("NET", &cmd.net, script.as_ref())?;
+    let patch = BezierPatch::from_array3(&net).map_err(lib(
+        "NET",
+        "a packed (m+1)×3(n+1) control net as ploskevB takes it",
+    ))?;
+    let us: Vec<T> = params_or_samples("--u", &cmd.params.u, cmd.params.n, DEFAULT_SAMPLES)?;
+    let vs: Vec<T> = params_or_samples("--v", &cmd.params.v, cmd.params.n, DEFAULT_SAMPLES)?;
+    let grid = patch
+        .try_eval_grid(&us, &vs)
+        .map_err(lib("--u/--v", "finite parameter values"))?;
+    let mut report = Report::new();
+    let single = point_mode(&cmd.params);
+    if cmd.steps.steps {
+        let mut k = 0;
+        for u in &us {
+            for v in &vs {
+                k += 1;
+                let name = if single {
+                    "scheme".to_string()
+                } else {
+                    format!("scheme_{k}")
+                };
+                report.push(name, Value::Text(patch.scheme(u.clone(), v.clone()).to_string()));
+            }
+        }
+    }
+    report.push("u", Value::Matrix(row(&us)));
+    report.push("v", Value::Matrix(row(&vs)));
+    if single {
+        report.push("result", Value::Matrix(column(&patch.eval(us[0].clone(), vs[0].clone()))));
+    } else {
+        report.push("result", Value::Grid(grid.clone()));
+    }
+    let mut files = PendingWrites::new();
+    let picture_grid = if single {
+        let t: Vec<T> = T::linspace(&T::zero(), &T::one(), 21);
+        patch
+            .try_eval_grid(&t, &t)
+            .map_err(lib("--plot", "a patch"))?
+    } else {
+        grid
+    };
+    if let Some(path) = &cmd.plot.plot {
+        let figure = Figure::new("Bézier patch")
+            .surface(grid_f64(&picture_grid), "patch")
+            .net(grid_f64(&net), Colour::Red, "control net");
+        add_plot(&mut files, "--plot", path, &figure)?;
+    }
+    if let Some(path) = &cmd.mesh.mesh {
+        add_mesh(&mut files, "--mesh", path, &grid_f64(&picture_grid))?;
+    }
+    let stdout = emit(&report, &cmd.output, &mut files)?;
+    Ok(Outcome {
+        stdout,
+        files,
+        warnings: warnings(&cmd.script.script, script.as_ref(), &mut Env::new()),
+    })
+}
+
+#[derive(Debug, Args)]
+pub struct BernsteinCommand {
+    /// The degree n.
+    #[arg(long, value_name = "N")]
+    pub degree: usize,
+    /// Only B_i^n (default: all of B_0^n..B_n^n).
+    #[arg(long, value_name = "I")]
+    pub i: Option<usize>,
+    #[command(flatten)]
+    pub params: CurveParamArgs,
+    #[command(flatten)]
+    pub output: OutputArgs,
+}
+
+/// Bernstein polynomial values.
+pub fn bernstein<T: LiteralScalar>(cmd: &BernsteinCommand) -> Result<Outcome, CliError> {
+    const MAX_DEGREE: usize = 1000;
+    if cmd.degree > MAX_DEGREE {
+        return Err(shape(
+            "--degree",
+            format!("degree {} is too large", cmd.degree),
+            "a degree 0 ≤ n ≤ 1000",
+        ));
+    }
+    let ts: Vec<T> = params_or_samples("--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
+    let all = cagd::bernstein::basis_matrix(cmd.degree, &ts);
+    let result = match cmd.i {
+        Some(i) if i > cmd.degree => {
+            return Err(shape(
+                "--i",
+                format!("i = {i} exceeds the degree {}", cmd.degree),
+                "an index 0 ≤ i ≤ n",
+            ))
+        }
+        Some(i) => all.columns(i, 1).into_owned(),
+        None => all,
+    };
+    let mut report = Report::new();
+    report.push("t", Value::Matrix(DMatrix::from_column_slice(ts.len(), 1, &ts)));
+    report.push("result", Value::Matrix(result));
+    let mut files = PendingWrites::new();
+    let stdout = emit(&report, &cmd.output, &mut files)?;
+    Ok(Outcome {
+        stdout,
+        files,
+        warnings: Vec::new(),
+    })
+}
+
+#[derive(Debug, Args)]
+pub struct DerivativeCommand {
+    /// Control points of the curve (columns), as for decasteljau.
+    #[arg(value_name = "CONTROL", allow_hyphen_values = true)]
+    pub control: String,
+    /// The order r of the derivative.
+    #[arg(long, short = 'r', value_name = "R", default_value_t = 1)]
+    pub order: usize,
+    /// Also the values of the derivative at these parameters.
+    #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
+    pub t: Option<String>,
+    #[command(flatten)]
+    pub rows: RowsArgs,
+    #[command(flatten)]
+    pub script: ScriptArgs,
+    #[command(flatten)]
+    pub output: OutputArgs,
+    #[command(flatten)]
+    pub plot: PlotArgs,
+}
+
+/// The r-th derivative of a Bézier curve.
+pub fn derivative<T: LiteralScalar>(cmd: &DerivativeCommand) -> Result<Outcome, CliError> {
+    let script = prepare_script::<T>(&cmd.script, None)?;
+    let control = points("CONTROL", &cmd.control, script.as_ref(), cmd.rows.rows)?;
+    let curve = BezierCurve::new(control).map_err(lib("CONTROL", "control points, one per column"))?;
+    let d = curve
+        .derivative(cmd.order)
+        .map_err(lib("--order", "an order r ≤ the degree n"))?;
+    let mut report = Report::new();
+    report.push("control", Value::Matrix(d.control().clone()));
+    if let Some(t) = &cmd.t {
+        let ts: Vec<T> = cagd::cli::load_params("--t", t)?;
+        let values = d.eval_many(&ts).map_err(lib("--t", "finite parameter values"))?;
+        report.push("t", Value::Matrix(row(&ts)));
+        report.push("result", Value::Matrix(values));
+    }
+    let mut files = PendingWrites::new();
+    if let Some(path) = &cmd.plot.plot {
+        let dense: Vec<T> = T::linspace(&T::zero(), &T::one(), 101);
+        let line = d.eval_many(&dense).map_err(lib("--plot", "a curve"))?;
+        let figure = Figure::new(format!("derivative of order {}", cmd.order))
+            .curve(to_f64(&line), Colour::Blue, "derivative curve")
+            .control_polygon(to_f64(d.control()), "its control polygon");
+        add_plot(&mut files, "--plot", path, &figure)?;
+    }
+    let stdout = emit(&report, &cmd.output, &mut files)?;
+    Ok(Outcome {
+        stdout,
+        files,
+        warnings: warnings(&cmd.script.script, script.as_ref(), &mut Env::new()),
+    })
+}
