@@ -172,9 +172,8 @@ pub fn read_octave_array(
     variable: Option<&str>,
 ) -> Result<(String, ndarray::ArrayD<f64>), CliError> {
     use crate::octave::text_format;
-    let ws = text_format::read_text(contents).map_err(|e| {
-        CliError::new(argument, e.to_string(), OCTAVE_FILE_FORM, ErrorKind::Data)
-    })?;
+    let ws = text_format::read_text(contents)
+        .map_err(|e| CliError::new(argument, e.to_string(), OCTAVE_FILE_FORM, ErrorKind::Data))?;
     let name = match variable {
         Some(name) => name.to_string(),
         None => ws
@@ -313,9 +312,10 @@ pub fn load_net<T: LiteralScalar>(
             if array.ndim() == 3 {
                 let a = array_to_scalars::<T>(&shown, &array)?;
                 let s = a.shape().to_vec();
-                return Ok(ndarray::Array3::from_shape_fn((s[0], s[1], s[2]), |(i, j, k)| {
-                    a[[i, j, k]].clone()
-                }));
+                return Ok(ndarray::Array3::from_shape_fn(
+                    (s[0], s[1], s[2]),
+                    |(i, j, k)| a[[i, j, k]].clone(),
+                ));
             }
         }
     }

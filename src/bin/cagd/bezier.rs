@@ -136,14 +136,20 @@ pub fn bezier_patch<T: LiteralScalar>(cmd: &BezierPatchCommand) -> Result<Outcom
                 } else {
                     format!("scheme_{k}")
                 };
-                report.push(name, Value::Text(patch.scheme(u.clone(), v.clone()).to_string()));
+                report.push(
+                    name,
+                    Value::Text(patch.scheme(u.clone(), v.clone()).to_string()),
+                );
             }
         }
     }
     report.push("u", Value::Matrix(row(&us)));
     report.push("v", Value::Matrix(row(&vs)));
     if single {
-        report.push("result", Value::Matrix(column(&patch.eval(us[0].clone(), vs[0].clone()))));
+        report.push(
+            "result",
+            Value::Matrix(column(&patch.eval(us[0].clone(), vs[0].clone()))),
+        );
     } else {
         report.push("result", Value::Grid(grid.clone()));
     }
@@ -211,7 +217,10 @@ pub fn bernstein<T: LiteralScalar>(cmd: &BernsteinCommand) -> Result<Outcome, Cl
         None => all,
     };
     let mut report = Report::new();
-    report.push("t", Value::Matrix(DMatrix::from_column_slice(ts.len(), 1, &ts)));
+    report.push(
+        "t",
+        Value::Matrix(DMatrix::from_column_slice(ts.len(), 1, &ts)),
+    );
     report.push("result", Value::Matrix(result));
     let mut files = PendingWrites::new();
     let stdout = emit(&report, &cmd.output, &mut files)?;
@@ -247,7 +256,8 @@ pub struct DerivativeCommand {
 pub fn derivative<T: LiteralScalar>(cmd: &DerivativeCommand) -> Result<Outcome, CliError> {
     let script = prepare_script::<T>(&cmd.script, None)?;
     let control = points("CONTROL", &cmd.control, script.as_ref(), cmd.rows.rows)?;
-    let curve = BezierCurve::new(control).map_err(lib("CONTROL", "control points, one per column"))?;
+    let curve =
+        BezierCurve::new(control).map_err(lib("CONTROL", "control points, one per column"))?;
     let d = curve
         .derivative(cmd.order)
         .map_err(lib("--order", "an order r ≤ the degree n"))?;
@@ -255,7 +265,9 @@ pub fn derivative<T: LiteralScalar>(cmd: &DerivativeCommand) -> Result<Outcome, 
     report.push("control", Value::Matrix(d.control().clone()));
     if let Some(t) = &cmd.t {
         let ts: Vec<T> = cagd::cli::load_params("--t", t)?;
-        let values = d.eval_many(&ts).map_err(lib("--t", "finite parameter values"))?;
+        let values = d
+            .eval_many(&ts)
+            .map_err(lib("--t", "finite parameter values"))?;
         report.push("t", Value::Matrix(row(&ts)));
         report.push("result", Value::Matrix(values));
     }

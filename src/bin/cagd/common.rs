@@ -142,8 +142,7 @@ fn is_file_arg(text: &str) -> bool {
     let t = text.trim();
     t == "-"
         || Path::new(t).is_file()
-        || t
-            .rsplit_once(':')
+        || t.rsplit_once(':')
             .is_some_and(|(p, _)| !p.is_empty() && Path::new(p).is_file())
 }
 

@@ -81,7 +81,11 @@ pub fn spline<T: LiteralScalar>(cmd: &SplineCommand) -> Result<Outcome, CliError
         End::Clamped => {
             let need = |arg: &str, v: &Option<String>| -> Result<DVector<T>, CliError> {
                 let text = v.as_ref().ok_or_else(|| {
-                    usage(arg, "missing with --end clamped", "a tangent vector such as \"[1;1]\"")
+                    usage(
+                        arg,
+                        "missing with --end clamped",
+                        "a tangent vector such as \"[1;1]\"",
+                    )
                 })?;
                 vector(arg, text)
             };
@@ -151,7 +155,10 @@ pub fn hermite<T: LiteralScalar>(cmd: &HermiteCommand) -> Result<Outcome, CliErr
         vector("--t0", &cmd.t0)?,
         vector("--t1", &cmd.t1)?,
     )
-    .map_err(lib("--p0/--p1/--t0/--t1", "four vectors of the same dimension"))?;
+    .map_err(lib(
+        "--p0/--p1/--t0/--t1",
+        "four vectors of the same dimension",
+    ))?;
     let ts: Vec<T> = params_or_samples("--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
     let mut report = Report::new();
     if cmd.steps.steps {
@@ -159,7 +166,10 @@ pub fn hermite<T: LiteralScalar>(cmd: &HermiteCommand) -> Result<Outcome, CliErr
             cagd::hermite::hermite_basis(ts[i].clone())[j].clone()
         });
         report.push("hermite_basis", Value::Matrix(basis));
-        report.push("bezier_control", Value::Matrix(h.to_bezier().control().clone()));
+        report.push(
+            "bezier_control",
+            Value::Matrix(h.to_bezier().control().clone()),
+        );
     }
     let values = DMatrix::from_columns(&ts.iter().map(|t| h.eval(t.clone())).collect::<Vec<_>>());
     report.push("t", Value::Matrix(row(&ts)));
@@ -167,7 +177,8 @@ pub fn hermite<T: LiteralScalar>(cmd: &HermiteCommand) -> Result<Outcome, CliErr
     let mut files = PendingWrites::new();
     if let Some(path) = &cmd.plot.plot {
         let dense: Vec<T> = T::linspace(&T::zero(), &T::one(), 101);
-        let line = DMatrix::from_columns(&dense.iter().map(|t| h.eval(t.clone())).collect::<Vec<_>>());
+        let line =
+            DMatrix::from_columns(&dense.iter().map(|t| h.eval(t.clone())).collect::<Vec<_>>());
         let figure = Figure::new("Hermite cubic")
             .curve(to_f64(&line), Colour::Blue, "x(t)")
             .control_polygon(to_f64(h.to_bezier().control()), "Bézier control polygon");
@@ -233,7 +244,11 @@ pub fn bspline<T: LiteralScalar>(cmd: &BSplineCommand) -> Result<Outcome, CliErr
     if cmd.steps.steps {
         let mut rows = Vec::with_capacity(ts.len());
         for t in &ts {
-            rows.push(curve.basis(t).map_err(lib("--t", "parameters inside the knot span"))?);
+            rows.push(
+                curve
+                    .basis(t)
+                    .map_err(lib("--t", "parameters inside the knot span"))?,
+            );
         }
         let n = rows.first().map_or(0, Vec::len);
         report.push(
@@ -303,7 +318,7 @@ pub fn nurbs<T: LiteralScalar>(cmd: &NurbsCommand) -> Result<Outcome, CliError> 
             for i in 1..inner {
                 k.push(T::from_ratio(i as i64, inner as i64));
             }
-            k.extend(std::iter::repeat_n(T::one(), p + 1));
+            k.extend(std::iter::repeat(T::one()).take(p + 1));
             k
         }
     };
@@ -314,14 +329,22 @@ pub fn nurbs<T: LiteralScalar>(cmd: &NurbsCommand) -> Result<Outcome, CliError> 
     let ts = domain_params(&cmd.params, curve.domain())?;
     let mut cols = Vec::with_capacity(ts.len());
     for t in &ts {
-        cols.push(curve.try_eval(t.clone()).map_err(lib("--t", "parameters inside the knot span"))?);
+        cols.push(
+            curve
+                .try_eval(t.clone())
+                .map_err(lib("--t", "parameters inside the knot span"))?,
+        );
     }
     let values = DMatrix::from_columns(&cols);
     let mut report = Report::new();
     if cmd.steps.steps {
         let mut rows = Vec::with_capacity(ts.len());
         for t in &ts {
-            rows.push(curve.basis(t).map_err(lib("--t", "parameters inside the knot span"))?);
+            rows.push(
+                curve
+                    .basis(t)
+                    .map_err(lib("--t", "parameters inside the knot span"))?,
+            );
         }
         let k = rows.first().map_or(0, Vec::len);
         report.push(
@@ -337,7 +360,11 @@ pub fn nurbs<T: LiteralScalar>(cmd: &NurbsCommand) -> Result<Outcome, CliError> 
         let dense: Vec<T> = T::linspace(&a, &b, 201);
         let mut cols = Vec::with_capacity(dense.len());
         for t in &dense {
-            cols.push(curve.try_eval(t.clone()).map_err(lib("--plot", "a curve"))?);
+            cols.push(
+                curve
+                    .try_eval(t.clone())
+                    .map_err(lib("--plot", "a curve"))?,
+            );
         }
         let figure = Figure::new("NURBS curve")
             .curve(to_f64(&DMatrix::from_columns(&cols)), Colour::Blue, "curve")

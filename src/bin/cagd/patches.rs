@@ -90,7 +90,10 @@ fn surface_params<T: LiteralScalar>(
         (None, None, Some(s)) => Ok(s.to_vec()),
         _ => params_or_samples(arg, given, params.n, DEFAULT_SAMPLES),
     };
-    Ok((pick("--u", &params.u, from_script.0)?, pick("--v", &params.v, from_script.1)?))
+    Ok((
+        pick("--u", &params.u, from_script.0)?,
+        pick("--v", &params.v, from_script.1)?,
+    ))
 }
 
 #[derive(Debug, Args)]
@@ -194,7 +197,13 @@ pub fn coons<T: LiteralScalar>(cmd: &CoonsCommand) -> Result<Outcome, CliError> 
     if pictures {
         let grid = grid_f64(&patch.eval_grid(&pus, &pvs));
         if let Some(path) = &cmd.plot.plot {
-            let figure = coons_figure("Coons patch", grid.clone(), [&c1, &c2, &d1, &d2], &pus, &pvs);
+            let figure = coons_figure(
+                "Coons patch",
+                grid.clone(),
+                [&c1, &c2, &d1, &d2],
+                &pus,
+                &pvs,
+            );
             add_plot(&mut files, "--plot", path, &figure)?;
         }
         if let Some(path) = &cmd.mesh.mesh {
@@ -320,7 +329,11 @@ pub fn coons_bicubic<T: LiteralScalar>(cmd: &CoonsBicubicCommand) -> Result<Outc
         TwistChoice::Gregory => Twist::Gregory,
         TwistChoice::Given => {
             let text = cmd.twists.as_ref().ok_or_else(|| {
-                usage("--twists", "missing with --twist given", "a d×4 matrix of corner twists")
+                usage(
+                    "--twists",
+                    "missing with --twist given",
+                    "a d×4 matrix of corner twists",
+                )
             })?;
             let m = points("--twists", text, script.as_ref(), cmd.rows.rows)?;
             if m.ncols() != 4 {
@@ -334,8 +347,17 @@ pub fn coons_bicubic<T: LiteralScalar>(cmd: &CoonsBicubicCommand) -> Result<Outc
             Twist::Given([col(0), col(1), col(2), col(3)])
         }
     };
-    let boundary = CoonsBoundary::new(c1.clone(), c2.clone(), d1.clone(), d2.clone(), Tolerance::default())
-        .map_err(lib("--c1/--c2/--d1/--d2", "four boundary curves that meet at the corners"))?;
+    let boundary = CoonsBoundary::new(
+        c1.clone(),
+        c2.clone(),
+        d1.clone(),
+        d2.clone(),
+        Tolerance::default(),
+    )
+    .map_err(lib(
+        "--c1/--c2/--d1/--d2",
+        "four boundary curves that meet at the corners",
+    ))?;
     let patch = BicubicCoonsPatch::new(boundary, CrossDerivatives { du0, du1, dv0, dv1 }, twist)
         .map_err(lib(
             "--c1v/--c2v/--d1u/--d2u",
@@ -356,7 +378,13 @@ pub fn coons_bicubic<T: LiteralScalar>(cmd: &CoonsBicubicCommand) -> Result<Outc
     if pictures {
         let grid = grid_f64(&patch.eval_grid(&pus, &pvs));
         if let Some(path) = &cmd.plot.plot {
-            let figure = coons_figure("bicubic Coons patch", grid.clone(), [&c1, &c2, &d1, &d2], &pus, &pvs);
+            let figure = coons_figure(
+                "bicubic Coons patch",
+                grid.clone(),
+                [&c1, &c2, &d1, &d2],
+                &pus,
+                &pvs,
+            );
             add_plot(&mut files, "--plot", path, &figure)?;
         }
         if let Some(path) = &cmd.mesh.mesh {
@@ -484,7 +512,10 @@ fn packed_network<T: LiteralScalar>(s: &Script<T>) -> Result<PackedNetwork<T>, C
     let (g_u, g_v, g_uv, x) = (need("g_u")?, need("g_v")?, need("g_uv")?, need("x")?);
     let nodes: Vec<T> = x.iter().cloned().collect();
     let k = nodes.len();
-    let split = |name: &str, m: &DMatrix<T>, param: &str| -> Result<Vec<CurveSource<T>>, CliError> {
+    let split = |name: &str,
+                 m: &DMatrix<T>,
+                 param: &str|
+     -> Result<Vec<CurveSource<T>>, CliError> {
         if k < 2 || m.ncols() % k != 0 || m.ncols() / k < 2 {
             return Err(shape(
                 "--script",
@@ -494,6 +525,13 @@ fn packed_network<T: LiteralScalar>(s: &Script<T>) -> Result<PackedNetwork<T>, C
         }
         let n = m.ncols() / k;
         let params = script_params(s, param, n);
+        if let Some(x) = nodes.iter().find(|x| !params.contains(x)) {
+            return Err(shape(
+                "--script",
+                format!("the node {x} is not among the {n} samples of `{name}`, so the network cannot be checked where its curves cross"),
+                "sampled curves whose samples include every node (for x = [0 0.5 1], an odd N such as N = 11)",
+            ));
+        }
         Ok((0..k)
             .map(|c| CurveSource::Samples(params.clone(), m.columns(c * n, n).into_owned()))
             .collect())
@@ -527,7 +565,9 @@ pub fn gordon<T: LiteralScalar>(cmd: &GordonCommand) -> Result<Outcome, CliError
     let script = prepare_script::<T>(&cmd.script, cmd.params.n)?;
     let mut env = script.as_ref().map(|s| s.env().clone()).unwrap_or_default();
     let form_nodes = "increasing distinct values, one per curve";
-    let (u_nodes, v_nodes, at_u, at_v, points) = if cmd.u_curves.is_empty() && cmd.v_curves.is_empty() {
+    let (u_nodes, v_nodes, at_u, at_v, points) = if cmd.u_curves.is_empty()
+        && cmd.v_curves.is_empty()
+    {
         let s = script.as_ref().ok_or_else(|| {
             usage(
                 "--u-curve",
@@ -550,7 +590,11 @@ pub fn gordon<T: LiteralScalar>(cmd: &GordonCommand) -> Result<Outcome, CliError
                 Some(t) => load_params(arg, t),
                 None if count >= 2 => Ok(T::linspace(&T::zero(), &T::one(), count)),
                 None => Err(shape(
-                    if arg == "--u-nodes" { "--u-curve" } else { "--v-curve" },
+                    if arg == "--u-nodes" {
+                        "--u-curve"
+                    } else {
+                        "--v-curve"
+                    },
                     format!("{count} curve(s)"),
                     "at least 2 curves in each direction",
                 )),
@@ -561,8 +605,14 @@ pub fn gordon<T: LiteralScalar>(cmd: &GordonCommand) -> Result<Outcome, CliError
         (un, vn, at_u, at_v, None)
     };
     let single = point_mode(&cmd.params);
-    let sampled_u = at_v.first().and_then(|c| c.sample_params()).map(<[T]>::to_vec);
-    let sampled_v = at_u.first().and_then(|c| c.sample_params()).map(<[T]>::to_vec);
+    let sampled_u = at_v
+        .first()
+        .and_then(|c| c.sample_params())
+        .map(<[T]>::to_vec);
+    let sampled_v = at_u
+        .first()
+        .and_then(|c| c.sample_params())
+        .map(<[T]>::to_vec);
     let (us, vs) = surface_params(&cmd.params, (sampled_u.as_deref(), sampled_v.as_deref()))?;
     let pictures = cmd.plot.plot.is_some() || cmd.mesh.mesh.is_some();
     let (pus, pvs) = if single && pictures {
@@ -580,7 +630,8 @@ pub fn gordon<T: LiteralScalar>(cmd: &GordonCommand) -> Result<Outcome, CliError
     };
     let curves_u = build("--u-curve", &at_u, &need_v, &mut env)?;
     let curves_v = build("--v-curve", &at_v, &need_u, &mut env)?;
-    let expected = "a compatible network: g(u_i, ·) at v_j equals g(·, v_j) at u_i, one curve per node";
+    let expected =
+        "a compatible network: g(u_i, ·) at v_j equals g(·, v_j) at u_i, one curve per node";
     let surface = match points {
         Some(p) => GordonSurface::with_points(
             u_nodes,
@@ -613,7 +664,8 @@ pub fn gordon<T: LiteralScalar>(cmd: &GordonCommand) -> Result<Outcome, CliError
         report.push("result", Value::Matrix(column(&p.g)));
     } else {
         let shape3 = (us.len(), vs.len(), d);
-        let mut parts: [Array3<T>; 4] = std::array::from_fn(|_| Array3::from_elem(shape3, T::zero()));
+        let mut parts: [Array3<T>; 4] =
+            std::array::from_fn(|_| Array3::from_elem(shape3, T::zero()));
         for (i, u) in us.iter().enumerate() {
             for (j, v) in vs.iter().enumerate() {
                 let p = surface.eval_parts(u.clone(), v.clone());
@@ -692,7 +744,8 @@ pub struct LagrangeCommand {
 /// Lagrange basis values or interpolation (thesis algorithm 8, `Lagrange`).
 pub fn lagrange<T: LiteralScalar>(cmd: &LagrangeCommand) -> Result<Outcome, CliError> {
     let nodes: Vec<T> = load_params("--nodes", &cmd.nodes)?;
-    let basis = Lagrange::new(nodes.clone()).map_err(lib("--nodes", "distinct finite nodes, at least one"))?;
+    let basis = Lagrange::new(nodes.clone())
+        .map_err(lib("--nodes", "distinct finite nodes, at least one"))?;
     let ts: Vec<T> = params_or_samples("--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
     let mut report = Report::new();
     report.push("t", Value::Matrix(row(&ts)));
@@ -706,17 +759,30 @@ pub fn lagrange<T: LiteralScalar>(cmd: &LagrangeCommand) -> Result<Outcome, CliE
             let values = points("--points", text, None, cmd.rows.rows)?;
             let mut cols = Vec::with_capacity(ts.len());
             for t in &ts {
-                cols.push(basis.interpolate(&values, t).map_err(lib(
-                    "--points",
-                    "one column of values per node",
-                ))?);
+                cols.push(
+                    basis
+                        .interpolate(&values, t)
+                        .map_err(lib("--points", "one column of values per node"))?,
+                );
             }
             let result = DMatrix::from_columns(&cols);
             if let Some(path) = &cmd.plot.plot {
                 let (line, pts) = if result.nrows() == 1 {
                     // Numbers: plot (t, p(t)) and (x_i, y_i).
-                    let l = DMatrix::from_fn(2, ts.len(), |r, k| if r == 0 { ts[k].to_f64() } else { result[(0, k)].to_f64() });
-                    let p = DMatrix::from_fn(2, nodes.len(), |r, k| if r == 0 { nodes[k].to_f64() } else { values[(0, k)].to_f64() });
+                    let l = DMatrix::from_fn(2, ts.len(), |r, k| {
+                        if r == 0 {
+                            ts[k].to_f64()
+                        } else {
+                            result[(0, k)].to_f64()
+                        }
+                    });
+                    let p = DMatrix::from_fn(2, nodes.len(), |r, k| {
+                        if r == 0 {
+                            nodes[k].to_f64()
+                        } else {
+                            values[(0, k)].to_f64()
+                        }
+                    });
                     (l, p)
                 } else {
                     (to_f64(&result), to_f64(&values))

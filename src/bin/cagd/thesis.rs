@@ -175,9 +175,10 @@ fn primer_2_4(out: &mut String, files: &mut Files) -> Result<(), CliError> {
         .eval_many(&cagd::linspace(0.0, 1.0, 101))
         .map_err(lib("thesis", INTERNAL))?;
     let s = curve.scheme(0.5);
-    let mut figure = Figure::new("Primer 2.4: Bézier curve and de Casteljau construction at t = 0.5")
-        .curve(dense, Colour::Blue, "curve b(t)")
-        .control_polygon(curve.control().clone(), "control polygon");
+    let mut figure =
+        Figure::new("Primer 2.4: Bézier curve and de Casteljau construction at t = 0.5")
+            .curve(dense, Colour::Blue, "curve b(t)")
+            .control_polygon(curve.control().clone(), "control polygon");
     for (r, level) in s.levels().iter().enumerate().skip(1) {
         let label = match r {
             1 => "de Casteljau points b_i^r(0.5)",
@@ -214,17 +215,24 @@ fn patch_example(out: &mut String, files: &mut Files) -> Result<(), CliError> {
     let exact = BezierPatch::from_array3(&example_net::<Q>()).map_err(lib("thesis", INTERNAL))?;
     let _ = writeln!(out, "{}", exact.scheme(q(1, 2), q(1, 2)));
     let mut r = Report::<Q>::new();
-    r.push("b(1/2, 1/2)", Value::Matrix(column(&exact.eval(q(1, 2), q(1, 2)))));
+    r.push(
+        "b(1/2, 1/2)",
+        Value::Matrix(column(&exact.eval(q(1, 2), q(1, 2)))),
+    );
     out.push_str(&text(&r));
     let patch = BezierPatch::from_array3(&example_net::<f64>()).map_err(lib("thesis", INTERNAL))?;
     let t = cagd::linspace(0.0, 1.0, 5);
-    let grid = patch.try_eval_grid(&t, &t).map_err(lib("thesis", INTERNAL))?;
+    let grid = patch
+        .try_eval_grid(&t, &t)
+        .map_err(lib("thesis", INTERNAL))?;
     out.push_str("ploskevB(B, 5): the grid P (5×5×3):\n\n");
     let mut r = Report::<f64>::new();
     r.push("P", Value::Grid(grid));
     out.push_str(&text(&r));
     let t = cagd::linspace(0.0, 1.0, 21);
-    let grid = patch.try_eval_grid(&t, &t).map_err(lib("thesis", INTERNAL))?;
+    let grid = patch
+        .try_eval_grid(&t, &t)
+        .map_err(lib("thesis", INTERNAL))?;
     let figure = Figure::new("Bézier patch with its control net (example in place of Primer 3.2)")
         .surface(grid.clone(), "patch")
         .net(example_net::<f64>(), Colour::Red, "control net");
@@ -244,8 +252,8 @@ fn primer_4_3(out: &mut String, files: &mut Files) -> Result<(), CliError> {
         "c1(u) = {C1}, c2(u) = {C2}, d1(v) = {D1}, d2(v) = {D2}; u = 0.2, v = 0.5, exactly.\n"
     );
     let (u, v) = (q(1, 5), q(1, 2));
-    let at_u = needed(&[&[u.clone()]]);
-    let at_v = needed(&[&[v.clone()]]);
+    let at_u = needed(&[std::slice::from_ref(&u)]);
+    let at_v = needed(&[std::slice::from_ref(&v)]);
     let patch = CoonsPatch::new(
         expr_curve::<Q>(C1, "u", &at_u)?,
         expr_curve::<Q>(C2, "u", &at_u)?,
@@ -265,15 +273,19 @@ fn primer_4_3(out: &mut String, files: &mut Files) -> Result<(), CliError> {
          and x = (0.2, 0.3, 0.38): the same.\n\n",
     );
     let t = cagd::linspace(0.0, 1.0, 21);
-    let [c1, c2, d1, d2] = [(C1, "u"), (C2, "u"), (D1, "v"), (D2, "v")]
-        .map(|(e, p)| expr_curve::<f64>(e, p, &t));
+    let [c1, c2, d1, d2] =
+        [(C1, "u"), (C2, "u"), (D1, "v"), (D2, "v")].map(|(e, p)| expr_curve::<f64>(e, p, &t));
     let (c1, c2, d1, d2) = (c1?, c2?, d1?, d2?);
     let patch = CoonsPatch::new(c1.clone(), c2.clone(), d1.clone(), d2.clone())
         .map_err(lib("thesis", INTERNAL))?;
     let grid = patch.eval_grid(&t, &t);
-    let x = patch.eval(0.2, 0.5);
-    let figure = coons_figure("Primer 4.3: Coons patch and the point x(0.2, 0.5)", grid.clone(), [&c1, &c2, &d1, &d2], &t, &t)
-        .boundary(DMatrix::from_column_slice(3, 1, x.as_slice()), Colour::Black, "x(0.2, 0.5)");
+    let figure = coons_figure(
+        "Primer 4.3: Coons patch, c1 and c2 red, d1 and d2 green",
+        grid.clone(),
+        [&c1, &c2, &d1, &d2],
+        &t,
+        &t,
+    );
     files.picture("primer_4_3", &figure)?;
     files.meshes("primer_4_3", &grid)
 }
@@ -287,7 +299,8 @@ fn appendix_c(out: &mut String, files: &mut Files) -> Result<(), CliError> {
     );
     let script = cagd::octave::script::run::<f64>(APPENDIX_C, Env::new())
         .map_err(|e| CliError::literal("thesis", e, INTERNAL))?;
-    let get = |name: &str| script_curve(&script, name, if name.starts_with('c') { "u" } else { "v" });
+    let get =
+        |name: &str| script_curve(&script, name, if name.starts_with('c') { "u" } else { "v" });
     let mut env = script.env().clone();
     let mut curves = Vec::new();
     for name in ["c1", "c2", "d1", "d2"] {
@@ -302,15 +315,28 @@ fn appendix_c(out: &mut String, files: &mut Files) -> Result<(), CliError> {
     };
     let corners = [corner("P1")?, corner("P2")?, corner("P3")?, corner("P4")?];
     let [c1, c2, d1, d2]: [CliCurve<f64>; 4] = curves.try_into().unwrap_or_else(|_| unreachable!());
-    let patch = CoonsPatch::with_corners(c1.clone(), c2.clone(), d1.clone(), d2.clone(), corners, Tolerance::default())
-        .map_err(lib("thesis", INTERNAL))?;
+    let patch = CoonsPatch::with_corners(
+        c1.clone(),
+        c2.clone(),
+        d1.clone(),
+        d2.clone(),
+        corners,
+        Tolerance::default(),
+    )
+    .map_err(lib("thesis", INTERNAL))?;
     let t = cagd::linspace(0.0, 1.0, 10);
     let grid = patch.eval_grid(&t, &t);
     out.push_str("krpaCoons(c1,c2,d1,d2,P1,P2,P3,P4) with N = 10: the grid P = tenzor(R):\n\n");
     let mut r = Report::<f64>::new();
     r.push("P", Value::Grid(grid.clone()));
     out.push_str(&text(&r));
-    let figure = coons_figure("Appendix C: Coons patch, c1 and c2 red, d1 and d2 green", grid.clone(), [&c1, &c2, &d1, &d2], &t, &t);
+    let figure = coons_figure(
+        "Appendix C: Coons patch, c1 and c2 red, d1 and d2 green",
+        grid.clone(),
+        [&c1, &c2, &d1, &d2],
+        &t,
+        &t,
+    );
     files.picture("appendix_c", &figure)?;
     files.meshes("appendix_c", &grid)
 }
@@ -319,7 +345,8 @@ fn appendix_c(out: &mut String, files: &mut Files) -> Result<(), CliError> {
 /// x = [0 0.5 1], crossing points g_uv.
 const V_CURVES: [&str; 3] = ["[u;0;u-u^2]", "[u;0.5;0.5+u-u^2]", "[u;1;1+u-u^2]"];
 const U_CURVES: [&str; 3] = ["[0;v;v]", "[0.5;v;0.25+v]", "[1;v;v]"];
-const G_UV: &str = "[0 0 0 0 0.5 0.5 0 1 1; 0.5 0 0.25 0.5 0.5 0.75 0.5 1 1.25; 1 0 0 1 0.5 0.5 1 1 1]";
+const G_UV: &str =
+    "[0 0 0 0 0.5 0.5 0 1 1; 0.5 0 0.25 0.5 0.5 0.75 0.5 1 1.25; 1 0 0 1 0.5 0.5 1 1 1]";
 
 fn gordon_of<T: LiteralScalar>(
     us: &[T],
@@ -344,8 +371,15 @@ fn gordon_of<T: LiteralScalar>(
                 .collect()
         })
         .collect();
-    GordonSurface::with_points(nodes.clone(), nodes, curves_u, curves_v, points, Tolerance::default())
-        .map_err(lib("thesis", INTERNAL))
+    GordonSurface::with_points(
+        nodes.clone(),
+        nodes,
+        curves_u,
+        curves_v,
+        points,
+        Tolerance::default(),
+    )
+    .map_err(lib("thesis", INTERNAL))
 }
 
 fn appendix_d(out: &mut String, files: &mut Files) -> Result<(), CliError> {
@@ -361,7 +395,7 @@ fn appendix_d(out: &mut String, files: &mut Files) -> Result<(), CliError> {
         U_CURVES.join(", ")
     );
     let (u, v) = (q(1, 4), q(3, 4));
-    let g = gordon_of::<Q>(&[u.clone()], &[v.clone()])?;
+    let g = gordon_of::<Q>(std::slice::from_ref(&u), std::slice::from_ref(&v))?;
     let p = g.eval_parts(u, v);
     out.push_str("At (u, v) = (1/4, 3/4), exactly:\n\n");
     let mut r = Report::<Q>::new();
@@ -391,7 +425,8 @@ fn appendix_d(out: &mut String, files: &mut Files) -> Result<(), CliError> {
     let t = cagd::linspace(0.0, 1.0, 21);
     let g = gordon_of::<f64>(&t, &t)?;
     let grid = g.eval_grid(&t, &t);
-    let mut figure = Figure::new("Appendix D: Gordon surface and its curve network").surface(grid.clone(), "g(u,v)");
+    let mut figure = Figure::new("Appendix D: Gordon surface and its curve network")
+        .surface(grid.clone(), "g(u,v)");
     for (k, c) in g.curves_at_u().iter().enumerate() {
         let label = if k == 0 { "g(u_i, v)" } else { "" };
         figure = figure.boundary(sample(c, &t), Colour::Red, label);
