@@ -82,6 +82,141 @@ pub enum Error {
         /// What was wrong and what was expected.
         message: String,
     },
+    /// The four boundary curves of a Coons patch (or their cross-boundary derivatives) do not
+    /// meet at the corners: every corner whose two values differ by more than the tolerance is
+    /// listed, with the gap.
+    #[error("boundary curves do not meet at the corners ({tolerance}): {}", format_corner_gaps(.gaps))]
+    CornerMismatch {
+        /// One entry per disagreeing corner.
+        gaps: Vec<crate::coons::CornerGap>,
+        /// The tolerance the gaps were checked against.
+        tolerance: crate::coons::Tolerance,
+    },
+    /// A Gordon curve network is not compatible: the curve `g(u_i, v)` at `v = v_j` is not the
+    /// curve `g(u, v_j)` at `u = u_i`. The worst pair is reported, with the number of pairs
+    /// over the tolerance.
+    #[error(
+        "curve network is not compatible ({tolerance}): g(u_{u_curve}, v) at v = {v} and g(u, v_{v_curve}) at u = {u} are {gap:e} apart (allowed {allowed:e}; {count} pair(s) over)"
+    )]
+    NetworkMismatch {
+        /// Index `i` of the curve `g(u_i, v)`.
+        u_curve: usize,
+        /// Index `j` of the curve `g(u, v_j)`.
+        v_curve: usize,
+        /// The node `u_i`.
+        u: f64,
+        /// The node `v_j`.
+        v: f64,
+        /// The gap (largest coordinate difference).
+        gap: f64,
+        /// The largest gap the tolerance allows at this pair.
+        allowed: f64,
+        /// The tolerance the gaps were checked against.
+        tolerance: crate::coons::Tolerance,
+        /// How many pairs are over the tolerance.
+        count: usize,
+    },
+    /// Two interpolation nodes coincide (Lagrange blending needs distinct nodes).
+    #[error("{what}: nodes {first} and {second} are equal ({value})")]
+    DuplicateNodes {
+        /// Which node vector.
+        what: &'static str,
+        /// Index of the first of the two.
+        first: usize,
+        /// Index of the second.
+        second: usize,
+        /// The common value.
+        value: f64,
+    },
+    /// Interpolation nodes are not in increasing order.
+    #[error("{what}: nodes must increase, but node {index} ({value}) is above node {} ({next})", .index + 1)]
+    UnsortedNodes {
+        /// Which node vector.
+        what: &'static str,
+        /// Index `k` with `nodes[k] > nodes[k+1]`.
+        index: usize,
+        /// `nodes[k]`.
+        value: f64,
+        /// `nodes[k+1]`.
+        next: f64,
+    },
+    /// A construction was given fewer curves than it needs.
+    #[error("{what}: expected at least {min} curve(s), got {found}")]
+    TooFewCurves {
+        /// Which family of curves.
+        what: &'static str,
+        /// The least number accepted.
+        min: usize,
+        /// The number given.
+        found: usize,
+    },
+    /// A blending function of a generalized Coons patch breaks one of its conditions
+    /// (`f1 + f2 = 1`, `f1(0) = 1`, `f1(1) = 0`, likewise for `g1`, `g2`).
+    #[error(
+        "blending function {function}: {condition} fails at t = {t}: value {value}, expected {expected} (tolerance {tolerance:e})"
+    )]
+    BlendingCondition {
+        /// The function or combination checked, e.g. `"f1 + f2"`.
+        function: &'static str,
+        /// The condition, e.g. `"partition of unity"`.
+        condition: &'static str,
+        /// The parameter where it fails.
+        t: f64,
+        /// The value found.
+        value: f64,
+        /// The value required.
+        expected: f64,
+        /// The tolerance used.
+        tolerance: f64,
+    },
+    /// A construction needs the derivative of a curve that does not provide one
+    /// ([`crate::Curve::eval_derivative`] returned `None`).
+    #[error("{what}: the curve provides no derivative, which this construction needs")]
+    MissingDerivative {
+        /// Which curve.
+        what: &'static str,
+    },
+    /// A discrete Coons mask `(α, β)` that is not affinely invariant: the weights of the eight
+    /// neighbours must sum to one, `4α + 4β = 1`.
+    #[error("mask (alpha = {alpha}, beta = {beta}): 4*alpha + 4*beta = {sum}, expected 1")]
+    MaskNotAffine {
+        /// The corner weight α.
+        alpha: f64,
+        /// The edge weight β.
+        beta: f64,
+        /// The value of `4α + 4β`.
+        sum: f64,
+    },
+    /// The linear system of a discrete Coons mask is singular (or numerically singular) on the
+    /// given net: some eigenvalue `1 − 2β(cos θ_p + cos φ_q) − 4α cos θ_p cos φ_q`,
+    /// `θ_p = pπ/m`, `φ_q = qπ/n`, vanishes.
+    #[error(
+        "mask (alpha = {alpha}, beta = {beta}) is singular on a net of degree ({m}, {n}): eigenvalue {eigenvalue:e} for mode (p, q) = ({p}, {q})"
+    )]
+    SingularMask {
+        /// The corner weight α.
+        alpha: f64,
+        /// The edge weight β.
+        beta: f64,
+        /// Degree of the net in the first direction (rows `0..=m`).
+        m: usize,
+        /// Degree of the net in the second direction (columns `0..=n`).
+        n: usize,
+        /// The mode `p` (1 ≤ p < m) of the smallest eigenvalue.
+        p: usize,
+        /// The mode `q` (1 ≤ q < n) of the smallest eigenvalue.
+        q: usize,
+        /// The smallest eigenvalue in absolute value (0 for an exactly singular system).
+        eigenvalue: f64,
+    },
+}
+
+/// One line per corner gap, for the message of [`Error::CornerMismatch`].
+fn format_corner_gaps(gaps: &[crate::coons::CornerGap]) -> String {
+    gaps.iter()
+        .map(|g| g.to_string())
+        .collect::<Vec<_>>()
+        .join("; ")
 }
 
 /// Checks that every value is finite; reports the first one that is not.

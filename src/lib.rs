@@ -16,14 +16,19 @@
 
 pub mod bernstein;
 pub mod bezier;
+pub mod coons;
 pub mod error;
+pub mod gordon;
+pub mod lagrange;
 pub mod linspace;
 pub mod octave;
 pub mod param;
 pub mod scalar;
 
 pub use bezier::{BezierCurve, BezierPatch, Edge};
+pub use coons::{CoonsPatch, Tolerance};
 pub use error::{Error, Result};
+pub use gordon::GordonSurface;
 pub use linspace::linspace;
 pub use param::{Curve, FnCurve, SampledCurve, Surface};
 pub use scalar::Scalar;

@@ -1,0 +1,194 @@
+//! The bilinearly blended Coons patch (thesis §4.1, Izrek 4.2; notes (5)).
+
+use nalgebra::DVector;
+
+use super::{CoonsBoundary, CoonsPoint, Tolerance};
+use crate::error::Result;
+use crate::param::{Curve, Surface};
+use crate::scalar::Scalar;
+
+/// The bilinearly blended Coons patch of four boundary curves (Izrek 4.2):
+///
+/// ```text
+/// x(u,v) = r_c(u,v) + r_d(u,v) − r_cd(u,v),
+///   r_c  = (1−v) c1(u) + v c2(u)                                   (4.1)
+///   r_d  = (1−u) d1(v) + u d2(v)                                   (4.2)
+///   r_cd = (1−u)(1−v) P1 + u(1−v) P2 + (1−u)v P3 + uv P4            (4.3)
+/// ```
+///
+/// with `c1 = x(·,0)`, `c2 = x(·,1)`, `d1 = x(0,·)`, `d2 = x(1,·)` over `[0, 1]` and the corners
+/// `P1..P4 = x(0,0), x(1,0), x(0,1), x(1,1)` (see the [module docs](super)). It interpolates the
+/// four curves: `x(u,0) = c1(u)` because `r_d(u,0) = r_cd(u,0)` when the corners agree.
+///
+/// The boundary curves may be of any kind implementing [`Curve`] (Bézier, sampled polyline,
+/// closure, …; mix kinds with `Box<dyn Curve<T>>`). The sums are formed in the order of the
+/// thesis functions `krpaCoons` / `vrednostCoons`, so in `f64` the patch agrees with the
+/// (fixed) Octave code to the last bit on the same curve values.
+///
+/// Checked against the seed: Primer 4.3's data are compatible (`c2(0) = d1(1) = (0,1,0)`,
+/// `c1(1) = d2(0) = (1,0,0)`, `c1(0) = d1(0) = 0`, `c2(1) = d2(1) = (1,1,1)`, which are the
+/// `P1..P4` of appendix C) and its printed `r_c`, `r_d`, `r_cd` and `x(0.2, 0.5)` are exactly
+/// right (example below). Where the seed is wrong: the proof of Izrek 4.2 ends with
+/// "`x(v,1) = d2(v)`", meaning `x(1,v) = d2(v)`; appendix C's data script for `krpaCoons`
+/// assigns `P3` twice (`P3 = [1;1;1]` is meant as `P4`, which is never set) and relies on an
+/// undefined `N`; `krpaCoons` itself uses `N` without defining it, and `vrednostCoons` returns
+/// nothing (it only displays `T`). The fixed Octave references (`octave_ref/fixed/`) list each
+/// fix; on the same curve values this type reproduces them bit for bit.
+///
+/// # Example: thesis Primer 4.3, exactly
+/// ```
+/// use cagd::coons::{CoonsPatch, Tolerance};
+/// use cagd::FnCurve;
+/// use nalgebra::{dvector, DVector};
+/// use num_rational::BigRational as Q;
+/// type F = fn(Q) -> DVector<Q>;
+/// let q = |n: i64, d: i64| Q::new(n.into(), d.into());
+/// let c1: F = |u| dvector![u.clone(), Q::from_integer(0.into()), u.clone() - u.clone() * u];
+/// let c2: F = |u| dvector![u.clone(), Q::from_integer(1.into()), u];
+/// let d1: F = |v| dvector![Q::from_integer(0.into()), v.clone() * v.clone(), v.clone() - v.clone() * v];
+/// let d2: F = |v| dvector![Q::from_integer(1.into()), v.clone(), v];
+/// let patch = CoonsPatch::with_tolerance(
+///     FnCurve::new(3, c1), FnCurve::new(3, c2), FnCurve::new(3, d1), FnCurve::new(3, d2),
+///     Tolerance::Exact,
+/// ).unwrap();
+/// let p = patch.eval_parts(q(1, 5), q(1, 2));
+/// assert_eq!(p.rc, dvector![q(1, 5), q(1, 2), q(9, 50)]);   // (0.2, 0.5, 0.18)
+/// assert_eq!(p.rd, dvector![q(1, 5), q(3, 10), q(3, 10)]);  // (0.2, 0.3, 0.3)
+/// assert_eq!(p.rcd, dvector![q(1, 5), q(1, 2), q(1, 10)]);  // (0.2, 0.5, 0.1)
+/// assert_eq!(p.x, dvector![q(1, 5), q(3, 10), q(19, 50)]);  // (0.2, 0.3, 0.38)
+/// ```
+#[derive(Debug, Clone)]
+pub struct CoonsPatch<C, T: Scalar = f64> {
+    boundary: CoonsBoundary<C, T>,
+}
+
+impl<T: Scalar, C: Curve<T>> CoonsPatch<C, T> {
+    /// The Coons patch of `c1 = x(·,0)`, `c2 = x(·,1)`, `d1 = x(0,·)`, `d2 = x(1,·)`, corners
+    /// checked with the default tolerance (relative `1e-10`, see [`Tolerance`]) and taken from
+    /// `c1`, `c2`.
+    ///
+    /// # Errors
+    /// See [`CoonsBoundary::new`]: curves of different dimensions, non-finite corners, and
+    /// [`crate::Error::CornerMismatch`] naming every corner where the curves disagree.
+    pub fn new(c1: C, c2: C, d1: C, d2: C) -> Result<Self> {
+        Self::with_tolerance(c1, c2, d1, d2, Tolerance::default())
+    }
+
+    /// [`CoonsPatch::new`] with a chosen corner tolerance.
+    ///
+    /// # Errors
+    /// As [`CoonsPatch::new`].
+    pub fn with_tolerance(c1: C, c2: C, d1: C, d2: C, tolerance: Tolerance) -> Result<Self> {
+        Ok(CoonsPatch {
+            boundary: CoonsBoundary::new(c1, c2, d1, d2, tolerance)?,
+        })
+    }
+
+    /// The Coons patch with the corner points `P1..P4 = x(0,0), x(1,0), x(0,1), x(1,1)` given,
+    /// as in the thesis function `krpaCoons(c1,c2,d1,d2,P1,P2,P3,P4)`.
+    ///
+    /// # Errors
+    /// As [`CoonsBoundary::with_corners`].
+    pub fn with_corners(
+        c1: C,
+        c2: C,
+        d1: C,
+        d2: C,
+        corners: [DVector<T>; 4],
+        tolerance: Tolerance,
+    ) -> Result<Self> {
+        Ok(CoonsPatch {
+            boundary: CoonsBoundary::with_corners(c1, c2, d1, d2, corners, tolerance)?,
+        })
+    }
+
+    /// The patch of an already checked boundary.
+    pub fn from_boundary(boundary: CoonsBoundary<C, T>) -> Self {
+        CoonsPatch { boundary }
+    }
+
+    /// The point `x(u, v)` with its parts `r_c`, `r_d`, `r_cd` (thesis `vrednostCoons`).
+    pub fn eval_parts(&self, u: T, v: T) -> CoonsPoint<T> {
+        let f = (T::one() - u.clone(), u.clone());
+        let g = (T::one() - v.clone(), v.clone());
+        self.boundary.blend(&u, &v, &f, &g)
+    }
+}
+
+impl<T: Scalar, C> CoonsPatch<C, T> {
+    /// The checked boundary curves and corners.
+    pub fn boundary(&self) -> &CoonsBoundary<C, T> {
+        &self.boundary
+    }
+
+    /// The corner points `[P1, P2, P3, P4] = [x(0,0), x(1,0), x(0,1), x(1,1)]`.
+    pub fn corners(&self) -> &[DVector<T>; 4] {
+        self.boundary.corners()
+    }
+}
+
+impl<T: Scalar, C: Curve<T>> Surface<T> for CoonsPatch<C, T> {
+    fn dim(&self) -> usize {
+        self.boundary.dim()
+    }
+
+    fn eval(&self, u: T, v: T) -> DVector<T> {
+        self.eval_parts(u, v).x
+    }
+
+    /// The patch on the grid `us × vs`, shape `(us.len(), vs.len(), d)` (the layout of the
+    /// thesis's `P = tenzor(R)` in `krpaCoons`). Each boundary curve is evaluated once per grid
+    /// line, not once per point.
+    fn eval_grid(&self, us: &[T], vs: &[T]) -> ndarray::Array3<T> {
+        let f: Vec<_> = us
+            .iter()
+            .map(|u| (T::one() - u.clone(), u.clone()))
+            .collect();
+        let g: Vec<_> = vs
+            .iter()
+            .map(|v| (T::one() - v.clone(), v.clone()))
+            .collect();
+        self.boundary.blend_grid(us, vs, &f, &g)
+    }
+}
+
+impl<T: Scalar> CoonsPatch<crate::bezier::BezierCurve<T>, T> {
+    /// The Coons patch of four Bézier curves (over `[0, 1]`), exactly, as one tensor-product
+    /// Bézier patch of degree `(max(1, deg c1, deg c2), max(1, deg d1, deg d2))`: the Gordon
+    /// surface with nodes `{0, 1}` in both directions (its Lagrange basis is `1 − t, t`), see
+    /// [`crate::gordon::GordonSurface::to_bezier`]. The corners used are the patch's `P1..P4`.
+    ///
+    /// # Errors
+    /// [`crate::Error::InvalidArgument`] if a curve is defined over an interval other than
+    /// `[0, 1]`.
+    ///
+    /// ```
+    /// use cagd::bezier::BezierCurve;
+    /// use cagd::coons::CoonsPatch;
+    /// use cagd::Surface;
+    /// use nalgebra::dmatrix;
+    /// let c1 = BezierCurve::new(dmatrix![0.0, 0.5, 1.0; 0.0, -0.5, 0.0]).unwrap();
+    /// let c2 = BezierCurve::new(dmatrix![0.0, 1.0; 1.0, 1.0]).unwrap();
+    /// let d1 = BezierCurve::new(dmatrix![0.0, 0.0; 0.0, 1.0]).unwrap();
+    /// let d2 = BezierCurve::new(dmatrix![1.0, 1.0; 0.0, 1.0]).unwrap();
+    /// let coons = CoonsPatch::new(c1, c2, d1, d2).unwrap();
+    /// let patch = coons.to_bezier().unwrap();
+    /// assert_eq!(patch.degree(), (2, 1));
+    /// assert!((patch.eval(0.3, 0.6) - coons.eval(0.3, 0.6)).amax() < 1e-15);
+    /// ```
+    pub fn to_bezier(&self) -> Result<crate::bezier::BezierPatch<T>> {
+        let (c1, c2, d1, d2) = self.boundary.curves();
+        let p = self.boundary.corners();
+        let nodes = [T::zero(), T::one()];
+        crate::gordon::gordon_bezier_net(
+            &nodes,
+            &nodes,
+            &[d1.clone(), d2.clone()],
+            &[c1.clone(), c2.clone()],
+            &[
+                vec![p[0].clone(), p[2].clone()],
+                vec![p[1].clone(), p[3].clone()],
+            ],
+        )
+    }
+}

@@ -1,0 +1,105 @@
+//! The discrete Coons patch (thesis end of §4.1; notes (6)).
+
+use nalgebra::DMatrix;
+
+use crate::error::{Error, Result};
+use crate::scalar::Scalar;
+
+/// Checks a net given as one `(m+1) × (n+1)` matrix per coordinate (the layout of
+/// `BezierPatch`) and returns `(m, n)`.
+pub(crate) fn net_degree<T: Scalar>(
+    what: &'static str,
+    net: &[DMatrix<T>],
+) -> Result<(usize, usize)> {
+    let first = net.first().ok_or(Error::ShapeMismatch {
+        what,
+        expected: "at least one coordinate matrix".into(),
+        found: "none".into(),
+    })?;
+    let (rows, cols) = first.shape();
+    if rows == 0 || cols == 0 {
+        return Err(Error::TooFewPoints {
+            what,
+            min: 1,
+            found: 0,
+        });
+    }
+    for c in net {
+        if c.shape() != (rows, cols) {
+            return Err(Error::ShapeMismatch {
+                what,
+                expected: format!("coordinate matrices of one shape {rows}×{cols}"),
+                found: format!("{}×{}", c.nrows(), c.ncols()),
+            });
+        }
+        crate::error::check_finite(what, c.iter())?;
+    }
+    Ok((rows - 1, cols - 1))
+}
+
+/// The discrete Coons patch: the interior control points of a Bézier net `b_{i,j}`,
+/// `i = 0..=m`, `j = 0..=n`, from its four boundary rows (notes (6)):
+///
+/// ```text
+/// b_ij = (1 − i/m) b_0j + (i/m) b_mj + (1 − j/n) b_i0 + (j/n) b_in
+///        − [1 − i/m, i/m] [b_00 b_0n; b_m0 b_mn] [1 − j/n; j/n],   0 < i < m, 0 < j < n.
+/// ```
+///
+/// It is the bilinearly blended Coons construction applied to the control net, with the
+/// blending parameters `i/m`, `j/n` at the Greville abscissae.
+///
+/// `net` holds one `(m+1) × (n+1)` matrix per coordinate (entry `(i, j)` is coordinate `k` of
+/// `b_ij`, as `BezierPatch` takes it); only the boundary rows and columns are read, and the
+/// returned net has the same boundary with the interior filled in. With `m < 2` or `n < 2`
+/// there is no interior and the net is returned unchanged.
+///
+/// The thesis prints this formula with three slips, corrected here: the ranges of `b^v_ij` are
+/// swapped (`i = 1..n−1, j = 1..m−1`; they are `i = 1..m−1, j = 1..n−1`), those of `b^{u,v}_ij`
+/// run to `m` and `n` (they are interior, `1..m−1`, `1..n−1`), and its bilinear term
+/// `[1 − j/n, j/n] [b_00 b_0n; b_m0 b_mn] [1 − i/m; i/m]` has the two blending vectors swapped,
+/// which would give `b_0n` the weight `(1 − j/n) i/m` instead of `(1 − i/m) j/n` (the notes'
+/// formula (6) has them right). The left-hand side of its last display should read `b_ij`, not
+/// `b^{u,v}_ij`.
+///
+/// The result satisfies the 3×3 mask equation of [`super::Mask::coons`] at every interior
+/// point, so it equals [`super::solve_mask`] with that mask (see there for the proof).
+///
+/// # Errors
+/// [`Error::ShapeMismatch`] for no coordinates or coordinate matrices of different shapes,
+/// [`Error::TooFewPoints`] for an empty net, [`Error::NonFinite`] for non-finite entries.
+///
+/// ```
+/// use cagd::coons::discrete_coons;
+/// use nalgebra::dmatrix;
+/// // A 3×3 net (m = n = 2) of a height field: only the centre is unknown.
+/// let z = dmatrix![0.0, 1.0, 0.0;
+///                  1.0, 9.0, 3.0;
+///                  0.0, 1.0, 2.0];
+/// let net = discrete_coons(&[z]).unwrap();
+/// // (1 + 1)/2 + (1 + 3)/2 − (0 + 0 + 0 + 2)/4
+/// assert_eq!(net[0][(1, 1)], 2.5);
+/// ```
+pub fn discrete_coons<T: Scalar>(net: &[DMatrix<T>]) -> Result<Vec<DMatrix<T>>> {
+    let (m, n) = net_degree("discrete Coons net", net)?;
+    let mut out = net.to_vec();
+    if m < 2 || n < 2 {
+        return Ok(out);
+    }
+    for (b, o) in net.iter().zip(out.iter_mut()) {
+        for i in 1..m {
+            let s = T::from_ratio(i as i64, m as i64);
+            let s1 = T::one() - s.clone();
+            for j in 1..n {
+                let t = T::from_ratio(j as i64, n as i64);
+                let t1 = T::one() - t.clone();
+                let bu = s1.clone() * b[(0, j)].clone() + s.clone() * b[(m, j)].clone();
+                let bv = t1.clone() * b[(i, 0)].clone() + t.clone() * b[(i, n)].clone();
+                let buv = s1.clone()
+                    * (t1.clone() * b[(0, 0)].clone() + t.clone() * b[(0, n)].clone())
+                    + s.clone() * (t1.clone() * b[(m, 0)].clone() + t.clone() * b[(m, n)].clone());
+                o[(i, j)] = bu + bv - buv;
+            }
+        }
+    }
+    Ok(out)
+}

@@ -1,0 +1,381 @@
+//! The 3×3 mask formulation of discrete Coons patches (notes (7)–(9)).
+
+use nalgebra::DMatrix;
+
+use super::discrete::net_degree;
+use crate::error::{Error, Result};
+use crate::scalar::Scalar;
+
+/// A symmetric 3×3 mask (notes (9)): every interior control point is the weighted sum of its
+/// eight neighbours, corner neighbours with weight `α` and edge neighbours with weight `β`,
+///
+/// ```text
+///            ⎡ α  β  α ⎤
+///   b_ij  =  ⎢ β  *  β ⎥ ,   b_ij = α (b_{i−1,j−1} + b_{i−1,j+1} + b_{i+1,j−1} + b_{i+1,j+1})
+///            ⎣ α  β  α ⎦              + β (b_{i−1,j} + b_{i+1,j} + b_{i,j−1} + b_{i,j+1}).
+/// ```
+///
+/// **The constraint `4α + 4β = 1`.** The construction must commute with affine maps (a patch
+/// moved with its boundary must fill in moved): translating every point by `t` adds
+/// `(4α + 4β) t` to the right-hand side and `t` to the left, so the weights must sum to one.
+/// Every such mask then reproduces bilinear nets `b_ij = a + b i + c j + d ij`: the eight
+/// neighbours sum to `8 b_ij` in pairs symmetric about `(i, j)`, in which the `i`, `j` and `ij`
+/// terms cancel. [`Mask::new`] enforces the constraint; [`Mask::from_alpha`] sets `β = 1/4 − α`.
+///
+/// **Coons.** `α = −1/4`, `β = 1/2` (notes (7)–(8)) is the discrete Coons patch: the equation
+/// `b_ij = −¼ Σ corners + ½ Σ edges` is `Δ²_i Δ²_j b = 0` (the centred second difference in
+/// `i` of the second difference in `j`: the stencil `[1 −2 1] ⊗ [1 −2 1] / 4`), which the
+/// discrete Coons net satisfies because each of its terms is linear in `i` or linear in `j`;
+/// and the solution is unique (see below). So [`solve_mask`] with [`Mask::coons`] reproduces
+/// [`super::discrete_coons`] exactly, which the tests confirm in exact rationals.
+///
+/// **Solvability.** On a net of degree `(m, n)` the system for the `(m−1)(n−1)` interior
+/// points is `A x = r` with `A = I − β E − α D` (`E`, `D`: edge and corner neighbour sums with
+/// zero boundary). Its eigenvectors are `sin(pπi/m) sin(qπj/n)`, `1 ≤ p < m`, `1 ≤ q < n`,
+/// with eigenvalues
+///
+/// ```text
+/// λ_pq = 1 − 2β (cos θ_p + cos φ_q) − 4α cos θ_p cos φ_q,   θ_p = pπ/m,  φ_q = qπ/n,
+/// ```
+///
+/// so `A` is symmetric and singular exactly when some `λ_pq = 0`. For Coons
+/// `λ_pq = (1 − cos θ_p)(1 − cos φ_q) > 0`: always solvable, `A` even positive definite.
+/// Masks with a vanishing (or, in floating point, negligible) `λ_pq` are rejected with
+/// [`Error::SingularMask`]; e.g. `α = −1/2`, `β = 3/4` on a 4×4 net (`m = n = 3`, where
+/// `cos θ_1 = 1/2` gives `λ_11 = 1/2 + α = 0`).
+///
+/// ```
+/// use cagd::coons::Mask;
+/// let coons = Mask::<f64>::coons();
+/// assert_eq!((coons.alpha(), coons.beta()), (-0.25, 0.5));
+/// assert!(Mask::new(0.1, 0.2).is_err()); // 4α + 4β = 1.2
+/// let laplace = Mask::from_alpha(0.0); // the discrete harmonic (Laplace) mask, β = 1/4
+/// assert_eq!(laplace.beta(), 0.25);
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct Mask<T: Scalar = f64> {
+    alpha: T,
+    beta: T,
+}
+
+impl<T: Scalar> Mask<T> {
+    /// The discrete Coons mask `α = −1/4`, `β = 1/2` (notes (7)–(8)).
+    pub fn coons() -> Self {
+        Mask {
+            alpha: T::from_ratio(-1, 4),
+            beta: T::from_ratio(1, 2),
+        }
+    }
+
+    /// The mask with corner weight `alpha` and edge weight `beta`.
+    ///
+    /// # Errors
+    /// [`Error::MaskNotAffine`] unless `4α + 4β = 1` (to `8ε·max(1, 4|α|, 4|β|)`, `ε` the `f64`
+    /// machine epsilon, so that decimal input such as `α = 0.05, β = 0.2` passes in `f64`);
+    /// [`Error::NonFinite`] for a non-finite weight.
+    pub fn new(alpha: T, beta: T) -> Result<Self> {
+        crate::error::check_finite("mask weights (alpha, beta)", [&alpha, &beta])?;
+        let four = T::from_usize(4);
+        let sum = four.clone() * alpha.clone() + four.clone() * beta.clone();
+        let mut scale = T::one();
+        for s in [
+            (four.clone() * alpha.clone()).abs(),
+            (four * beta.clone()).abs(),
+        ] {
+            if s > scale {
+                scale = s;
+            }
+        }
+        let slack = T::from_f64(8.0 * f64::EPSILON).unwrap_or_else(T::zero) * scale;
+        if (sum.clone() - T::one()).abs() > slack {
+            return Err(Error::MaskNotAffine {
+                alpha: alpha.to_f64(),
+                beta: beta.to_f64(),
+                sum: sum.to_f64(),
+            });
+        }
+        Ok(Mask { alpha, beta })
+    }
+
+    /// The affine mask with corner weight `alpha` and edge weight `β = 1/4 − α`.
+    pub fn from_alpha(alpha: T) -> Self {
+        let beta = T::from_ratio(1, 4) - alpha.clone();
+        Mask { alpha, beta }
+    }
+
+    /// The corner weight `α`.
+    pub fn alpha(&self) -> T {
+        self.alpha.clone()
+    }
+
+    /// The edge weight `β`.
+    pub fn beta(&self) -> T {
+        self.beta.clone()
+    }
+
+    /// The eigenvalue `λ_pq` of smallest modulus of the system on a net of degree `(m, n)`
+    /// (see the type docs), as `(p, q, λ_pq)` in `f64`; `None` if the net has no interior.
+    ///
+    /// ```
+    /// use cagd::coons::Mask;
+    /// let (p, q, lambda) = Mask::<f64>::coons().smallest_eigenvalue(3, 3).unwrap();
+    /// assert_eq!((p, q), (1, 1));
+    /// assert!((lambda - 0.25).abs() < 1e-15); // (1 − cos π/3)² = 1/4
+    /// ```
+    pub fn smallest_eigenvalue(&self, m: usize, n: usize) -> Option<(usize, usize, f64)> {
+        let (a, b) = (self.alpha.to_f64(), self.beta.to_f64());
+        let mut best: Option<(usize, usize, f64)> = None;
+        for p in 1..m {
+            let cp = (p as f64 * std::f64::consts::PI / m as f64).cos();
+            for q in 1..n {
+                let cq = (q as f64 * std::f64::consts::PI / n as f64).cos();
+                let lambda = 1.0 - 2.0 * b * (cp + cq) - 4.0 * a * cp * cq;
+                let better = match best {
+                    None => true,
+                    Some((_, _, l)) => lambda.abs() < l.abs(),
+                };
+                if better {
+                    best = Some((p, q, lambda));
+                }
+            }
+        }
+        best
+    }
+
+    fn singular(&self, m: usize, n: usize, p: usize, q: usize, eigenvalue: f64) -> Error {
+        Error::SingularMask {
+            alpha: self.alpha.to_f64(),
+            beta: self.beta.to_f64(),
+            m,
+            n,
+            p,
+            q,
+            eigenvalue,
+        }
+    }
+}
+
+/// Relative size below which an eigenvalue of the mask system counts as zero.
+const SINGULAR_EIGENVALUE: f64 = 1e-12;
+
+/// Fills the interior of a Bézier net from its boundary by the mask `mask`: solves the linear
+/// system "mask equation at every interior point" (notes: "zgornjo enačbo zapišemo za vsako
+/// notranjo kontrolno točko in rešimo pridobljen sistem enačb").
+///
+/// `net` holds one `(m+1) × (n+1)` matrix per coordinate (entry `(i, j)` is coordinate `k` of
+/// `b_ij`); only the boundary is read. With [`Mask::coons`] the result is the discrete Coons
+/// net ([`super::discrete_coons`]).
+///
+/// **Solver.** Numbering the unknowns along the shorter side of the interior, the matrix is
+/// banded with half-bandwidth `w = min(m, n)`; it is factored by banded Gaussian elimination
+/// with partial pivoting in `O((m−1)(n−1) w²)` operations and `O((m−1)(n−1) w)` memory, written
+/// over the [`Scalar`] so that it also runs in exact rationals (where nalgebra's dense LU, which
+/// needs a floating-point field, does not apply). A dense LU would need `((m−1)(n−1))²` memory:
+/// 768 MB already for a net of degree 100.
+///
+/// # Errors
+/// Those of the net ([`Error::ShapeMismatch`], [`Error::TooFewPoints`], [`Error::NonFinite`]);
+/// [`Error::SingularMask`] when the system is singular: some eigenvalue `λ_pq` is below
+/// `1e-12 · (1 + 4|α| + 4|β|)` in modulus, or elimination meets an exactly zero pivot.
+///
+/// ```
+/// use cagd::coons::{discrete_coons, solve_mask, Mask};
+/// use nalgebra::DMatrix;
+/// // A 5×4 net whose boundary is z = sin(i) + cos(j) + i·j.
+/// let z = DMatrix::from_fn(5, 4, |i, j| (i as f64).sin() + (j as f64).cos() + (i * j) as f64);
+/// let by_mask = solve_mask(&[z.clone()], &Mask::coons()).unwrap();
+/// let by_formula = discrete_coons(&[z]).unwrap();
+/// assert!((&by_mask[0] - &by_formula[0]).amax() < 1e-14);
+/// ```
+pub fn solve_mask<T: Scalar>(net: &[DMatrix<T>], mask: &Mask<T>) -> Result<Vec<DMatrix<T>>> {
+    let (m, n) = net_degree("mask net", net)?;
+    let mut out = net.to_vec();
+    if m < 2 || n < 2 {
+        return Ok(out);
+    }
+    let (p, q, lambda) = mask
+        .smallest_eigenvalue(m, n)
+        .expect("m, n >= 2 give at least one mode");
+    let scale = 1.0 + 4.0 * mask.alpha.to_f64().abs() + 4.0 * mask.beta.to_f64().abs();
+    if lambda.abs() <= SINGULAR_EIGENVALUE * scale {
+        return Err(mask.singular(m, n, p, q, lambda));
+    }
+
+    // Unknown numbering: inner index along the shorter interior side.
+    let inner_is_j = n <= m;
+    let (outer_len, inner_len) = if inner_is_j {
+        (m - 1, n - 1)
+    } else {
+        (n - 1, m - 1)
+    };
+    let size = outer_len * inner_len;
+    let w = inner_len + 1;
+    let index = |i: usize, j: usize| -> usize {
+        if inner_is_j {
+            (i - 1) * inner_len + (j - 1)
+        } else {
+            (j - 1) * inner_len + (i - 1)
+        }
+    };
+    let dims = net.len();
+    let mut band = Band::new(size, w);
+    let mut rhs = DMatrix::from_element(size, dims, T::zero());
+    for i in 1..m {
+        for j in 1..n {
+            let r = index(i, j);
+            band.set(r, r, T::one());
+            for di in [-1i64, 0, 1] {
+                for dj in [-1i64, 0, 1] {
+                    if di == 0 && dj == 0 {
+                        continue;
+                    }
+                    let weight = if di != 0 && dj != 0 {
+                        mask.alpha.clone()
+                    } else {
+                        mask.beta.clone()
+                    };
+                    let (ni, nj) = ((i as i64 + di) as usize, (j as i64 + dj) as usize);
+                    if ni == 0 || ni == m || nj == 0 || nj == n {
+                        for (k, b) in net.iter().enumerate() {
+                            rhs[(r, k)] =
+                                rhs[(r, k)].clone() + weight.clone() * b[(ni, nj)].clone();
+                        }
+                    } else {
+                        let c = index(ni, nj);
+                        band.set(r, c, -weight);
+                    }
+                }
+            }
+        }
+    }
+    let x = band
+        .solve(rhs)
+        .ok_or_else(|| mask.singular(m, n, p, q, lambda))?;
+    for i in 1..m {
+        for j in 1..n {
+            let r = index(i, j);
+            for (k, o) in out.iter_mut().enumerate() {
+                o[(i, j)] = x[(r, k)].clone();
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// A square matrix of size `n` with `w` sub- and superdiagonals, stored with room for the `w`
+/// extra superdiagonals that partial pivoting creates: row `r` keeps columns `r − w ..= r + 2w`.
+struct Band<T: Scalar> {
+    n: usize,
+    w: usize,
+    data: DMatrix<T>,
+}
+
+impl<T: Scalar> Band<T> {
+    fn new(n: usize, w: usize) -> Self {
+        Band {
+            n,
+            w,
+            data: DMatrix::from_element(n, 3 * w + 1, T::zero()),
+        }
+    }
+
+    fn get(&self, r: usize, c: usize) -> T {
+        self.data[(r, c + self.w - r)].clone()
+    }
+
+    fn set(&mut self, r: usize, c: usize, value: T) {
+        self.data[(r, c + self.w - r)] = value;
+    }
+
+    /// Solves `A X = B` by Gaussian elimination with partial pivoting; `None` on an exactly
+    /// zero pivot.
+    fn solve(mut self, mut b: DMatrix<T>) -> Option<DMatrix<T>> {
+        let (n, w) = (self.n, self.w);
+        for k in 0..n {
+            let last_row = (k + w).min(n - 1);
+            let last_col = (k + 2 * w).min(n - 1);
+            let mut pivot = k;
+            let mut best = self.get(k, k).abs();
+            for r in k + 1..=last_row {
+                let a = self.get(r, k).abs();
+                if a > best {
+                    best = a;
+                    pivot = r;
+                }
+            }
+            if best.is_zero() {
+                return None;
+            }
+            if pivot != k {
+                for c in k..=last_col {
+                    let (x, y) = (self.get(k, c), self.get(pivot, c));
+                    self.set(k, c, y);
+                    self.set(pivot, c, x);
+                }
+                b.swap_rows(k, pivot);
+            }
+            let diag = self.get(k, k);
+            for r in k + 1..=last_row {
+                let a = self.get(r, k);
+                if a.is_zero() {
+                    continue;
+                }
+                let factor = a / diag.clone();
+                self.set(r, k, T::zero());
+                for c in k + 1..=last_col {
+                    let v = self.get(r, c) - factor.clone() * self.get(k, c);
+                    self.set(r, c, v);
+                }
+                for j in 0..b.ncols() {
+                    b[(r, j)] = b[(r, j)].clone() - factor.clone() * b[(k, j)].clone();
+                }
+            }
+        }
+        for k in (0..n).rev() {
+            let last_col = (k + 2 * w).min(n - 1);
+            let diag = self.get(k, k);
+            for j in 0..b.ncols() {
+                let mut s = b[(k, j)].clone();
+                for c in k + 1..=last_col {
+                    s = s - self.get(k, c) * b[(c, j)].clone();
+                }
+                b[(k, j)] = s / diag.clone();
+            }
+        }
+        Some(b)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn band_solver_pivots() {
+        // [[0 1 0], [1 0 1], [0 1 1]] x = [1, 2, 3] needs a row swap at the first step;
+        // x = (0, 1, 2).
+        let mut band = Band::<f64>::new(3, 1);
+        for (r, c, v) in [
+            (0, 1, 1.0),
+            (1, 0, 1.0),
+            (1, 2, 1.0),
+            (2, 1, 1.0),
+            (2, 2, 1.0),
+        ] {
+            band.set(r, c, v);
+        }
+        let x = band
+            .solve(DMatrix::from_column_slice(3, 1, &[1.0, 2.0, 3.0]))
+            .unwrap();
+        assert_eq!(x.as_slice(), &[0.0, 1.0, 2.0]);
+    }
+
+    #[test]
+    fn band_solver_reports_an_exactly_singular_matrix() {
+        let mut band = Band::<f64>::new(2, 1);
+        for (r, c, v) in [(0, 0, 1.0), (0, 1, 2.0), (1, 0, 2.0), (1, 1, 4.0)] {
+            band.set(r, c, v);
+        }
+        assert!(band.solve(DMatrix::from_element(2, 1, 1.0)).is_none());
+    }
+}

@@ -1,0 +1,530 @@
+//! Coons patches: surfaces that fill four boundary curves (thesis chapter 4, notes §2.1).
+//!
+//! The four boundary curves are named as in the thesis: `c1(u) = x(u, 0)`, `c2(u) = x(u, 1)`,
+//! `d1(v) = x(0, v)`, `d2(v) = x(1, v)`, all over `[0, 1]`. They must meet at the four corners
+//! (the *compatibility condition* of thesis §4.4):
+//!
+//! ```text
+//!   v ↑        c2
+//!   1 P3 ────────────── P4        P1 = x(0,0) = c1(0) = d1(0)
+//!     │                 │         P2 = x(1,0) = c1(1) = d2(0)
+//!  d1 │                 │ d2      P3 = x(0,1) = c2(0) = d1(1)
+//!     │                 │         P4 = x(1,1) = c2(1) = d2(1)
+//!   0 P1 ────────────── P2 → u
+//!     0        c1       1
+//! ```
+//!
+//! The corner names `P1..P4` are those of the thesis code (`krpaCoons`, `vrednostCoons`): its
+//! bilinear term `rcd = (1-u)(1-v)P1 + u(1-v)P2 + (1-u)v P3 + uv P4` is eq. (4.3),
+//! `[1-u, u] [x(0,0) x(0,1); x(1,0) x(1,1)] [1-v; v]`, written out, so `P2 = x(1,0)` and
+//! `P3 = x(0,1)`.
+//!
+//! Constructions, one per file:
+//! - [`CoonsPatch`] (`bilinear.rs`): the bilinearly blended patch `x = r_c + r_d − r_cd`
+//!   (Izrek 4.2);
+//! - [`GeneralizedCoonsPatch`] (`generalized.rs`): user blending functions `f1, f2, g1, g2`,
+//!   including the partially bicubic blend `H0³ = B0³ + B1³`, `H3³ = B2³ + B3³` (§4.2);
+//! - [`BicubicCoonsPatch`] (`bicubic.rs`): the bicubically blended (Hermite) patch of §4.3 with
+//!   the twist choices of [`Twist`], including Gregory's square (`gregory.rs`, §4.4);
+//! - [`discrete_coons`] (`discrete.rs`): the discrete Coons patch, interior control points of a
+//!   Bézier net from its boundary (end of §4.1, notes (6));
+//! - [`Mask`] and [`solve_mask`] (`mask.rs`): the same net from the 3×3 mask of notes (7)–(9),
+//!   and its generalisations.
+//!
+//! All of it is generic over the [`Scalar`]: in `BigRational` the thesis's Primer 4.3 comes out
+//! exactly.
+
+use std::fmt;
+
+use nalgebra::DVector;
+
+use crate::error::{Error, Result};
+use crate::param::Curve;
+use crate::scalar::Scalar;
+
+mod bicubic;
+mod bilinear;
+mod discrete;
+mod generalized;
+mod gregory;
+mod mask;
+
+pub use bicubic::{
+    hermite_cubic, hermite_cubic_derivative, BicubicCoonsPatch, CrossDerivatives, SurfacePartials,
+    Twist,
+};
+pub use bilinear::CoonsPatch;
+pub use discrete::discrete_coons;
+pub use generalized::{BlendingPair, GeneralizedCoonsPatch, BLEND_TOLERANCE};
+pub use gregory::GregoryTwist;
+pub use mask::{solve_mask, Mask};
+
+/// How far apart two points that should coincide may be (corners of a Coons patch, crossings
+/// of a Gordon network).
+///
+/// The gap between two points is the largest coordinate difference (the max norm, as
+/// octave-nurbs `nrbcoons` measures it).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Tolerance {
+    /// `gap ≤ tol · max(1, largest |coordinate| of the two points)`: relative for large
+    /// coordinates, absolute near the origin. The default is `Relative(1e-10)`; for data of
+    /// size at most 1 this is exactly octave-nurbs `nrbcoons`'s test (absolute `1e-10`).
+    Relative(f64),
+    /// `gap ≤ tol`.
+    Absolute(f64),
+    /// The points must be equal (the natural choice in exact rational arithmetic).
+    Exact,
+}
+
+impl Default for Tolerance {
+    fn default() -> Self {
+        Tolerance::Relative(1e-10)
+    }
+}
+
+impl fmt::Display for Tolerance {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Tolerance::Relative(t) => write!(f, "relative tolerance {t:e}"),
+            Tolerance::Absolute(t) => write!(f, "absolute tolerance {t:e}"),
+            Tolerance::Exact => write!(f, "exact equality"),
+        }
+    }
+}
+
+impl Tolerance {
+    /// The gap between `p` and `q` (max norm) and the largest gap this tolerance allows for
+    /// them; the points pass when `gap <= allowed`.
+    ///
+    /// ```
+    /// use cagd::coons::Tolerance;
+    /// use nalgebra::dvector;
+    /// let (gap, allowed) = Tolerance::Relative(1e-10).gap(&dvector![100.0, 0.0], &dvector![100.0, 1e-9]);
+    /// assert_eq!(gap, 1e-9);
+    /// assert!((allowed - 1e-8).abs() < 1e-20); // 1e-10 · 100
+    /// ```
+    pub fn gap<T: Scalar>(&self, p: &DVector<T>, q: &DVector<T>) -> (T, T) {
+        let mut gap = T::zero();
+        let mut scale = T::one();
+        for (a, b) in p.iter().zip(q.iter()) {
+            let d = (a.clone() - b.clone()).abs();
+            if d > gap {
+                gap = d;
+            }
+            for s in [a.abs(), b.abs()] {
+                if s > scale {
+                    scale = s;
+                }
+            }
+        }
+        let allowed = match self {
+            Tolerance::Relative(t) => T::from_f64(*t).unwrap_or_else(T::zero) * scale,
+            Tolerance::Absolute(t) => T::from_f64(*t).unwrap_or_else(T::zero),
+            Tolerance::Exact => T::zero(),
+        };
+        (gap, allowed)
+    }
+
+    /// Rejects a negative or non-finite tolerance ([`Error::InvalidArgument`]).
+    pub(crate) fn validate(&self) -> Result<()> {
+        match self {
+            Tolerance::Relative(t) | Tolerance::Absolute(t) if !(t.is_finite() && *t >= 0.0) => {
+                Err(Error::InvalidArgument {
+                    what: "tolerance",
+                    message: format!("expected a finite value >= 0, got {t}"),
+                })
+            }
+            _ => Ok(()),
+        }
+    }
+}
+
+/// A corner of the parameter square, in the order of the thesis's `P1..P4`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Corner {
+    /// `P1 = x(0,0)`.
+    U0V0,
+    /// `P2 = x(1,0)`.
+    U1V0,
+    /// `P3 = x(0,1)`.
+    U0V1,
+    /// `P4 = x(1,1)`.
+    U1V1,
+}
+
+impl Corner {
+    /// The four corners in the order `P1, P2, P3, P4`.
+    pub const ALL: [Corner; 4] = [Corner::U0V0, Corner::U1V0, Corner::U0V1, Corner::U1V1];
+
+    /// `(u, v)` of the corner as `(0|1, 0|1)`.
+    pub fn uv(self) -> (usize, usize) {
+        match self {
+            Corner::U0V0 => (0, 0),
+            Corner::U1V0 => (1, 0),
+            Corner::U0V1 => (0, 1),
+            Corner::U1V1 => (1, 1),
+        }
+    }
+
+    /// Position `0..4` in `P1..P4`.
+    pub fn index(self) -> usize {
+        let (i, j) = self.uv();
+        i + 2 * j
+    }
+}
+
+impl fmt::Display for Corner {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let (i, j) = self.uv();
+        write!(f, "x({i},{j}) (P{})", self.index() + 1)
+    }
+}
+
+/// One disagreement found by a corner check: two quantities that should be equal at a corner.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CornerGap {
+    /// The corner.
+    pub corner: Corner,
+    /// The first quantity, e.g. `"c1(0)"`.
+    pub first: &'static str,
+    /// The second quantity, e.g. `"d1(0)"`.
+    pub second: &'static str,
+    /// The gap (max norm).
+    pub gap: f64,
+    /// The largest gap the tolerance allows here.
+    pub allowed: f64,
+}
+
+impl fmt::Display for CornerGap {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "at {} {} and {} differ by {:e} (allowed {:e})",
+            self.corner, self.first, self.second, self.gap, self.allowed
+        )
+    }
+}
+
+/// The value of a Coons patch at one parameter pair with its three parts
+/// (what the thesis function `vrednostCoons` computes): `x = r_c + r_d − r_cd`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CoonsPoint<T: Scalar = f64> {
+    /// The surface point `x(u, v)`.
+    pub x: DVector<T>,
+    /// The ruled surface between `c1` and `c2`: `r_c = g1(v) c1(u) + g2(v) c2(u)` (4.1).
+    pub rc: DVector<T>,
+    /// The ruled surface between `d1` and `d2`: `r_d = f1(u) d1(v) + f2(u) d2(v)` (4.2).
+    pub rd: DVector<T>,
+    /// The blend of the corners: `r_cd = f1 g1 P1 + f2 g1 P2 + f1 g2 P3 + f2 g2 P4` (4.3).
+    pub rcd: DVector<T>,
+}
+
+/// Four boundary curves checked for compatibility, with the four corner points `P1..P4`.
+///
+/// The corner points are taken from `c1` and `c2` (`P1 = c1(0)`, `P2 = c1(1)`, `P3 = c2(0)`,
+/// `P4 = c2(1)`, as octave-nurbs `nrbcoons` does) unless given explicitly with
+/// [`CoonsBoundary::with_corners`] (as the thesis code passes `P1..P4`).
+#[derive(Debug, Clone)]
+pub struct CoonsBoundary<C, T: Scalar = f64> {
+    c1: C,
+    c2: C,
+    d1: C,
+    d2: C,
+    corners: [DVector<T>; 4],
+    tolerance: Tolerance,
+}
+
+/// A curve end: `(curve name, curve index 0..4 in c1 c2 d1 d2, parameter 0|1)`.
+type CurveEnd = (&'static str, usize, usize);
+
+/// The eight curve ends, grouped by corner.
+const CURVE_ENDS: [(Corner, [CurveEnd; 2]); 4] = [
+    (Corner::U0V0, [("c1(0)", 0, 0), ("d1(0)", 2, 0)]),
+    (Corner::U1V0, [("c1(1)", 0, 1), ("d2(0)", 3, 0)]),
+    (Corner::U0V1, [("c2(0)", 1, 0), ("d1(1)", 2, 1)]),
+    (Corner::U1V1, [("c2(1)", 1, 1), ("d2(1)", 3, 1)]),
+];
+
+impl<T: Scalar, C: Curve<T>> CoonsBoundary<C, T> {
+    /// Checks that the curves `c1 = x(·,0)`, `c2 = x(·,1)`, `d1 = x(0,·)`, `d2 = x(1,·)` share
+    /// one dimension and meet at the corners within `tolerance`.
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] for curves of different dimensions,
+    /// [`Error::NonFinite`] for a non-finite corner, [`Error::CornerMismatch`] listing every
+    /// corner where the two curves disagree, [`Error::InvalidArgument`] for a negative or
+    /// non-finite tolerance.
+    ///
+    /// ```
+    /// use cagd::coons::{CoonsBoundary, Corner, Tolerance};
+    /// use cagd::{Curve, Error, FnCurve};
+    /// use nalgebra::dvector;
+    /// // Closures are of different types: box them to pass them as one curve type.
+    /// let c1: Box<dyn Curve> = Box::new(FnCurve::new(2, |u: f64| dvector![u, 0.0]));
+    /// let c2: Box<dyn Curve> = Box::new(FnCurve::new(2, |u: f64| dvector![u, 1.0]));
+    /// let d1: Box<dyn Curve> = Box::new(FnCurve::new(2, |v: f64| dvector![0.0, v]));
+    /// let d2: Box<dyn Curve> = Box::new(FnCurve::new(2, |v: f64| dvector![1.0, v + 0.5])); // off at both ends
+    /// match CoonsBoundary::new(c1, c2, d1, d2, Tolerance::default()) {
+    ///     Err(Error::CornerMismatch { gaps, .. }) => {
+    ///         assert_eq!(gaps.len(), 2);
+    ///         assert_eq!((gaps[0].corner, gaps[0].first, gaps[0].second), (Corner::U1V0, "c1(1)", "d2(0)"));
+    ///         assert_eq!(gaps[0].gap, 0.5);
+    ///         assert_eq!(gaps[1].corner, Corner::U1V1);
+    ///     }
+    ///     _ => panic!("expected a corner mismatch"),
+    /// }
+    /// ```
+    pub fn new(c1: C, c2: C, d1: C, d2: C, tolerance: Tolerance) -> Result<Self> {
+        let ends = Self::ends(&c1, &c2, &d1, &d2)?;
+        tolerance.validate()?;
+        let mut gaps = Vec::new();
+        for (corner, [(na, ia, ea), (nb, ib, eb)]) in CURVE_ENDS {
+            let (p, q) = (&ends[ia][ea], &ends[ib][eb]);
+            push_gap(&mut gaps, &tolerance, corner, na, nb, p, q);
+        }
+        if !gaps.is_empty() {
+            return Err(Error::CornerMismatch { gaps, tolerance });
+        }
+        let corners = [
+            ends[0][0].clone(),
+            ends[0][1].clone(),
+            ends[1][0].clone(),
+            ends[1][1].clone(),
+        ];
+        Ok(CoonsBoundary {
+            c1,
+            c2,
+            d1,
+            d2,
+            corners,
+            tolerance,
+        })
+    }
+
+    /// Like [`CoonsBoundary::new`], but with the corner points `P1..P4 = x(0,0), x(1,0),
+    /// x(0,1), x(1,1)` given, as the thesis code passes them; each must agree with both curve
+    /// ends that meet there.
+    ///
+    /// # Errors
+    /// As [`CoonsBoundary::new`]; a corner of the wrong dimension is an
+    /// [`Error::ShapeMismatch`].
+    pub fn with_corners(
+        c1: C,
+        c2: C,
+        d1: C,
+        d2: C,
+        corners: [DVector<T>; 4],
+        tolerance: Tolerance,
+    ) -> Result<Self> {
+        let ends = Self::ends(&c1, &c2, &d1, &d2)?;
+        tolerance.validate()?;
+        let dim = c1.dim();
+        for p in &corners {
+            if p.len() != dim {
+                return Err(Error::ShapeMismatch {
+                    what: "Coons corner points P1..P4",
+                    expected: format!("points of dimension {dim}"),
+                    found: format!("a point of dimension {}", p.len()),
+                });
+            }
+            crate::error::check_finite("Coons corner points P1..P4", p.iter())?;
+        }
+        const NAMES: [&str; 4] = ["P1", "P2", "P3", "P4"];
+        let mut gaps = Vec::new();
+        for (corner, pair) in CURVE_ENDS {
+            let k = corner.index();
+            for (name, i, e) in pair {
+                push_gap(
+                    &mut gaps,
+                    &tolerance,
+                    corner,
+                    NAMES[k],
+                    name,
+                    &corners[k],
+                    &ends[i][e],
+                );
+            }
+        }
+        if !gaps.is_empty() {
+            return Err(Error::CornerMismatch { gaps, tolerance });
+        }
+        Ok(CoonsBoundary {
+            c1,
+            c2,
+            d1,
+            d2,
+            corners,
+            tolerance,
+        })
+    }
+
+    /// The values of the four curves at 0 and 1, after checking dimensions and finiteness.
+    fn ends(c1: &C, c2: &C, d1: &C, d2: &C) -> Result<[[DVector<T>; 2]; 4]> {
+        let dim = c1.dim();
+        const NAMES: [&str; 4] = ["c1", "c2", "d1", "d2"];
+        let curves = [c1, c2, d1, d2];
+        for (k, c) in curves.iter().enumerate() {
+            if c.dim() != dim {
+                return Err(Error::ShapeMismatch {
+                    what: "Coons boundary curves",
+                    expected: format!("curves of one dimension ({dim}, the dimension of c1)"),
+                    found: format!("{} of dimension {}", NAMES[k], c.dim()),
+                });
+            }
+        }
+        let ends = curves.map(|c| [c.eval(T::zero()), c.eval(T::one())]);
+        for (k, pair) in ends.iter().enumerate() {
+            for p in pair {
+                if p.len() != dim {
+                    return Err(Error::ShapeMismatch {
+                        what: "Coons boundary curves",
+                        expected: format!("points of dimension {dim}"),
+                        found: format!("{} returned a point of dimension {}", NAMES[k], p.len()),
+                    });
+                }
+                crate::error::check_finite("Coons boundary curve end", p.iter())?;
+            }
+        }
+        Ok(ends)
+    }
+}
+
+impl<T: Scalar, C> CoonsBoundary<C, T> {
+    /// The curves `(c1, c2, d1, d2)`.
+    pub fn curves(&self) -> (&C, &C, &C, &C) {
+        (&self.c1, &self.c2, &self.d1, &self.d2)
+    }
+
+    /// The corner points `[P1, P2, P3, P4] = [x(0,0), x(1,0), x(0,1), x(1,1)]`.
+    pub fn corners(&self) -> &[DVector<T>; 4] {
+        &self.corners
+    }
+
+    /// The tolerance the corners were checked against.
+    pub fn tolerance(&self) -> Tolerance {
+        self.tolerance
+    }
+}
+
+impl<T: Scalar, C: Curve<T>> CoonsBoundary<C, T> {
+    /// The dimension of the points.
+    pub fn dim(&self) -> usize {
+        self.c1.dim()
+    }
+
+    /// `x = r_c + r_d − r_cd` with blending weights `f = (f1(u), f2(u))`, `g = (g1(v), g2(v))`,
+    /// in the term order of the thesis code (`vrednostCoons`), so that `f64` results agree with
+    /// Octave bit for bit.
+    pub(crate) fn blend(&self, u: &T, v: &T, f: &(T, T), g: &(T, T)) -> CoonsPoint<T> {
+        let c1 = self.c1.eval(u.clone());
+        let c2 = self.c2.eval(u.clone());
+        let d1 = self.d1.eval(v.clone());
+        let d2 = self.d2.eval(v.clone());
+        let w = corner_weights(f, g);
+        let dim = self.dim();
+        let mut point = CoonsPoint {
+            x: DVector::from_element(dim, T::zero()),
+            rc: DVector::from_element(dim, T::zero()),
+            rd: DVector::from_element(dim, T::zero()),
+            rcd: DVector::from_element(dim, T::zero()),
+        };
+        for k in 0..dim {
+            let (rc, rd, rcd, x) =
+                blend_coordinate(f, g, &w, [&c1[k], &c2[k], &d1[k], &d2[k]], &self.corners, k);
+            point.rc[k] = rc;
+            point.rd[k] = rd;
+            point.rcd[k] = rcd;
+            point.x[k] = x;
+        }
+        point
+    }
+
+    /// The blend on the grid `us × vs` (shape `(us.len(), vs.len(), d)`), evaluating `c1`, `c2`
+    /// once per `u` and `d1`, `d2` once per `v`.
+    pub(crate) fn blend_grid(
+        &self,
+        us: &[T],
+        vs: &[T],
+        f: &[(T, T)],
+        g: &[(T, T)],
+    ) -> ndarray::Array3<T> {
+        let dim = self.dim();
+        let c1: Vec<_> = us.iter().map(|u| self.c1.eval(u.clone())).collect();
+        let c2: Vec<_> = us.iter().map(|u| self.c2.eval(u.clone())).collect();
+        let d1: Vec<_> = vs.iter().map(|v| self.d1.eval(v.clone())).collect();
+        let d2: Vec<_> = vs.iter().map(|v| self.d2.eval(v.clone())).collect();
+        let mut grid = ndarray::Array3::from_elem((us.len(), vs.len(), dim), T::zero());
+        for i in 0..us.len() {
+            for j in 0..vs.len() {
+                let w = corner_weights(&f[i], &g[j]);
+                for k in 0..dim {
+                    let (_, _, _, x) = blend_coordinate(
+                        &f[i],
+                        &g[j],
+                        &w,
+                        [&c1[i][k], &c2[i][k], &d1[j][k], &d2[j][k]],
+                        &self.corners,
+                        k,
+                    );
+                    grid[[i, j, k]] = x;
+                }
+            }
+        }
+        grid
+    }
+}
+
+/// The weights `[f1 g1, f2 g1, f1 g2, f2 g2]` of `P1..P4` (each product formed first, as
+/// Octave evaluates `(1-u)*(1-v)*P1` from the left).
+fn corner_weights<T: Scalar>(f: &(T, T), g: &(T, T)) -> [T; 4] {
+    [
+        f.0.clone() * g.0.clone(),
+        f.1.clone() * g.0.clone(),
+        f.0.clone() * g.1.clone(),
+        f.1.clone() * g.1.clone(),
+    ]
+}
+
+/// One coordinate of `(r_c, r_d, r_cd, x)`, term order as in the thesis code:
+/// `rc = g1 c1 + g2 c2`, `rd = f1 d1 + f2 d2`, `rcd = ((w1 P1 + w2 P2) + w3 P3) + w4 P4`,
+/// `x = (rc + rd) − rcd`.
+fn blend_coordinate<T: Scalar>(
+    f: &(T, T),
+    g: &(T, T),
+    w: &[T; 4],
+    curves: [&T; 4],
+    corners: &[DVector<T>; 4],
+    k: usize,
+) -> (T, T, T, T) {
+    let [c1, c2, d1, d2] = curves;
+    let rc = g.0.clone() * c1.clone() + g.1.clone() * c2.clone();
+    let rd = f.0.clone() * d1.clone() + f.1.clone() * d2.clone();
+    let rcd = w[0].clone() * corners[0][k].clone()
+        + w[1].clone() * corners[1][k].clone()
+        + w[2].clone() * corners[2][k].clone()
+        + w[3].clone() * corners[3][k].clone();
+    let x = rc.clone() + rd.clone() - rcd.clone();
+    (rc, rd, rcd, x)
+}
+
+/// Records a [`CornerGap`] when `p` and `q` are further apart than `tolerance` allows.
+pub(crate) fn push_gap<T: Scalar>(
+    gaps: &mut Vec<CornerGap>,
+    tolerance: &Tolerance,
+    corner: Corner,
+    first: &'static str,
+    second: &'static str,
+    p: &DVector<T>,
+    q: &DVector<T>,
+) {
+    let (gap, allowed) = tolerance.gap(p, q);
+    if gap > allowed {
+        gaps.push(CornerGap {
+            corner,
+            first,
+            second,
+            gap: gap.to_f64(),
+            allowed: allowed.to_f64(),
+        });
+    }
+}

@@ -1,0 +1,752 @@
+//! Gordon surfaces: interpolation of a network of curves (thesis §4.5, Izrek 4.4, appendix D).
+//!
+//! A network consists of `m+1` curves `g(u_i, v)` (functions of `v`, one per node `u_i`) and
+//! `n+1` curves `g(u, v_j)` (functions of `u`, one per node `v_j`), all over `[0, 1]`, meeting
+//! at the `(m+1)(n+1)` points `g(u_i, v_j)`. The Gordon surface
+//!
+//! ```text
+//! g = g1 + g2 − g12,
+//!   g1(u,v)  = Σ_i g(u_i, v) L_i(u)                  (4.9)
+//!   g2(u,v)  = Σ_j g(u, v_j) L_j(v)                  (4.10)
+//!   g12(u,v) = Σ_i Σ_j g(u_i, v_j) L_i(u) L_j(v)     (4.11)
+//! ```
+//!
+//! interpolates every curve of the network (Izrek 4.4), `L_i`, `L_j` being the Lagrange bases
+//! of the nodes `u_0 < … < u_m` and `v_0 < … < v_n` — two separate node vectors, `m ≠ n`
+//! allowed. (The thesis code, `krpaGordon`, uses one node vector and one count for both
+//! directions; the Coons patch is the case `m = n = 1` with nodes `{0, 1}`.)
+//!
+//! **Reading appendix D's data.** The thesis lists `c0, c1, c2` as functions of `u`
+//! (`c_j = [u; v_j; v_j + u − u²]`, with `y = v_j = 0, 0.5, 1`), so they are the curves
+//! `g(u, v_j)`; and `d0, d1, d2` as functions of `v` (`d_i = [u_i; v; …]`, `x = u_i`), the
+//! curves `g(u_i, v)`. The intersection points are printed as `g_ab` with the *first* index on
+//! the `c` curves: `g01 = [0.5 0 0.25] = c0(0.5) = d1(0) = g(u_1, v_0)`, i.e. `g_ab = g(u_b, v_a)`.
+//! Accordingly the matrix `g_uv = [g00 g10 g20; g01 g11 g21; g02 g12 g22]` holds `g(u_i, v_j)`
+//! in row `i`, column block `j`, which is how `krpaGordon` uses it
+//! (`g_uv(l, 3s−2:3s)` with `L_l(u) L_s(v)`). The network is compatible: every `c_j(u_i)`
+//! equals `d_i(v_j)`.
+//!
+//! **The thesis code** (`krpaGordon`, `Lagrange`) does not run as printed; the fixed Octave
+//! reference (`octave_ref/fixed/krpaGordon.m`) lists each fix: `Lagrange` starts its product at
+//! zero (so every blending function is 0); `krpaGordon` takes the curve counts from the number
+//! of sample columns (`size(g_u)(2)` = 3N), weights `g_u(:, l)` — sample `l` of the first
+//! sampled curve, not the curve `c_l` at the current parameter — by `L_l(v)`, adds the row
+//! `g_uv(l, 3s−2:3s)` to the columns `g1`, `g2` (which Octave broadcasts to a 3 × 3 matrix),
+//! and uses one node vector and one count for both directions. This type evaluates the same
+//! formula as the fixed reference; on the thesis data it agrees with it to a few ULPs.
+
+use nalgebra::{DMatrix, DVector};
+
+use crate::bezier::{BezierCurve, BezierPatch};
+use crate::coons::Tolerance;
+use crate::error::{Error, Result};
+use crate::lagrange::{check_nodes, Lagrange, LebesgueEstimate};
+use crate::param::{Curve, Surface};
+use crate::scalar::Scalar;
+
+/// A Gordon surface (Izrek 4.4) over a compatible curve network.
+///
+/// ```
+/// use cagd::gordon::GordonSurface;
+/// use cagd::{FnCurve, Surface};
+/// use nalgebra::{dvector, DVector};
+/// type F = fn(f64) -> DVector<f64>;
+/// // Appendix D: d_i = g(u_i, v), c_j = g(u, v_j), nodes [0 0.5 1] in both directions.
+/// let d: [F; 3] = [|v| dvector![0.0, v, v], |v| dvector![0.5, v, 0.25 + v], |v| dvector![1.0, v, v]];
+/// let c: [F; 3] = [
+///     |u| dvector![u, 0.0, u - u * u],
+///     |u| dvector![u, 0.5, 0.5 + u - u * u],
+///     |u| dvector![u, 1.0, 1.0 + u - u * u],
+/// ];
+/// let nodes = vec![0.0, 0.5, 1.0];
+/// let g = GordonSurface::new(
+///     nodes.clone(), nodes,
+///     Vec::from(d.map(|f| FnCurve::new(3, f))),
+///     Vec::from(c.map(|f| FnCurve::new(3, f))),
+/// ).unwrap();
+/// // The network is the surface (u, v, v + u − u²), which Gordon reproduces.
+/// let p = g.eval(0.25, 0.75);
+/// assert!((p - dvector![0.25, 0.75, 0.75 + 0.25 - 0.0625]).amax() < 1e-15);
+/// ```
+#[derive(Debug, Clone)]
+pub struct GordonSurface<C, T: Scalar = f64> {
+    u_basis: Lagrange<T>,
+    v_basis: Lagrange<T>,
+    curves_at_u: Vec<C>,
+    curves_at_v: Vec<C>,
+    /// `points[i][j] = g(u_i, v_j)`.
+    points: Vec<Vec<DVector<T>>>,
+    tolerance: Tolerance,
+}
+
+/// A point of a Gordon surface with its three parts: `g = g1 + g2 − g12`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GordonPoint<T: Scalar = f64> {
+    /// `g(u, v)`.
+    pub g: DVector<T>,
+    /// `g1 = Σ_i g(u_i, v) L_i(u)` (4.9).
+    pub g1: DVector<T>,
+    /// `g2 = Σ_j g(u, v_j) L_j(v)` (4.10).
+    pub g2: DVector<T>,
+    /// `g12 = Σ_i Σ_j g(u_i, v_j) L_i(u) L_j(v)` (4.11).
+    pub g12: DVector<T>,
+}
+
+/// The conditioning of a Gordon surface's blending: the Lebesgue constants of its two node
+/// vectors on `[0, 1]`. A perturbation `ε` of the network moves `g1`, `g2`, `g12` by at most
+/// `Λ_u ε`, `Λ_v ε`, `Λ_u Λ_v ε`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Conditioning {
+    /// For the nodes `u_i`.
+    pub u: LebesgueEstimate,
+    /// For the nodes `v_j`.
+    pub v: LebesgueEstimate,
+}
+
+impl Conditioning {
+    /// The bound `Λ_u + Λ_v + Λ_u Λ_v` on the amplification of network errors.
+    pub fn amplification(&self) -> f64 {
+        self.u.value + self.v.value + self.u.value * self.v.value
+    }
+}
+
+impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
+    /// The Gordon surface of the curves `curves_at_u[i] = g(u_i, ·)` (functions of `v`) and
+    /// `curves_at_v[j] = g(·, v_j)` (functions of `u`) at the nodes `u_nodes`, `v_nodes`, with
+    /// the network checked at the default tolerance (relative `1e-10`, see [`Tolerance`]).
+    /// The crossing points `g(u_i, v_j)` are taken from `curves_at_u`.
+    ///
+    /// # Errors
+    /// - [`Error::TooFewCurves`]: fewer than 2 curves in a direction;
+    /// - [`Error::ShapeMismatch`]: node and curve counts differ, or curves of different
+    ///   dimensions;
+    /// - [`Error::DuplicateNodes`], [`Error::UnsortedNodes`], [`Error::NonFinite`]: bad nodes;
+    /// - [`Error::NetworkMismatch`]: `g(u_i, ·)` at `v_j` is not `g(·, v_j)` at `u_i`, naming
+    ///   the worst pair, its gap and the tolerance.
+    pub fn new(
+        u_nodes: Vec<T>,
+        v_nodes: Vec<T>,
+        curves_at_u: Vec<C>,
+        curves_at_v: Vec<C>,
+    ) -> Result<Self> {
+        Self::with_tolerance(
+            u_nodes,
+            v_nodes,
+            curves_at_u,
+            curves_at_v,
+            Tolerance::default(),
+        )
+    }
+
+    /// [`GordonSurface::new`] with a chosen network tolerance.
+    ///
+    /// # Errors
+    /// As [`GordonSurface::new`].
+    pub fn with_tolerance(
+        u_nodes: Vec<T>,
+        v_nodes: Vec<T>,
+        curves_at_u: Vec<C>,
+        curves_at_v: Vec<C>,
+        tolerance: Tolerance,
+    ) -> Result<Self> {
+        let (u_basis, v_basis) =
+            Self::check(&u_nodes, &v_nodes, &curves_at_u, &curves_at_v, &tolerance)?;
+        let points: Vec<Vec<DVector<T>>> = curves_at_u
+            .iter()
+            .map(|c| v_nodes.iter().map(|v| c.eval(v.clone())).collect())
+            .collect();
+        Self::finish(
+            u_basis,
+            v_basis,
+            curves_at_u,
+            curves_at_v,
+            points,
+            tolerance,
+        )
+    }
+
+    /// The Gordon surface with the crossing points given, `points[i][j] = g(u_i, v_j)` (the
+    /// thesis's `g_uv`); each is checked against both curves through it.
+    ///
+    /// # Errors
+    /// As [`GordonSurface::new`]; a wrong number or dimension of points is an
+    /// [`Error::ShapeMismatch`].
+    pub fn with_points(
+        u_nodes: Vec<T>,
+        v_nodes: Vec<T>,
+        curves_at_u: Vec<C>,
+        curves_at_v: Vec<C>,
+        points: Vec<Vec<DVector<T>>>,
+        tolerance: Tolerance,
+    ) -> Result<Self> {
+        let (u_basis, v_basis) =
+            Self::check(&u_nodes, &v_nodes, &curves_at_u, &curves_at_v, &tolerance)?;
+        let dim = curves_at_u[0].dim();
+        let shape_ok = points.len() == u_nodes.len()
+            && points
+                .iter()
+                .all(|row| row.len() == v_nodes.len() && row.iter().all(|p| p.len() == dim));
+        if !shape_ok {
+            return Err(Error::ShapeMismatch {
+                what: "Gordon crossing points g(u_i, v_j)",
+                expected: format!(
+                    "{} × {} points of dimension {dim}",
+                    u_nodes.len(),
+                    v_nodes.len()
+                ),
+                found: format!(
+                    "{} rows of lengths {:?}",
+                    points.len(),
+                    points.iter().map(Vec::len).collect::<Vec<_>>()
+                ),
+            });
+        }
+        for row in &points {
+            for p in row {
+                crate::error::check_finite("Gordon crossing points g(u_i, v_j)", p.iter())?;
+            }
+        }
+        let mut worst: Option<(usize, usize, T, T)> = None;
+        let mut count = 0;
+        for (i, u) in u_nodes.iter().enumerate() {
+            for (j, v) in v_nodes.iter().enumerate() {
+                for q in [
+                    curves_at_u[i].eval(v.clone()),
+                    curves_at_v[j].eval(u.clone()),
+                ] {
+                    let (gap, allowed) = tolerance.gap(&points[i][j], &q);
+                    record(&mut worst, &mut count, i, j, gap, allowed);
+                }
+            }
+        }
+        if let Some(e) = mismatch(worst, count, &u_nodes, &v_nodes, tolerance) {
+            return Err(e);
+        }
+        Self::finish(
+            u_basis,
+            v_basis,
+            curves_at_u,
+            curves_at_v,
+            points,
+            tolerance,
+        )
+    }
+
+    fn check(
+        u_nodes: &[T],
+        v_nodes: &[T],
+        curves_at_u: &[C],
+        curves_at_v: &[C],
+        tolerance: &Tolerance,
+    ) -> Result<(Lagrange<T>, Lagrange<T>)> {
+        for (what, curves) in [
+            ("Gordon curves g(u_i, v)", curves_at_u),
+            ("Gordon curves g(u, v_j)", curves_at_v),
+        ] {
+            if curves.len() < 2 {
+                return Err(Error::TooFewCurves {
+                    what,
+                    min: 2,
+                    found: curves.len(),
+                });
+            }
+        }
+        for (what, nodes, curves) in [
+            ("Gordon nodes u_i", u_nodes, curves_at_u.len()),
+            ("Gordon nodes v_j", v_nodes, curves_at_v.len()),
+        ] {
+            if nodes.len() != curves {
+                return Err(Error::ShapeMismatch {
+                    what,
+                    expected: format!("{curves} nodes (one per curve)"),
+                    found: format!("{} nodes", nodes.len()),
+                });
+            }
+            check_nodes(what, nodes, 2)?;
+        }
+        tolerance.validate()?;
+        let dim = curves_at_u[0].dim();
+        for c in curves_at_u.iter().chain(curves_at_v.iter()) {
+            if c.dim() != dim {
+                return Err(Error::ShapeMismatch {
+                    what: "Gordon network curves",
+                    expected: format!("curves of one dimension ({dim})"),
+                    found: format!("a curve of dimension {}", c.dim()),
+                });
+            }
+        }
+        // Compatibility: g(u_i, ·)(v_j) against g(·, v_j)(u_i).
+        let mut worst: Option<(usize, usize, T, T)> = None;
+        let mut count = 0;
+        for (i, u) in u_nodes.iter().enumerate() {
+            for (j, v) in v_nodes.iter().enumerate() {
+                let p = curves_at_u[i].eval(v.clone());
+                let q = curves_at_v[j].eval(u.clone());
+                if p.len() != dim || q.len() != dim {
+                    return Err(Error::ShapeMismatch {
+                        what: "Gordon network curves",
+                        expected: format!("points of dimension {dim}"),
+                        found: format!("points of dimension {} and {}", p.len(), q.len()),
+                    });
+                }
+                crate::error::check_finite("Gordon network crossing", p.iter().chain(q.iter()))?;
+                let (gap, allowed) = tolerance.gap(&p, &q);
+                record(&mut worst, &mut count, i, j, gap, allowed);
+            }
+        }
+        if let Some(e) = mismatch(worst, count, u_nodes, v_nodes, *tolerance) {
+            return Err(e);
+        }
+        Ok((
+            Lagrange::new(u_nodes.to_vec())?,
+            Lagrange::new(v_nodes.to_vec())?,
+        ))
+    }
+
+    fn finish(
+        u_basis: Lagrange<T>,
+        v_basis: Lagrange<T>,
+        curves_at_u: Vec<C>,
+        curves_at_v: Vec<C>,
+        points: Vec<Vec<DVector<T>>>,
+        tolerance: Tolerance,
+    ) -> Result<Self> {
+        Ok(GordonSurface {
+            u_basis,
+            v_basis,
+            curves_at_u,
+            curves_at_v,
+            points,
+            tolerance,
+        })
+    }
+
+    /// `g(u, v)` with its parts `g1`, `g2`, `g12`.
+    pub fn eval_parts(&self, u: T, v: T) -> GordonPoint<T> {
+        let lu = self.u_basis.basis(&u);
+        let lv = self.v_basis.basis(&v);
+        let at_u: Vec<_> = self.curves_at_u.iter().map(|c| c.eval(v.clone())).collect();
+        let at_v: Vec<_> = self.curves_at_v.iter().map(|c| c.eval(u.clone())).collect();
+        self.combine(&lu, &lv, &at_u, &at_v)
+    }
+
+    /// Combines the curve values `at_u[i] = g(u_i, v)`, `at_v[j] = g(u, v_j)` with the basis
+    /// values `lu`, `lv`.
+    fn combine(
+        &self,
+        lu: &[T],
+        lv: &[T],
+        at_u: &[DVector<T>],
+        at_v: &[DVector<T>],
+    ) -> GordonPoint<T> {
+        let dim = self.dim();
+        let mut out = GordonPoint {
+            g: DVector::from_element(dim, T::zero()),
+            g1: DVector::from_element(dim, T::zero()),
+            g2: DVector::from_element(dim, T::zero()),
+            g12: DVector::from_element(dim, T::zero()),
+        };
+        for k in 0..dim {
+            let mut g1 = T::zero();
+            for (l, p) in lu.iter().zip(at_u) {
+                g1 = g1 + p[k].clone() * l.clone();
+            }
+            let mut g2 = T::zero();
+            for (l, p) in lv.iter().zip(at_v) {
+                g2 = g2 + p[k].clone() * l.clone();
+            }
+            let mut g12 = T::zero();
+            for (li, row) in lu.iter().zip(&self.points) {
+                for (lj, p) in lv.iter().zip(row) {
+                    g12 = g12 + p[k].clone() * li.clone() * lj.clone();
+                }
+            }
+            out.g[k] = g1.clone() + g2.clone() - g12.clone();
+            out.g1[k] = g1;
+            out.g2[k] = g2;
+            out.g12[k] = g12;
+        }
+        out
+    }
+}
+
+impl<T: Scalar, C> GordonSurface<C, T> {
+    /// The nodes `u_0 < … < u_m`.
+    pub fn u_nodes(&self) -> &[T] {
+        self.u_basis.nodes()
+    }
+
+    /// The nodes `v_0 < … < v_n`.
+    pub fn v_nodes(&self) -> &[T] {
+        self.v_basis.nodes()
+    }
+
+    /// The curves `g(u_i, v)`, functions of `v`.
+    pub fn curves_at_u(&self) -> &[C] {
+        &self.curves_at_u
+    }
+
+    /// The curves `g(u, v_j)`, functions of `u`.
+    pub fn curves_at_v(&self) -> &[C] {
+        &self.curves_at_v
+    }
+
+    /// The crossing points, `points()[i][j] = g(u_i, v_j)`.
+    pub fn points(&self) -> &[Vec<DVector<T>>] {
+        &self.points
+    }
+
+    /// The tolerance the network was checked against.
+    pub fn tolerance(&self) -> Tolerance {
+        self.tolerance
+    }
+
+    /// The Lagrange bases in `u` and `v`.
+    pub fn bases(&self) -> (&Lagrange<T>, &Lagrange<T>) {
+        (&self.u_basis, &self.v_basis)
+    }
+
+    /// The Lebesgue constants of the two node vectors on `[0, 1]`, estimated on a grid of
+    /// `max(2001, 200·(nodes+1))` points.
+    ///
+    /// ```
+    /// # use cagd::gordon::GordonSurface;
+    /// # use cagd::{FnCurve, Surface};
+    /// # use nalgebra::{dvector, DVector};
+    /// # type F = fn(f64) -> DVector<f64>;
+    /// # let d: [F; 3] = [|v| dvector![0.0, v, v], |v| dvector![0.5, v, 0.25 + v], |v| dvector![1.0, v, v]];
+    /// # let c: [F; 3] = [|u| dvector![u, 0.0, u - u * u], |u| dvector![u, 0.5, 0.5 + u - u * u], |u| dvector![u, 1.0, 1.0 + u - u * u]];
+    /// # let nodes = vec![0.0, 0.5, 1.0];
+    /// # let g = GordonSurface::new(nodes.clone(), nodes, Vec::from(d.map(|f| FnCurve::new(3, f))), Vec::from(c.map(|f| FnCurve::new(3, f)))).unwrap();
+    /// // Nodes [0, 0.5, 1]: Λ = 1.25, at t = 1/4 and 3/4 (the grid contains both).
+    /// let k = g.conditioning();
+    /// assert!((k.u.value - 1.25).abs() < 1e-12 && (k.v.value - 1.25).abs() < 1e-12);
+    /// ```
+    pub fn conditioning(&self) -> Conditioning {
+        let samples = |b: &Lagrange<T>| (200 * (b.nodes().len() + 1)).max(2001);
+        Conditioning {
+            u: self
+                .u_basis
+                .lebesgue_constant(0.0, 1.0, samples(&self.u_basis)),
+            v: self
+                .v_basis
+                .lebesgue_constant(0.0, 1.0, samples(&self.v_basis)),
+        }
+    }
+}
+
+/// Keeps the worst gap over the tolerance and counts such gaps.
+fn record<T: Scalar>(
+    worst: &mut Option<(usize, usize, T, T)>,
+    count: &mut usize,
+    i: usize,
+    j: usize,
+    gap: T,
+    allowed: T,
+) {
+    if gap > allowed {
+        *count += 1;
+        let worse = match worst {
+            None => true,
+            Some((_, _, g, _)) => gap > *g,
+        };
+        if worse {
+            *worst = Some((i, j, gap, allowed));
+        }
+    }
+}
+
+fn mismatch<T: Scalar>(
+    worst: Option<(usize, usize, T, T)>,
+    count: usize,
+    u_nodes: &[T],
+    v_nodes: &[T],
+    tolerance: Tolerance,
+) -> Option<Error> {
+    worst.map(|(i, j, gap, allowed)| Error::NetworkMismatch {
+        u_curve: i,
+        v_curve: j,
+        u: u_nodes[i].to_f64(),
+        v: v_nodes[j].to_f64(),
+        gap: gap.to_f64(),
+        allowed: allowed.to_f64(),
+        tolerance,
+        count,
+    })
+}
+
+impl<T: Scalar, C: Curve<T>> Surface<T> for GordonSurface<C, T> {
+    fn dim(&self) -> usize {
+        self.points[0][0].len()
+    }
+
+    fn eval(&self, u: T, v: T) -> DVector<T> {
+        self.eval_parts(u, v).g
+    }
+
+    /// The surface on the grid `us × vs`, shape `(us.len(), vs.len(), d)` (the layout of
+    /// `P = tenzor(R)` in `krpaGordon`); each network curve and each Lagrange basis is evaluated
+    /// once per grid line.
+    fn eval_grid(&self, us: &[T], vs: &[T]) -> ndarray::Array3<T> {
+        let lu: Vec<_> = us.iter().map(|u| self.u_basis.basis(u)).collect();
+        let lv: Vec<_> = vs.iter().map(|v| self.v_basis.basis(v)).collect();
+        // at_u[j][i] = g(u_i, vs[j]); at_v[i][j] = g(us[i], v_j).
+        let at_u: Vec<Vec<_>> = vs
+            .iter()
+            .map(|v| self.curves_at_u.iter().map(|c| c.eval(v.clone())).collect())
+            .collect();
+        let at_v: Vec<Vec<_>> = us
+            .iter()
+            .map(|u| self.curves_at_v.iter().map(|c| c.eval(u.clone())).collect())
+            .collect();
+        let dim = self.dim();
+        let mut grid = ndarray::Array3::from_elem((us.len(), vs.len(), dim), T::zero());
+        for i in 0..us.len() {
+            for j in 0..vs.len() {
+                let p = self.combine(&lu[i], &lv[j], &at_u[j], &at_v[i]);
+                for k in 0..dim {
+                    grid[[i, j, k]] = p.g[k].clone();
+                }
+            }
+        }
+        grid
+    }
+}
+
+// ------------------------------------------------------------------------------------------
+// Gordon surfaces of Bézier networks as one Bézier patch
+
+/// `C(n, k)` in the scalar, by the product `Π (n − k + i)/i` (exact in rationals, and in `f64`
+/// while the values stay below 2^53).
+fn binomial<T: Scalar>(n: usize, k: usize) -> T {
+    let k = k.min(n - k);
+    (1..=k).fold(T::one(), |acc, i| {
+        acc * T::from_usize(n - k + i) / T::from_usize(i)
+    })
+}
+
+/// The Bernstein coefficients of the product of two polynomials given by their Bernstein
+/// coefficients (degrees `p = a.len() − 1`, `q = b.len() − 1`):
+/// `c_k = Σ_{i+j=k} C(p,i) C(q,j) / C(p+q,k) · a_i b_j`.
+fn bernstein_product<T: Scalar>(a: &[T], b: &[T]) -> Vec<T> {
+    let (p, q) = (a.len() - 1, b.len() - 1);
+    (0..=p + q)
+        .map(|k| {
+            let sum = (k.saturating_sub(q)..=k.min(p)).fold(T::zero(), |sum, i| {
+                let j = k - i;
+                sum + binomial::<T>(p, i) * binomial::<T>(q, j) * a[i].clone() * b[j].clone()
+            });
+            sum / binomial::<T>(p + q, k)
+        })
+        .collect()
+}
+
+/// Degree elevation of Bernstein coefficients from `a.len() − 1` to `to`:
+/// `c_k = Σ_i C(r,i) C(to − r, k − i) / C(to, k) · a_i`.
+fn bernstein_elevate<T: Scalar>(a: &[T], to: usize) -> Vec<T> {
+    let r = a.len() - 1;
+    if r == to {
+        return a.to_vec();
+    }
+    (0..=to)
+        .map(|k| {
+            let sum = (k.saturating_sub(to - r)..=k.min(r)).fold(T::zero(), |sum, i| {
+                sum + binomial::<T>(r, i) * binomial::<T>(to - r, k - i) * a[i].clone()
+            });
+            sum / binomial::<T>(to, k)
+        })
+        .collect()
+}
+
+/// The Bernstein coefficients, at degree `to ≥ m`, of the Lagrange basis `L_0..L_m` of `nodes`
+/// (row `i` = `L_i`), built as products of the linear factors `(t − t_j)/(t_i − t_j)`, whose
+/// Bernstein coefficients are `[−t_j, 1 − t_j]/(t_i − t_j)`.
+fn lagrange_in_bernstein_form<T: Scalar>(nodes: &[T], to: usize) -> Vec<Vec<T>> {
+    nodes
+        .iter()
+        .enumerate()
+        .map(|(i, ti)| {
+            let mut poly = vec![T::one()];
+            for (j, tj) in nodes.iter().enumerate() {
+                if j != i {
+                    let den = ti.clone() - tj.clone();
+                    let factor = [-tj.clone() / den.clone(), (T::one() - tj.clone()) / den];
+                    poly = bernstein_product(&poly, &factor);
+                }
+            }
+            bernstein_elevate(&poly, to)
+        })
+        .collect()
+}
+
+/// The control points of a Bézier curve on `[0, 1]`, elevated to degree `to`, as one vector of
+/// coefficients per coordinate.
+fn elevated_control<T: Scalar>(
+    curve: &BezierCurve<T>,
+    to: usize,
+    what: &'static str,
+) -> Result<Vec<Vec<T>>> {
+    let (a, b) = curve.interval();
+    if !(a.is_zero() && b.is_one()) {
+        return Err(Error::InvalidArgument {
+            what,
+            message: format!(
+                "the exact Bézier form needs curves over [0, 1], found one over [{a}, {b}]"
+            ),
+        });
+    }
+    let c = curve.control();
+    Ok((0..c.nrows())
+        .map(|k| {
+            let row: Vec<T> = c.row(k).iter().cloned().collect();
+            bernstein_elevate(&row, to)
+        })
+        .collect())
+}
+
+/// The tensor-product Bézier net of `g1 + g2 − g12` for Bézier network curves: see
+/// [`GordonSurface::to_bezier`].
+pub(crate) fn gordon_bezier_net<T: Scalar>(
+    u_nodes: &[T],
+    v_nodes: &[T],
+    curves_at_u: &[BezierCurve<T>],
+    curves_at_v: &[BezierCurve<T>],
+    points: &[Vec<DVector<T>>],
+) -> Result<BezierPatch<T>> {
+    let (m, n) = (u_nodes.len() - 1, v_nodes.len() - 1);
+    let p = curves_at_v.iter().map(|c| c.degree()).max().unwrap_or(0);
+    let q = curves_at_u.iter().map(|c| c.degree()).max().unwrap_or(0);
+    let (deg_u, deg_v) = (m.max(p), n.max(q));
+    let lu = lagrange_in_bernstein_form(u_nodes, deg_u);
+    let lv = lagrange_in_bernstein_form(v_nodes, deg_v);
+    let at_u = curves_at_u
+        .iter()
+        .map(|c| elevated_control(c, deg_v, "Gordon curves g(u_i, v)"))
+        .collect::<Result<Vec<_>>>()?;
+    let at_v = curves_at_v
+        .iter()
+        .map(|c| elevated_control(c, deg_u, "Gordon curves g(u, v_j)"))
+        .collect::<Result<Vec<_>>>()?;
+    let dim = points[0][0].len();
+    let coords = (0..dim)
+        .map(|d| {
+            DMatrix::from_fn(deg_u + 1, deg_v + 1, |k, l| {
+                let mut g1 = T::zero();
+                for (li, ci) in lu.iter().zip(&at_u) {
+                    g1 = g1 + li[k].clone() * ci[d][l].clone();
+                }
+                let mut g2 = T::zero();
+                for (lj, cj) in lv.iter().zip(&at_v) {
+                    g2 = g2 + lj[l].clone() * cj[d][k].clone();
+                }
+                let mut g12 = T::zero();
+                for (li, row) in lu.iter().zip(points) {
+                    for (lj, pt) in lv.iter().zip(row) {
+                        g12 = g12 + li[k].clone() * lj[l].clone() * pt[d].clone();
+                    }
+                }
+                g1 + g2 - g12
+            })
+        })
+        .collect();
+    BezierPatch::new(coords)
+}
+
+impl<T: Scalar> GordonSurface<BezierCurve<T>, T> {
+    /// The Gordon surface of a network of Bézier curves (over `[0, 1]`), exactly, as one
+    /// tensor-product Bézier patch.
+    ///
+    /// With `p` the largest degree of the curves `g(u, v_j)` and `q` that of the curves
+    /// `g(u_i, v)`, the patch has degree `(max(m, p), max(n, q))`: each Lagrange basis function
+    /// is converted to Bernstein form (a product of linear factors), the network curves are
+    /// degree-elevated to the common degree, and `g1`, `g2`, `g12` are summed control point by
+    /// control point. The conversion is exact in rationals; in `f64` it agrees with
+    /// [`Surface::eval`] to round-off.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] if a curve is defined over an interval other than `[0, 1]`.
+    ///
+    /// ```
+    /// use cagd::bezier::BezierCurve;
+    /// use cagd::gordon::GordonSurface;
+    /// use cagd::Surface;
+    /// use nalgebra::dmatrix;
+    /// // The Coons case: four straight edges of the unit square, nodes {0, 1}.
+    /// let line = |x0: f64, y0: f64, x1: f64, y1: f64| BezierCurve::new(dmatrix![x0, x1; y0, y1]).unwrap();
+    /// let g = GordonSurface::new(
+    ///     vec![0.0, 1.0], vec![0.0, 1.0],
+    ///     vec![line(0.0, 0.0, 0.0, 1.0), line(1.0, 0.0, 1.0, 1.0)],
+    ///     vec![line(0.0, 0.0, 1.0, 0.0), line(0.0, 1.0, 1.0, 1.0)],
+    /// ).unwrap();
+    /// let patch = g.to_bezier().unwrap();
+    /// assert_eq!(patch.degree(), (1, 1));
+    /// assert_eq!(patch.eval(0.25, 0.5), g.eval(0.25, 0.5));
+    /// ```
+    pub fn to_bezier(&self) -> Result<BezierPatch<T>> {
+        gordon_bezier_net(
+            self.u_nodes(),
+            self.v_nodes(),
+            &self.curves_at_u,
+            &self.curves_at_v,
+            &self.points,
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use num_rational::BigRational as Q;
+
+    fn q(n: i64, d: i64) -> Q {
+        <Q as Scalar>::from_ratio(n, d)
+    }
+
+    /// Evaluates Bernstein coefficients at `t` by the definition.
+    fn eval(c: &[Q], t: &Q) -> Q {
+        let n = c.len() - 1;
+        c.iter().enumerate().fold(q(0, 1), |acc, (i, ci)| {
+            let mut b = binomial::<Q>(n, i);
+            for _ in 0..i {
+                b *= t.clone();
+            }
+            for _ in i..n {
+                b *= q(1, 1) - t.clone();
+            }
+            acc + b * ci.clone()
+        })
+    }
+
+    #[test]
+    fn binomials() {
+        assert_eq!(binomial::<Q>(6, 2), q(15, 1));
+        assert_eq!(binomial::<f64>(30, 15), 155117520.0);
+        assert_eq!(binomial::<Q>(4, 0), q(1, 1));
+    }
+
+    #[test]
+    fn product_and_elevation_of_bernstein_coefficients() {
+        let a = [q(1, 2), q(-3, 1), q(2, 5)];
+        let b = [q(7, 3), q(0, 1)];
+        let c = bernstein_product(&a, &b);
+        let e = bernstein_elevate(&a, 5);
+        assert_eq!(c.len(), 4);
+        for t in [q(0, 1), q(1, 3), q(4, 5), q(1, 1), q(3, 2)] {
+            assert_eq!(eval(&c, &t), eval(&a, &t) * eval(&b, &t));
+            assert_eq!(eval(&e, &t), eval(&a, &t));
+        }
+    }
+
+    #[test]
+    fn lagrange_basis_in_bernstein_form_is_the_basis() {
+        let nodes = [q(-1, 2), q(0, 1), q(2, 3), q(1, 1)];
+        let basis = Lagrange::new(nodes.to_vec()).unwrap();
+        let coeffs = lagrange_in_bernstein_form(&nodes, 5);
+        for t in [q(1, 7), q(1, 2), q(9, 10), q(-1, 3)] {
+            let want = basis.basis(&t);
+            for (i, c) in coeffs.iter().enumerate() {
+                assert_eq!(eval(c, &t), want[i]);
+            }
+        }
+    }
+}

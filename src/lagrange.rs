@@ -1,0 +1,393 @@
+//! Lagrange interpolation in barycentric form (Berrut–Trefethen), the blending functions of
+//! Gordon surfaces (thesis §4.5, appendix D).
+//!
+//! The thesis defines (after (4.9))
+//!
+//! ```text
+//! L_i^m(t) = Π_{j≠i} (t − t_j) / Π_{j≠i} (t_i − t_j),   i = 0..m,
+//! ```
+//!
+//! and evaluates it as that product (appendix D, `Lagrange.m`; as printed the product starts at
+//! zero, so the function always returns 0 — the fixed Octave reference starts it at one). This
+//! module offers that product form ([`basis_product`], for comparison with the Octave code) and
+//! the barycentric form ([`Lagrange`]), which evaluates all `m+1` basis functions in `O(m)`
+//! operations after an `O(m²)` set-up and is numerically stable (J.-P. Berrut,
+//! L. N. Trefethen, *Barycentric Lagrange interpolation*, SIAM Review 46 (2004)):
+//!
+//! ```text
+//! w_i = 1 / Π_{j≠i} (t_i − t_j),       L_i(t) = ℓ(t) · w_i / (t − t_i),   ℓ(t) = Π_j (t − t_j),
+//! ```
+//!
+//! (the first barycentric form; see [`Lagrange::basis`] for why not the second)
+//!
+//! with `L_i(t_k) = δ_ik` exactly at the nodes. Everything is generic over the [`Scalar`], so
+//! the basis is exact in rationals.
+//!
+//! Interpolation at equispaced nodes is badly conditioned for many nodes (the Lebesgue
+//! constant grows like `2^m / (e m log m)`); [`chebyshev_nodes`] places nodes at the
+//! Chebyshev–Lobatto points, where it grows like `(2/π) log m`. [`Lagrange::lebesgue_constant`]
+//! estimates it.
+
+use nalgebra::{DMatrix, DVector};
+
+use crate::error::{Error, Result};
+use crate::param::Curve;
+use crate::scalar::Scalar;
+
+/// Checks interpolation nodes: at least `min`, finite, strictly increasing.
+///
+/// # Errors
+/// [`Error::TooFewPoints`], [`Error::NonFinite`], [`Error::DuplicateNodes`] (two equal
+/// neighbours), [`Error::UnsortedNodes`] (a decrease).
+pub fn check_nodes<T: Scalar>(what: &'static str, nodes: &[T], min: usize) -> Result<()> {
+    if nodes.len() < min {
+        return Err(Error::TooFewPoints {
+            what,
+            min,
+            found: nodes.len(),
+        });
+    }
+    crate::error::check_finite(what, nodes.iter())?;
+    for (k, pair) in nodes.windows(2).enumerate() {
+        if pair[0] == pair[1] {
+            return Err(Error::DuplicateNodes {
+                what,
+                first: k,
+                second: k + 1,
+                value: pair[0].to_f64(),
+            });
+        }
+        if pair[0] > pair[1] {
+            return Err(Error::UnsortedNodes {
+                what,
+                index: k,
+                value: pair[0].to_f64(),
+                next: pair[1].to_f64(),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// `L_i(t)` as the thesis's product (appendix D, `Lagrange.m` with the product started at one):
+/// `v = 1; for j ≠ i: v = (t − t_j)/(t_i − t_j) · v`, in that order, so `f64` values agree
+/// with the Octave reference bit for bit. `i` counts from 0 (the Octave code from 1). Nodes are
+/// not checked; `i` must be a valid index.
+///
+/// ```
+/// use cagd::lagrange::basis_product;
+/// let x = [0.0, 0.5, 1.0];
+/// assert_eq!(basis_product(&x, 1, &0.25), 0.75); // 4t(1 − t)
+/// ```
+pub fn basis_product<T: Scalar>(nodes: &[T], i: usize, t: &T) -> T {
+    let mut v = T::one();
+    for (j, xj) in nodes.iter().enumerate() {
+        if j != i {
+            v = (t.clone() - xj.clone()) / (nodes[i].clone() - xj.clone()) * v;
+        }
+    }
+    v
+}
+
+/// The `count` Chebyshev–Lobatto points on `[0, 1]`,
+/// `t_k = (1 − cos(kπ/(count−1)))/2`, `k = 0..count` (the extrema of the Chebyshev polynomial
+/// `T_{count−1}` mapped to `[0, 1]`; they include both ends, so a Gordon network keeps its
+/// boundary curves). Computed as `(1 + sin(π(2k − M)/(2M)))/2`, `M = count − 1`, so the ends
+/// are exactly 0 and 1 and the middle of an odd count exactly 1/2. `count = 1` gives `[0.5]`.
+///
+/// ```
+/// let t = cagd::lagrange::chebyshev_nodes(5);
+/// assert_eq!((t[0], t[2], t[4]), (0.0, 0.5, 1.0));
+/// assert!((t[1] - (1.0 - 0.5f64.sqrt()) / 2.0).abs() < 1e-16);
+/// ```
+pub fn chebyshev_nodes(count: usize) -> Vec<f64> {
+    match count {
+        0 => Vec::new(),
+        1 => vec![0.5],
+        _ => {
+            let m = (count - 1) as f64;
+            (0..count)
+                .map(|k| {
+                    let s = (std::f64::consts::PI * (2.0 * k as f64 - m) / (2.0 * m)).sin();
+                    (1.0 + s) / 2.0
+                })
+                .collect()
+        }
+    }
+}
+
+/// Where to put the nodes of an interpolation (or the curves of a Gordon network).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum NodePlacement {
+    /// `t_k = k/M`, `M = count − 1` (exact in rationals); what the thesis uses
+    /// (`x = [0 0.5 1]`).
+    Uniform,
+    /// The Chebyshev–Lobatto points of [`chebyshev_nodes`] (as the nearest doubles).
+    Chebyshev,
+}
+
+impl NodePlacement {
+    /// `count` nodes on `[0, 1]`, increasing, with both ends included (for `count ≥ 2`).
+    ///
+    /// ```
+    /// use cagd::lagrange::NodePlacement;
+    /// assert_eq!(NodePlacement::Uniform.nodes::<f64>(3), vec![0.0, 0.5, 1.0]);
+    /// assert_eq!(NodePlacement::Chebyshev.nodes::<f64>(3), vec![0.0, 0.5, 1.0]);
+    /// ```
+    pub fn nodes<T: Scalar>(self, count: usize) -> Vec<T> {
+        match self {
+            NodePlacement::Uniform => match count {
+                0 => Vec::new(),
+                1 => vec![T::from_ratio(1, 2)],
+                _ => (0..count)
+                    .map(|k| T::from_ratio(k as i64, (count - 1) as i64))
+                    .collect(),
+            },
+            NodePlacement::Chebyshev => chebyshev_nodes(count)
+                .into_iter()
+                .map(|t| T::from_f64(t).unwrap_or_else(T::zero))
+                .collect(),
+        }
+    }
+}
+
+/// An estimate of the Lebesgue constant `Λ = max_t Σ_i |L_i(t)|` of a set of nodes: the
+/// factor by which interpolation can amplify errors in the data.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LebesgueEstimate {
+    /// The largest value of the Lebesgue function found.
+    pub value: f64,
+    /// Where it was found.
+    pub at: f64,
+    /// How many points were sampled.
+    pub samples: usize,
+}
+
+/// The Lagrange basis of a set of distinct nodes, in barycentric form (Berrut–Trefethen).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Lagrange<T: Scalar = f64> {
+    nodes: Vec<T>,
+    weights: Vec<T>,
+}
+
+impl<T: Scalar> Lagrange<T> {
+    /// The basis `L_0, …, L_m` of the nodes `t_0 < … < t_m`, with the barycentric weights
+    /// `w_i = 1 / Π_{j≠i} (t_i − t_j)`.
+    ///
+    /// # Errors
+    /// See [`check_nodes`] (at least one node, finite, strictly increasing).
+    ///
+    /// ```
+    /// use cagd::lagrange::Lagrange;
+    /// let l = Lagrange::new(vec![0.0, 0.5, 1.0]).unwrap();
+    /// assert_eq!(l.weights(), &[2.0, -4.0, 2.0]);
+    /// assert_eq!(l.basis(&0.25), vec![0.375, 0.75, -0.125]);
+    /// assert_eq!(l.basis(&0.5), vec![0.0, 1.0, 0.0]);
+    /// ```
+    pub fn new(nodes: Vec<T>) -> Result<Self> {
+        check_nodes("Lagrange nodes", &nodes, 1)?;
+        let weights = nodes
+            .iter()
+            .enumerate()
+            .map(|(i, ti)| {
+                let mut p = T::one();
+                for (j, tj) in nodes.iter().enumerate() {
+                    if j != i {
+                        p = p * (ti.clone() - tj.clone());
+                    }
+                }
+                T::one() / p
+            })
+            .collect();
+        Ok(Lagrange { nodes, weights })
+    }
+
+    /// The nodes.
+    pub fn nodes(&self) -> &[T] {
+        &self.nodes
+    }
+
+    /// The barycentric weights `w_i`.
+    pub fn weights(&self) -> &[T] {
+        &self.weights
+    }
+
+    /// The degree `m` (one less than the number of nodes).
+    pub fn degree(&self) -> usize {
+        self.nodes.len() - 1
+    }
+
+    /// `[L_0(t), …, L_m(t)]` by the first barycentric form (the "modified Lagrange formula",
+    /// Berrut–Trefethen §3): `ℓ(t) = Π_j (t − t_j)` once, then `L_i(t) = ℓ(t) · w_i/(t − t_i)`,
+    /// `O(m)` operations per point; exactly the unit vector at a node.
+    ///
+    /// Each value carries a relative error of a few `m·ε`, like the product form, and the
+    /// formula is backward stable (Higham 2004). The second ("true") barycentric form
+    /// `(w_i/(t − t_i)) / Σ_j w_j/(t − t_j)` divides by a sum with cancellation, and its
+    /// values can be off by `Λ·ε` relative to the largest one (about 1000 ULPs for six random
+    /// nodes on `[−0.1, 1.1]`, see the Octave reference test `octave_lagrange_basis`).
+    pub fn basis(&self, t: &T) -> Vec<T> {
+        if let Some(k) = self.nodes.iter().position(|x| x == t) {
+            let mut out = vec![T::zero(); self.nodes.len()];
+            out[k] = T::one();
+            return out;
+        }
+        let ell = self
+            .nodes
+            .iter()
+            .fold(T::one(), |p, x| p * (t.clone() - x.clone()));
+        self.nodes
+            .iter()
+            .zip(self.weights.iter())
+            .map(|(x, w)| ell.clone() * (w.clone() / (t.clone() - x.clone())))
+            .collect()
+    }
+
+    /// `Σ_i y_i L_i(t)` for values `y_i` (one per column of `values`, d × (m+1)).
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] unless `values` has one column per node.
+    pub fn interpolate(&self, values: &DMatrix<T>, t: &T) -> Result<DVector<T>> {
+        self.check_values(values)?;
+        Ok(self.combine(values, &self.basis(t)))
+    }
+
+    fn check_values(&self, values: &DMatrix<T>) -> Result<()> {
+        if values.ncols() != self.nodes.len() {
+            return Err(Error::ShapeMismatch {
+                what: "Lagrange values",
+                expected: format!("{} columns (one per node)", self.nodes.len()),
+                found: format!("{} columns", values.ncols()),
+            });
+        }
+        Ok(())
+    }
+
+    fn combine(&self, values: &DMatrix<T>, basis: &[T]) -> DVector<T> {
+        DVector::from_fn(values.nrows(), |k, _| {
+            basis.iter().enumerate().fold(T::zero(), |acc, (i, l)| {
+                acc + l.clone() * values[(k, i)].clone()
+            })
+        })
+    }
+
+    /// The Lebesgue function `Σ_i |L_i(t)|` (in `f64`).
+    pub fn lebesgue_function(&self, t: &T) -> f64 {
+        self.basis(t).iter().map(|l| l.to_f64().abs()).sum()
+    }
+
+    /// Estimates the Lebesgue constant on `[a, b]` by sampling the Lebesgue function at
+    /// `samples` equispaced points (at least 2), evaluated in `f64`.
+    ///
+    /// ```
+    /// use cagd::lagrange::{Lagrange, NodePlacement};
+    /// let uniform = Lagrange::new(NodePlacement::Uniform.nodes::<f64>(11)).unwrap();
+    /// let chebyshev = Lagrange::new(NodePlacement::Chebyshev.nodes::<f64>(11)).unwrap();
+    /// let (lu, lc) = (uniform.lebesgue_constant(0.0, 1.0, 10001), chebyshev.lebesgue_constant(0.0, 1.0, 10001));
+    /// assert!(lu.value > 29.0 && lu.value < 30.0); // 29.89…
+    /// assert!(lc.value < 2.5);                     // 2.4…
+    /// ```
+    pub fn lebesgue_constant(&self, a: f64, b: f64, samples: usize) -> LebesgueEstimate {
+        let samples = samples.max(2);
+        let nodes: Vec<f64> = self.nodes.iter().map(|t| t.to_f64()).collect();
+        let f64_basis = Lagrange::<f64> {
+            weights: self.weights.iter().map(|w| w.to_f64()).collect(),
+            nodes,
+        };
+        let mut best = LebesgueEstimate {
+            value: 0.0,
+            at: a,
+            samples,
+        };
+        for t in crate::linspace(a, b, samples) {
+            let value = f64_basis.lebesgue_function(&t);
+            if value > best.value {
+                best.value = value;
+                best.at = t;
+            }
+        }
+        best
+    }
+}
+
+/// The polynomial `p(t) = Σ_i y_i L_i(t)` through the points `y_i` (columns of a d × (m+1)
+/// matrix) at the nodes of a [`Lagrange`] basis, as a [`Curve`] with derivative.
+///
+/// The derivative uses the barycentric differentiation formulas (Berrut–Trefethen §9):
+/// off the nodes `p'(t) = Σ_j (w_j/(t−t_j)) (p(t) − y_j)/(t − t_j) / Σ_j (w_j/(t−t_j))`, at a
+/// node `p'(t_k) = Σ_{j≠k} D_kj (y_j − y_k)` with `D_kj = (w_j/w_k)/(t_k − t_j)`.
+///
+/// ```
+/// use cagd::lagrange::{Lagrange, LagrangeInterpolant};
+/// use cagd::Curve;
+/// use nalgebra::{dmatrix, dvector};
+/// // p(t) = t² through (0, 0), (1/2, 1/4), (1, 1).
+/// let p = LagrangeInterpolant::new(Lagrange::new(vec![0.0, 0.5, 1.0]).unwrap(), dmatrix![0.0, 0.25, 1.0]).unwrap();
+/// assert_eq!(p.eval(0.25), dvector![0.0625]);
+/// assert_eq!(p.eval_derivative(0.5), Some(dvector![1.0]));
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct LagrangeInterpolant<T: Scalar = f64> {
+    basis: Lagrange<T>,
+    values: DMatrix<T>,
+}
+
+impl<T: Scalar> LagrangeInterpolant<T> {
+    /// The interpolant of `values` (d × (m+1), one point per column) at the nodes of `basis`.
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] unless there is one column per node; [`Error::NonFinite`].
+    pub fn new(basis: Lagrange<T>, values: DMatrix<T>) -> Result<Self> {
+        basis.check_values(&values)?;
+        crate::error::check_finite("Lagrange values", values.iter())?;
+        Ok(LagrangeInterpolant { basis, values })
+    }
+
+    /// The basis.
+    pub fn basis(&self) -> &Lagrange<T> {
+        &self.basis
+    }
+
+    /// The interpolated values, one per column.
+    pub fn values(&self) -> &DMatrix<T> {
+        &self.values
+    }
+}
+
+impl<T: Scalar> Curve<T> for LagrangeInterpolant<T> {
+    fn dim(&self) -> usize {
+        self.values.nrows()
+    }
+
+    fn eval(&self, t: T) -> DVector<T> {
+        self.basis.combine(&self.values, &self.basis.basis(&t))
+    }
+
+    fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
+        let (x, w, y) = (&self.basis.nodes, &self.basis.weights, &self.values);
+        let d = y.nrows();
+        if let Some(k) = x.iter().position(|xk| *xk == t) {
+            let mut out = DVector::from_element(d, T::zero());
+            for j in (0..x.len()).filter(|&j| j != k) {
+                let dkj = w[j].clone() / w[k].clone() / (x[k].clone() - x[j].clone());
+                for r in 0..d {
+                    out[r] = out[r].clone() + dkj.clone() * (y[(r, j)].clone() - y[(r, k)].clone());
+                }
+            }
+            return Some(out);
+        }
+        let p = self.eval(t.clone());
+        let mut num = DVector::from_element(d, T::zero());
+        let mut den = T::zero();
+        for j in 0..x.len() {
+            let h = t.clone() - x[j].clone();
+            let q = w[j].clone() / h.clone();
+            den = den + q.clone();
+            for r in 0..d {
+                num[r] =
+                    num[r].clone() + q.clone() * (p[r].clone() - y[(r, j)].clone()) / h.clone();
+            }
+        }
+        Some(num.map(|v| v / den.clone()))
+    }
+}
