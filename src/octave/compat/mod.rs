@@ -17,6 +17,7 @@
 //! | `krpaCoons(c1,c2,d1,d2,P1,P2,P3,P4)` (C, Alg. 5) | [`krpa_coons`] | [`CoonsPatch`](crate::coons::CoonsPatch) on [`SampledCurve`](crate::param::SampledCurve)s |
 //! | `vrednostCoons(u,v,c1,c2,d1,d2,P1,P2,P3,P4)` (C, Alg. 6) | [`vrednost_coons`] | [`CoonsPatch::eval_parts`](crate::coons::CoonsPatch::eval_parts) |
 //! | `krpaGordon(g_u,g_v,g_uv,x,N)` (D, Alg. 7) | [`krpa_gordon`] | [`GordonSurface`](crate::gordon::GordonSurface) on sampled curves |
+//! | `Lagrange(x, m, u)` (D, Alg. 8) | [`lagrange`] | [`basis_product`](crate::lagrange::basis_product) |
 //! | `linspace(a, b, N)` (Octave built-in) | [`linspace`] | [`crate::linspace::linspace`] |
 //!
 //! # Layouts
@@ -55,15 +56,23 @@ use crate::error::{Error, Result};
 
 mod bilinearna;
 mod de_casteljau;
+mod krpa_coons;
+mod krpa_gordon;
+mod lagrange;
 mod linspace;
 mod ploskev_b;
 mod tenzor;
+mod vrednost_coons;
 
 pub use bilinearna::bilinearna;
 pub use de_casteljau::de_casteljau;
+pub use krpa_coons::{krpa_coons, SampledPatch};
+pub use krpa_gordon::krpa_gordon;
+pub use lagrange::lagrange;
 pub use linspace::linspace;
 pub use ploskev_b::ploskev_b;
 pub use tenzor::{tenzor, untenzor};
+pub use vrednost_coons::{vrednost_coons, VrednostCoons};
 
 /// `"3×4"`: a shape in words, as Octave's `size` would print it.
 pub(crate) fn shape_str(shape: &[usize]) -> String {
