@@ -74,6 +74,74 @@ pub enum Error {
         /// Right end.
         b: f64,
     },
+    /// A knot vector that decreases somewhere (knots must be non-decreasing).
+    #[error("{what}: knot {index} ({next}) is below the knot before it ({previous}); knots must be non-decreasing")]
+    DecreasingKnots {
+        /// Which argument.
+        what: &'static str,
+        /// Index of the first knot smaller than its predecessor (so `index ≥ 1`).
+        index: usize,
+        /// The knot before it.
+        previous: f64,
+        /// The offending knot.
+        next: f64,
+    },
+    /// A B-spline or NURBS of degree `p` needs at least `p + 1` control points (and exactly
+    /// `n + p + 1` knots for `n` control points).
+    #[error("{what}: degree {degree} needs at least {min} control point(s), got {found}")]
+    TooFewControlPoints {
+        /// Which argument.
+        what: &'static str,
+        /// The degree asked for.
+        degree: usize,
+        /// The least number of control points for that degree (`degree + 1`).
+        min: usize,
+        /// The number given.
+        found: usize,
+    },
+    /// The knot vector has the wrong length for the degree and the number of control points.
+    #[error("{what}: expected {expected} knots (control points + degree + 1), got {found}")]
+    KnotCount {
+        /// Which argument.
+        what: &'static str,
+        /// `n + p + 1`.
+        expected: usize,
+        /// The number given.
+        found: usize,
+    },
+    /// A NURBS weight that is zero or negative (weights must be positive so that the curve
+    /// stays in the convex hull of its control points and is defined everywhere).
+    #[error("{what}: weight {index} is {value}; weights must be positive")]
+    NonPositiveWeight {
+        /// Which argument.
+        what: &'static str,
+        /// Index of the first offending weight (column-major for surfaces).
+        index: usize,
+        /// The weight.
+        value: f64,
+    },
+    /// A parameter outside the domain `[min, max]` of a curve or surface (for a B-spline,
+    /// `[u_p, u_{n+1}]` of its knot vector).
+    #[error("{what}: parameter {value} is outside the domain [{min}, {max}]")]
+    ParameterOutOfRange {
+        /// Which argument.
+        what: &'static str,
+        /// The parameter.
+        value: f64,
+        /// Start of the domain.
+        min: f64,
+        /// End of the domain.
+        max: f64,
+    },
+    /// A square system that has no unique solution (repeated interpolation parameters, a
+    /// singular matrix to invert).
+    #[error("{what}: the system is singular ({reason})")]
+    Singular {
+        /// Which argument.
+        what: &'static str,
+        /// Why, in words.
+        reason: String,
+    },
     /// Other invalid argument, with a sentence saying what was expected.
     #[error("{what}: {message}")]
     InvalidArgument {

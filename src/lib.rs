@@ -6,29 +6,52 @@
 //!
 //! The crate has two layers:
 //! - the **native API**: [`bernstein`], [`bezier::BezierCurve`], [`bezier::BezierPatch`], the
-//!   Coons and Gordon constructions, all built on the [`param::Curve`] / [`param::Surface`]
+//!   Coons and Gordon constructions, and the course material of the notes: [`interpolation`]
+//!   (Lagrange, piecewise linear, parametric), [`hermite`] (Ferguson cubics), [`spline`]
+//!   (interpolating cubic splines), [`continuity`], [`conversion`] (matrix forms), [`bspline`],
+//!   [`nurbs`] and the [`surfaces`] of the notes, all built on the [`param::Curve`] / [`param::Surface`]
 //!   traits and generic over the [`scalar::Scalar`] (`f64` or exact `BigRational`);
 //! - the **Octave-compatible layer** [`octave`]: the thesis functions under their own names
-//!   (`de_casteljau`, `ploskev_b`, …) with the thesis array layouts, and Octave's text file
-//!   format.
+//!   (`de_casteljau`, `ploskev_b`, …) with the thesis array layouts, Octave's text file
+//!   format, and the Octave syntax users type ([`octave::literal`]: matrix literals, ranges,
+//!   curve expressions; [`octave::script`]: the thesis's data scripts).
+//!
+//! Around them: [`plot`] (pictures as the thesis's Octave code draws them), [`mesh`]
+//! (triangulated surfaces as STL, OBJ, PLY) and [`cli`] (the command line as a library:
+//! inputs, output formats, atomic files, one-line errors).
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 pub mod bernstein;
 pub mod bezier;
+pub mod bspline;
+pub mod cli;
+pub mod continuity;
+pub mod conversion;
 pub mod coons;
 pub mod error;
 pub mod gordon;
+pub mod hermite;
+pub mod interpolation;
 pub mod lagrange;
 pub mod linspace;
+pub mod mesh;
+pub mod nurbs;
 pub mod octave;
 pub mod param;
+pub mod plot;
 pub mod scalar;
+pub mod spline;
+pub mod surfaces;
 
 pub use bezier::{BezierCurve, BezierPatch, Edge};
+pub use bspline::{BSplineCurve, BSplineSurface, KnotVector};
 pub use coons::{CoonsPatch, Tolerance};
 pub use error::{Error, Result};
 pub use gordon::GordonSurface;
+pub use hermite::HermiteCubic;
 pub use linspace::linspace;
+pub use nurbs::{NurbsCurve, NurbsSurface};
 pub use param::{Curve, FnCurve, SampledCurve, Surface};
 pub use scalar::Scalar;
+pub use spline::{CubicSpline, EndCondition};

@@ -5,9 +5,13 @@
 //!   layouts, each a thin layer over the native API;
 //! - [`text_format`]: GNU Octave's `save -text` file format (reader and writer) and the plain
 //!   numeric text of `save -ascii` / `dlmwrite`; every reference number of the crate's tests is
-//!   read through it.
+//!   read through it;
+//! - [`literal`]: the Octave syntax users type (matrix literals, ranges, curve expressions);
+//! - [`script`]: the thesis's data scripts.
 
 pub mod compat;
+pub mod literal;
+pub mod script;
 pub mod text_format;
 
 pub use text_format::{

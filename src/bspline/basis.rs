@@ -1,0 +1,170 @@
+//! B-spline basis functions: the Cox–de Boor recursion (seeds 001 and 004) and the
+//! triangular scheme that evaluates the `p + 1` non-zero ones at once.
+
+use crate::error::{Error, Result};
+use crate::scalar::Scalar;
+
+/// The index `s` of the knot span `[u_s, u_{s+1})` holding `u`, for a degree-`p` spline with
+/// `n_control` control points (`p ≤ s ≤ n_control − 1`); at the right end of the domain,
+/// `u = u_{n_control}`, the last non-empty span `n_control − 1` (as octave-nurbs `findspan`,
+/// which numbers from 0 too).
+///
+/// # Errors
+/// [`Error::ParameterOutOfRange`] unless `u_p ≤ u ≤ u_{n_control}`.
+///
+/// ```
+/// use cagd::bspline::find_span;
+/// let knots = [0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0];
+/// assert_eq!(find_span(2, 4, &knots, &0.25)?, 2);
+/// assert_eq!(find_span(2, 4, &knots, &0.5)?, 3);
+/// assert_eq!(find_span(2, 4, &knots, &1.0)?, 3);
+/// assert!(find_span(2, 4, &knots, &1.5).is_err());
+/// # Ok::<(), cagd::Error>(())
+/// ```
+pub fn find_span<T: Scalar>(p: usize, n_control: usize, knots: &[T], u: &T) -> Result<usize> {
+    let (lo, hi) = (&knots[p], &knots[n_control]);
+    if !(u.is_finite_value() && lo <= u && u <= hi) {
+        return Err(Error::ParameterOutOfRange {
+            what: "B-spline parameter",
+            value: u.to_f64(),
+            min: lo.to_f64(),
+            max: hi.to_f64(),
+        });
+    }
+    if u == hi {
+        // The last span of positive length ending at u_n.
+        let mut s = n_control - 1;
+        while s > p && knots[s] == knots[s + 1] {
+            s -= 1;
+        }
+        return Ok(s);
+    }
+    // Largest s with u_s <= u, within [p, n_control − 1].
+    let above = knots[..=n_control].partition_point(|k| k <= u);
+    Ok((above - 1).clamp(p, n_control - 1))
+}
+
+/// The non-zero basis functions `N_{s−p,p}(u), …, N_{s,p}(u)` on the span `s`
+/// (from [`find_span`]), by the triangular scheme of Cox–de Boor (Piegl & Tiller, A2.2),
+/// in the operation order of octave-nurbs `basisfun`. They are non-negative and sum to one.
+///
+/// ```
+/// use cagd::bspline::{basis_functions, find_span};
+/// let knots = [0.0, 0.0, 0.0, 1.0, 1.0, 1.0];
+/// // One span: the quadratic Bernstein polynomials.
+/// let n = basis_functions(2, &knots, find_span(2, 3, &knots, &0.5)?, &0.5);
+/// assert_eq!(n, vec![0.25, 0.5, 0.25]);
+/// # Ok::<(), cagd::Error>(())
+/// ```
+pub fn basis_functions<T: Scalar>(p: usize, knots: &[T], span: usize, u: &T) -> Vec<T> {
+    let mut n = vec![T::zero(); p + 1];
+    let mut left = vec![T::zero(); p + 1];
+    let mut right = vec![T::zero(); p + 1];
+    n[0] = T::one();
+    for j in 1..=p {
+        left[j] = u.clone() - knots[span + 1 - j].clone();
+        right[j] = knots[span + j].clone() - u.clone();
+        let mut saved = T::zero();
+        for r in 0..j {
+            let temp = n[r].clone() / (right[r + 1].clone() + left[j - r].clone());
+            n[r] = saved + right[r + 1].clone() * temp.clone();
+            saved = left[j - r].clone() * temp;
+        }
+        n[j] = saved;
+    }
+    n
+}
+
+/// The basis function `N_{i,p}(u)` by the Cox–de Boor recursion itself:
+///
+/// ```text
+/// N_{i,0}(u) = 1 if u_i ≤ u < u_{i+1}, else 0,
+/// N_{i,p}(u) = (u − u_i)/(u_{i+p} − u_i) · N_{i,p−1}(u) + (u_{i+p+1} − u)/(u_{i+p+1} − u_{i+1}) · N_{i+1,p−1}(u),
+/// ```
+///
+/// a term with a zero denominator being zero. At the right end of the domain the last span is
+/// taken as closed, so the basis still sums to one there. Slow (exponential in `p`); for
+/// teaching and testing — [`basis_functions`] is the algorithm to use.
+///
+/// Seed 004 prints the recursion with `N_{i+1,k}` in the second term; it must be
+/// `N_{i+1,k−1}` (order `k` = degree + 1 in its notation). It also writes `N_{i,1} = 1` for
+/// `u_i ≤ u ≤ u_{i+1}`, a closed interval, which would count an interior knot twice; the
+/// spans are half-open. Its explicit `N_{i,3}` (uniform knots) misses the factor ½ on the second
+/// term of the recursion, and its list of uniform cubic pieces names the last one `N_{2,3}`
+/// again (it is `N_{3,3}`); the matrix it derives from them, `M_C`, is right.
+///
+/// ```
+/// use cagd::bspline::cox_de_boor;
+/// let knots = [0.0, 1.0, 2.0, 3.0];
+/// // The uniform quadratic B-spline: ½u² on [0, 1], peak ¾ at u = 1.5.
+/// assert_eq!(cox_de_boor(0, 2, &knots, &0.5), 0.125);
+/// assert_eq!(cox_de_boor(0, 2, &knots, &1.5), 0.75);
+/// ```
+pub fn cox_de_boor<T: Scalar>(i: usize, p: usize, knots: &[T], u: &T) -> T {
+    let last = knots.len() - 1;
+    if p == 0 {
+        let (a, b) = (&knots[i], &knots[i + 1]);
+        let inside = a <= u && u < b;
+        // Close the last non-empty span at the right end of the whole knot vector.
+        let at_end = u == b && a < b && knots[i + 1..].iter().all(|k| k == b) && *b == knots[last];
+        return if inside || at_end {
+            T::one()
+        } else {
+            T::zero()
+        };
+    }
+    let mut value = T::zero();
+    let d1 = knots[i + p].clone() - knots[i].clone();
+    if !d1.is_zero() {
+        value = value + (u.clone() - knots[i].clone()) / d1 * cox_de_boor(i, p - 1, knots, u);
+    }
+    let d2 = knots[i + p + 1].clone() - knots[i + 1].clone();
+    if !d2.is_zero() {
+        value = value
+            + (knots[i + p + 1].clone() - u.clone()) / d2 * cox_de_boor(i + 1, p - 1, knots, u);
+    }
+    value
+}
+
+/// All basis functions `N_{0,p}(u), …, N_{n−1,p}(u)` (zeros outside the span), for a
+/// degree-`p` spline with `n_control` control points.
+///
+/// # Errors
+/// [`Error::ParameterOutOfRange`] outside the domain `[u_p, u_n]`.
+pub fn basis_all<T: Scalar>(p: usize, n_control: usize, knots: &[T], u: &T) -> Result<Vec<T>> {
+    let s = find_span(p, n_control, knots, u)?;
+    let local = basis_functions(p, knots, s, u);
+    let mut all = vec![T::zero(); n_control];
+    for (k, v) in local.into_iter().enumerate() {
+        all[s - p + k] = v;
+    }
+    Ok(all)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn triangular_scheme_agrees_with_recursion() {
+        let knots = [0.0, 0.0, 0.0, 0.3, 0.3, 0.7, 1.0, 1.0, 1.0];
+        let n = knots.len() - 3;
+        for k in 0..=20 {
+            let u = k as f64 / 20.0;
+            let all = basis_all(2, n, &knots, &u).unwrap();
+            for (i, v) in all.iter().enumerate() {
+                let r = cox_de_boor(i, 2, &knots, &u);
+                assert!((v - r).abs() < 1e-15, "u={u} i={i}: {v} vs {r}");
+            }
+            assert!((all.iter().sum::<f64>() - 1.0).abs() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn span_search_skips_repeated_end_knots() {
+        let knots = [0.0, 0.0, 1.0, 2.0, 2.0];
+        assert_eq!(find_span(1, 3, &knots, &2.0).unwrap(), 2);
+        assert_eq!(find_span(1, 3, &knots, &0.0).unwrap(), 1);
+        assert!(find_span(1, 3, &knots, &f64::NAN).is_err());
+    }
+}

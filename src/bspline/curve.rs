@@ -1,0 +1,426 @@
+//! B-spline curves (seed 001 eq. (3), seed 004 "B-spline křivky").
+
+use nalgebra::{DMatrix, DVector};
+
+use super::basis::{basis_all, basis_functions, find_span};
+use super::knots::{check_knots, KnotVector};
+use crate::bezier::BezierCurve;
+use crate::error::{check_finite, Error, Result};
+use crate::param::Curve;
+use crate::scalar::Scalar;
+
+/// A B-spline curve `C(u) = Σ_{i=0}^{n−1} P_i N_{i,p}(u)`, `u ∈ [u_p, u_n]`
+/// (seed 001 eq. (3); seed 004 numbers the order `k = p + 1`).
+///
+/// **Layout:** the control points `P_0, …, P_{n−1}` are the columns of a `d × n` matrix (as
+/// for [`BezierCurve`] and octave-nurbs `coefs`), the knots `u_0 ≤ … ≤ u_{n+p}` a
+/// [`KnotVector`] of length `n + p + 1`.
+///
+/// **Evaluation** ([`try_eval`](Self::try_eval), [`Curve::eval`]) sums the `p + 1` non-zero
+/// terms `N_{s−p+i,p}(u) P_{s−p+i}` of the span `s`, `i` ascending, exactly as octave-nurbs
+/// `bspeval`; [`de_boor`](Self::de_boor) runs de Boor's algorithm (the same point). Outside the
+/// domain `try_eval` returns [`Error::ParameterOutOfRange`]; the [`Curve`] trait clamps to the
+/// domain instead (a NaN parameter gives NaN coordinates).
+///
+/// ```
+/// use cagd::bspline::BSplineCurve;
+/// use nalgebra::DMatrix;
+/// // A clamped quadratic through (0,0), (1,2), (3,2), (4,0): interpolates its end points.
+/// let p = DMatrix::from_column_slice(2, 4, &[0.0, 0.0, 1.0, 2.0, 3.0, 2.0, 4.0, 0.0]);
+/// let c = BSplineCurve::new(2, vec![0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0], p)?;
+/// assert_eq!(c.try_eval(0.0)?.as_slice(), &[0.0, 0.0]);
+/// assert_eq!(c.try_eval(1.0)?.as_slice(), &[4.0, 0.0]);
+/// assert_eq!(c.try_eval(0.5)?.as_slice(), &[2.0, 2.0]);
+/// assert!(c.try_eval(1.5).is_err());
+/// # Ok::<(), cagd::Error>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct BSplineCurve<T: Scalar = f64> {
+    degree: usize,
+    knots: KnotVector<T>,
+    control: DMatrix<T>,
+}
+
+impl<T: Scalar> BSplineCurve<T> {
+    /// The curve of degree `degree` with the given knots and control points (columns).
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] for control points with no coordinates; [`Error::NonFinite`];
+    /// [`Error::DecreasingKnots`]; [`Error::TooFewControlPoints`] for fewer than `degree + 1`
+    /// control points; [`Error::KnotCount`] unless there are `n + degree + 1` knots;
+    /// [`Error::EmptyInterval`] if the domain `[u_p, u_n]` is a single point.
+    pub fn new(degree: usize, knots: Vec<T>, control: DMatrix<T>) -> Result<Self> {
+        let what = "B-spline curve";
+        if control.nrows() == 0 {
+            return Err(Error::ShapeMismatch {
+                what,
+                expected: "at least one coordinate row".into(),
+                found: "0 rows".into(),
+            });
+        }
+        check_finite("B-spline control points", control.iter())?;
+        let knots = KnotVector::new(knots)?;
+        check_knots(what, degree, control.ncols(), &knots)?;
+        Ok(BSplineCurve {
+            degree,
+            knots,
+            control,
+        })
+    }
+
+    /// The curve with clamped uniform knots on `[0, 1]` ([`KnotVector::clamped_uniform`]): it
+    /// starts at the first and ends at the last control point.
+    ///
+    /// # Errors
+    /// As [`new`](Self::new).
+    pub fn clamped(degree: usize, control: DMatrix<T>) -> Result<Self> {
+        let knots = KnotVector::<T>::clamped_uniform(degree, control.ncols())?;
+        Self::new(degree, knots.as_slice().to_vec(), control)
+    }
+
+    /// The uniform cubic B-spline of seed 004 ("Coons cubic", `x(u) = X_C M_C u` on each
+    /// segment, see [`crate::conversion::bspline_matrix`]) over the points `x_0, …, x_n`
+    /// (columns). With `replicate_ends` the end points are repeated as the notes do to "start"
+    /// and "finish" the curve — the segments use `[x_0 x_0 x_0 x_1]`, `[x_0 x_0 x_1 x_2]`, …,
+    /// `[x_{n−1} x_n x_n x_n]` — so the curve starts at `x_0` and ends at `x_n`. Segment `k`
+    /// runs over `u ∈ [k, k + 1]` (knots [`KnotVector::uniform`]).
+    ///
+    /// # Errors
+    /// [`Error::TooFewControlPoints`] for fewer than 4 points without replication (1 with);
+    /// as [`new`](Self::new) otherwise.
+    ///
+    /// ```
+    /// use cagd::bspline::BSplineCurve;
+    /// use nalgebra::DMatrix;
+    /// let x = DMatrix::from_column_slice(2, 3, &[0.0, 0.0, 6.0, 6.0, 12.0, 0.0]);
+    /// let c = BSplineCurve::uniform_cubic(&x, true)?;
+    /// let (a, b) = c.domain();
+    /// assert_eq!((a, b), (0.0, 4.0));
+    /// assert_eq!(c.try_eval(a)?.as_slice(), &[0.0, 0.0]);
+    /// assert_eq!(c.try_eval(b)?.as_slice(), &[12.0, 0.0]);
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn uniform_cubic(points: &DMatrix<T>, replicate_ends: bool) -> Result<Self> {
+        let control = if replicate_ends && points.ncols() > 0 {
+            let n = points.ncols();
+            let idx: Vec<usize> = [0, 0]
+                .into_iter()
+                .chain(0..n)
+                .chain([n - 1, n - 1])
+                .collect();
+            DMatrix::from_fn(points.nrows(), idx.len(), |r, c| {
+                points[(r, idx[c])].clone()
+            })
+        } else {
+            points.clone()
+        };
+        let knots = KnotVector::<T>::uniform(3, control.ncols())?;
+        Self::new(3, knots.as_slice().to_vec(), control)
+    }
+
+    /// The Bézier curve as a B-spline of one span: knots `a` (`n + 1` times), `b` (`n + 1`
+    /// times) for a curve over `[a, b]`.
+    pub fn from_bezier(curve: &BezierCurve<T>) -> Self {
+        let n = curve.degree();
+        let (a, b) = curve.interval();
+        let mut knots = vec![a.clone(); n + 1];
+        knots.extend(std::iter::repeat(b.clone()).take(n + 1));
+        BSplineCurve {
+            degree: n,
+            knots: KnotVector::new(knots).expect("a < b"),
+            control: curve.control().clone(),
+        }
+    }
+
+    /// The degree `p`.
+    pub fn degree(&self) -> usize {
+        self.degree
+    }
+
+    /// The dimension `d` of the points.
+    pub fn dim(&self) -> usize {
+        self.control.nrows()
+    }
+
+    /// The control points, one per column (`d × n`).
+    pub fn control(&self) -> &DMatrix<T> {
+        &self.control
+    }
+
+    /// The knot vector.
+    pub fn knots(&self) -> &KnotVector<T> {
+        &self.knots
+    }
+
+    /// The domain `[u_p, u_n]`.
+    pub fn domain(&self) -> (T, T) {
+        self.knots.domain(self.degree)
+    }
+
+    /// The values `N_{0,p}(u), …, N_{n−1,p}(u)` of all basis functions.
+    ///
+    /// # Errors
+    /// [`Error::ParameterOutOfRange`] outside the domain.
+    pub fn basis(&self, u: &T) -> Result<Vec<T>> {
+        basis_all(self.degree, self.control.ncols(), self.knots.as_slice(), u)
+    }
+
+    /// The point `C(u)` (see the type's documentation for the operation order).
+    ///
+    /// # Errors
+    /// [`Error::ParameterOutOfRange`] outside the domain (also for NaN).
+    pub fn try_eval(&self, u: T) -> Result<DVector<T>> {
+        let (p, knots) = (self.degree, self.knots.as_slice());
+        let s = find_span(p, self.control.ncols(), knots, &u)?;
+        let n = basis_functions(p, knots, s, &u);
+        Ok(combine(&self.control, s - p, &n))
+    }
+
+    /// The point `C(u)` by de Boor's algorithm: the `p + 1` control points of the span are
+    /// blended pairwise `p` times, `d_i ← (1 − α_i) d_{i−1} + α_i d_i` with
+    /// `α_i = (u − u_i)/(u_{i+p+1−r} − u_i)`.
+    ///
+    /// # Errors
+    /// [`Error::ParameterOutOfRange`] outside the domain.
+    pub fn de_boor(&self, u: T) -> Result<DVector<T>> {
+        let (p, knots) = (self.degree, self.knots.as_slice());
+        let s = find_span(p, self.control.ncols(), knots, &u)?;
+        let mut d: Vec<DVector<T>> = (0..=p)
+            .map(|j| self.control.column(s - p + j).into_owned())
+            .collect();
+        for r in 1..=p {
+            for j in (r..=p).rev() {
+                let i = s - p + j;
+                let alpha = (u.clone() - knots[i].clone())
+                    / (knots[i + p + 1 - r].clone() - knots[i].clone());
+                let one_minus = T::one() - alpha.clone();
+                d[j] = blend(&d[j - 1], one_minus, &d[j], alpha);
+            }
+        }
+        Ok(d.swap_remove(p))
+    }
+
+    /// The points at the parameters `us`, one per column (`d × us.len()`).
+    ///
+    /// # Errors
+    /// [`Error::ParameterOutOfRange`] for a parameter outside the domain.
+    pub fn eval_many(&self, us: &[T]) -> Result<DMatrix<T>> {
+        let mut out = DMatrix::from_element(self.dim(), us.len(), T::zero());
+        for (k, u) in us.iter().enumerate() {
+            out.set_column(k, &self.try_eval(u.clone())?);
+        }
+        Ok(out)
+    }
+
+    /// The derivative curve `C'(u) = Σ Q_i N_{i,p−1}(u)` with
+    /// `Q_i = p (P_{i+1} − P_i)/(u_{i+p+1} − u_{i+1})` over the knots without the first and
+    /// the last (octave-nurbs `bspderiv`). Where a knot difference is zero (a knot of
+    /// multiplicity `p + 1` inside) the coefficient is set to zero: its basis function vanishes.
+    ///
+    /// # Errors
+    /// [`Error::DerivativeOrder`] for a curve of degree 0.
+    pub fn derivative(&self) -> Result<Self> {
+        let p = self.degree;
+        if p == 0 {
+            return Err(Error::DerivativeOrder {
+                order: 1,
+                degree: 0,
+            });
+        }
+        let k = self.knots.as_slice();
+        let n = self.control.ncols();
+        let pt = T::from_usize(p);
+        let mut q = DMatrix::from_element(self.dim(), n - 1, T::zero());
+        for i in 0..n - 1 {
+            let h = k[i + p + 1].clone() - k[i + 1].clone();
+            if h.is_zero() {
+                continue;
+            }
+            let tmp = pt.clone() / h;
+            for r in 0..self.dim() {
+                q[(r, i)] =
+                    tmp.clone() * (self.control[(r, i + 1)].clone() - self.control[(r, i)].clone());
+            }
+        }
+        Ok(BSplineCurve {
+            degree: p - 1,
+            knots: KnotVector::new(k[1..k.len() - 1].to_vec())?,
+            control: q,
+        })
+    }
+
+    /// The first derivative `C'(u)`.
+    ///
+    /// # Errors
+    /// [`Error::DerivativeOrder`] for degree 0, [`Error::ParameterOutOfRange`] outside the
+    /// domain.
+    pub fn try_eval_derivative(&self, u: T) -> Result<DVector<T>> {
+        self.derivative()?.try_eval(u)
+    }
+
+    /// The same curve with the knot `u` inserted once (Boehm); see
+    /// [`insert_knots`](Self::insert_knots).
+    ///
+    /// # Errors
+    /// As [`insert_knots`](Self::insert_knots).
+    pub fn insert_knot(&self, u: T) -> Result<Self> {
+        self.insert_knots(&[u])
+    }
+
+    /// The same curve over a refined knot vector: the knots `us` (any order, repeats allowed)
+    /// are inserted and the control points recomputed so that the curve does not change
+    /// (Piegl & Tiller A5.4, in the operation order of octave-nurbs `bspkntins`).
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`]; [`Error::ParameterOutOfRange`] for a knot not strictly inside the
+    /// domain; [`Error::InvalidArgument`] if a knot would occur more than `p + 1` times.
+    pub fn insert_knots(&self, us: &[T]) -> Result<Self> {
+        check_finite("inserted knots", us.iter())?;
+        if us.is_empty() {
+            return Ok(self.clone());
+        }
+        let d = self.degree;
+        let (lo, hi) = self.domain();
+        let mut u: Vec<T> = us.to_vec();
+        u.sort_by(|a, b| a.partial_cmp(b).expect("finite"));
+        for x in &u {
+            if !(&lo < x && x < &hi) {
+                return Err(Error::ParameterOutOfRange {
+                    what: "inserted knot",
+                    value: x.to_f64(),
+                    min: lo.to_f64(),
+                    max: hi.to_f64(),
+                });
+            }
+            let total = self.knots.multiplicity(x) + u.iter().filter(|y| *y == x).count();
+            if total > d + 1 {
+                return Err(Error::InvalidArgument {
+                    what: "inserted knot",
+                    message: format!(
+                        "knot {x} would occur {total} times; at most degree + 1 = {} allowed",
+                        d + 1
+                    ),
+                });
+            }
+        }
+        let k = self.knots.as_slice();
+        let c = &self.control;
+        let nc = c.ncols();
+        let nu = u.len();
+        let (n, r, m) = (nc - 1, nu - 1, nc - 1 + d + 1);
+        let a = find_span(d, nc, k, &u[0])?;
+        let b = find_span(d, nc, k, &u[r])? + 1;
+        let mut ic: Vec<DVector<T>> = vec![DVector::from_element(c.nrows(), T::zero()); nc + nu];
+        let mut ik = vec![T::zero(); k.len() + nu];
+        for (j, slot) in ic.iter_mut().enumerate().take(a - d + 1) {
+            *slot = c.column(j).into_owned();
+        }
+        for j in b - 1..=n {
+            ic[j + r + 1] = c.column(j).into_owned();
+        }
+        ik[..=a].clone_from_slice(&k[..=a]);
+        for j in b + d..=m {
+            ik[j + r + 1] = k[j].clone();
+        }
+        let mut i = b + d - 1;
+        let mut s = b + d + r;
+        for j in (0..=r).rev() {
+            while u[j] <= k[i] && i > a {
+                ic[s - d - 1] = c.column(i - d - 1).into_owned();
+                ik[s] = k[i].clone();
+                i -= 1;
+                s -= 1;
+            }
+            ic[s - d - 1] = ic[s - d].clone();
+            for l in 1..=d {
+                let ind = s - d + l;
+                let mut alfa = ik[s + l].clone() - u[j].clone();
+                if alfa.is_zero() {
+                    ic[ind - 1] = ic[ind].clone();
+                } else {
+                    alfa = alfa / (ik[s + l].clone() - k[i + l - d].clone());
+                    // alfa·x + (1 − alfa)·y, the product with 1 − alfa first, as bspkntins.
+                    let one_minus = T::one() - alfa.clone();
+                    ic[ind - 1] = DVector::from_fn(ic[ind].len(), |q, _| {
+                        let tmp = one_minus.clone() * ic[ind][q].clone();
+                        alfa.clone() * ic[ind - 1][q].clone() + tmp
+                    });
+                }
+            }
+            ik[s] = u[j].clone();
+            s -= 1;
+        }
+        let control = DMatrix::from_fn(c.nrows(), ic.len(), |row, col| ic[col][row].clone());
+        Ok(BSplineCurve {
+            degree: d,
+            knots: KnotVector::new(ik)?,
+            control,
+        })
+    }
+}
+
+/// `Σ_i n[i] · control[:, first + i]`, `i` ascending, starting from zero (as `bspeval`).
+pub(crate) fn combine<T: Scalar>(control: &DMatrix<T>, first: usize, n: &[T]) -> DVector<T> {
+    DVector::from_fn(control.nrows(), |r, _| {
+        n.iter().enumerate().fold(T::zero(), |acc, (i, w)| {
+            acc + w.clone() * control[(r, first + i)].clone()
+        })
+    })
+}
+
+/// `a · x + b · y`, coordinate-wise.
+pub(crate) fn blend<T: Scalar>(x: &DVector<T>, a: T, y: &DVector<T>, b: T) -> DVector<T> {
+    DVector::from_fn(x.len(), |r, _| {
+        a.clone() * x[r].clone() + b.clone() * y[r].clone()
+    })
+}
+
+/// Clamps `u` to `[lo, hi]` (NaN stays NaN).
+pub(crate) fn clamp<T: Scalar>(u: T, lo: &T, hi: &T) -> T {
+    if &u < lo {
+        lo.clone()
+    } else if &u > hi {
+        hi.clone()
+    } else {
+        u
+    }
+}
+
+impl<T: Scalar> Curve<T> for BSplineCurve<T> {
+    fn dim(&self) -> usize {
+        BSplineCurve::dim(self)
+    }
+
+    fn eval(&self, t: T) -> DVector<T> {
+        let (lo, hi) = self.domain();
+        let u = clamp(t, &lo, &hi);
+        self.try_eval(u.clone())
+            .unwrap_or_else(|_| DVector::from_element(self.dim(), u))
+    }
+
+    fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
+        let (lo, hi) = self.domain();
+        self.try_eval_derivative(clamp(t, &lo, &hi)).ok()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn de_boor_agrees_with_basis_sum() {
+        let p = DMatrix::from_column_slice(
+            2,
+            6,
+            &[0.0, 0.0, 1.0, 3.0, 2.0, -1.0, 4.0, 2.0, 5.0, 5.0, 7.0, 0.0],
+        );
+        let c = BSplineCurve::new(3, vec![0., 0., 0., 0., 0.3, 0.6, 1., 1., 1., 1.], p).unwrap();
+        for k in 0..=10 {
+            let u = k as f64 / 10.0;
+            let a = c.try_eval(u).unwrap();
+            let b = c.de_boor(u).unwrap();
+            assert!((a - b).norm() < 1e-14);
+        }
+    }
+}

@@ -1,0 +1,21 @@
+//! B-splines (seeds 001 §1.2 and 004 "B-spline křivky"): knot vectors with multiplicities,
+//! the Cox–de Boor basis, curves (de Boor evaluation, derivatives, knot insertion, the uniform
+//! cubic "Coons" B-spline of seed 004) and tensor-product surfaces.
+//!
+//! Conventions follow octave-nurbs, the reference these are tested against: degree `p`
+//! (seed 004's order `k = p + 1`), `n` control points, `n + p + 1` knots, domain
+//! `[u_p, u_n]`, spans numbered from 0. Everything is generic over [`Scalar`](crate::Scalar):
+//! evaluation, derivatives and knot insertion are rational, so they run exactly in
+//! `BigRational` too.
+
+mod basis;
+mod curve;
+mod knots;
+mod surface;
+
+pub use basis::{basis_all, basis_functions, cox_de_boor, find_span};
+pub use curve::BSplineCurve;
+pub use knots::KnotVector;
+pub use surface::BSplineSurface;
+
+pub(crate) use curve::clamp;

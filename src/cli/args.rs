@@ -1,0 +1,97 @@
+//! Argument groups shared by the subcommands (clap derive), so that every subcommand spells
+//! the same option the same way: `--format`, `--exact`, `-o/--output`, `--plot`, `--mesh`,
+//! `--steps`, `--script`, `--t`, `--u`, `--v`, `--n`, `--rows`.
+
+use std::path::PathBuf;
+
+use clap::Args;
+
+use super::Format;
+
+/// How and where the numeric result is printed.
+#[derive(Debug, Clone, Args)]
+pub struct OutputArgs {
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    pub format: Format,
+    /// Compute in exact rational arithmetic and print fractions such as 7/2 (decimal inputs
+    /// are read exactly: 0.2 is 1/5). Only for rational constructions and expressions.
+    #[arg(long)]
+    pub exact: bool,
+    /// Write the result to FILE (atomically) instead of standard output.
+    #[arg(short = 'o', long, value_name = "FILE")]
+    pub output: Option<PathBuf>,
+}
+
+/// A picture of the result.
+#[derive(Debug, Clone, Args)]
+pub struct PlotArgs {
+    /// Draw the result into FILE.svg or FILE.png (format chosen by the extension).
+    #[arg(long, value_name = "FILE")]
+    pub plot: Option<PathBuf>,
+}
+
+/// A triangulated surface of a grid result.
+#[derive(Debug, Clone, Args)]
+pub struct MeshArgs {
+    /// Write the surface as a triangle mesh to FILE.stl (binary), FILE.obj or FILE.ply
+    /// (ASCII), chosen by the extension.
+    #[arg(long, value_name = "FILE")]
+    pub mesh: Option<PathBuf>,
+}
+
+/// Intermediate results of an algorithm.
+#[derive(Debug, Clone, Args)]
+pub struct StepsArgs {
+    /// Also print the intermediate steps of the algorithm.
+    #[arg(long)]
+    pub steps: bool,
+}
+
+/// A thesis-style data script whose variables the other arguments may use.
+#[derive(Debug, Clone, Args)]
+pub struct ScriptArgs {
+    /// Run the Octave data script FILE (assignments and for loops, as in the thesis
+    /// appendices) first; its variables may be used in the other arguments. `N` is bound to
+    /// `--n` when given.
+    #[arg(long, value_name = "FILE")]
+    pub script: Option<String>,
+}
+
+/// Parameters of a curve.
+#[derive(Debug, Clone, Args)]
+pub struct CurveParamArgs {
+    /// Curve parameters: a number, a list "[0 0.25 0.5]" or a range 0:0.1:1.
+    #[arg(
+        long,
+        value_name = "VALUES",
+        allow_hyphen_values = true,
+        conflicts_with = "n"
+    )]
+    pub t: Option<String>,
+    /// Sample at linspace(0,1,N), like the thesis's N.
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    pub n: Option<usize>,
+}
+
+/// Parameters of a surface.
+#[derive(Debug, Clone, Args)]
+pub struct SurfaceParamArgs {
+    /// Parameters u: a number, a list "[0 0.5 1]" or a range 0:0.1:1 (default: --n samples).
+    #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
+    pub u: Option<String>,
+    /// Parameters v: a number, a list or a range (default: --n samples).
+    #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
+    pub v: Option<String>,
+    /// Sample u and v at linspace(0,1,N), like the thesis's N.
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    pub n: Option<usize>,
+}
+
+/// Orientation of point matrices.
+#[derive(Debug, Clone, Args)]
+pub struct RowsArgs {
+    /// Points are the rows of the input matrices (default: the columns, as in the thesis).
+    #[arg(long)]
+    pub rows: bool,
+}

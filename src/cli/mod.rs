@@ -1,0 +1,24 @@
+//! The command line as a library: reading inputs, printing results, writing files.
+//!
+//! The `cagd` binary is a thin layer over this module: it parses arguments with the shared
+//! argument groups of [`args`], loads inputs with [`load_matrix`], [`load_params`],
+//! [`samples`], [`load_expression`] and [`load_script`], calls the library, renders the
+//! [`Report`] with [`render`] and writes files with [`PendingWrites`] (atomically: a file is
+//! complete or absent).
+//!
+//! Every failure is a [`CliError`]: one line `<argument>: <problem>; expected <form>`, exit
+//! code 2 (1 only for internal faults).
+
+pub mod args;
+mod atomic;
+mod error;
+mod input;
+mod output;
+
+pub use atomic::{write_atomic, PendingWrites};
+pub use error::{CliError, ErrorKind};
+pub use input::{
+    load_expression, load_matrix, load_params, load_script, parse_data_text, parse_numeric_text,
+    read_text, samples, CURVE_FORM, MATRIX_FORM, MAX_INPUT_BYTES, PARAMS_FORM,
+};
+pub use output::{number_text, render, Format, Item, Report, Value};

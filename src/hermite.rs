@@ -1,0 +1,206 @@
+//! Hermite (Ferguson) cubics (seed 004, "Hermitovská forma").
+//!
+//! A Ferguson cubic is given by its end points `x_1 = x(0)`, `x_2 = x(1)` and end tangents
+//! `x'_1 = x'(0)`, `x'_2 = x'(1)`:
+//!
+//! ```text
+//! x(u) = X_H M_H u,   X_H = [x_1 | x_2 | x'_1 | x'_2],   u = [u³, u², u, 1]ᵀ,
+//!
+//!        [ 2 −3  0  1]        f_1 = 2u³ − 3u² + 1
+//! M_H =  [−2  3  0  0]        f_2 = −2u³ + 3u²
+//!        [ 1 −2  1  0]        f_3 = u³ − 2u² + u
+//!        [ 1 −1  0  0]        f_4 = u³ − u²
+//! ```
+//!
+//! (rows of `M_H` are the Hermite basis functions `f_H = M_H u`; [`crate::conversion`] has the
+//! matrices). Scaling both tangents by `q > 0` keeps the directions at the ends but changes
+//! how long the curve "clings" to them ([`HermiteCubic::scaled_tangents`]).
+
+use nalgebra::{DMatrix, DVector};
+
+use crate::bezier::BezierCurve;
+use crate::error::{check_finite, Error, Result};
+use crate::param::Curve;
+use crate::scalar::Scalar;
+
+/// The Hermite basis `[f_1, f_2, f_3, f_4](u)` of seed 004 (see the module documentation),
+/// each by Horner's rule from its row of `M_H`.
+///
+/// ```
+/// use cagd::hermite::hermite_basis;
+/// assert_eq!(hermite_basis(0.5), [0.5, 0.5, 0.125, -0.125]);
+/// ```
+pub fn hermite_basis<T: Scalar>(u: T) -> [T; 4] {
+    let h = |c3: i64, c2: i64, c1: i64, c0: i64| {
+        let c = |k: i64| T::from_ratio(k, 1);
+        ((c(c3) * u.clone() + c(c2)) * u.clone() + c(c1)) * u.clone() + c(c0)
+    };
+    [
+        h(2, -3, 0, 1),
+        h(-2, 3, 0, 0),
+        h(1, -2, 1, 0),
+        h(1, -1, 0, 0),
+    ]
+}
+
+/// The derivatives `[f'_1, f'_2, f'_3, f'_4](u)` of the Hermite basis.
+pub fn hermite_basis_derivative<T: Scalar>(u: T) -> [T; 4] {
+    let h = |c2: i64, c1: i64, c0: i64| {
+        let c = |k: i64| T::from_ratio(k, 1);
+        (c(c2) * u.clone() + c(c1)) * u.clone() + c(c0)
+    };
+    [h(6, -6, 0), h(-6, 6, 0), h(3, -4, 1), h(3, -2, 0)]
+}
+
+/// A Ferguson (Hermite) cubic over `u ∈ [0, 1]` in any dimension.
+///
+/// ```
+/// use cagd::hermite::HermiteCubic;
+/// use nalgebra::DVector;
+/// let v = |x: f64, y: f64| DVector::from_vec(vec![x, y]);
+/// let c = HermiteCubic::new(v(0.0, 0.0), v(2.0, 0.0), v(1.0, 1.0), v(1.0, -1.0))?;
+/// assert_eq!(c.eval(0.5).as_slice(), &[1.0, 0.25]);
+/// assert_eq!(c.eval_derivative(1.0).as_slice(), &[1.0, -1.0]);
+/// // Its Bézier points: x_1, x_1 + x'_1/3, x_2 − x'_2/3, x_2.
+/// let b = c.to_bezier();
+/// assert_eq!(b.control_point(1).unwrap().as_slice(), &[1.0 / 3.0, 1.0 / 3.0]);
+/// # Ok::<(), cagd::Error>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct HermiteCubic<T: Scalar = f64> {
+    geometry: DMatrix<T>,
+}
+
+impl<T: Scalar> HermiteCubic<T> {
+    /// The cubic with `x(0) = x1`, `x(1) = x2`, `x'(0) = t1`, `x'(1) = t2`.
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] for vectors of different (or zero) length,
+    /// [`Error::NonFinite`].
+    pub fn new(x1: DVector<T>, x2: DVector<T>, t1: DVector<T>, t2: DVector<T>) -> Result<Self> {
+        let d = x1.len();
+        let cols = [x1, x2, t1, t2];
+        if d == 0 || cols.iter().any(|c| c.len() != d) {
+            return Err(Error::ShapeMismatch {
+                what: "Hermite cubic",
+                expected: "four vectors of the same positive length".into(),
+                found: format!("{:?}", cols.iter().map(|c| c.len()).collect::<Vec<_>>()),
+            });
+        }
+        Self::from_geometry(DMatrix::from_fn(d, 4, |r, c| cols[c][r].clone()))
+    }
+
+    /// The cubic with geometry matrix `X_H = [x_1 | x_2 | x'_1 | x'_2]` (`d × 4`).
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] unless `d ≥ 1` and there are 4 columns; [`Error::NonFinite`].
+    pub fn from_geometry(geometry: DMatrix<T>) -> Result<Self> {
+        if geometry.ncols() != 4 || geometry.nrows() == 0 {
+            return Err(Error::ShapeMismatch {
+                what: "Hermite geometry matrix",
+                expected: "d × 4 with d ≥ 1".into(),
+                found: format!("{} × {}", geometry.nrows(), geometry.ncols()),
+            });
+        }
+        check_finite("Hermite geometry matrix", geometry.iter())?;
+        Ok(HermiteCubic { geometry })
+    }
+
+    /// The geometry matrix `X_H = [x_1 | x_2 | x'_1 | x'_2]` (`d × 4`).
+    pub fn geometry(&self) -> &DMatrix<T> {
+        &self.geometry
+    }
+
+    /// The dimension `d`.
+    pub fn dim(&self) -> usize {
+        self.geometry.nrows()
+    }
+
+    /// `x(u) = Σ f_i(u) X_H[:, i]`.
+    pub fn eval(&self, u: T) -> DVector<T> {
+        combine4(&self.geometry, &hermite_basis(u))
+    }
+
+    /// `x'(u)`.
+    pub fn eval_derivative(&self, u: T) -> DVector<T> {
+        combine4(&self.geometry, &hermite_basis_derivative(u))
+    }
+
+    /// `x''(u) = 6a u + 2b` with `a = 2x_1 − 2x_2 + x'_1 + x'_2`,
+    /// `b = −3x_1 + 3x_2 − 2x'_1 − x'_2` (seed 004's algebraic form).
+    pub fn eval_second_derivative(&self, u: T) -> DVector<T> {
+        let c = |k: i64| T::from_ratio(k, 1);
+        let w = [
+            c(12) * u.clone() - c(6),
+            c(-12) * u.clone() + c(6),
+            c(6) * u.clone() - c(4),
+            c(6) * u - c(2),
+        ];
+        combine4(&self.geometry, &w)
+    }
+
+    /// The same end points with both tangents multiplied by `q` (seed 004: `q ≠ 0`; the
+    /// directions are kept for `q > 0`).
+    pub fn scaled_tangents(&self, q: T) -> Self {
+        let mut g = self.geometry.clone();
+        for r in 0..g.nrows() {
+            for c in 2..4 {
+                g[(r, c)] = g[(r, c)].clone() * q.clone();
+            }
+        }
+        HermiteCubic { geometry: g }
+    }
+
+    /// The same cubic in Bézier form: `b_0 = x_1`, `b_1 = x_1 + x'_1/3`, `b_2 = x_2 − x'_2/3`,
+    /// `b_3 = x_2` (seed 004's table, "to Bézier from Hermite").
+    pub fn to_bezier(&self) -> BezierCurve<T> {
+        let g = crate::conversion::convert(
+            &self.geometry,
+            crate::conversion::CubicForm::Hermite,
+            crate::conversion::CubicForm::Bezier,
+        );
+        BezierCurve::new(g).expect("finite, d × 4")
+    }
+
+    /// The cubic Bézier curve in Hermite form, tangents taken with respect to its local
+    /// parameter `t ∈ [0, 1]`: `x'_1 = 3(b_1 − b_0)`, `x'_2 = 3(b_3 − b_2)`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] unless the curve is cubic.
+    pub fn from_bezier(curve: &BezierCurve<T>) -> Result<Self> {
+        if curve.degree() != 3 {
+            return Err(Error::InvalidArgument {
+                what: "Hermite cubic from Bézier curve",
+                message: format!("expected a cubic, got degree {}", curve.degree()),
+            });
+        }
+        Ok(HermiteCubic {
+            geometry: crate::conversion::convert(
+                curve.control(),
+                crate::conversion::CubicForm::Bezier,
+                crate::conversion::CubicForm::Hermite,
+            ),
+        })
+    }
+}
+
+/// `Σ_i w[i] g[:, i]`, `i` ascending.
+fn combine4<T: Scalar>(g: &DMatrix<T>, w: &[T; 4]) -> DVector<T> {
+    DVector::from_fn(g.nrows(), |r, _| {
+        w.iter().enumerate().fold(T::zero(), |acc, (i, wi)| {
+            acc + wi.clone() * g[(r, i)].clone()
+        })
+    })
+}
+
+impl<T: Scalar> Curve<T> for HermiteCubic<T> {
+    fn dim(&self) -> usize {
+        HermiteCubic::dim(self)
+    }
+    fn eval(&self, t: T) -> DVector<T> {
+        HermiteCubic::eval(self, t)
+    }
+    fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
+        Some(HermiteCubic::eval_derivative(self, t))
+    }
+}

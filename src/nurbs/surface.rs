@@ -1,0 +1,171 @@
+//! NURBS surfaces.
+
+use nalgebra::{DMatrix, DVector};
+
+use super::check_weights;
+use super::curve::{project, NurbsCurve};
+use crate::bspline::BSplineSurface;
+use crate::error::{check_finite, Error, Result};
+use crate::param::Surface;
+use crate::scalar::Scalar;
+
+/// A tensor-product NURBS surface
+/// `S(u, v) = Σ_i Σ_j w_{ij} P_{ij} N_{i,p}(u) N_{j,q}(v) / Σ_i Σ_j w_{ij} N_{i,p}(u) N_{j,q}(v)`,
+/// stored as the homogeneous B-spline surface with control points `(w_{ij} P_{ij}, w_{ij})`.
+///
+/// **Layout:** points as [`BSplineSurface`] (one `nu × nv` matrix per coordinate, `i` along
+/// `u`), weights an `nu × nv` matrix.
+///
+/// ```
+/// use cagd::nurbs::NurbsSurface;
+/// use nalgebra::DMatrix;
+/// let one = DMatrix::from_element(2, 2, 1.0);
+/// let x = DMatrix::from_row_slice(2, 2, &[0.0, 0.0, 1.0, 1.0]);
+/// let y = DMatrix::from_row_slice(2, 2, &[0.0, 1.0, 0.0, 1.0]);
+/// let k = vec![0.0, 0.0, 1.0, 1.0];
+/// let s = NurbsSurface::new(1, 1, k.clone(), k, vec![x, y], one)?;
+/// assert_eq!(s.try_eval(0.25, 0.5)?.as_slice(), &[0.25, 0.5]);
+/// # Ok::<(), cagd::Error>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct NurbsSurface<T: Scalar = f64> {
+    homogeneous: BSplineSurface<T>,
+}
+
+impl<T: Scalar> NurbsSurface<T> {
+    /// The surface of degrees `(p, q)` with knots `knots_u`, `knots_v`, control points
+    /// `coords` (one `nu × nv` matrix per coordinate) and weights `weights` (`nu × nv`).
+    ///
+    /// # Errors
+    /// [`Error::NonPositiveWeight`], [`Error::ShapeMismatch`] if the weights have another
+    /// shape than the points, and the errors of [`BSplineSurface::new`].
+    pub fn new(
+        p: usize,
+        q: usize,
+        knots_u: Vec<T>,
+        knots_v: Vec<T>,
+        coords: Vec<DMatrix<T>>,
+        weights: DMatrix<T>,
+    ) -> Result<Self> {
+        let what = "NURBS surface weights";
+        for c in &coords {
+            check_finite("NURBS surface control points", c.iter())?;
+            if c.shape() != weights.shape() {
+                return Err(Error::ShapeMismatch {
+                    what,
+                    expected: format!("{}×{} (as the control points)", c.nrows(), c.ncols()),
+                    found: format!("{}×{}", weights.nrows(), weights.ncols()),
+                });
+            }
+        }
+        check_weights(what, weights.iter())?;
+        let mut h: Vec<DMatrix<T>> = coords
+            .iter()
+            .map(|c| c.zip_map(&weights, |x, w| w * x))
+            .collect();
+        h.push(weights);
+        Ok(NurbsSurface {
+            homogeneous: BSplineSurface::new(p, q, knots_u, knots_v, h)?,
+        })
+    }
+
+    /// The surface whose homogeneous form is `homogeneous` (last coordinate = weights).
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] for fewer than 2 coordinates, [`Error::NonPositiveWeight`].
+    pub fn from_homogeneous(homogeneous: BSplineSurface<T>) -> Result<Self> {
+        let c = homogeneous.coordinates();
+        if c.len() < 2 {
+            return Err(Error::ShapeMismatch {
+                what: "NURBS homogeneous control net",
+                expected: "at least 2 coordinates (points and weight)".into(),
+                found: format!("{}", c.len()),
+            });
+        }
+        check_weights("NURBS surface weights", c[c.len() - 1].iter())?;
+        Ok(NurbsSurface { homogeneous })
+    }
+
+    /// The ruled surface between two NURBS curves in homogeneous space, as octave-nurbs
+    /// `nrbruled`: `u` runs along the curves, `v ∈ [0, 1]` from `c1` to `c2` (degree 1). The
+    /// knot vectors are merged first (each curve gets the knots of the other it lacks, by
+    /// knot insertion). With equal weights this is seed 004's `(1 − v) c1(u) + v c2(u)`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] for curves of different degree, dimension or domain (degree
+    /// elevation is not done here).
+    pub fn ruled(c1: &NurbsCurve<T>, c2: &NurbsCurve<T>) -> Result<Self> {
+        let what = "ruled NURBS surface";
+        if c1.degree() != c2.degree() || c1.dim() != c2.dim() || c1.domain() != c2.domain() {
+            return Err(Error::InvalidArgument {
+                what,
+                message: "both curves must have the same degree, dimension and domain".into(),
+            });
+        }
+        let (k1, k2) = (c1.knots(), c2.knots());
+        let missing = |a: &[T], b: &[T]| -> Vec<T> {
+            // Knots of b (with multiplicity) that a lacks.
+            let mut out = Vec::new();
+            let mut seen: Vec<&T> = Vec::new();
+            for x in b {
+                if seen.contains(&x) {
+                    continue;
+                }
+                seen.push(x);
+                let (ma, mb) = (
+                    a.iter().filter(|y| *y == x).count(),
+                    b.iter().filter(|y| *y == x).count(),
+                );
+                out.extend(std::iter::repeat(x.clone()).take(mb.saturating_sub(ma)));
+            }
+            out
+        };
+        let c1 = c1.insert_knots(&missing(k1, k2))?;
+        let c2 = c2.insert_knots(&missing(k2, k1))?;
+        let (h1, h2) = (c1.homogeneous().control(), c2.homogeneous().control());
+        let coords: Vec<DMatrix<T>> = (0..h1.nrows())
+            .map(|r| {
+                DMatrix::from_fn(h1.ncols(), 2, |i, j| {
+                    if j == 0 {
+                        h1[(r, i)].clone()
+                    } else {
+                        h2[(r, i)].clone()
+                    }
+                })
+            })
+            .collect();
+        let kv = vec![T::zero(), T::zero(), T::one(), T::one()];
+        Ok(NurbsSurface {
+            homogeneous: BSplineSurface::new(c1.degree(), 1, c1.knots().to_vec(), kv, coords)?,
+        })
+    }
+
+    /// The homogeneous B-spline surface.
+    pub fn homogeneous(&self) -> &BSplineSurface<T> {
+        &self.homogeneous
+    }
+
+    /// The dimension `d` of the points.
+    pub fn dim(&self) -> usize {
+        self.homogeneous.coordinates().len() - 1
+    }
+
+    /// The point `S(u, v)`.
+    ///
+    /// # Errors
+    /// [`Error::ParameterOutOfRange`] outside the domain.
+    pub fn try_eval(&self, u: T, v: T) -> Result<DVector<T>> {
+        Ok(project(&self.homogeneous.try_eval(u, v)?))
+    }
+}
+
+impl<T: Scalar> Surface<T> for NurbsSurface<T> {
+    fn dim(&self) -> usize {
+        NurbsSurface::dim(self)
+    }
+
+    /// The point at `(u, v)` clamped to the domain.
+    fn eval(&self, u: T, v: T) -> DVector<T> {
+        project(&Surface::eval(&self.homogeneous, u, v))
+    }
+}

@@ -1,0 +1,469 @@
+//! Interpolating cubic splines (seed 004, "Kubické spline křivky").
+//!
+//! Through points `x_0, …, x_{m−1}` at parameters `t_0 < … < t_{m−1}` (seed 004: every
+//! segment over `⟨0, 1⟩`, i.e. `t_k = k`) the spline is a Hermite cubic on each segment
+//! whose tangents `x'_k` make the second derivative continuous at every joint:
+//!
+//! ```text
+//! h_k x'_{k−1} + 2(h_{k−1} + h_k) x'_k + h_{k−1} x'_{k+1} = 3(h_k δ_{k−1} + h_{k−1} δ_k),
+//! h_k = t_{k+1} − t_k,  δ_k = (x_{k+1} − x_k)/h_k,
+//! ```
+//!
+//! which for unit steps is seed 004's `x'_{k−1} + 4x'_k + x'_{k+1} = 3(x_{k+1} − x_{k−1})`
+//! (the notes print the right-hand side as `3(x'_1 − x_0)`, a typo for `3(x_2 − x_0)`). The end
+//! conditions ([`EndCondition`]) close the system:
+//! - **clamped** (case a): `x'_0`, `x'_{m−1}` given — a tridiagonal system;
+//! - **natural** (case b): `x''(t_0) = x''(t_{m−1}) = 0`, i.e. `2x'_0 + x'_1 = 3δ_0` and
+//!   `x'_{m−2} + 2x'_{m−1} = 3δ_{m−2}` (the notes' matrix is right, but the last entry of
+//!   their right-hand side, `3(x_{m−1} − x_{m−3})`, must be `3(x_{m−1} − x_{m−2})`);
+//! - **closed** (case c): a further segment from `x_{m−1}` back to `x_0` and the joint
+//!   equation at every point, indices cyclic — a cyclic tridiagonal system (the first entry of
+//!   the notes' right-hand side, `3(x_1 − x_0)`, must be `3(x_1 − x_{m−1})`).
+//!
+//! The solves ([`solve_tridiagonal`], [`solve_cyclic_tridiagonal`]) are generic, so the spline
+//! is exact in rationals. Seed 004's worked example (points (0,0), (2,1), (4,4), (6,0), end
+//! tangents (1,1), (−1,1)) gives x-tangents 1, 31/15, 41/15, −1 and y-tangents 1, 48/15,
+//! −27/15, 1: the notes print the third y-tangent as +27/15, but
+//! `y'_1 + 4y'_2 = 3(0 − 1) − 1 = −4` with `4y'_1 + y'_2 = 12 − 1 = 11` gives
+//! `y'_2 = −27/15`.
+
+use nalgebra::{DMatrix, DVector};
+
+use crate::error::{check_finite, Error, Result};
+use crate::hermite::HermiteCubic;
+use crate::param::Curve;
+use crate::scalar::Scalar;
+
+/// How the spline is closed at its ends (seed 004 cases a, b, c).
+#[derive(Debug, Clone, PartialEq)]
+pub enum EndCondition<T: Scalar = f64> {
+    /// Given end tangents `x'(t_0) = start`, `x'(t_{m−1}) = end`.
+    Clamped {
+        /// Tangent at the first point.
+        start: DVector<T>,
+        /// Tangent at the last point.
+        end: DVector<T>,
+    },
+    /// Zero second derivative at both ends.
+    Natural,
+    /// A closed curve: one more segment from the last point back to the first, `C²` there too.
+    Closed,
+}
+
+/// Solves the tridiagonal system `sub[k] y_{k−1} + diag[k] y_k + sup[k] y_{k+1} = rhs[k]`
+/// (`sub[0]` and `sup[n−1]` unused) by elimination without pivoting (Thomas' algorithm) —
+/// right for the diagonally dominant spline systems. Each `rhs[k]` is a vector (one unknown
+/// point per row). Generic: exact in rationals.
+///
+/// # Errors
+/// [`Error::ShapeMismatch`] for lengths that differ, [`Error::Singular`] for a zero pivot.
+///
+/// ```
+/// use cagd::spline::solve_tridiagonal;
+/// use nalgebra::DVector;
+/// // [4 1; 1 4] y = [5; 5]  →  y = [1; 1]
+/// let y = solve_tridiagonal(&[0.0, 1.0], &[4.0, 4.0], &[1.0, 0.0],
+///     &[DVector::from_element(1, 5.0), DVector::from_element(1, 5.0)])?;
+/// assert_eq!((y[0][0], y[1][0]), (1.0, 1.0));
+/// # Ok::<(), cagd::Error>(())
+/// ```
+pub fn solve_tridiagonal<T: Scalar>(
+    sub: &[T],
+    diag: &[T],
+    sup: &[T],
+    rhs: &[DVector<T>],
+) -> Result<Vec<DVector<T>>> {
+    let n = diag.len();
+    if sub.len() != n || sup.len() != n || rhs.len() != n {
+        return Err(Error::ShapeMismatch {
+            what: "tridiagonal system",
+            expected: format!("{n} entries in every band and right-hand side"),
+            found: format!(
+                "{}, {}, {}, {}",
+                sub.len(),
+                diag.len(),
+                sup.len(),
+                rhs.len()
+            ),
+        });
+    }
+    let mut c = vec![T::zero(); n];
+    let mut d: Vec<DVector<T>> = Vec::with_capacity(n);
+    for k in 0..n {
+        let (pivot, prev) = if k == 0 {
+            (diag[0].clone(), None)
+        } else {
+            (
+                diag[k].clone() - sub[k].clone() * c[k - 1].clone(),
+                Some(&d[k - 1]),
+            )
+        };
+        if pivot.is_zero() {
+            return Err(Error::Singular {
+                what: "tridiagonal system",
+                reason: format!("zero pivot in row {k}"),
+            });
+        }
+        c[k] = sup[k].clone() / pivot.clone();
+        let row = DVector::from_fn(rhs[k].len(), |r, _| {
+            let v = match prev {
+                Some(p) => rhs[k][r].clone() - sub[k].clone() * p[r].clone(),
+                None => rhs[k][r].clone(),
+            };
+            v / pivot.clone()
+        });
+        d.push(row);
+    }
+    for k in (0..n.saturating_sub(1)).rev() {
+        let next = d[k + 1].clone();
+        d[k] = DVector::from_fn(next.len(), |r, _| {
+            d[k][r].clone() - c[k].clone() * next[r].clone()
+        });
+    }
+    Ok(d)
+}
+
+/// Solves the cyclic tridiagonal system: as [`solve_tridiagonal`] plus the corner entries
+/// `sub[0]` (row 0, column n−1) and `sup[n−1]` (row n−1, column 0), by the Sherman–Morrison
+/// formula (two tridiagonal solves). Needs `n ≥ 3`.
+///
+/// # Errors
+/// As [`solve_tridiagonal`]; [`Error::TooFewPoints`] for `n < 3`.
+pub fn solve_cyclic_tridiagonal<T: Scalar>(
+    sub: &[T],
+    diag: &[T],
+    sup: &[T],
+    rhs: &[DVector<T>],
+) -> Result<Vec<DVector<T>>> {
+    let n = diag.len();
+    if n < 3 {
+        return Err(Error::TooFewPoints {
+            what: "cyclic tridiagonal system",
+            min: 3,
+            found: n,
+        });
+    }
+    let (alpha, beta) = (sub[0].clone(), sup[n - 1].clone());
+    let gamma = -diag[0].clone();
+    let mut b = diag.to_vec();
+    b[0] = diag[0].clone() - gamma.clone();
+    b[n - 1] = diag[n - 1].clone() - alpha.clone() * beta.clone() / gamma.clone();
+    let x = solve_tridiagonal(sub, &b, sup, rhs)?;
+    let mut u = vec![DVector::from_element(1, T::zero()); n];
+    u[0] = DVector::from_element(1, gamma.clone());
+    u[n - 1] = DVector::from_element(1, beta.clone());
+    let z = solve_tridiagonal(sub, &b, sup, &u)?;
+    // v = (1, 0, …, 0, alpha/gamma)
+    let ratio = alpha / gamma;
+    let denom = T::one() + z[0][0].clone() + ratio.clone() * z[n - 1][0].clone();
+    if denom.is_zero() {
+        return Err(Error::Singular {
+            what: "cyclic tridiagonal system",
+            reason: "Sherman–Morrison denominator is zero".into(),
+        });
+    }
+    let dim = rhs[0].len();
+    let fact: Vec<T> = (0..dim)
+        .map(|r| (x[0][r].clone() + ratio.clone() * x[n - 1][r].clone()) / denom.clone())
+        .collect();
+    Ok(x.iter()
+        .zip(&z)
+        .map(|(xk, zk)| {
+            DVector::from_fn(dim, |r, _| xk[r].clone() - fact[r].clone() * zk[0].clone())
+        })
+        .collect())
+}
+
+/// An interpolating cubic spline: Hermite cubics between consecutive points with `C²` joints.
+///
+/// **Layout:** points `d × m`, one per column; parameters `t_0 < … < t_{m−1}` (and `t_m`, the
+/// parameter at which a closed spline returns to `x_0`); tangents `d × m`.
+///
+/// ```
+/// use cagd::spline::{CubicSpline, EndCondition};
+/// use nalgebra::{DMatrix, DVector};
+/// let x = DMatrix::from_column_slice(2, 4, &[0.0, 0.0, 2.0, 1.0, 4.0, 4.0, 6.0, 0.0]);
+/// let end = EndCondition::Clamped {
+///     start: DVector::from_vec(vec![1.0, 1.0]),
+///     end: DVector::from_vec(vec![-1.0, 1.0]),
+/// };
+/// let s = CubicSpline::interpolate(x, end)?;
+/// assert!((s.tangents()[(1, 2)] + 27.0 / 15.0).abs() < 1e-15);
+/// assert_eq!(s.eval(1.0).as_slice(), &[2.0, 1.0]);
+/// # Ok::<(), cagd::Error>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct CubicSpline<T: Scalar = f64> {
+    params: Vec<T>,
+    points: DMatrix<T>,
+    tangents: DMatrix<T>,
+    closed: bool,
+}
+
+impl<T: Scalar> CubicSpline<T> {
+    /// The spline through the columns of `points` at the parameters `0, 1, …` (seed 004:
+    /// every segment over `⟨0, 1⟩`; a closed spline returns to `x_0` at `t = m`).
+    ///
+    /// # Errors
+    /// As [`interpolate_with_params`](Self::interpolate_with_params).
+    pub fn interpolate(points: DMatrix<T>, end: EndCondition<T>) -> Result<Self> {
+        let m = points.ncols() + usize::from(matches!(end, EndCondition::Closed));
+        let params = (0..m).map(T::from_usize).collect();
+        Self::interpolate_with_params(points, params, end)
+    }
+
+    /// The spline through the columns of `points` at the strictly increasing `params` (one per
+    /// point; for [`EndCondition::Closed`] one more, the parameter of the return to `x_0`).
+    ///
+    /// # Errors
+    /// [`Error::TooFewPoints`] for fewer than 2 points (3 when closed);
+    /// [`Error::ShapeMismatch`] for a wrong number of parameters, points with no coordinates
+    /// or end tangents of another dimension; [`Error::NonFinite`];
+    /// [`Error::InvalidArgument`] for parameters that do not increase.
+    pub fn interpolate_with_params(
+        points: DMatrix<T>,
+        params: Vec<T>,
+        end: EndCondition<T>,
+    ) -> Result<Self> {
+        let what = "interpolating spline";
+        let closed = matches!(end, EndCondition::Closed);
+        let m = points.ncols();
+        let min = if closed { 3 } else { 2 };
+        if m < min {
+            return Err(Error::TooFewPoints {
+                what,
+                min,
+                found: m,
+            });
+        }
+        let d = points.nrows();
+        if d == 0 {
+            return Err(Error::ShapeMismatch {
+                what,
+                expected: "at least one coordinate row".into(),
+                found: "0 rows".into(),
+            });
+        }
+        let np = m + usize::from(closed);
+        if params.len() != np {
+            return Err(Error::ShapeMismatch {
+                what: "spline parameters",
+                expected: format!("{np} values"),
+                found: format!("{}", params.len()),
+            });
+        }
+        check_finite("spline points", points.iter())?;
+        check_finite("spline parameters", params.iter())?;
+        if let Some(k) = params.windows(2).position(|w| w[0] >= w[1]) {
+            return Err(Error::InvalidArgument {
+                what: "spline parameters",
+                message: format!("expected strictly increasing values, but value {k} ({}) is not below value {} ({})", params[k], k + 1, params[k + 1]),
+            });
+        }
+        if let EndCondition::Clamped { start, end } = &end {
+            if start.len() != d || end.len() != d {
+                return Err(Error::ShapeMismatch {
+                    what: "spline end tangents",
+                    expected: format!("{d} coordinates (as the points)"),
+                    found: format!("{} and {}", start.len(), end.len()),
+                });
+            }
+            check_finite("spline end tangents", start.iter().chain(end.iter()))?;
+        }
+        let x = |k: usize| points.column(k % m).into_owned();
+        let segs = if closed { m } else { m - 1 };
+        let h: Vec<T> = (0..segs)
+            .map(|k| params[k + 1].clone() - params[k].clone())
+            .collect();
+        let delta: Vec<DVector<T>> = (0..segs)
+            .map(|k| {
+                let (a, b) = (x(k), x(k + 1));
+                DVector::from_fn(d, |r, _| (b[r].clone() - a[r].clone()) / h[k].clone())
+            })
+            .collect();
+        let three = T::from_usize(3);
+        let two = T::from_usize(2);
+        // Interior joint k (previous segment k−1, next segment k).
+        let joint = |hp: &T, hn: &T, dp: &DVector<T>, dn: &DVector<T>| {
+            let rhs = DVector::from_fn(d, |r, _| {
+                three.clone() * (hn.clone() * dp[r].clone() + hp.clone() * dn[r].clone())
+            });
+            (
+                hn.clone(),
+                two.clone() * (hp.clone() + hn.clone()),
+                hp.clone(),
+                rhs,
+            )
+        };
+        let mut sub = Vec::with_capacity(m);
+        let mut diag = Vec::with_capacity(m);
+        let mut sup = Vec::with_capacity(m);
+        let mut rhs = Vec::with_capacity(m);
+        for k in 0..m {
+            let (a, b, c, r) = if closed {
+                let p = (k + m - 1) % m;
+                joint(&h[p], &h[k], &delta[p], &delta[k])
+            } else if k == 0 || k == m - 1 {
+                match &end {
+                    EndCondition::Clamped { start, end } => {
+                        let t = if k == 0 { start } else { end };
+                        (T::zero(), T::one(), T::zero(), t.clone())
+                    }
+                    EndCondition::Natural => {
+                        let s = if k == 0 { &delta[0] } else { &delta[m - 2] };
+                        let r = DVector::from_fn(d, |q, _| three.clone() * s[q].clone());
+                        if k == 0 {
+                            (T::zero(), two.clone(), T::one(), r)
+                        } else {
+                            (T::one(), two.clone(), T::zero(), r)
+                        }
+                    }
+                    EndCondition::Closed => unreachable!("handled above"),
+                }
+            } else {
+                joint(&h[k - 1], &h[k], &delta[k - 1], &delta[k])
+            };
+            sub.push(a);
+            diag.push(b);
+            sup.push(c);
+            rhs.push(r);
+        }
+        let t = if closed {
+            solve_cyclic_tridiagonal(&sub, &diag, &sup, &rhs)?
+        } else {
+            solve_tridiagonal(&sub, &diag, &sup, &rhs)?
+        };
+        let tangents = DMatrix::from_fn(d, m, |r, c| t[c][r].clone());
+        Ok(CubicSpline {
+            params,
+            points,
+            tangents,
+            closed,
+        })
+    }
+
+    /// The parameters (`m`, or `m + 1` for a closed spline).
+    pub fn params(&self) -> &[T] {
+        &self.params
+    }
+
+    /// The interpolated points (`d × m`).
+    pub fn points(&self) -> &DMatrix<T> {
+        &self.points
+    }
+
+    /// The tangents `x'_k` at the points (`d × m`), with respect to the parameter `t`.
+    pub fn tangents(&self) -> &DMatrix<T> {
+        &self.tangents
+    }
+
+    /// Whether the spline is closed.
+    pub fn is_closed(&self) -> bool {
+        self.closed
+    }
+
+    /// The dimension `d`.
+    pub fn dim(&self) -> usize {
+        self.points.nrows()
+    }
+
+    /// Number of segments (`m − 1`, or `m` when closed).
+    pub fn segment_count(&self) -> usize {
+        self.params.len() - 1
+    }
+
+    /// Segment `k` as a Ferguson cubic over its local parameter `u ∈ [0, 1]`,
+    /// `u = (t − t_k)/h_k`: its tangents are `h_k x'_k`, `h_k x'_{k+1}`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] for `k ≥ segment_count()`.
+    pub fn segment(&self, k: usize) -> Result<HermiteCubic<T>> {
+        if k >= self.segment_count() {
+            return Err(Error::InvalidArgument {
+                what: "spline segment",
+                message: format!(
+                    "index {k}, but the spline has {} segments",
+                    self.segment_count()
+                ),
+            });
+        }
+        let m = self.points.ncols();
+        let j = (k + 1) % m;
+        let h = self.params[k + 1].clone() - self.params[k].clone();
+        let g = DMatrix::from_fn(self.dim(), 4, |r, c| match c {
+            0 => self.points[(r, k)].clone(),
+            1 => self.points[(r, j)].clone(),
+            2 => h.clone() * self.tangents[(r, k)].clone(),
+            _ => h.clone() * self.tangents[(r, j)].clone(),
+        });
+        HermiteCubic::from_geometry(g)
+    }
+
+    /// The segment holding `t` (clamped to the ends) and the local parameter offset `t − t_k`.
+    fn locate(&self, t: &T) -> (usize, T) {
+        let last = self.segment_count() - 1;
+        let above = self.params.partition_point(|p| p <= t);
+        let k = above.saturating_sub(1).min(last);
+        (k, t.clone() - self.params[k].clone())
+    }
+
+    /// The value, first and second derivative at `t` (with respect to `t`), from the local
+    /// polynomial `y_k + s(x'_k + s(c_2 + s c_3))`, `s = t − t_k` (the piecewise-polynomial
+    /// form Octave's `ppval` evaluates). Outside `[t_0, t_last]` the end segments continue.
+    pub fn eval_with_derivatives(&self, t: T) -> [DVector<T>; 3] {
+        let (k, s) = self.locate(&t);
+        let m = self.points.ncols();
+        let j = (k + 1) % m;
+        let h = self.params[k + 1].clone() - self.params[k].clone();
+        let (two, three) = (T::from_usize(2), T::from_usize(3));
+        let d = self.dim();
+        let mut out = [
+            DVector::from_element(d, T::zero()),
+            DVector::from_element(d, T::zero()),
+            DVector::from_element(d, T::zero()),
+        ];
+        #[allow(clippy::needless_range_loop)] // r indexes three outputs and two matrices
+        for r in 0..d {
+            let y = self.points[(r, k)].clone();
+            let (m0, m1) = (self.tangents[(r, k)].clone(), self.tangents[(r, j)].clone());
+            let delta = (self.points[(r, j)].clone() - y.clone()) / h.clone();
+            let c2 =
+                (three.clone() * delta.clone() - two.clone() * m0.clone() - m1.clone()) / h.clone();
+            let c3 = (m0.clone() + m1 - two.clone() * delta) / (h.clone() * h.clone());
+            out[0][r] =
+                y + s.clone() * (m0.clone() + s.clone() * (c2.clone() + s.clone() * c3.clone()));
+            out[1][r] = m0
+                + s.clone() * (two.clone() * c2.clone() + three.clone() * s.clone() * c3.clone());
+            out[2][r] = two.clone() * c2 + T::from_usize(6) * s.clone() * c3;
+        }
+        out
+    }
+
+    /// The point at `t`.
+    pub fn eval(&self, t: T) -> DVector<T> {
+        let [v, _, _] = self.eval_with_derivatives(t);
+        v
+    }
+
+    /// The points at `ts`, one per column.
+    pub fn eval_many(&self, ts: &[T]) -> DMatrix<T> {
+        let mut out = DMatrix::from_element(self.dim(), ts.len(), T::zero());
+        for (k, t) in ts.iter().enumerate() {
+            out.set_column(k, &self.eval(t.clone()));
+        }
+        out
+    }
+}
+
+impl<T: Scalar> Curve<T> for CubicSpline<T> {
+    fn dim(&self) -> usize {
+        CubicSpline::dim(self)
+    }
+    fn eval(&self, t: T) -> DVector<T> {
+        CubicSpline::eval(self, t)
+    }
+    fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
+        let [_, d, _] = self.eval_with_derivatives(t);
+        Some(d)
+    }
+}

@@ -1,0 +1,112 @@
+//! The Hermite bicubic (Ferguson) patch.
+
+use nalgebra::{DMatrix, DVector};
+
+use super::matrix_patch::CubicMatrixPatch;
+use crate::conversion::CubicForm;
+use crate::error::{Error, Result};
+use crate::param::Surface;
+use crate::scalar::Scalar;
+
+/// Corner data indexed `[i][j]` for the corner `(u, v) = (i, j)`.
+pub type Corners<T> = [[DVector<T>; 2]; 2];
+
+/// The Hermite bicubic (Ferguson) patch of seed 004 ("Hermitova plocha"): given at the four
+/// corners `(i, j) ∈ {0, 1}²` the points `x_{ij}`, the tangents `∂x/∂u`, `∂x/∂v` and the twist
+/// vectors `∂²x/∂u∂v`, it is
+/// `x(u, v) = Σ_a Σ_b f_a(u) f_b(v) G[a, b]` with the Hermite basis `f` and
+///
+/// ```text
+///     [ x_00    x_01    x_v00    x_v01  ]
+/// G = [ x_10    x_11    x_v10    x_v11  ]     (rows: x(0,·), x(1,·), x_u(0,·), x_u(1,·))
+///     [ x_u00   x_u01   x_uv00   x_uv01 ]
+///     [ x_u10   x_u11   x_uv10   x_uv11 ]
+/// ```
+///
+/// Seed 004 writes `x(u, v) = vᵀ M_Hᵀ X_H M_H u` with `X_H = [A B; C D]`, `A` the corner
+/// points, `B` the `u`-tangents, `C` the `v`-tangents, `D` the twists. Its `X_H` is `Gᵀ`; but
+/// inside the blocks it writes `A = [x_00 x_01; x_10 x_11]` although, with its own definition
+/// `x_10 = x(1, 0)`, the entry `(0, 1)` of `Gᵀ` is `x_10` — the labels inside the blocks are
+/// transposed. The twists only shape the interior ("bulge" of the corners); with zero twists
+/// the patch is the notes' "F-patch".
+///
+/// ```
+/// use cagd::surfaces::FergusonPatch;
+/// use cagd::Surface;
+/// use nalgebra::DVector;
+/// let v = |x: f64, y: f64, z: f64| DVector::from_vec(vec![x, y, z]);
+/// let x = [[v(0., 0., 0.), v(0., 1., 0.)], [v(1., 0., 0.), v(1., 1., 1.)]];
+/// let du = [[v(1., 0., 0.), v(1., 0., 1.)], [v(1., 0., 0.), v(1., 0., 1.)]];
+/// let dv = [[v(0., 1., 0.), v(0., 1., 0.)], [v(0., 1., 1.), v(0., 1., 1.)]];
+/// let tw = [[v(0., 0., 1.), v(0., 0., 1.)], [v(0., 0., 1.), v(0., 0., 1.)]];
+/// // This is the hyperbolic paraboloid z = u·v, exactly.
+/// let p = FergusonPatch::new(&x, &du, &dv, &tw)?;
+/// assert_eq!(p.eval(0.5, 0.25).as_slice(), &[0.5, 0.25, 0.125]);
+/// # Ok::<(), cagd::Error>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct FergusonPatch<T: Scalar = f64> {
+    patch: CubicMatrixPatch<T>,
+}
+
+impl<T: Scalar> FergusonPatch<T> {
+    /// The patch from corner points, `u`-tangents, `v`-tangents and twists, each indexed
+    /// `[i][j]` for the corner `(u, v) = (i, j)`.
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] for vectors of different (or zero) dimensions,
+    /// [`Error::NonFinite`].
+    pub fn new(
+        points: &Corners<T>,
+        du: &Corners<T>,
+        dv: &Corners<T>,
+        twist: &Corners<T>,
+    ) -> Result<Self> {
+        let d = points[0][0].len();
+        let all = [points, du, dv, twist];
+        if d == 0 || all.iter().any(|c| c.iter().flatten().any(|x| x.len() != d)) {
+            return Err(Error::ShapeMismatch {
+                what: "Ferguson patch",
+                expected: "16 corner vectors of the same positive dimension".into(),
+                found: "vectors of different dimensions".into(),
+            });
+        }
+        let coords = (0..d)
+            .map(|k| {
+                DMatrix::from_fn(4, 4, |a, b| {
+                    let (sa, ia) = (a / 2, a % 2);
+                    let (sb, jb) = (b / 2, b % 2);
+                    let src = match (sa, sb) {
+                        (0, 0) => points,
+                        (1, 0) => du,
+                        (0, 1) => dv,
+                        _ => twist,
+                    };
+                    src[ia][jb][k].clone()
+                })
+            })
+            .collect();
+        Ok(FergusonPatch {
+            patch: CubicMatrixPatch::new(CubicForm::Hermite, coords)?,
+        })
+    }
+
+    /// The geometry matrices `G` (one `4 × 4` per coordinate, layout in the type's docs).
+    pub fn geometry(&self) -> &[DMatrix<T>] {
+        self.patch.coordinates()
+    }
+
+    /// The same patch as a [`CubicMatrixPatch`] in Hermite form.
+    pub fn as_matrix_patch(&self) -> &CubicMatrixPatch<T> {
+        &self.patch
+    }
+}
+
+impl<T: Scalar> Surface<T> for FergusonPatch<T> {
+    fn dim(&self) -> usize {
+        self.patch.dim()
+    }
+    fn eval(&self, u: T, v: T) -> DVector<T> {
+        self.patch.eval(u, v)
+    }
+}
