@@ -45,6 +45,25 @@
 //! [`Error::CornerMismatch`]). Where Octave would stop with an error the twin returns one; where
 //! the fixed Octave code returns an empty array (`N = 0`) so does the twin.
 //!
+//! # Moving data to and from Octave
+//! The twins read and write Octave's own text format through [`super::text_format`]
+//! (`save -text` in Octave, `load` to read back); names, shapes and every bit of every double
+//! survive both ways. `docs/PORTING.md` has the whole recipe.
+//!
+//! ```
+//! use cagd::octave::compat::de_casteljau;
+//! use cagd::octave::{read_text, write_text, Workspace};
+//! // What Octave writes for `P = [0 0 8 4; 0 2 2 0; 0 2 0 0]; save -text primer.txt P`:
+//! let saved = "# name: P\n# type: matrix\n# rows: 3\n# columns: 4\n 0 0 8 4\n 0 2 2 0\n 0 2 0 0\n";
+//! let p = read_text(saved)?.matrix("P")?;
+//! let t = de_casteljau(p.view(), 3)?;
+//! let mut out = Workspace::new();
+//! out.insert("T", t);
+//! let text = write_text(&out)?; // `load` in Octave defines T, 3 x 3
+//! assert_eq!(read_text(&text)?.matrix("T")?.column(1).to_vec(), vec![3.5, 1.5, 0.75]);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
 //! The bugs of the printed originals, with what GNU Octave 7 does with each, are catalogued in
 //! `octave_ref/BUGS.md`; the porting table (thesis function → Rust → command line) is
 //! `docs/PORTING.md`.
