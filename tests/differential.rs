@@ -181,6 +181,238 @@ fn linspace_case(rng: &mut Rng) -> Case {
     }
 }
 
+fn lagrange_case(rng: &mut Rng) -> Case {
+    let k = rng.int(1, 8);
+    // Distinct nodes in any order, as a row or a column.
+    let mut nodes: Vec<f64> = Vec::new();
+    while nodes.len() < k {
+        let x = rng.range(-1.0, 2.0);
+        if nodes.iter().all(|y| (x - y).abs() > 0.05) {
+            nodes.push(x);
+        }
+    }
+    let x = if rng.chance(0.5) {
+        Array2::from_shape_vec((1, k), nodes.clone()).unwrap()
+    } else {
+        Array2::from_shape_vec((k, 1), nodes.clone()).unwrap()
+    };
+    let m = rng.int(1, k);
+    let (r, c) = (rng.int(1, 4), rng.int(1, 6));
+    let u = Array2::from_shape_simple_fn((r, c), || {
+        if rng.chance(0.1) {
+            nodes[rng.int(0, k - 1)]
+        } else {
+            rng.range(-0.5, 1.5)
+        }
+    });
+    let v = compat::lagrange(x.view(), m, u.view()).expect("lagrange");
+    Case {
+        function: "Lagrange",
+        args: vec![("x", x.into()), ("m", scalar(m as f64)), ("u", u.into())],
+        exact: false,
+        ours: vec![("v", v.into_dyn())],
+    }
+}
+
+/// Random Coons boundary data with compatible corners, as in `octave_ref/cases/coons_random.m`:
+/// corners `P1..P4` and, per curve, coefficients `A`, `B` of
+/// `c(s) = (1−s) Pa + s Pb + s(1−s)(A + B s)`, which is exactly `Pa` at 0 and `Pb` at 1.
+struct CoonsData {
+    corners: [Vec<f64>; 4],
+    a: [Vec<f64>; 4],
+    b: [Vec<f64>; 4],
+}
+
+/// Curve `k` (c1, c2, d1, d2) runs from corner `ENDS[k].0` to corner `ENDS[k].1`.
+const ENDS: [(usize, usize); 4] = [(0, 1), (2, 3), (0, 2), (1, 3)];
+
+impl CoonsData {
+    fn random(rng: &mut Rng, d: usize) -> Self {
+        let s = rng.scale();
+        let mut vecs = |scale: f64| -> [Vec<f64>; 4] {
+            std::array::from_fn(|_| (0..d).map(|_| rng.range(-scale, scale)).collect())
+        };
+        CoonsData {
+            corners: vecs(s),
+            a: vecs(s),
+            b: vecs(s),
+        }
+    }
+
+    fn curve(&self, k: usize, t: f64) -> Array2<f64> {
+        let (pa, pb) = (&self.corners[ENDS[k].0], &self.corners[ENDS[k].1]);
+        Array2::from_shape_fn((pa.len(), 1), |(c, _)| {
+            (1.0 - t) * pa[c] + t * pb[c] + (t * (1.0 - t)) * (self.a[k][c] + self.b[k][c] * t)
+        })
+    }
+
+    fn sampled(&self, k: usize, t: &[f64]) -> Array2<f64> {
+        let d = self.corners[0].len();
+        Array2::from_shape_fn((d, t.len()), |(c, j)| self.curve(k, t[j])[[c, 0]])
+    }
+
+    fn corner(&self, k: usize) -> Array2<f64> {
+        Array2::from_shape_vec((self.corners[k].len(), 1), self.corners[k].clone()).unwrap()
+    }
+}
+
+fn vrednost_coons_case(rng: &mut Rng) -> Case {
+    let d = rng.int(1, 4);
+    let data = CoonsData::random(rng, d);
+    let (u, v) = (rng.param(), rng.param());
+    let vals = [
+        data.curve(0, u),
+        data.curve(1, u),
+        data.curve(2, v),
+        data.curve(3, v),
+    ];
+    let p = [0, 1, 2, 3].map(|k| data.corner(k));
+    let r = compat::vrednost_coons(
+        u,
+        v,
+        vals[0].view(),
+        vals[1].view(),
+        vals[2].view(),
+        vals[3].view(),
+        p[0].view(),
+        p[1].view(),
+        p[2].view(),
+        p[3].view(),
+    )
+    .expect("vrednost_coons");
+    let [c1, c2, d1, d2] = vals;
+    let [p1, p2, p3, p4] = p;
+    Case {
+        function: "vrednostCoons",
+        args: vec![
+            ("u", scalar(u)),
+            ("v", scalar(v)),
+            ("c1", c1.into()),
+            ("c2", c2.into()),
+            ("d1", d1.into()),
+            ("d2", d2.into()),
+            ("P1", p1.into()),
+            ("P2", p2.into()),
+            ("P3", p3.into()),
+            ("P4", p4.into()),
+        ],
+        exact: false,
+        ours: vec![
+            ("T", r.t.into_dyn()),
+            ("rc", r.rc.into_dyn()),
+            ("rd", r.rd.into_dyn()),
+            ("rcd", r.rcd.into_dyn()),
+        ],
+    }
+}
+
+fn krpa_coons_case(rng: &mut Rng) -> Case {
+    let data = CoonsData::random(rng, 3);
+    let n = rng.int(2, 15);
+    let t = cagd::linspace(0.0, 1.0, n);
+    let c = [0, 1, 2, 3].map(|k| data.sampled(k, &t));
+    let p = [0, 1, 2, 3].map(|k| data.corner(k));
+    let s = compat::krpa_coons(
+        c[0].view(),
+        c[1].view(),
+        c[2].view(),
+        c[3].view(),
+        p[0].view(),
+        p[1].view(),
+        p[2].view(),
+        p[3].view(),
+    )
+    .expect("krpa_coons");
+    let [c1, c2, d1, d2] = c;
+    let [p1, p2, p3, p4] = p;
+    Case {
+        function: "krpaCoons",
+        args: vec![
+            ("c1", c1.into()),
+            ("c2", c2.into()),
+            ("d1", d1.into()),
+            ("d2", d2.into()),
+            ("P1", p1.into()),
+            ("P2", p2.into()),
+            ("P3", p3.into()),
+            ("P4", p4.into()),
+        ],
+        exact: false,
+        ours: vec![("R", s.r.into_dyn()), ("P", s.p.into_dyn())],
+    }
+}
+
+/// `count` increasing nodes in about [0, 1], well apart (each within a quarter of the spacing
+/// of the equispaced position; the ends kept at 0 and 1 half of the time), so that the Lagrange
+/// blending stays well conditioned.
+fn spread_nodes(rng: &mut Rng, count: usize) -> Vec<f64> {
+    let h = 1.0 / (count - 1) as f64;
+    let keep_ends = rng.chance(0.5);
+    (0..count)
+        .map(|i| {
+            let x = i as f64 * h;
+            if keep_ends && (i == 0 || i == count - 1) {
+                x
+            } else {
+                x + rng.range(-0.25, 0.25) * h
+            }
+        })
+        .collect()
+}
+
+fn krpa_gordon_case(rng: &mut Rng) -> Case {
+    let (mu, nv) = (rng.int(2, 5), rng.int(2, 5));
+    let n = rng.int(2, 10);
+    let (xu, xv) = (spread_nodes(rng, mu), spread_nodes(rng, nv));
+    // A random polynomial surface S(u, v) = Σ C_ab u^a v^b of degree ≤ (4, 3); the network is
+    // cut from it (so it is compatible by construction).
+    let (da, db) = (rng.int(0, 4), rng.int(0, 3));
+    let s = rng.scale();
+    let coef: Vec<[f64; 3]> = (0..(da + 1) * (db + 1))
+        .map(|_| [rng.range(-s, s), rng.range(-s, s), rng.range(-s, s)])
+        .collect();
+    let surface = |u: f64, v: f64| -> [f64; 3] {
+        let mut out = [0.0; 3];
+        for a in 0..=da {
+            for b in 0..=db {
+                let w = u.powi(a as i32) * v.powi(b as i32);
+                for (o, c) in out.iter_mut().zip(coef[a * (db + 1) + b]) {
+                    *o += c * w;
+                }
+            }
+        }
+        out
+    };
+    let t = cagd::linspace(0.0, 1.0, n);
+    let g_u = Array2::from_shape_fn((3, nv * n), |(c, k)| surface(t[k % n], xv[k / n])[c]);
+    let g_v = Array2::from_shape_fn((3, mu * n), |(c, k)| surface(xu[k / n], t[k % n])[c]);
+    let g_uv = Array2::from_shape_fn((mu, 3 * nv), |(i, k)| surface(xu[i], xv[k / 3])[k % 3]);
+    let x_u = Array2::from_shape_vec((1, mu), xu).unwrap();
+    let x_v = Array2::from_shape_vec((1, nv), xv).unwrap();
+    let g = compat::krpa_gordon(
+        g_u.view(),
+        g_v.view(),
+        g_uv.view(),
+        x_u.view(),
+        x_v.view(),
+        n,
+    )
+    .expect("krpa_gordon");
+    Case {
+        function: "krpaGordon",
+        args: vec![
+            ("g_u", g_u.into()),
+            ("g_v", g_v.into()),
+            ("g_uv", g_uv.into()),
+            ("x_u", x_u.into()),
+            ("x_v", x_v.into()),
+            ("N", scalar(n as f64)),
+        ],
+        exact: false,
+        ours: vec![("R", g.r.into_dyn()), ("P", g.p.into_dyn())],
+    }
+}
+
 /// Case generators with their relative weights (cheap Octave calls more often).
 type Generator = fn(&mut Rng) -> Case;
 const GENERATORS: &[(Generator, usize)] = &[
@@ -189,6 +421,10 @@ const GENERATORS: &[(Generator, usize)] = &[
     (bilinearna_case, 15),
     (tenzor_case, 10),
     (linspace_case, 10),
+    (lagrange_case, 15),
+    (vrednost_coons_case, 10),
+    (krpa_coons_case, 7),
+    (krpa_gordon_case, 5),
 ];
 
 fn generate(count: usize, seed: u64) -> Vec<Case> {

@@ -106,8 +106,12 @@ fn de_casteljau_samples_do_not_depend_on_n() {
     assert_eq!(p, copy);
 }
 
+/// One patch of the `patches` case: the net `B_<key>`, its `A_<key>`, and the grids
+/// `P_<key>_N<N>` with their `N`.
+type PatchCase = (String, String, Vec<(String, usize)>);
+
 /// `(B, A, [(P, N)])` of the patch file.
-fn patch_cases() -> Vec<(String, String, Vec<(String, usize)>)> {
+fn patch_cases() -> Vec<PatchCase> {
     let ws = expected("patches");
     let mut out = Vec::new();
     for b in ws.names().filter(|n| n.starts_with("B_")) {
@@ -299,6 +303,452 @@ fn bezier_twins_reject_bad_input() {
 }
 
 // ---------------------------------------------------------------------------------------------
+// Coons, Gordon and Lagrange twins
+
+/// A `3 × 1` column of a reference file as an array.
+fn column(ws: &cagd::octave::Workspace, name: &str) -> Array2<f64> {
+    let m = matrix(ws, name);
+    assert_eq!(m.dim(), (3, 1), "{name}");
+    m
+}
+
+/// Thesis Primer 4.3 (u = 0.2, v = 0.5) — where the original only displays `T` and returns
+/// nothing — and 15 random points of random compatible boundaries (`coons_random`).
+#[test]
+fn vrednost_coons_primer_4_3_matches_octave() {
+    let ws = expected("coons_thesis");
+    let corners: Vec<Array2<f64>> = ["P1", "P2", "P3", "P4"]
+        .iter()
+        .map(|p| column(&ws, p))
+        .collect();
+    let r = compat::vrednost_coons(
+        ws.scalar("ex_u").unwrap(),
+        ws.scalar("ex_v").unwrap(),
+        column(&ws, "ex_c1").view(),
+        column(&ws, "ex_c2").view(),
+        column(&ws, "ex_d1").view(),
+        column(&ws, "ex_d2").view(),
+        corners[0].view(),
+        corners[1].view(),
+        corners[2].view(),
+        corners[3].view(),
+    )
+    .unwrap();
+    let mut stats = ErrorStats::default();
+    for (name, ours) in [
+        ("ex_T", &r.t),
+        ("ex_rc", &r.rc),
+        ("ex_rd", &r.rd),
+        ("ex_rcd", &r.rcd),
+    ] {
+        stats.merge(&assert_close(
+            &format!("vrednost_coons Primer 4.3 vs {name}"),
+            &ours.clone().into_dyn(),
+            &matrix(&ws, name).into_dyn(),
+        ));
+    }
+    // The thesis's numbers: (0.2, 0.3, 0.38) = (0.2, 0.5, 0.18) + (0.2, 0.3, 0.3) − (0.2, 0.5, 0.1).
+    let approx = |a: &Array2<f64>, b: [f64; 3]| a.iter().zip(b).all(|(x, y)| (x - y).abs() < 1e-15);
+    assert!(approx(&r.t, [0.2, 0.3, 0.38]), "{}", r.t);
+    assert!(approx(&r.rc, [0.2, 0.5, 0.18]), "{}", r.rc);
+    assert!(approx(&r.rd, [0.2, 0.3, 0.3]), "{}", r.rd);
+    assert!(approx(&r.rcd, [0.2, 0.5, 0.1]), "{}", r.rcd);
+
+    let ws = expected("coons_random");
+    for r in 1..=3 {
+        let get = |n: &str| matrix(&ws, &format!("r{r}_{n}"));
+        let (q, a, b, uv) = (get("Q"), get("A"), get("B"), get("uv"));
+        let corner = |k: usize| q.column(k).to_owned().insert_axis(Axis(1));
+        // The case's curves, in its order of operations:
+        // (1-u)*Pa + u*Pb + (u*(1-u))*(A(:,k) + B(:,k)*u).
+        let curve = |k: usize, pa: usize, pb: usize, s: f64| {
+            Array2::from_shape_fn((3, 1), |(c, _)| {
+                (1.0 - s) * q[[c, pa]]
+                    + s * q[[c, pb]]
+                    + (s * (1.0 - s)) * (a[[c, k]] + b[[c, k]] * s)
+            })
+        };
+        for k in 0..uv.ncols() {
+            let (u, v) = (uv[[0, k]], uv[[1, k]]);
+            let p = compat::vrednost_coons(
+                u,
+                v,
+                curve(0, 0, 1, u).view(),
+                curve(1, 2, 3, u).view(),
+                curve(2, 0, 2, v).view(),
+                curve(3, 1, 3, v).view(),
+                corner(0).view(),
+                corner(1).view(),
+                corner(2).view(),
+                corner(3).view(),
+            )
+            .unwrap();
+            for (name, ours) in [("T", &p.t), ("rc", &p.rc), ("rd", &p.rd), ("rcd", &p.rcd)] {
+                let octave = get(name).column(k).to_owned().insert_axis(Axis(1));
+                stats.merge(&assert_close(
+                    &format!("vrednost_coons coons_random r{r} point {} {name}", k + 1),
+                    &ours.clone().into_dyn(),
+                    &octave.into_dyn(),
+                ));
+            }
+        }
+    }
+    eprintln!("[vrednost_coons] {stats}");
+}
+
+/// The sampled curves and corners of a Coons case (`<prefix>c1<suffix>`, …).
+fn coons_inputs(
+    ws: &cagd::octave::Workspace,
+    curve: impl Fn(&str) -> String,
+    corner: impl Fn(&str) -> String,
+) -> ([Array2<f64>; 4], [Array2<f64>; 4]) {
+    (
+        ["c1", "c2", "d1", "d2"].map(|c| matrix(ws, &curve(c))),
+        ["P1", "P2", "P3", "P4"].map(|p| column(ws, &corner(p))),
+    )
+}
+
+fn run_krpa_coons(
+    c: &[Array2<f64>; 4],
+    p: &[Array2<f64>; 4],
+) -> cagd::Result<compat::SampledPatch> {
+    compat::krpa_coons(
+        c[0].view(),
+        c[1].view(),
+        c[2].view(),
+        c[3].view(),
+        p[0].view(),
+        p[1].view(),
+        p[2].view(),
+        p[3].view(),
+    )
+}
+
+/// Appendix C's patch at N = 2, 3, 10, 101 — `N` taken from the curves, where the original
+/// used it undefined — and the random boundaries of `coons_random` (N = 7, 12, 2).
+#[test]
+fn krpa_coons_appendix_c_matches_octave() {
+    let ws = expected("coons_thesis");
+    let mut stats = ErrorStats::default();
+    for n in [2, 3, 10, 101] {
+        let (c, p) = coons_inputs(&ws, |c| format!("{c}_N{n}"), str::to_string);
+        let s = run_krpa_coons(&c, &p).unwrap();
+        assert_eq!((s.r.dim(), s.p.dim()), ((n, 3 * n), (n, n, 3)));
+        stats.merge(&assert_close(
+            &format!("krpa_coons appendix C N = {n}"),
+            &s.p.clone().into_dyn(),
+            &common::array3(&ws, &format!("P_N{n}")).into_dyn(),
+        ));
+        if n <= 3 {
+            stats.merge(&assert_close(
+                &format!("krpa_coons appendix C N = {n}, packed R"),
+                &s.r.clone().into_dyn(),
+                &matrix(&ws, &format!("R_N{n}")).into_dyn(),
+            ));
+        }
+    }
+    let ws = expected("coons_random");
+    for r in 1..=3 {
+        let c = ["c1", "c2", "d1", "d2"].map(|c| matrix(&ws, &format!("r{r}_{c}")));
+        let q = matrix(&ws, &format!("r{r}_Q"));
+        let p = [0, 1, 2, 3].map(|k| q.column(k).to_owned().insert_axis(Axis(1)));
+        let s = run_krpa_coons(&c, &p).unwrap();
+        stats.merge(&assert_close(
+            &format!("krpa_coons coons_random r{r}"),
+            &s.p.into_dyn(),
+            &common::array3(&ws, &format!("r{r}_P")).into_dyn(),
+        ));
+    }
+    eprintln!("[krpa_coons] {stats}");
+}
+
+/// Appendix C's data script as printed sets `P3 = [1;1;1]` (meant as `P4`): with it the twin
+/// reports the corner `x(0,1)`, where `c2(0) = d1(1) = (0,1,0)`, instead of drawing a wrong
+/// patch.
+#[test]
+fn krpa_coons_thesis_p3_typo_is_a_corner_mismatch() {
+    let ws = expected("coons_thesis");
+    let (c, mut p) = coons_inputs(&ws, |c| format!("{c}_N10"), str::to_string);
+    p[2] = array![[1.0], [1.0], [1.0]];
+    match run_krpa_coons(&c, &p) {
+        Err(Error::CornerMismatch { gaps, .. }) => {
+            assert!(!gaps.is_empty());
+            assert!(
+                gaps.iter().all(|g| g.corner == cagd::coons::Corner::U0V1),
+                "{gaps:?}"
+            );
+            assert_eq!(gaps[0].gap, 1.0);
+        }
+        other => panic!("expected CornerMismatch at x(0,1), got {other:?}"),
+    }
+}
+
+/// The Lagrange basis of three node sets (appendix D's `[0 0.5 1]`, random, Chebyshev–Lobatto)
+/// on parameter rows — the original returned 0 everywhere — and `L_m(x_m) = 1` exactly.
+#[test]
+fn lagrange_matches_octave_and_is_one_at_its_node() {
+    let ws = expected("lagrange_basis");
+    let mut stats = ErrorStats::default();
+    for k in 1..=3 {
+        let x = matrix(&ws, &format!("x{k}"));
+        let t = matrix(&ws, &format!("t{k}"));
+        let l = matrix(&ws, &format!("L{k}"));
+        for m in 1..=x.len() {
+            let ours = compat::lagrange(x.view(), m, t.view()).unwrap();
+            stats.merge(&assert_close(
+                &format!("lagrange(x{k}, {m}, t{k})"),
+                &ours.into_dyn(),
+                &l.row(m - 1).to_owned().insert_axis(Axis(0)).into_dyn(),
+            ));
+            let at_node = compat::lagrange(x.view(), m, array![x[[0, m - 1]]].view()).unwrap();
+            assert_eq!(at_node[0], 1.0, "L_{m}(x{k}({m}))");
+        }
+    }
+    eprintln!("[lagrange] {stats}");
+}
+
+/// Appendix D's network sampled at N = 3, 10, 101 — the data on which the original fails, by
+/// counting curves by sample columns, reading samples as curves and adding crossing rows to
+/// columns.
+#[test]
+fn krpa_gordon_appendix_d_matches_octave() {
+    let ws = expected("gordon_thesis");
+    let x = matrix(&ws, "x");
+    let g_uv = matrix(&ws, "g_uv");
+    let mut stats = ErrorStats::default();
+    for n in [3, 10, 101] {
+        let g_u = matrix(&ws, &format!("g_u_N{n}"));
+        let g_v = matrix(&ws, &format!("g_v_N{n}"));
+        let s = compat::krpa_gordon(g_u.view(), g_v.view(), g_uv.view(), x.view(), x.view(), n)
+            .unwrap();
+        assert_eq!((s.r.dim(), s.p.dim()), ((n, 3 * n), (n, n, 3)));
+        assert_eq!(compat::untenzor(s.p.view()).unwrap(), s.r);
+        stats.merge(&assert_close(
+            &format!("krpa_gordon appendix D N = {n}"),
+            &s.p.into_dyn(),
+            &common::array3(&ws, &format!("P_N{n}")).into_dyn(),
+        ));
+    }
+    eprintln!("[krpa_gordon appendix D] {stats}");
+}
+
+/// The Gordon surface of a sampled network on its sampling grid in exact rational arithmetic
+/// (native `GordonSurface<BigRational>` over the samples, lifted exactly): the reference for
+/// networks whose blending is ill-conditioned.
+fn exact_gordon_grid(
+    xu: &Array2<f64>,
+    xv: &Array2<f64>,
+    n: usize,
+    g_u: &Array2<f64>,
+    g_v: &Array2<f64>,
+    g_uv: &Array2<f64>,
+) -> Array3<f64> {
+    use cagd::gordon::GordonSurface;
+    use cagd::{SampledCurve, Scalar, Surface};
+    use nalgebra::{DMatrix, DVector};
+    use num_rational::BigRational as Q;
+    let lift = |x: f64| <Q as Scalar>::from_f64(x).unwrap();
+    let t: Vec<Q> = cagd::linspace(0.0, 1.0, n).into_iter().map(lift).collect();
+    let family = |m: &Array2<f64>, k: usize| {
+        SampledCurve::new(
+            t.clone(),
+            DMatrix::from_fn(3, n, |i, j| lift(m[[i, k * n + j]])),
+        )
+        .unwrap()
+    };
+    let points: Vec<Vec<DVector<Q>>> = (0..xu.len())
+        .map(|i| {
+            (0..xv.len())
+                .map(|j| DVector::from_fn(3, |c, _| lift(g_uv[[i, 3 * j + c]])))
+                .collect()
+        })
+        .collect();
+    // On the grid only the samples are used; between them the polylines are not the network,
+    // so the compatibility check is switched off (a huge absolute tolerance).
+    let g = GordonSurface::with_points(
+        xu.iter().map(|&x| lift(x)).collect(),
+        xv.iter().map(|&x| lift(x)).collect(),
+        (0..xu.len()).map(|i| family(g_v, i)).collect(),
+        (0..xv.len()).map(|j| family(g_u, j)).collect(),
+        points,
+        cagd::coons::Tolerance::Absolute(1e300),
+    )
+    .unwrap();
+    g.eval_grid(&t, &t).map(|x| x.to_f64())
+}
+
+/// Networks with different numbers of curves and different nodes in u and v (4×3, 2×5 with
+/// nodes off the sample grid, 3×2) — impossible with the original's single `x` and count.
+///
+/// Case r3 (nodes [0 0.5 1] and [0 1]) is well conditioned and must agree within the crate's
+/// tolerance. The random nodes of r1 and r2 are clustered: the blending amplifies rounding by
+/// `κ = Λ_u + Λ_v + Λ_u Λ_v` (Lebesgue constants; about 1800 and 175), so two correct operation
+/// orders — the twin's barycentric basis and Octave's products — may differ by up to `κ·ε`
+/// relative. For them both are checked against the exact rational Gordon surface of the same
+/// doubles, within `κ·ε` of the scale, and against each other within the same bound.
+#[test]
+fn krpa_gordon_separate_nodes_match_octave() {
+    let ws = expected("gordon_random");
+    let mut stats = ErrorStats::default();
+    for r in 1..=3 {
+        let get = |n: &str| matrix(&ws, &format!("r{r}_{n}"));
+        let (xu, xv, t) = (get("xu"), get("xv"), get("t"));
+        let (g_u, g_v, g_uv) = (get("g_u"), get("g_v"), get("g_uv"));
+        let n = t.len();
+        let s = compat::krpa_gordon(g_u.view(), g_v.view(), g_uv.view(), xu.view(), xv.view(), n)
+            .unwrap();
+        let octave = common::array3(&ws, &format!("r{r}_P"));
+        let label = format!(
+            "krpa_gordon gordon_random r{r} ({}×{} curves)",
+            xu.len(),
+            xv.len()
+        );
+        let lebesgue = |x: &Array2<f64>| {
+            cagd::lagrange::Lagrange::new(x.iter().copied().collect())
+                .unwrap()
+                .lebesgue_constant(0.0, 1.0, 4001)
+                .value
+        };
+        let (lu, lv) = (lebesgue(&xu), lebesgue(&xv));
+        let kappa = lu + lv + lu * lv;
+        if kappa < 10.0 {
+            stats.merge(&assert_close(&label, &s.p.into_dyn(), &octave.into_dyn()));
+            continue;
+        }
+        let exact = exact_gordon_grid(&xu, &xv, n, &g_u, &g_v, &g_uv);
+        let scale = octave.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let bound = kappa * f64::EPSILON * scale;
+        let max_diff = |a: &Array3<f64>, b: &Array3<f64>| {
+            a.iter()
+                .zip(b.iter())
+                .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()))
+        };
+        let (ours_err, octave_err, diff) = (
+            max_diff(&s.p, &exact),
+            max_diff(&octave, &exact),
+            max_diff(&s.p, &octave),
+        );
+        eprintln!(
+            "[{label}] κ = {kappa:.0}: |twin − exact| = {ours_err:.2e}, |Octave − exact| = \
+             {octave_err:.2e}, |twin − Octave| = {diff:.2e} (bound κ·ε·scale = {bound:.2e})"
+        );
+        assert!(
+            ours_err <= bound,
+            "{label}: twin {ours_err:e} from exact, bound {bound:e}"
+        );
+        assert!(
+            octave_err <= bound,
+            "{label}: Octave {octave_err:e} from exact, bound {bound:e}"
+        );
+        assert!(
+            diff <= bound,
+            "{label}: twin and Octave {diff:e} apart, bound {bound:e}"
+        );
+    }
+    eprintln!("[krpa_gordon separate nodes, well conditioned] {stats}");
+}
+
+/// The four functions that only drew return what they drew: `T` (d × N), `P` (N × N × 3),
+/// and `[R, P]` with `R` the packed form of `P` (N × 3N).
+#[test]
+fn plotting_twins_return_the_data() {
+    let snap = expected("compat_snapshots");
+    let t = compat::de_casteljau(matrix(&snap, "snap_P_primer_2_4").view(), 7).unwrap();
+    assert_eq!(t.dim(), (3, 7));
+    let p = compat::ploskev_b(matrix(&snap, "snap_B").view(), 4).unwrap();
+    assert_eq!(p.dim(), (4, 4, 3));
+    let c = ["c1", "c2", "d1", "d2"].map(|c| matrix(&snap, &format!("snap_coons_{c}")));
+    let q = ["P1", "P2", "P3", "P4"].map(|p| column(&snap, &format!("snap_coons_{p}")));
+    let coons = run_krpa_coons(&c, &q).unwrap();
+    assert_eq!((coons.r.dim(), coons.p.dim()), ((5, 15), (5, 5, 3)));
+    assert_eq!(compat::untenzor(coons.p.view()).unwrap(), coons.r);
+    assert_eq!(compat::tenzor(coons.r.view()).unwrap(), coons.p);
+    let x = matrix(&snap, "snap_gordon_x");
+    let gordon = compat::krpa_gordon(
+        matrix(&snap, "snap_gordon_g_u").view(),
+        matrix(&snap, "snap_gordon_g_v").view(),
+        matrix(&snap, "snap_gordon_g_uv").view(),
+        x.view(),
+        x.view(),
+        5,
+    )
+    .unwrap();
+    assert_eq!((gordon.r.dim(), gordon.p.dim()), ((5, 15), (5, 5, 3)));
+    assert_eq!(compat::untenzor(gordon.p.view()).unwrap(), gordon.r);
+}
+
+/// Bad input to the Coons, Gordon and Lagrange twins: typed errors naming the argument.
+#[test]
+fn coons_gordon_lagrange_twins_reject_bad_input() {
+    let snap = expected("compat_snapshots");
+    let c = ["c1", "c2", "d1", "d2"].map(|c| matrix(&snap, &format!("snap_coons_{c}")));
+    let q = ["P1", "P2", "P3", "P4"].map(|p| column(&snap, &format!("snap_coons_{p}")));
+    let mut bad = c.clone();
+    bad[1] = Array2::zeros((3, 4));
+    assert!(matches!(
+        run_krpa_coons(&bad, &q),
+        Err(Error::ShapeMismatch {
+            what: "krpa_coons: c2",
+            ..
+        })
+    ));
+    let mut nan = c.clone();
+    nan[2][[1, 2]] = f64::NAN;
+    assert!(matches!(
+        run_krpa_coons(&nan, &q),
+        Err(Error::NonFinite { .. })
+    ));
+    let mut corner = q.clone();
+    corner[3] = Array2::zeros((2, 1));
+    assert!(matches!(
+        run_krpa_coons(&c, &corner),
+        Err(Error::ShapeMismatch {
+            what: "krpa_coons: P4",
+            ..
+        })
+    ));
+
+    let (g_u, g_v, g_uv) = (
+        matrix(&snap, "snap_gordon_g_u"),
+        matrix(&snap, "snap_gordon_g_v"),
+        matrix(&snap, "snap_gordon_g_uv"),
+    );
+    let x = matrix(&snap, "snap_gordon_x");
+    let two = array![[0.0, 1.0]];
+    assert!(matches!(
+        compat::krpa_gordon(g_u.view(), g_v.view(), g_uv.view(), x.view(), two.view(), 5),
+        Err(Error::ShapeMismatch { .. })
+    ));
+    assert!(matches!(
+        compat::krpa_gordon(g_u.view(), g_v.view(), g_uv.view(), x.view(), x.view(), 4),
+        Err(Error::ShapeMismatch {
+            what: "krpa_gordon: g_u",
+            ..
+        })
+    ));
+    let dup = array![[0.0, 0.5, 0.5]];
+    assert!(matches!(
+        compat::krpa_gordon(g_u.view(), g_v.view(), g_uv.view(), dup.view(), x.view(), 5),
+        Err(Error::DuplicateNodes { .. })
+    ));
+    let mut off = g_uv.clone();
+    off[[1, 4]] += 1e-3; // g(u_1, v_1) moved off both curves
+    assert!(matches!(
+        compat::krpa_gordon(g_u.view(), g_v.view(), off.view(), x.view(), x.view(), 5),
+        Err(Error::NetworkMismatch { .. })
+    ));
+
+    assert!(matches!(
+        compat::lagrange(x.view(), 0, array![0.5].view()),
+        Err(Error::InvalidArgument { .. })
+    ));
+    assert!(matches!(
+        compat::lagrange(dup.view(), 1, array![0.5].view()),
+        Err(Error::DuplicateNodes { .. })
+    ));
+}
+
+// ---------------------------------------------------------------------------------------------
 // Human-readable display
 
 /// A number in full: the shortest decimal that reads back as the same double (plain notation
@@ -437,6 +887,119 @@ fn snapshots() -> Vec<(&'static str, &'static str, Vec<Shown>)> {
                 ),
             ],
         ),
+        (
+            "krpa_coons_appendix_c",
+            "[R, P] = krpa_coons(c1, c2, d1, d2, P1, P2, P3, P4): appendix C's data (Algoritem 5) \
+             at N = 5, with its second \"P3 = [1;1;1]\" read as P4; P(i,j,:) is the patch at \
+             (u, v) = (t(i), t(j)), t = linspace(0,1,5)",
+            {
+                let c = ["c1", "c2", "d1", "d2"].map(|c| matrix(&snap, &format!("snap_coons_{c}")));
+                let q = ["P1", "P2", "P3", "P4"].map(|p| column(&snap, &format!("snap_coons_{p}")));
+                let s = run_krpa_coons(&c, &q).unwrap();
+                let [c1, c2, d1, d2] = c;
+                let [p1, p2, p3, p4] = q;
+                vec![
+                    shown("c1", c1.into_dyn(), "compat_snapshots", "snap_coons_c1"),
+                    shown("c2", c2.into_dyn(), "compat_snapshots", "snap_coons_c2"),
+                    shown("d1", d1.into_dyn(), "compat_snapshots", "snap_coons_d1"),
+                    shown("d2", d2.into_dyn(), "compat_snapshots", "snap_coons_d2"),
+                    shown("P1", p1.into_dyn(), "compat_snapshots", "snap_coons_P1"),
+                    shown("P2", p2.into_dyn(), "compat_snapshots", "snap_coons_P2"),
+                    shown("P3", p3.into_dyn(), "compat_snapshots", "snap_coons_P3"),
+                    shown("P4", p4.into_dyn(), "compat_snapshots", "snap_coons_P4"),
+                    shown("R", s.r.into_dyn(), "compat_snapshots", "snap_coons_R"),
+                    shown("P", s.p.into_dyn(), "compat_snapshots", "snap_coons_P"),
+                ]
+            },
+        ),
+        (
+            "vrednost_coons_primer_4_3",
+            "[T, rc, rd, rcd] = vrednost_coons(u, v, c1, c2, d1, d2, P1, P2, P3, P4): thesis \
+             Primer 4.3 (appendix C, Algoritem 6), c1 = (u, 0, u-u^2), c2 = (u, 1, u), \
+             d1 = (0, v^2, v-v^2), d2 = (1, v, v) at u = 0.2, v = 0.5",
+            {
+                let ws = expected("coons_thesis");
+                let names = ["ex_c1", "ex_c2", "ex_d1", "ex_d2", "P1", "P2", "P3", "P4"];
+                let a = names.map(|n| column(&ws, n));
+                let (u, v) = (ws.scalar("ex_u").unwrap(), ws.scalar("ex_v").unwrap());
+                let r = compat::vrednost_coons(
+                    u,
+                    v,
+                    a[0].view(),
+                    a[1].view(),
+                    a[2].view(),
+                    a[3].view(),
+                    a[4].view(),
+                    a[5].view(),
+                    a[6].view(),
+                    a[7].view(),
+                )
+                .unwrap();
+                let one = |x: f64| Array2::from_elem((1, 1), x).into_dyn();
+                let [c1, c2, d1, d2, p1, p2, p3, p4] = a;
+                vec![
+                    shown("u", one(u), "coons_thesis", "ex_u"),
+                    shown("v", one(v), "coons_thesis", "ex_v"),
+                    shown("c1", c1.into_dyn(), "coons_thesis", "ex_c1"),
+                    shown("c2", c2.into_dyn(), "coons_thesis", "ex_c2"),
+                    shown("d1", d1.into_dyn(), "coons_thesis", "ex_d1"),
+                    shown("d2", d2.into_dyn(), "coons_thesis", "ex_d2"),
+                    shown("P1", p1.into_dyn(), "coons_thesis", "P1"),
+                    shown("P2", p2.into_dyn(), "coons_thesis", "P2"),
+                    shown("P3", p3.into_dyn(), "coons_thesis", "P3"),
+                    shown("P4", p4.into_dyn(), "coons_thesis", "P4"),
+                    shown("T", r.t.into_dyn(), "coons_thesis", "ex_T"),
+                    shown("rc", r.rc.into_dyn(), "coons_thesis", "ex_rc"),
+                    shown("rd", r.rd.into_dyn(), "coons_thesis", "ex_rd"),
+                    shown("rcd", r.rcd.into_dyn(), "coons_thesis", "ex_rcd"),
+                ]
+            },
+        ),
+        (
+            "krpa_gordon_appendix_d",
+            "[R, P] = krpa_gordon(g_u, g_v, g_uv, x, x, 5): appendix D's network (Algoritem 7), \
+             c_j = g(u, v_j) sampled in g_u, d_i = g(u_i, v) in g_v, crossings g_uv as printed, \
+             nodes x = [0 0.5 1] in both directions; P(i,j,:) = g(t(i), t(j))",
+            {
+                let get = |n: &str| matrix(&snap, &format!("snap_gordon_{n}"));
+                let (g_u, g_v, g_uv, x) = (get("g_u"), get("g_v"), get("g_uv"), get("x"));
+                let s =
+                    compat::krpa_gordon(g_u.view(), g_v.view(), g_uv.view(), x.view(), x.view(), 5)
+                        .unwrap();
+                vec![
+                    shown("g_u", g_u.into_dyn(), "compat_snapshots", "snap_gordon_g_u"),
+                    shown("g_v", g_v.into_dyn(), "compat_snapshots", "snap_gordon_g_v"),
+                    shown(
+                        "g_uv",
+                        g_uv.into_dyn(),
+                        "compat_snapshots",
+                        "snap_gordon_g_uv",
+                    ),
+                    shown("x", x.into_dyn(), "compat_snapshots", "snap_gordon_x"),
+                    shown("R", s.r.into_dyn(), "compat_snapshots", "snap_gordon_R"),
+                    shown("P", s.p.into_dyn(), "compat_snapshots", "snap_gordon_P"),
+                ]
+            },
+        ),
+        (
+            "lagrange_appendix_d_nodes",
+            "L(m,:) = lagrange(x, m, t), m = 1, 2, 3: the Lagrange basis of appendix D's nodes \
+             x = [0 0.5 1] (Algoritem 8) at t = linspace(0,1,21)",
+            {
+                let ws = expected("lagrange_basis");
+                let (x, t) = (matrix(&ws, "x1"), matrix(&ws, "t1"));
+                let mut l = Array2::zeros((3, t.len()));
+                for m in 1..=3 {
+                    l.row_mut(m - 1)
+                        .assign(&compat::lagrange(x.view(), m, t.view()).unwrap().row(0));
+                }
+                vec![
+                    shown("x", x.into_dyn(), "lagrange_basis", "x1"),
+                    shown("t", t.into_dyn(), "lagrange_basis", "t1"),
+                    shown("L", l.into_dyn(), "lagrange_basis", "L1"),
+                ]
+            },
+        ),
     ]
 }
 
@@ -469,7 +1032,9 @@ fn snapshot_body(text: &str) -> &str {
 /// Parses the variables back out of a rendered snapshot: `name = …` pages and `name(:,:,k) =`
 /// pages, every number as a double. Panics (failing the test) on anything it cannot read.
 fn parse_display(body: &str) -> BTreeMap<String, ArrayD<f64>> {
-    let mut pages: BTreeMap<String, Vec<(usize, Vec<Vec<f64>>)>> = BTreeMap::new();
+    // Per variable: its pages (page number, 0 for a matrix; rows of numbers).
+    type Page = (usize, Vec<Vec<f64>>);
+    let mut pages: BTreeMap<String, Vec<Page>> = BTreeMap::new();
     let mut lines = body.lines().peekable();
     while let Some(line) = lines.next() {
         if line.is_empty() || line.starts_with('%') {

@@ -17,6 +17,7 @@
 //! | `krpaCoons(c1,c2,d1,d2,P1,P2,P3,P4)` (C, Alg. 5) | [`krpa_coons`] | [`CoonsPatch`](crate::coons::CoonsPatch) on [`SampledCurve`](crate::param::SampledCurve)s |
 //! | `vrednostCoons(u,v,c1,c2,d1,d2,P1,P2,P3,P4)` (C, Alg. 6) | [`vrednost_coons`] | [`CoonsPatch::eval_parts`](crate::coons::CoonsPatch::eval_parts) |
 //! | `krpaGordon(g_u,g_v,g_uv,x,N)` (D, Alg. 7) | [`krpa_gordon`] | [`GordonSurface`](crate::gordon::GordonSurface) on sampled curves |
+//! | `Lagrange(x, m, u)` (D, Alg. 8) | [`lagrange`] | [`basis_product`](crate::lagrange::basis_product) |
 //! | `linspace(a, b, N)` (Octave built-in) | [`linspace`] | [`crate::linspace::linspace`] |
 //!
 //! # Layouts
@@ -44,6 +45,25 @@
 //! [`Error::CornerMismatch`]). Where Octave would stop with an error the twin returns one; where
 //! the fixed Octave code returns an empty array (`N = 0`) so does the twin.
 //!
+//! # Moving data to and from Octave
+//! The twins read and write Octave's own text format through [`super::text_format`]
+//! (`save -text` in Octave, `load` to read back); names, shapes and every bit of every double
+//! survive both ways. `docs/PORTING.md` has the whole recipe.
+//!
+//! ```
+//! use cagd::octave::compat::de_casteljau;
+//! use cagd::octave::{read_text, write_text, Workspace};
+//! // What Octave writes for `P = [0 0 8 4; 0 2 2 0; 0 2 0 0]; save -text primer.txt P`:
+//! let saved = "# name: P\n# type: matrix\n# rows: 3\n# columns: 4\n 0 0 8 4\n 0 2 2 0\n 0 2 0 0\n";
+//! let p = read_text(saved)?.matrix("P")?;
+//! let t = de_casteljau(p.view(), 3)?;
+//! let mut out = Workspace::new();
+//! out.insert("T", t);
+//! let text = write_text(&out)?; // `load` in Octave defines T, 3 x 3
+//! assert_eq!(read_text(&text)?.matrix("T")?.column(1).to_vec(), vec![3.5, 1.5, 0.75]);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
 //! The bugs of the printed originals, with what GNU Octave 7 does with each, are catalogued in
 //! `octave_ref/BUGS.md`; the porting table (thesis function → Rust → command line) is
 //! `docs/PORTING.md`.
@@ -55,15 +75,23 @@ use crate::error::{Error, Result};
 
 mod bilinearna;
 mod de_casteljau;
+mod krpa_coons;
+mod krpa_gordon;
+mod lagrange;
 mod linspace;
 mod ploskev_b;
 mod tenzor;
+mod vrednost_coons;
 
 pub use bilinearna::bilinearna;
 pub use de_casteljau::de_casteljau;
+pub use krpa_coons::{krpa_coons, SampledPatch};
+pub use krpa_gordon::krpa_gordon;
+pub use lagrange::lagrange;
 pub use linspace::linspace;
 pub use ploskev_b::ploskev_b;
 pub use tenzor::{tenzor, untenzor};
+pub use vrednost_coons::{vrednost_coons, VrednostCoons};
 
 /// `"3×4"`: a shape in words, as Octave's `size` would print it.
 pub(crate) fn shape_str(shape: &[usize]) -> String {
