@@ -236,8 +236,11 @@ fn array_to_scalars<T: LiteralScalar>(
 /// plain numeric text.
 ///
 /// ```
-/// let text = "# name: s\n# type: string\n# elements: 1\n# length: 1\nx\n\n\
-///             # name: B\n# type: matrix\n# rows: 1\n# columns: 2\n 1 0.5\n";
+/// // (no line of the literal may start with `#`: rustdoc would hide it)
+/// let text = concat!(
+///     "# name: s\n# type: string\n# elements: 1\n# length: 1\nx\n\n",
+///     "# name: B\n# type: matrix\n# rows: 1\n# columns: 2\n 1 0.5\n",
+/// );
 /// let m = cagd::cli::parse_data_text::<f64>("--control", text).unwrap();
 /// assert_eq!(m, nalgebra::DMatrix::from_row_slice(1, 2, &[1.0, 0.5]));
 /// ```
