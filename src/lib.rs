@@ -19,6 +19,7 @@ pub mod bezier;
 pub mod coons;
 pub mod error;
 pub mod gordon;
+pub mod grid;
 pub mod lagrange;
 pub mod linspace;
 pub mod octave;

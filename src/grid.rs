@@ -1,0 +1,271 @@
+//! Evaluation into caller-given buffers: the buffer layouts, their checks, and the row driver
+//! that spreads large grids over all cores.
+//!
+//! **Layouts.** Curves write `k` points of dimension `d` one after the other: `out[p·d + c]` is
+//! coordinate `c` of the point at `ts[p]` (a `k × d` row-major array, which is also the
+//! column-major storage of nalgebra's `d × k` matrix with one point per column). Surfaces write
+//! the grid `us × vs` row by row: `out[(a·nv + b)·d + c]` is coordinate `c` of `x(us[a], vs[b])`
+//! (`(nu, nv, d)` row-major, the memory layout of [`crate::Surface::eval_grid`]'s `Array3`).
+//!
+//! **Threads.** With the default feature `parallel`, a grid whose work (points × terms per
+//! point) exceeds [`PARALLEL_MIN_WORK`] is cut into a few blocks of whole rows per core and the
+//! blocks are evaluated with rayon; each block allocates its scratch once. Smaller grids run on
+//! the calling thread and never touch the thread pool.
+
+use crate::error::{Error, Result};
+use crate::scalar::Scalar;
+
+/// The work (points × multiply-adds per point) above which a grid is split over threads:
+/// about 0.1 ms of work, much more than the cost of waking the pool.
+pub const PARALLEL_MIN_WORK: usize = 1 << 18;
+
+/// Checks that a buffer has exactly `expected` entries.
+pub(crate) fn check_len<T>(what: &'static str, expected: usize, out: &[T]) -> Result<()> {
+    if out.len() == expected {
+        Ok(())
+    } else {
+        Err(Error::ShapeMismatch {
+            what,
+            expected: format!("{expected} entries"),
+            found: format!("{} entries", out.len()),
+        })
+    }
+}
+
+/// `rows · row_len` without overflow (an overflowing request is a shape error, not a panic).
+pub(crate) fn grid_len(what: &'static str, sizes: &[usize]) -> Result<usize> {
+    sizes
+        .iter()
+        .try_fold(1usize, |acc, &s| acc.checked_mul(s))
+        .ok_or_else(|| Error::ShapeMismatch {
+            what,
+            expected: "a grid whose size fits in memory".into(),
+            found: format!("sizes {sizes:?}"),
+        })
+}
+
+/// Calls `row(scratch, index, chunk)` for every chunk of `out` of length `row_len` (the last
+/// one shorter if `out.len()` is not a multiple of `row_len`), with a scratch value made by
+/// `init` once per block of rows. Runs on several threads when `work` (an estimate of the
+/// multiply-adds) is at least [`PARALLEL_MIN_WORK`] and the feature `parallel` is on.
+pub(crate) fn for_each_row<T, S, I, F>(out: &mut [T], row_len: usize, work: usize, init: I, row: F)
+where
+    T: Send,
+    I: Fn() -> S + Sync,
+    F: Fn(&mut S, usize, &mut [T]) + Sync,
+{
+    if row_len == 0 || out.is_empty() {
+        return;
+    }
+    let rows = out.len().div_ceil(row_len);
+    let run_block = |first: usize, block: &mut [T]| {
+        let mut scratch = init();
+        for (r, chunk) in block.chunks_mut(row_len).enumerate() {
+            row(&mut scratch, first + r, chunk);
+        }
+    };
+    #[cfg(feature = "parallel")]
+    {
+        let threads = rayon::current_num_threads();
+        if threads > 1 && rows > 1 && work >= PARALLEL_MIN_WORK {
+            use rayon::prelude::*;
+            // A few blocks per thread, so that a thread slowed by other load can be helped out.
+            let rows_per_block = rows.div_ceil(4 * threads).max(1);
+            out.par_chunks_mut(rows_per_block * row_len)
+                .enumerate()
+                .for_each(|(k, block)| run_block(k * rows_per_block, block));
+            return;
+        }
+    }
+    let _ = work;
+    run_block(0, out);
+}
+
+/// The rows `f(t)` for every `t` in `ts`, each of length `width`, one after the other
+/// (`ts.len() × width`, row-major): one allocation for all of them.
+pub(crate) fn rows_of<T: Scalar>(ts: &[T], width: usize, f: impl Fn(&T, &mut [T])) -> Vec<T> {
+    let mut rows = vec![T::zero(); ts.len() * width];
+    if width > 0 {
+        for (t, row) in ts.iter().zip(rows.chunks_exact_mut(width)) {
+            f(t, row);
+        }
+    }
+    rows
+}
+
+/// `out = Σ_j w[j] · x_j`, where `x_j = xs[j·len .. (j+1)·len]`: a weighted sum of `w.len()`
+/// vectors of length `len = out.len()`, accumulated in ascending `j` starting from
+/// `w[0] · x_0`.
+#[inline]
+pub(crate) fn weighted_sum_into<T: Scalar>(w: &[T], xs: &[T], out: &mut [T]) {
+    let len = out.len();
+    let mut parts = w.iter().zip(xs.chunks_exact(len));
+    if let Some((w0, x0)) = parts.next() {
+        for (o, x) in out.iter_mut().zip(x0) {
+            *o = w0.clone() * x.clone();
+        }
+    } else {
+        out.iter_mut().for_each(|o| *o = T::zero());
+    }
+    for (wj, xj) in parts {
+        for (o, x) in out.iter_mut().zip(xj) {
+            *o = o.clone() + wj.clone() * x.clone();
+        }
+    }
+}
+
+/// Writes `Σ_j w_b[j] · c_j` for every point `b` of a grid row: `ws` holds the weights of
+/// point `b` at `ws[b·terms ..]`, `coeffs` the `terms` vectors `c_j` of length `d`, `row`
+/// receives the points one after the other. Dispatches to a kernel with the dimension fixed
+/// at compile time for `d ≤ 4`, so that the sums stay in registers.
+#[inline]
+pub(crate) fn contract_row<T: Scalar>(ws: &[T], terms: usize, coeffs: &[T], row: &mut [T]) {
+    match coeffs.len() / terms.max(1) {
+        1 => contract_row_fixed::<T, 1>(ws, terms, coeffs, row),
+        2 => contract_row_fixed::<T, 2>(ws, terms, coeffs, row),
+        3 => contract_row_fixed::<T, 3>(ws, terms, coeffs, row),
+        4 => contract_row_fixed::<T, 4>(ws, terms, coeffs, row),
+        d => {
+            for (w, p) in ws.chunks_exact(terms).zip(row.chunks_exact_mut(d)) {
+                weighted_sum_into(w, coeffs, p);
+            }
+        }
+    }
+}
+
+#[inline]
+fn contract_row_fixed<T: Scalar, const D: usize>(
+    ws: &[T],
+    terms: usize,
+    coeffs: &[T],
+    row: &mut [T],
+) {
+    if terms == 0 {
+        row.iter_mut().for_each(|o| *o = T::zero());
+        return;
+    }
+    for (w, p) in ws.chunks_exact(terms).zip(row.chunks_exact_mut(D)) {
+        let mut acc: [T; D] = std::array::from_fn(|k| w[0].clone() * coeffs[k].clone());
+        for (wj, cj) in w[1..].iter().zip(coeffs[D..].chunks_exact(D)) {
+            for k in 0..D {
+                acc[k] = acc[k].clone() + wj.clone() * cj[k].clone();
+            }
+        }
+        for (o, a) in p.iter_mut().zip(acc) {
+            *o = a;
+        }
+    }
+}
+
+/// `out = Σ_i w1[i] · x1_i + Σ_j w2[j] · x2_j` for vectors `x1_i = x1[i·d ..]`,
+/// `x2_j = x2[j·d ..]` of length `d = out.len()`, summed in that order (`w1` ascending, then
+/// `w2` ascending); kernels with `d` fixed at compile time for `d ≤ 4`.
+#[inline]
+pub(crate) fn weighted_sum2_into<T: Scalar>(w1: &[T], x1: &[T], w2: &[T], x2: &[T], out: &mut [T]) {
+    match out.len() {
+        1 => weighted_sum2_fixed::<T, 1>(w1, x1, w2, x2, out),
+        2 => weighted_sum2_fixed::<T, 2>(w1, x1, w2, x2, out),
+        3 => weighted_sum2_fixed::<T, 3>(w1, x1, w2, x2, out),
+        4 => weighted_sum2_fixed::<T, 4>(w1, x1, w2, x2, out),
+        d => {
+            weighted_sum_into(w1, x1, out);
+            for (wj, xj) in w2.iter().zip(x2.chunks_exact(d.max(1))) {
+                for (o, x) in out.iter_mut().zip(xj) {
+                    *o = o.clone() + wj.clone() * x.clone();
+                }
+            }
+        }
+    }
+}
+
+#[inline]
+fn weighted_sum2_fixed<T: Scalar, const D: usize>(
+    w1: &[T],
+    x1: &[T],
+    w2: &[T],
+    x2: &[T],
+    out: &mut [T],
+) {
+    let mut acc: [T; D] = match w1.first() {
+        Some(w0) => std::array::from_fn(|k| w0.clone() * x1[k].clone()),
+        None => std::array::from_fn(|_| T::zero()),
+    };
+    let rest1 = w1.iter().skip(1).zip(x1.chunks_exact(D).skip(1));
+    for (wj, xj) in rest1.chain(w2.iter().zip(x2.chunks_exact(D))) {
+        for k in 0..D {
+            acc[k] = acc[k].clone() + wj.clone() * xj[k].clone();
+        }
+    }
+    for (o, a) in out.iter_mut().zip(acc) {
+        *o = a;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rows_are_visited_once_in_order_both_sequentially_and_in_parallel() {
+        for (rows, work) in [(7, 0), (1000, usize::MAX)] {
+            let mut out = vec![0usize; rows * 3];
+            for_each_row(
+                &mut out,
+                3,
+                work,
+                || 0usize,
+                |seen, r, chunk| {
+                    *seen += 1;
+                    chunk.fill(r);
+                },
+            );
+            for (r, chunk) in out.chunks(3).enumerate() {
+                assert_eq!(chunk, &[r, r, r]);
+            }
+        }
+    }
+
+    #[test]
+    fn contraction_agrees_for_every_dimension() {
+        // Two points, three terms, dimensions 1..6 (fixed kernels and the general one).
+        for d in 1..=6 {
+            let ws = [1.0, 2.0, 3.0, 0.5, 0.25, 0.125];
+            let coeffs: Vec<f64> = (0..3 * d).map(|q| q as f64).collect();
+            let mut row = vec![f64::NAN; 2 * d];
+            contract_row(&ws, 3, &coeffs, &mut row);
+            for b in 0..2 {
+                for k in 0..d {
+                    let expect: f64 = (0..3).map(|j| ws[b * 3 + j] * coeffs[j * d + k]).sum();
+                    assert_eq!(row[b * d + k], expect, "d = {d}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn two_sums_agree_for_every_dimension() {
+        for d in 1..=6 {
+            let (w1, w2) = ([2.0, -1.0, 0.5], [3.0, 0.25]);
+            let x1: Vec<f64> = (0..3 * d).map(|q| q as f64 + 1.0).collect();
+            let x2: Vec<f64> = (0..2 * d).map(|q| 7.0 - q as f64).collect();
+            let mut out = vec![f64::NAN; d];
+            weighted_sum2_into(&w1, &x1, &w2, &x2, &mut out);
+            for k in 0..d {
+                let expect = (0..3).map(|i| w1[i] * x1[i * d + k]).sum::<f64>()
+                    + (0..2).map(|j| w2[j] * x2[j * d + k]).sum::<f64>();
+                assert_eq!(out[k], expect, "d = {d}");
+            }
+        }
+    }
+
+    #[test]
+    fn lengths_are_checked() {
+        assert!(check_len("out", 3, &[0.0; 3]).is_ok());
+        assert!(matches!(
+            check_len("out", 3, &[0.0; 2]),
+            Err(Error::ShapeMismatch { .. })
+        ));
+        assert!(grid_len("grid", &[usize::MAX, 2]).is_err());
+        assert_eq!(grid_len("grid", &[4, 5, 3]).unwrap(), 60);
+    }
+}
