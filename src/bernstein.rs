@@ -188,13 +188,39 @@ pub fn bernstein_all<T: Scalar>(n: usize, t: T) -> Vec<T> {
 /// assert_eq!(b, [0.125, 0.375, 0.375, 0.125]);
 /// ```
 pub fn bernstein_all_into<T: Scalar>(t: &T, out: &mut [T]) {
+    // Low degrees get the loop with its length known at compile time (fully unrolled); the
+    // arithmetic, and so every bit of the result, is the same.
+    match out.len() {
+        0 => {}
+        2 => recurrence_fixed::<T, 2>(t, out),
+        3 => recurrence_fixed::<T, 3>(t, out),
+        4 => recurrence_fixed::<T, 4>(t, out),
+        5 => recurrence_fixed::<T, 5>(t, out),
+        6 => recurrence_fixed::<T, 6>(t, out),
+        _ => recurrence(t, out),
+    }
+}
+
+#[inline]
+fn recurrence_fixed<T: Scalar, const L: usize>(t: &T, out: &mut [T]) {
+    if let Ok(fixed) = <&mut [T; L]>::try_from(&mut *out) {
+        recurrence(t, fixed);
+    } else {
+        recurrence(t, out);
+    }
+}
+
+/// Thesis Izrek 2.6 level by level, in place: `B_0^0 = 1`,
+/// `B_i^k = (1 − t) B_i^{k−1} + t B_{i−1}^{k−1}`.
+#[inline(always)]
+pub(crate) fn recurrence<T: Scalar>(t: &T, out: &mut [T]) {
     let Some((first, _)) = out.split_first_mut() else {
         return;
     };
     *first = T::one();
     let s = T::one() - t.clone();
     for k in 1..out.len() {
-        // In place, left to right: `carry` holds t·B_{i−1}^{k−1} from the previous entry.
+        // Left to right: `carry` holds t·B_{i−1}^{k−1} from the previous entry.
         let mut carry = T::zero();
         for bi in out[..k].iter_mut() {
             let old = std::mem::replace(bi, T::zero());

@@ -120,15 +120,47 @@ pub(crate) fn weighted_sum_into<T: Scalar>(w: &[T], xs: &[T], out: &mut [T]) {
 /// at compile time for `d ≤ 4`, so that the sums stay in registers.
 #[inline]
 pub(crate) fn contract_row<T: Scalar>(ws: &[T], terms: usize, coeffs: &[T], row: &mut [T]) {
-    match coeffs.len() / terms.max(1) {
-        1 => contract_row_fixed::<T, 1>(ws, terms, coeffs, row),
-        2 => contract_row_fixed::<T, 2>(ws, terms, coeffs, row),
-        3 => contract_row_fixed::<T, 3>(ws, terms, coeffs, row),
-        4 => contract_row_fixed::<T, 4>(ws, terms, coeffs, row),
-        d => {
-            for (w, p) in ws.chunks_exact(terms).zip(row.chunks_exact_mut(d)) {
+    let d = coeffs.len() / terms.max(1);
+    // Common small cases with both sizes fixed at compile time: the coefficients live in
+    // registers and the loops unroll. Same arithmetic (and result) as the general kernels.
+    match (terms, d) {
+        (2, 2) => contract_row_const::<T, 2, 2>(ws, coeffs, row),
+        (2, 3) => contract_row_const::<T, 2, 3>(ws, coeffs, row),
+        (3, 2) => contract_row_const::<T, 3, 2>(ws, coeffs, row),
+        (3, 3) => contract_row_const::<T, 3, 3>(ws, coeffs, row),
+        (4, 2) => contract_row_const::<T, 4, 2>(ws, coeffs, row),
+        (4, 3) => contract_row_const::<T, 4, 3>(ws, coeffs, row),
+        (5, 3) => contract_row_const::<T, 5, 3>(ws, coeffs, row),
+        (6, 3) => contract_row_const::<T, 6, 3>(ws, coeffs, row),
+        (_, 1) => contract_row_fixed::<T, 1>(ws, terms, coeffs, row),
+        (_, 2) => contract_row_fixed::<T, 2>(ws, terms, coeffs, row),
+        (_, 3) => contract_row_fixed::<T, 3>(ws, terms, coeffs, row),
+        (_, 4) => contract_row_fixed::<T, 4>(ws, terms, coeffs, row),
+        _ => {
+            for (w, p) in ws.chunks_exact(terms).zip(row.chunks_exact_mut(d.max(1))) {
                 weighted_sum_into(w, coeffs, p);
             }
+        }
+    }
+}
+
+#[inline]
+fn contract_row_const<T: Scalar, const L: usize, const D: usize>(
+    ws: &[T],
+    coeffs: &[T],
+    row: &mut [T],
+) {
+    let c: [[T; D]; L] =
+        std::array::from_fn(|j| std::array::from_fn(|k| coeffs[j * D + k].clone()));
+    for (w, p) in ws.chunks_exact(L).zip(row.chunks_exact_mut(D)) {
+        let mut acc: [T; D] = std::array::from_fn(|k| w[0].clone() * c[0][k].clone());
+        for j in 1..L {
+            for k in 0..D {
+                acc[k] = acc[k].clone() + w[j].clone() * c[j][k].clone();
+            }
+        }
+        for (o, a) in p.iter_mut().zip(acc) {
+            *o = a;
         }
     }
 }
@@ -227,16 +259,20 @@ mod tests {
 
     #[test]
     fn contraction_agrees_for_every_dimension() {
-        // Two points, three terms, dimensions 1..6 (fixed kernels and the general one).
-        for d in 1..=6 {
-            let ws = [1.0, 2.0, 3.0, 0.5, 0.25, 0.125];
-            let coeffs: Vec<f64> = (0..3 * d).map(|q| q as f64).collect();
-            let mut row = vec![f64::NAN; 2 * d];
-            contract_row(&ws, 3, &coeffs, &mut row);
-            for b in 0..2 {
-                for k in 0..d {
-                    let expect: f64 = (0..3).map(|j| ws[b * 3 + j] * coeffs[j * d + k]).sum();
-                    assert_eq!(row[b * d + k], expect, "d = {d}");
+        // Two points, 1..8 terms, dimensions 1..6 (every fixed kernel and the general one).
+        for terms in 1..=8 {
+            for d in 1..=6 {
+                let ws: Vec<f64> = (0..2 * terms).map(|q| 1.0 / (q + 1) as f64).collect();
+                let coeffs: Vec<f64> = (0..terms * d).map(|q| q as f64 - 3.0).collect();
+                let mut row = vec![f64::NAN; 2 * d];
+                contract_row(&ws, terms, &coeffs, &mut row);
+                for b in 0..2 {
+                    for k in 0..d {
+                        let expect = (0..terms)
+                            .map(|j| ws[b * terms + j] * coeffs[j * d + k])
+                            .fold(None, |acc: Option<f64>, x| Some(acc.map_or(x, |a| a + x)));
+                        assert_eq!(Some(row[b * d + k]), expect, "terms {terms}, d = {d}");
+                    }
                 }
             }
         }

@@ -59,10 +59,7 @@ fn rational_patch(m: usize, n: usize) -> BezierPatch<Q> {
 
 /// The largest |coordinate| of the control net.
 fn net_size(p: &BezierPatch) -> f64 {
-    p.coordinates()
-        .iter()
-        .map(|x| x.amax())
-        .fold(0.0, f64::max)
+    p.coordinates().iter().map(|x| x.amax()).fold(0.0, f64::max)
 }
 
 /// Checks `out` (layout (nu, nv, d)) against `eval` at every point, within
@@ -138,7 +135,11 @@ fn patch_grid_is_exact_in_rationals() {
         for (a, u) in us.iter().enumerate() {
             for (b, v) in vs.iter().enumerate() {
                 let x = p.eval(u.clone(), v.clone());
-                assert_eq!(&out[(a * vs.len() + b) * 3..][..3], x.as_slice(), "({m},{n})");
+                assert_eq!(
+                    &out[(a * vs.len() + b) * 3..][..3],
+                    x.as_slice(),
+                    "({m},{n})"
+                );
             }
         }
     }

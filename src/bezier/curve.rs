@@ -341,16 +341,57 @@ impl<T: Scalar> BezierCurve<T> {
         let d = self.dim();
         let len = crate::grid::grid_len("Bézier curve points", &[us.len(), d])?;
         crate::grid::check_len("Bézier curve point buffer", len, out)?;
-        let terms = self.degree() + 1;
         // Points per block: their basis rows fit in a small scratch buffer.
         const BLOCK: usize = 256;
+        let terms = self.degree() + 1;
         let control = self.control.as_slice();
         let work = us.len().saturating_mul(terms * (terms + d));
+        // Low degrees in 2-D and 3-D: basis and sums with sizes fixed at compile time, the
+        // basis kept in registers (same arithmetic, and results, as the general path).
+        macro_rules! fixed {
+            ($l:literal, $d:literal) => {{
+                let c: [[T; $d]; $l] =
+                    std::array::from_fn(|i| std::array::from_fn(|k| control[i * $d + k].clone()));
+                crate::grid::for_each_row(
+                    out,
+                    BLOCK * $d,
+                    work,
+                    || (),
+                    |_, block, chunk| {
+                        let first = block * BLOCK;
+                        for (u, p) in us[first..].iter().zip(chunk.chunks_exact_mut($d)) {
+                            let mut w: [T; $l] = std::array::from_fn(|_| T::zero());
+                            crate::bernstein::recurrence(&self.local_parameter(u.clone()), &mut w);
+                            let mut acc: [T; $d] =
+                                std::array::from_fn(|k| w[0].clone() * c[0][k].clone());
+                            for i in 1..$l {
+                                for k in 0..$d {
+                                    acc[k] = acc[k].clone() + w[i].clone() * c[i][k].clone();
+                                }
+                            }
+                            for (o, a) in p.iter_mut().zip(acc) {
+                                *o = a;
+                            }
+                        }
+                    },
+                );
+                return Ok(());
+            }};
+        }
+        match (terms, d) {
+            (2, 2) => fixed!(2, 2),
+            (2, 3) => fixed!(2, 3),
+            (3, 2) => fixed!(3, 2),
+            (3, 3) => fixed!(3, 3),
+            (4, 2) => fixed!(4, 2),
+            (4, 3) => fixed!(4, 3),
+            _ => {}
+        }
         crate::grid::for_each_row(
             out,
             BLOCK * d,
             work,
-            || vec![T::zero(); BLOCK * terms],
+            || vec![T::zero(); BLOCK.min(us.len()) * terms],
             |basis, block, chunk| {
                 let first = block * BLOCK;
                 let count = chunk.len() / d;

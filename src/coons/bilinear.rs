@@ -162,9 +162,8 @@ impl<T: Scalar, C: Curve<T>> CoonsPatch<C, T> {
             {
                 let s = T::one() - u.clone();
                 for k in 0..d {
-                    ea[offset + k] = x[k].clone()
-                        - s.clone() * first[k].clone()
-                        - u.clone() * second[k].clone();
+                    ea[offset + k] =
+                        x[k].clone() - s.clone() * first[k].clone() - u.clone() * second[k].clone();
                 }
             }
         }
