@@ -331,7 +331,7 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
     /// formula is regrouped per row `u = us[a]`:
     ///
     /// ```text
-    /// g(u, v) = Σ_i L_i(u) g(u_i, v) + Σ_j L_j(v) r_j(u),   r_j(u) = g(u, v_j) − Σ_i L_i(u) g(u_i, v_j),
+    /// g(u, v) = Σ_j L_j(v) r_j(u) + Σ_i L_i(u) g(u_i, v),   r_j(u) = g(u, v_j) − Σ_i L_i(u) g(u_i, v_j),
     /// ```
     ///
     /// (the same polynomial as `g1 + g2 − g12`), so a point costs `(m + n + 2)·d`
@@ -397,13 +397,7 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
             |_, a, row| {
                 let la = &lu[a * mu..(a + 1) * mu];
                 let ra = &r[a * mv * d..(a + 1) * mv * d];
-                for ((p, lb), ub) in row
-                    .chunks_exact_mut(d)
-                    .zip(lv.chunks_exact(mv))
-                    .zip(at_u.chunks_exact(mu * d))
-                {
-                    crate::grid::weighted_sum2_into(la, ub, lb, ra, p);
-                }
+                crate::grid::blend_row(&lv, mv, ra, la, &at_u, row);
             },
         );
         Ok(())

@@ -189,21 +189,50 @@ fn contract_row_fixed<T: Scalar, const D: usize>(
     }
 }
 
-/// `out = Σ_i w1[i] · x1_i + Σ_j w2[j] · x2_j` for vectors `x1_i = x1[i·d ..]`,
-/// `x2_j = x2[j·d ..]` of length `d = out.len()`, summed in that order (`w1` ascending, then
-/// `w2` ascending); kernels with `d` fixed at compile time for `d ≤ 4`.
+/// One grid row of a blended surface: point `b` of `row` (length `d`) becomes
+///
+/// ```text
+/// Σ_j ws[b][j] · c_j  +  Σ_i w[i] · xs[b][i],
+/// ```
+///
+/// with `terms` weights per point `ws[b] = ws[b·terms ..]` on the row's coefficient vectors
+/// `c_j = coeffs[j·d ..]`, and the row's weights `w` (`parts = w.len()`) on the point's vectors
+/// `xs[b][i] = xs[(b·parts + i)·d ..]`. The sums run `j` ascending, then `i` ascending.
+/// Coons (`terms = parts = 2`) and Gordon (`terms = n + 1`, `parts = m + 1`) rows are of this
+/// form; common sizes get kernels with every size fixed at compile time.
 #[inline]
-pub(crate) fn weighted_sum2_into<T: Scalar>(w1: &[T], x1: &[T], w2: &[T], x2: &[T], out: &mut [T]) {
-    match out.len() {
-        1 => weighted_sum2_fixed::<T, 1>(w1, x1, w2, x2, out),
-        2 => weighted_sum2_fixed::<T, 2>(w1, x1, w2, x2, out),
-        3 => weighted_sum2_fixed::<T, 3>(w1, x1, w2, x2, out),
-        4 => weighted_sum2_fixed::<T, 4>(w1, x1, w2, x2, out),
-        d => {
-            weighted_sum_into(w1, x1, out);
-            for (wj, xj) in w2.iter().zip(x2.chunks_exact(d.max(1))) {
-                for (o, x) in out.iter_mut().zip(xj) {
-                    *o = o.clone() + wj.clone() * x.clone();
+pub(crate) fn blend_row<T: Scalar>(
+    ws: &[T],
+    terms: usize,
+    coeffs: &[T],
+    w: &[T],
+    xs: &[T],
+    row: &mut [T],
+) {
+    let d = coeffs.len() / terms.max(1);
+    macro_rules! fixed {
+        ($l1:literal, $l2:literal, $d:literal) => {
+            blend_row_const::<T, $l1, $l2, $d>(ws, coeffs, w, xs, row)
+        };
+    }
+    match (terms, w.len(), d) {
+        (2, 2, 2) => fixed!(2, 2, 2),
+        (2, 2, 3) => fixed!(2, 2, 3),
+        (3, 3, 3) => fixed!(3, 3, 3),
+        (4, 4, 3) => fixed!(4, 4, 3),
+        (5, 5, 3) => fixed!(5, 5, 3),
+        _ => {
+            let parts = w.len();
+            if d == 0 {
+                return;
+            }
+            for (b, p) in row.chunks_exact_mut(d).enumerate() {
+                weighted_sum_into(&ws[b * terms..(b + 1) * terms], coeffs, p);
+                let xb = &xs[b * parts * d..(b + 1) * parts * d];
+                for (wi, xi) in w.iter().zip(xb.chunks_exact(d)) {
+                    for (o, x) in p.iter_mut().zip(xi) {
+                        *o = o.clone() + wi.clone() * x.clone();
+                    }
                 }
             }
         }
@@ -211,25 +240,35 @@ pub(crate) fn weighted_sum2_into<T: Scalar>(w1: &[T], x1: &[T], w2: &[T], x2: &[
 }
 
 #[inline]
-fn weighted_sum2_fixed<T: Scalar, const D: usize>(
-    w1: &[T],
-    x1: &[T],
-    w2: &[T],
-    x2: &[T],
-    out: &mut [T],
+fn blend_row_const<T: Scalar, const L1: usize, const L2: usize, const D: usize>(
+    ws: &[T],
+    coeffs: &[T],
+    w: &[T],
+    xs: &[T],
+    row: &mut [T],
 ) {
-    let mut acc: [T; D] = match w1.first() {
-        Some(w0) => std::array::from_fn(|k| w0.clone() * x1[k].clone()),
-        None => std::array::from_fn(|_| T::zero()),
-    };
-    let rest1 = w1.iter().skip(1).zip(x1.chunks_exact(D).skip(1));
-    for (wj, xj) in rest1.chain(w2.iter().zip(x2.chunks_exact(D))) {
-        for k in 0..D {
-            acc[k] = acc[k].clone() + wj.clone() * xj[k].clone();
+    let c: [[T; D]; L1] =
+        std::array::from_fn(|j| std::array::from_fn(|k| coeffs[j * D + k].clone()));
+    let w: [T; L2] = std::array::from_fn(|i| w[i].clone());
+    for ((p, wb), xb) in row
+        .chunks_exact_mut(D)
+        .zip(ws.chunks_exact(L1))
+        .zip(xs.chunks_exact(L2 * D))
+    {
+        let mut acc: [T; D] = std::array::from_fn(|k| wb[0].clone() * c[0][k].clone());
+        for j in 1..L1 {
+            for k in 0..D {
+                acc[k] = acc[k].clone() + wb[j].clone() * c[j][k].clone();
+            }
         }
-    }
-    for (o, a) in out.iter_mut().zip(acc) {
-        *o = a;
+        for i in 0..L2 {
+            for k in 0..D {
+                acc[k] = acc[k].clone() + w[i].clone() * xb[i * D + k].clone();
+            }
+        }
+        for (o, a) in p.iter_mut().zip(acc) {
+            *o = a;
+        }
     }
 }
 
@@ -279,17 +318,28 @@ mod tests {
     }
 
     #[test]
-    fn two_sums_agree_for_every_dimension() {
-        for d in 1..=6 {
-            let (w1, w2) = ([2.0, -1.0, 0.5], [3.0, 0.25]);
-            let x1: Vec<f64> = (0..3 * d).map(|q| q as f64 + 1.0).collect();
-            let x2: Vec<f64> = (0..2 * d).map(|q| 7.0 - q as f64).collect();
-            let mut out = vec![f64::NAN; d];
-            weighted_sum2_into(&w1, &x1, &w2, &x2, &mut out);
-            for k in 0..d {
-                let expect = (0..3).map(|i| w1[i] * x1[i * d + k]).sum::<f64>()
-                    + (0..2).map(|j| w2[j] * x2[j * d + k]).sum::<f64>();
-                assert_eq!(out[k], expect, "d = {d}");
+    fn blended_rows_agree_for_every_size() {
+        // Three points; sizes covering every fixed kernel and the general one.
+        for (terms, parts) in [(2, 2), (3, 3), (4, 4), (5, 5), (2, 5), (6, 1), (1, 0)] {
+            for d in 1..=5 {
+                let ws: Vec<f64> = (0..3 * terms).map(|q| 1.0 / (q + 2) as f64).collect();
+                let coeffs: Vec<f64> = (0..terms * d).map(|q| q as f64 - 2.5).collect();
+                let w: Vec<f64> = (0..parts).map(|i| 0.5 - i as f64).collect();
+                let xs: Vec<f64> = (0..3 * parts * d).map(|q| (q % 7) as f64).collect();
+                let mut row = vec![f64::NAN; 3 * d];
+                blend_row(&ws, terms, &coeffs, &w, &xs, &mut row);
+                for b in 0..3 {
+                    for k in 0..d {
+                        let mut sum = ws[b * terms] * coeffs[k];
+                        for j in 1..terms {
+                            sum += ws[b * terms + j] * coeffs[j * d + k];
+                        }
+                        for i in 0..parts {
+                            sum += w[i] * xs[(b * parts + i) * d + k];
+                        }
+                        assert_eq!(row[b * d + k], sum, "({terms}, {parts}) d = {d}");
+                    }
+                }
             }
         }
     }

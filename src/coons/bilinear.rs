@@ -190,13 +190,7 @@ impl<T: Scalar, C: Curve<T>> CoonsPatch<C, T> {
                 let u = &us[a];
                 let f = [T::one() - u.clone(), u.clone()];
                 let ea = &e[a * 2 * d..(a + 1) * 2 * d];
-                for ((p, gb), db) in row
-                    .chunks_exact_mut(d)
-                    .zip(g.chunks_exact(2))
-                    .zip(dd.chunks_exact(2 * d))
-                {
-                    crate::grid::weighted_sum2_into(gb, ea, &f, db, p);
-                }
+                crate::grid::blend_row(&g, 2, ea, &f, &dd, row);
             },
         );
         Ok(())
