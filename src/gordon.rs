@@ -368,8 +368,12 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
         let (mu, mv) = (self.curves_at_u.len(), self.curves_at_v.len());
         let lu = crate::grid::rows_of(us, mu, |u, row| self.u_basis.fill_basis(u, row));
         let lv = crate::grid::rows_of(vs, mv, |v, row| self.v_basis.fill_basis(v, row));
-        // at_u[b] = [g(u_0, vs[b]), …, g(u_m, vs[b])]: (m+1)·d values per column b.
-        let at_u = Self::samples_by_point(&self.curves_at_u, vs, d)?;
+        // at_u = one grid row per curve: g(u_i, vs[b]) at at_u[(i·nv + b)·d ..].
+        let row_len = vs.len() * d;
+        let mut at_u = vec![T::zero(); mu * row_len];
+        for (curve, samples) in self.curves_at_u.iter().zip(at_u.chunks_exact_mut(row_len)) {
+            curve.eval_many_into(vs, samples)?;
+        }
         // at_v[a] = [g(us[a], v_0), …, g(us[a], v_n)]: (n+1)·d values per row a.
         let mut at_v = Self::samples_by_point(&self.curves_at_v, us, d)?;
         // Turn at_v[a] into r[a]: subtract Σ_i L_i(us[a]) g(u_i, v_j).

@@ -189,17 +189,18 @@ fn contract_row_fixed<T: Scalar, const D: usize>(
     }
 }
 
-/// One grid row of a blended surface: point `b` of `row` (length `d`) becomes
+/// One grid row of a blended surface: point `b` of `row` (`d` values each) becomes
 ///
 /// ```text
-/// Σ_j ws[b][j] · c_j  +  Σ_i w[i] · xs[b][i],
+/// Σ_j ws[b][j] · c_j  +  Σ_i w[i] · x_i[b],
 /// ```
 ///
 /// with `terms` weights per point `ws[b] = ws[b·terms ..]` on the row's coefficient vectors
-/// `c_j = coeffs[j·d ..]`, and the row's weights `w` (`parts = w.len()`) on the point's vectors
-/// `xs[b][i] = xs[(b·parts + i)·d ..]`. The sums run `j` ascending, then `i` ascending.
-/// Coons (`terms = parts = 2`) and Gordon (`terms = n + 1`, `parts = m + 1`) rows are of this
-/// form; common sizes get kernels with every size fixed at compile time.
+/// `c_j = coeffs[j·d ..]` ([`contract_row`]), then the row's weights `w` on whole rows of
+/// per-point vectors: `x_i = xs[i·row.len() ..][..row.len()]`, in the layout of `row`. The
+/// second part is a sequence of `axpy`s over contiguous memory, which vectorise. The sums run
+/// `j` ascending, then `i` ascending. Coons (`terms = 2`, `w = [1 − u, u]`) and Gordon
+/// (`terms = n + 1`, `w = L_i(u)`) rows are of this form.
 #[inline]
 pub(crate) fn blend_row<T: Scalar>(
     ws: &[T],
@@ -209,66 +210,42 @@ pub(crate) fn blend_row<T: Scalar>(
     xs: &[T],
     row: &mut [T],
 ) {
-    let d = coeffs.len() / terms.max(1);
-    macro_rules! fixed {
-        ($l1:literal, $l2:literal, $d:literal) => {
-            blend_row_const::<T, $l1, $l2, $d>(ws, coeffs, w, xs, row)
-        };
+    contract_row(ws, terms, coeffs, row);
+    if row.is_empty() {
+        return;
     }
-    match (terms, w.len(), d) {
-        (2, 2, 2) => fixed!(2, 2, 2),
-        (2, 2, 3) => fixed!(2, 2, 3),
-        (3, 3, 3) => fixed!(3, 3, 3),
-        (4, 4, 3) => fixed!(4, 4, 3),
-        (5, 5, 3) => fixed!(5, 5, 3),
+    // One pass over the row for all the parts (2 for Coons, up to 6 curves for Gordon).
+    let parts = w.len();
+    let whole = xs.len() >= parts * row.len();
+    match parts {
+        2 if whole => add_planes::<T, 2>(w, xs, row),
+        3 if whole => add_planes::<T, 3>(w, xs, row),
+        4 if whole => add_planes::<T, 4>(w, xs, row),
+        5 if whole => add_planes::<T, 5>(w, xs, row),
+        6 if whole => add_planes::<T, 6>(w, xs, row),
         _ => {
-            let parts = w.len();
-            if d == 0 {
-                return;
-            }
-            for (b, p) in row.chunks_exact_mut(d).enumerate() {
-                weighted_sum_into(&ws[b * terms..(b + 1) * terms], coeffs, p);
-                let xb = &xs[b * parts * d..(b + 1) * parts * d];
-                for (wi, xi) in w.iter().zip(xb.chunks_exact(d)) {
-                    for (o, x) in p.iter_mut().zip(xi) {
-                        *o = o.clone() + wi.clone() * x.clone();
-                    }
+            for (wi, xi) in w.iter().zip(xs.chunks_exact(row.len())) {
+                for (o, x) in row.iter_mut().zip(xi) {
+                    *o = o.clone() + wi.clone() * x.clone();
                 }
             }
         }
     }
 }
 
+/// `row[q] += Σ_i w[i] · xs[i·len + q]` (`i` ascending, `len = row.len()`), in one pass;
+/// `xs` must hold `P` whole rows.
 #[inline]
-fn blend_row_const<T: Scalar, const L1: usize, const L2: usize, const D: usize>(
-    ws: &[T],
-    coeffs: &[T],
-    w: &[T],
-    xs: &[T],
-    row: &mut [T],
-) {
-    let c: [[T; D]; L1] =
-        std::array::from_fn(|j| std::array::from_fn(|k| coeffs[j * D + k].clone()));
-    let w: [T; L2] = std::array::from_fn(|i| w[i].clone());
-    for ((p, wb), xb) in row
-        .chunks_exact_mut(D)
-        .zip(ws.chunks_exact(L1))
-        .zip(xs.chunks_exact(L2 * D))
-    {
-        let mut acc: [T; D] = std::array::from_fn(|k| wb[0].clone() * c[0][k].clone());
-        for j in 1..L1 {
-            for k in 0..D {
-                acc[k] = acc[k].clone() + wb[j].clone() * c[j][k].clone();
-            }
+fn add_planes<T: Scalar, const P: usize>(w: &[T], xs: &[T], row: &mut [T]) {
+    let len = row.len();
+    let w: [T; P] = std::array::from_fn(|i| w[i].clone());
+    let planes: [&[T]; P] = std::array::from_fn(|i| &xs[i * len..(i + 1) * len]);
+    for (q, o) in row.iter_mut().enumerate() {
+        let mut acc = o.clone();
+        for i in 0..P {
+            acc = acc + w[i].clone() * planes[i][q].clone();
         }
-        for i in 0..L2 {
-            for k in 0..D {
-                acc[k] = acc[k].clone() + w[i].clone() * xb[i * D + k].clone();
-            }
-        }
-        for (o, a) in p.iter_mut().zip(acc) {
-            *o = a;
-        }
+        *o = acc;
     }
 }
 
@@ -320,11 +297,21 @@ mod tests {
     #[test]
     fn blended_rows_agree_for_every_size() {
         // Three points; sizes covering every fixed kernel and the general one.
-        for (terms, parts) in [(2, 2), (3, 3), (4, 4), (5, 5), (2, 5), (6, 1), (1, 0)] {
+        for (terms, parts) in [
+            (2, 2),
+            (3, 3),
+            (4, 4),
+            (5, 5),
+            (2, 5),
+            (6, 1),
+            (1, 0),
+            (7, 2),
+        ] {
             for d in 1..=5 {
                 let ws: Vec<f64> = (0..3 * terms).map(|q| 1.0 / (q + 2) as f64).collect();
                 let coeffs: Vec<f64> = (0..terms * d).map(|q| q as f64 - 2.5).collect();
                 let w: Vec<f64> = (0..parts).map(|i| 0.5 - i as f64).collect();
+                // Planar: x_i[b] = xs[(i·3 + b)·d ..].
                 let xs: Vec<f64> = (0..3 * parts * d).map(|q| (q % 7) as f64).collect();
                 let mut row = vec![f64::NAN; 3 * d];
                 blend_row(&ws, terms, &coeffs, &w, &xs, &mut row);
@@ -335,7 +322,7 @@ mod tests {
                             sum += ws[b * terms + j] * coeffs[j * d + k];
                         }
                         for i in 0..parts {
-                            sum += w[i] * xs[(b * parts + i) * d + k];
+                            sum += w[i] * xs[(i * 3 + b) * d + k];
                         }
                         assert_eq!(row[b * d + k], sum, "({terms}, {parts}) d = {d}");
                     }

@@ -150,7 +150,7 @@ impl<T: Scalar, C: Curve<T>> CoonsPatch<C, T> {
         }
         let (c1, c2, d1, d2) = self.boundary.curves();
         let [p1, p2, p3, p4] = self.boundary.corners();
-        // e[a] = [e1(us[a]), e2(us[a])], 2d values per row.
+        // e[a] = [e1(us[a]), e2(us[a])], 2d values per row; g[b] = [1 − v, v].
         let mut e = vec![T::zero(); 2 * us.len() * d];
         let mut samples = vec![T::zero(); us.len() * d];
         for (curve, (first, second), offset) in [(c1, (p1, p2), 0), (c2, (p3, p4), d)] {
@@ -167,15 +167,12 @@ impl<T: Scalar, C: Curve<T>> CoonsPatch<C, T> {
                 }
             }
         }
-        // dd[b] = [d1(vs[b]), d2(vs[b])], 2d values per column; g[b] = [1 − v, v].
-        let mut dd = vec![T::zero(); 2 * vs.len() * d];
-        let mut samples = vec![T::zero(); vs.len() * d];
-        for (curve, offset) in [(d1, 0), (d2, d)] {
-            curve.eval_many_into(vs, &mut samples)?;
-            for (x, db) in samples.chunks_exact(d).zip(dd.chunks_exact_mut(2 * d)) {
-                db[offset..offset + d].clone_from_slice(x);
-            }
-        }
+        // dd = [d1(vs[0]), …, d1(vs[nv−1]), d2(vs[0]), …]: one grid row of each.
+        let row_len = vs.len() * d;
+        let mut dd = vec![T::zero(); 2 * row_len];
+        let (dd1, dd2) = dd.split_at_mut(row_len);
+        d1.eval_many_into(vs, dd1)?;
+        d2.eval_many_into(vs, dd2)?;
         let g = crate::grid::rows_of(vs, 2, |v, w| {
             w[0] = T::one() - v.clone();
             w[1] = v.clone();
