@@ -319,10 +319,12 @@ impl<T: Scalar> BezierCurve<T> {
     /// the storage of the `d × k` matrix of [`eval_many`](Self::eval_many); see
     /// [`crate::grid`]). Like [`eval`](Self::eval), any parameter is accepted.
     ///
-    /// Each point is the Bernstein sum `Σ_i B_i^n(t) b_i` with the basis from the triangular
-    /// recurrence of [`bernstein_all`](crate::bernstein::bernstein_all): `O(n² + n·d)` per
-    /// point, no allocation per point (the basis rows of a block of points share one scratch
-    /// buffer), and large batches are split over all cores. The result agrees with
+    /// Each point is the Bernstein sum `Σ_i B_i^n(t) b_i`: for degree ≤ 3 in 2-D or 3-D with the
+    /// basis as the products `C(n, i) t^i (1 − t)^(n−i)` and every size fixed at compile time,
+    /// otherwise with the triangular recurrence of
+    /// [`bernstein_all`](crate::bernstein::bernstein_all) (`O(n² + n·d)` per point, the basis
+    /// rows of a block of points sharing one scratch buffer). Nothing is allocated per point,
+    /// and large batches are split over all cores. The result agrees with
     /// [`eval`](Self::eval) to a few units of `ε · max |b_i|` in `f64` and exactly for
     /// rationals.
     ///
@@ -348,10 +350,16 @@ impl<T: Scalar> BezierCurve<T> {
         let work = us.len().saturating_mul(terms * (terms + d));
         // Low degrees in 2-D and 3-D: basis and sums with sizes fixed at compile time, the
         // basis kept in registers (same arithmetic, and results, as the general path).
+        let unit = {
+            let (a, b) = self.interval();
+            a.is_zero() && b.is_one()
+        };
         macro_rules! fixed {
             ($l:literal, $d:literal) => {{
                 let c: [[T; $d]; $l] =
                     std::array::from_fn(|i| std::array::from_fn(|k| control[i * $d + k].clone()));
+                let binomials: [T; $l] =
+                    std::array::from_fn(|i| crate::bernstein::binomial_scalar($l - 1, i));
                 crate::grid::for_each_row(
                     out,
                     BLOCK * $d,
@@ -360,8 +368,24 @@ impl<T: Scalar> BezierCurve<T> {
                     |_, block, chunk| {
                         let first = block * BLOCK;
                         for (u, p) in us[first..].iter().zip(chunk.chunks_exact_mut($d)) {
-                            let mut w: [T; $l] = std::array::from_fn(|_| T::zero());
-                            crate::bernstein::recurrence(&self.local_parameter(u.clone()), &mut w);
+                            // B_i^n(t) = C(n, i) t^i (1 − t)^(n−i), the powers built up by
+                            // products (positive factors on [0, 1]: a few ULPs; exact in
+                            // rationals), cheaper than the triangular recurrence.
+                            let t = if unit {
+                                u.clone()
+                            } else {
+                                self.local_parameter(u.clone())
+                            };
+                            let s = T::one() - t.clone();
+                            let mut tp: [T; $l] = std::array::from_fn(|_| T::one());
+                            let mut sp: [T; $l] = std::array::from_fn(|_| T::one());
+                            for i in 1..$l {
+                                tp[i] = tp[i - 1].clone() * t.clone();
+                                sp[$l - 1 - i] = sp[$l - i].clone() * s.clone();
+                            }
+                            let w: [T; $l] = std::array::from_fn(|i| {
+                                binomials[i].clone() * tp[i].clone() * sp[i].clone()
+                            });
                             let mut acc: [T; $d] =
                                 std::array::from_fn(|k| w[0].clone() * c[0][k].clone());
                             for i in 1..$l {
