@@ -11,6 +11,10 @@
 //! - the **Octave-compatible layer** [`octave`]: the thesis functions under their own names
 //!   (`de_casteljau`, `ploskev_b`, …) with the thesis array layouts, and Octave's text file
 //!   format.
+//!
+//! Whole grids are evaluated into caller-given buffers ([`Surface::eval_grid_into`],
+//! [`Curve::eval_many_into`], layouts in [`grid`]) with `O(m + n)` work per point, no allocation
+//! per point, and both cores for large grids; `docs/PERFORMANCE.md` has the measurements.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
