@@ -173,20 +173,62 @@ pub fn bernstein<T: Scalar>(i: usize, n: usize, t: T) -> T {
 /// assert_eq!(b[1], BigRational::from_ratio(4, 9)); // 2 · (1/3) · (2/3)
 /// ```
 pub fn bernstein_all<T: Scalar>(n: usize, t: T) -> Vec<T> {
+    let mut b = vec![T::zero(); n + 1];
+    bernstein_all_into(&t, &mut b);
+    b
+}
+
+/// [`bernstein_all`] into a caller-given slice: `out[i] = B_i^n(t)` with `n = out.len() − 1`,
+/// the same values bit for bit, without allocating (an empty `out` is left alone).
+///
+/// ```
+/// use cagd::bernstein::bernstein_all_into;
+/// let mut b = [0.0; 4];
+/// bernstein_all_into(&0.5, &mut b);
+/// assert_eq!(b, [0.125, 0.375, 0.375, 0.125]);
+/// ```
+pub fn bernstein_all_into<T: Scalar>(t: &T, out: &mut [T]) {
+    // Low degrees get the loop with its length known at compile time (fully unrolled); the
+    // arithmetic, and so every bit of the result, is the same.
+    match out.len() {
+        0 => {}
+        2 => recurrence_fixed::<T, 2>(t, out),
+        3 => recurrence_fixed::<T, 3>(t, out),
+        4 => recurrence_fixed::<T, 4>(t, out),
+        5 => recurrence_fixed::<T, 5>(t, out),
+        6 => recurrence_fixed::<T, 6>(t, out),
+        _ => recurrence(t, out),
+    }
+}
+
+#[inline]
+fn recurrence_fixed<T: Scalar, const L: usize>(t: &T, out: &mut [T]) {
+    if let Ok(fixed) = <&mut [T; L]>::try_from(&mut *out) {
+        recurrence(t, fixed);
+    } else {
+        recurrence(t, out);
+    }
+}
+
+/// Thesis Izrek 2.6 level by level, in place: `B_0^0 = 1`,
+/// `B_i^k = (1 − t) B_i^{k−1} + t B_{i−1}^{k−1}`.
+#[inline(always)]
+pub(crate) fn recurrence<T: Scalar>(t: &T, out: &mut [T]) {
+    let Some((first, _)) = out.split_first_mut() else {
+        return;
+    };
+    *first = T::one();
     let s = T::one() - t.clone();
-    let mut b = Vec::with_capacity(n + 1);
-    b.push(T::one());
-    for k in 1..=n {
-        // In place, left to right: `carry` holds t·B_{i−1}^{k−1} from the previous entry.
+    for k in 1..out.len() {
+        // Left to right: `carry` holds t·B_{i−1}^{k−1} from the previous entry.
         let mut carry = T::zero();
-        for bi in b.iter_mut().take(k) {
+        for bi in out[..k].iter_mut() {
             let old = std::mem::replace(bi, T::zero());
             *bi = carry + s.clone() * old.clone();
             carry = t.clone() * old;
         }
-        b.push(carry);
+        out[k] = carry;
     }
-    b
 }
 
 /// The `r`-th derivative of `B_i^n` at `t`.

@@ -227,20 +227,46 @@ impl<T: Scalar> Lagrange<T> {
     /// values can be off by `Λ·ε` relative to the largest one (about 1000 ULPs for six random
     /// nodes on `[−0.1, 1.1]`, see the Octave reference test `octave_lagrange_basis`).
     pub fn basis(&self, t: &T) -> Vec<T> {
+        let mut out = vec![T::zero(); self.nodes.len()];
+        self.fill_basis(t, &mut out);
+        out
+    }
+
+    /// [`basis`](Self::basis) into a caller-given slice of length `m + 1` (the same values bit
+    /// for bit, no allocation).
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] unless `out.len()` is the number of nodes.
+    ///
+    /// ```
+    /// use cagd::lagrange::Lagrange;
+    /// let l = Lagrange::new(vec![0.0, 0.5, 1.0])?;
+    /// let mut row = [0.0; 3];
+    /// l.basis_into(&0.25, &mut row)?;
+    /// assert_eq!(row, [0.375, 0.75, -0.125]);
+    /// assert!(l.basis_into(&0.25, &mut [0.0; 2]).is_err());
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn basis_into(&self, t: &T, out: &mut [T]) -> Result<()> {
+        crate::grid::check_len("Lagrange basis values", self.nodes.len(), out)?;
+        self.fill_basis(t, out);
+        Ok(())
+    }
+
+    /// The basis at `t` into `out` (of length `m + 1`).
+    pub(crate) fn fill_basis(&self, t: &T, out: &mut [T]) {
         if let Some(k) = self.nodes.iter().position(|x| x == t) {
-            let mut out = vec![T::zero(); self.nodes.len()];
+            out.iter_mut().for_each(|o| *o = T::zero());
             out[k] = T::one();
-            return out;
+            return;
         }
         let ell = self
             .nodes
             .iter()
             .fold(T::one(), |p, x| p * (t.clone() - x.clone()));
-        self.nodes
-            .iter()
-            .zip(self.weights.iter())
-            .map(|(x, w)| ell.clone() * (w.clone() / (t.clone() - x.clone())))
-            .collect()
+        for ((o, x), w) in out.iter_mut().zip(&self.nodes).zip(&self.weights) {
+            *o = ell.clone() * (w.clone() / (t.clone() - x.clone()));
+        }
     }
 
     /// `Σ_i y_i L_i(t)` for values `y_i` (one per column of `values`, d × (m+1)).

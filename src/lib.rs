@@ -19,6 +19,10 @@
 //! Around them: [`plot`] (pictures as the thesis's Octave code draws them), [`mesh`]
 //! (triangulated surfaces as STL, OBJ, PLY) and [`cli`] (the command line as a library:
 //! inputs, output formats, atomic files, one-line errors).
+//!
+//! Whole grids are evaluated into caller-given buffers ([`Surface::eval_grid_into`],
+//! [`Curve::eval_many_into`], layouts in [`grid`]) with `O(m + n)` work per point, no allocation
+//! per point, and both cores for large grids; `docs/PERFORMANCE.md` has the measurements.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -31,6 +35,7 @@ pub mod conversion;
 pub mod coons;
 pub mod error;
 pub mod gordon;
+pub mod grid;
 pub mod hermite;
 pub mod interpolation;
 pub mod lagrange;

@@ -25,6 +25,46 @@ pub trait Curve<T: Scalar = f64> {
         let _ = t;
         None
     }
+
+    /// The points at all parameters `ts`, written into `out` one after the other:
+    /// `out[p·d + c]` is coordinate `c` of `c(ts[p])` (`ts.len() × d`, row-major; see
+    /// [`crate::grid`]). Like [`eval`](Self::eval), any parameter is accepted.
+    ///
+    /// The default calls [`eval`](Self::eval) once per parameter; curves with a faster batch
+    /// evaluation (Bézier curves: basis rows and no allocation per point) override it.
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] unless `out.len() == ts.len() · d`.
+    ///
+    /// ```
+    /// use cagd::{Curve, FnCurve};
+    /// use nalgebra::dvector;
+    /// let c = FnCurve::new(2, |t: f64| dvector![t, 2.0 * t]);
+    /// let mut out = [0.0; 4];
+    /// c.eval_many_into(&[0.5, 1.0], &mut out)?;
+    /// assert_eq!(out, [0.5, 1.0, 1.0, 2.0]);
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
+        let d = self.dim();
+        let len = crate::grid::grid_len("curve points", &[ts.len(), d])?;
+        crate::grid::check_len("curve point buffer", len, out)?;
+        if d == 0 {
+            return Ok(());
+        }
+        for (t, p) in ts.iter().zip(out.chunks_exact_mut(d)) {
+            let x = self.eval(t.clone());
+            if x.len() != d {
+                return Err(Error::ShapeMismatch {
+                    what: "curve point",
+                    expected: format!("{d} coordinates"),
+                    found: format!("{} coordinates", x.len()),
+                });
+            }
+            p.clone_from_slice(x.as_slice());
+        }
+        Ok(())
+    }
 }
 
 /// A parametric surface `(u, v) ↦ x(u, v) ∈ ℝ^d`, usually over `[0, 1]²`.
@@ -51,6 +91,41 @@ pub trait Surface<T: Scalar = f64> {
         }
         grid
     }
+
+    /// The surface on the grid `us × vs` written into `out`, row by row:
+    /// `out[(a·nv + b)·d + c]` is coordinate `c` of `x(us[a], vs[b])` (`(nu, nv, d)`
+    /// row-major, the memory layout of [`eval_grid`](Self::eval_grid); see [`crate::grid`]).
+    /// Like [`eval`](Self::eval), any parameter is accepted.
+    ///
+    /// The default calls [`eval`](Self::eval) once per point; Bézier, Coons and Gordon
+    /// surfaces override it with grid algorithms that allocate nothing per point.
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · vs.len() · d`.
+    fn eval_grid_into(&self, us: &[T], vs: &[T], out: &mut [T]) -> Result<()> {
+        let d = self.dim();
+        let len = crate::grid::grid_len("surface grid", &[us.len(), vs.len(), d])?;
+        crate::grid::check_len("surface grid buffer", len, out)?;
+        if d == 0 {
+            return Ok(());
+        }
+        let mut points = out.chunks_exact_mut(d);
+        for u in us {
+            for v in vs {
+                let x = self.eval(u.clone(), v.clone());
+                let p = points.next().expect("buffer length checked above");
+                if x.len() != d {
+                    return Err(Error::ShapeMismatch {
+                        what: "surface point",
+                        expected: format!("{d} coordinates"),
+                        found: format!("{} coordinates", x.len()),
+                    });
+                }
+                p.clone_from_slice(x.as_slice());
+            }
+        }
+        Ok(())
+    }
 }
 
 impl<T: Scalar, C: Curve<T> + ?Sized> Curve<T> for &C {
@@ -63,6 +138,9 @@ impl<T: Scalar, C: Curve<T> + ?Sized> Curve<T> for &C {
     fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
         (**self).eval_derivative(t)
     }
+    fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
+        (**self).eval_many_into(ts, out)
+    }
 }
 
 impl<T: Scalar, C: Curve<T> + ?Sized> Curve<T> for Box<C> {
@@ -74,6 +152,9 @@ impl<T: Scalar, C: Curve<T> + ?Sized> Curve<T> for Box<C> {
     }
     fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
         (**self).eval_derivative(t)
+    }
+    fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
+        (**self).eval_many_into(ts, out)
     }
 }
 

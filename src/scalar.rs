@@ -8,6 +8,7 @@
 use std::fmt::{Debug, Display};
 use std::ops::Neg;
 
+use nalgebra::DMatrix;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{FromPrimitive, Num, Signed, ToPrimitive};
@@ -17,8 +18,20 @@ use num_traits::{FromPrimitive, Num, Signed, ToPrimitive};
 /// `from_f64` is exact for rationals (every finite double is a dyadic rational), so data typed
 /// as decimals can be lifted into exact arithmetic; use [`Scalar::from_ratio`] for values such
 /// as 1/3 that no double holds.
+///
+/// `Send + Sync` so that large grids can be evaluated on several threads.
 pub trait Scalar:
-    Clone + PartialEq + PartialOrd + Debug + Display + Num + Neg<Output = Self> + Signed + 'static
+    Clone
+    + PartialEq
+    + PartialOrd
+    + Debug
+    + Display
+    + Num
+    + Neg<Output = Self>
+    + Signed
+    + Send
+    + Sync
+    + 'static
 {
     /// The exact value of a finite double; `None` for NaN and ±∞.
     fn from_f64(x: f64) -> Option<Self>;
@@ -31,6 +44,25 @@ pub trait Scalar:
     /// `n` as a scalar.
     fn from_usize(n: usize) -> Self {
         Self::from_ratio(n as i64, 1)
+    }
+    /// The matrix product `a · b` (`a.ncols()` must equal `b.nrows()`). The default is the
+    /// plain triple loop `Σ_k a[i,k] b[k,j]`, `k` ascending, exact for rationals; `f64`
+    /// overrides it with nalgebra's blocked product.
+    ///
+    /// ```
+    /// use cagd::Scalar;
+    /// use nalgebra::DMatrix;
+    /// let a = DMatrix::from_row_slice(1, 2, &[1.0, 2.0]);
+    /// let b = DMatrix::from_row_slice(2, 1, &[3.0, 4.0]);
+    /// assert_eq!(f64::mat_mul(&a, &b)[(0, 0)], 11.0);
+    /// ```
+    fn mat_mul(a: &DMatrix<Self>, b: &DMatrix<Self>) -> DMatrix<Self> {
+        let (rows, inner, cols) = (a.nrows(), a.ncols(), b.ncols());
+        DMatrix::from_fn(rows, cols, |i, j| {
+            (0..inner).fold(Self::zero(), |acc, k| {
+                acc + a[(i, k)].clone() * b[(k, j)].clone()
+            })
+        })
     }
 }
 
@@ -54,6 +86,9 @@ impl Scalar for f64 {
     #[inline]
     fn from_usize(n: usize) -> Self {
         n as f64
+    }
+    fn mat_mul(a: &DMatrix<Self>, b: &DMatrix<Self>) -> DMatrix<Self> {
+        a * b
     }
 }
 

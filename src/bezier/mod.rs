@@ -34,8 +34,6 @@ pub use matrix_form::{bezier_to_monomial_matrix, cubic_bezier_matrix, MatrixForm
 pub use patch::{BezierPatch, Edge};
 pub use scheme::{DeCasteljauScheme, PatchScheme, PatchStep};
 
-use std::any::Any;
-
 use nalgebra::DMatrix;
 
 use crate::error::{check_finite, Error, Result};
@@ -58,25 +56,10 @@ pub(crate) fn check_param<T: Scalar>(what: &'static str, t: &T) -> Result<()> {
     check_finite(what, std::iter::once(t))
 }
 
-/// The matrix product `a · b`. For `f64` this is nalgebra's product (a blocked GEMM); for other
-/// scalars a plain triple loop in the order `Σ_k a[i,k] b[k,j]`, `k` ascending.
+/// The matrix product `a · b` ([`Scalar::mat_mul`]: nalgebra's blocked product for `f64`, the
+/// plain triple loop `Σ_k a[i,k] b[k,j]`, `k` ascending, for other scalars).
 pub(crate) fn mat_mul<T: Scalar>(a: &DMatrix<T>, b: &DMatrix<T>) -> DMatrix<T> {
-    let (a_any, b_any): (&dyn Any, &dyn Any) = (a, b);
-    if let (Some(a64), Some(b64)) = (
-        a_any.downcast_ref::<DMatrix<f64>>(),
-        b_any.downcast_ref::<DMatrix<f64>>(),
-    ) {
-        let product: Box<dyn Any> = Box::new(a64 * b64);
-        if let Ok(p) = product.downcast::<DMatrix<T>>() {
-            return *p;
-        }
-    }
-    let (rows, inner, cols) = (a.nrows(), a.ncols(), b.ncols());
-    DMatrix::from_fn(rows, cols, |i, j| {
-        (0..inner).fold(T::zero(), |acc, k| {
-            acc + a[(i, k)].clone() * b[(k, j)].clone()
-        })
-    })
+    T::mat_mul(a, b)
 }
 
 /// Formats one point as `(x, y, z)`, honouring a precision given to the formatter.

@@ -1,0 +1,254 @@
+//! Fixtures shared by the cagd benchmarks (`benches/`) and the timing binary used by
+//! `compare_octave.sh`: the test geometry (the same numbers the Octave side builds), a
+//! hand-specialised `f64` kernel to compare the generic code against, and the accuracy study
+//! of de Casteljau vs. the monomial (matrix) form.
+//!
+//! The geometry is defined by closed formulas so that `compare_octave.sh` can build exactly
+//! the same control points in Octave:
+//! - patch of degree `(m, n)`: `b_{i,j} = (i/m, j/n, ((7i + 3j) mod 5)/4 − 1/2)` (with `i/0 = 0`);
+//! - cubic curve: control points `(0,0,0), (1,2,1), (3,−1,2), (4,1,0)`.
+
+use cagd::bernstein::bernstein_all;
+use cagd::bezier::{BezierCurve, BezierPatch, Edge};
+use cagd::coons::CoonsPatch;
+use cagd::gordon::GordonSurface;
+use cagd::Scalar;
+use nalgebra::DMatrix;
+use num_rational::BigRational;
+
+/// The patch of degree `(m, n)` of the module docs (3-D).
+pub fn patch(m: usize, n: usize) -> BezierPatch {
+    let frac = |i: usize, k: usize| if k == 0 { 0.0 } else { i as f64 / k as f64 };
+    let coords = vec![
+        DMatrix::from_fn(m + 1, n + 1, |i, _| frac(i, m)),
+        DMatrix::from_fn(m + 1, n + 1, |_, j| frac(j, n)),
+        DMatrix::from_fn(m + 1, n + 1, |i, j| {
+            ((7 * i + 3 * j) % 5) as f64 / 4.0 - 0.5
+        }),
+    ];
+    BezierPatch::new(coords).expect("valid net")
+}
+
+/// The cubic 3-D curve of the module docs.
+pub fn cubic_curve() -> BezierCurve {
+    BezierCurve::from_points(&[
+        [0.0, 0.0, 0.0],
+        [1.0, 2.0, 1.0],
+        [3.0, -1.0, 2.0],
+        [4.0, 1.0, 0.0],
+    ])
+    .expect("valid control points")
+}
+
+/// The Bézier curve of degree `n` through `n + 1` control points on a 3-D spiral.
+pub fn curve_of_degree(n: usize) -> BezierCurve {
+    let control = DMatrix::from_fn(3, n + 1, |k, i| {
+        let a = i as f64 * 0.7;
+        [a.cos(), a.sin(), i as f64 / (n.max(1)) as f64][k]
+    });
+    BezierCurve::new(control).expect("valid control points")
+}
+
+/// The bilinear Coons patch of the four boundary curves of `p` (Bézier curves).
+pub fn coons_of(p: &BezierPatch) -> CoonsPatch<BezierCurve> {
+    CoonsPatch::new(
+        p.boundary(Edge::V0),
+        p.boundary(Edge::V1),
+        p.boundary(Edge::U0),
+        p.boundary(Edge::U1),
+    )
+    .expect("the boundary of a patch is compatible")
+}
+
+/// The curve `v ↦ x(u0, v)` of a patch as a Bézier curve.
+pub fn curve_at_u(p: &BezierPatch, u0: f64) -> BezierCurve {
+    let (m, n) = p.degree();
+    let w = bernstein_all(m, u0);
+    BezierCurve::new(DMatrix::from_fn(p.dim(), n + 1, |k, j| {
+        (0..=m).map(|i| w[i] * p.coordinates()[k][(i, j)]).sum()
+    }))
+    .expect("valid control points")
+}
+
+/// The curve `u ↦ x(u, v0)` of a patch as a Bézier curve.
+pub fn curve_at_v(p: &BezierPatch, v0: f64) -> BezierCurve {
+    let (m, n) = p.degree();
+    let w = bernstein_all(n, v0);
+    BezierCurve::new(DMatrix::from_fn(p.dim(), m + 1, |k, i| {
+        (0..=n).map(|j| w[j] * p.coordinates()[k][(i, j)]).sum()
+    }))
+    .expect("valid control points")
+}
+
+/// The nodes `0, 1/4, 1/2, 3/4, 1` of the Gordon network.
+pub fn gordon_nodes() -> Vec<f64> {
+    (0..5).map(|i| i as f64 / 4.0).collect()
+}
+
+/// The Gordon surface of the 5 × 5 network of isoparametric curves of `p` (cubic Bézier
+/// curves for a bicubic `p`) at [`gordon_nodes`].
+pub fn gordon_of(p: &BezierPatch) -> GordonSurface<BezierCurve> {
+    let nodes = gordon_nodes();
+    GordonSurface::new(
+        nodes.clone(),
+        nodes.clone(),
+        nodes.iter().map(|&u| curve_at_u(p, u)).collect(),
+        nodes.iter().map(|&v| curve_at_v(p, v)).collect(),
+    )
+    .expect("the isoparametric curves of a patch form a compatible network")
+}
+
+/// `f(u, v)` at every point of `us × vs` written into `out` ((nu, nv, 3) row-major), one
+/// point at a time: the per-point baseline.
+pub fn per_point_grid(
+    us: &[f64],
+    vs: &[f64],
+    out: &mut [f64],
+    mut f: impl FnMut(f64, f64) -> [f64; 3],
+) {
+    let mut points = out.chunks_exact_mut(3);
+    for &u in us {
+        for &v in vs {
+            if let Some(p) = points.next() {
+                p.copy_from_slice(&f(u, v));
+            }
+        }
+    }
+}
+
+/// The cubic Bernstein basis at `t`, written out.
+#[inline(always)]
+fn cubic_basis(t: f64) -> [f64; 4] {
+    let s = 1.0 - t;
+    [s * s * s, 3.0 * t * s * s, 3.0 * t * t * s, t * t * t]
+}
+
+/// A hand-specialised bicubic grid kernel in plain `f64`: fixed-size arrays, the same
+/// algorithm as `BezierPatch::eval_grid_into` (u-contraction per row, then 4 terms per point),
+/// the same rayon split over rows. `net[i][j]` is `b_{i,j}`; `out` is (nu, nv, 3) row-major.
+pub fn hand_bicubic_grid(net: &[[[f64; 3]; 4]; 4], us: &[f64], vs: &[f64], out: &mut [f64]) {
+    use rayon::prelude::*;
+    let bv: Vec<[f64; 4]> = vs.iter().map(|&v| cubic_basis(v)).collect();
+    let row_len = vs.len() * 3;
+    out.par_chunks_mut(row_len)
+        .zip(us.par_iter())
+        .with_min_len(16)
+        .for_each(|(row, &u)| {
+            let wu = cubic_basis(u);
+            let mut c = [[0.0; 3]; 4];
+            for (j, cj) in c.iter_mut().enumerate() {
+                for (k, x) in cj.iter_mut().enumerate() {
+                    *x = wu[0] * net[0][j][k]
+                        + wu[1] * net[1][j][k]
+                        + wu[2] * net[2][j][k]
+                        + wu[3] * net[3][j][k];
+                }
+            }
+            for (p, w) in row.chunks_exact_mut(3).zip(&bv) {
+                for k in 0..3 {
+                    p[k] = w[0] * c[0][k] + w[1] * c[1][k] + w[2] * c[2][k] + w[3] * c[3][k];
+                }
+            }
+        });
+}
+
+/// A hand-specialised cubic 3-D curve kernel in plain `f64` (`ctrl[i]` = `b_i`, `out` is
+/// (k, 3) row-major), split over threads like the library.
+pub fn hand_cubic_curve(ctrl: &[[f64; 3]; 4], ts: &[f64], out: &mut [f64]) {
+    use rayon::prelude::*;
+    out.par_chunks_mut(3 * 4096)
+        .zip(ts.par_chunks(4096))
+        .for_each(|(chunk, ts)| {
+            for (p, &t) in chunk.chunks_exact_mut(3).zip(ts) {
+                let w = cubic_basis(t);
+                for k in 0..3 {
+                    p[k] = w[0] * ctrl[0][k]
+                        + w[1] * ctrl[1][k]
+                        + w[2] * ctrl[2][k]
+                        + w[3] * ctrl[3][k];
+                }
+            }
+        });
+}
+
+/// The control net of a bicubic patch as fixed-size arrays, `net[i][j] = b_{i,j}`.
+pub fn bicubic_net(p: &BezierPatch) -> [[[f64; 3]; 4]; 4] {
+    std::array::from_fn(|i| {
+        std::array::from_fn(|j| std::array::from_fn(|k| p.coordinates()[k][(i, j)]))
+    })
+}
+
+/// The control points of a cubic curve as fixed-size arrays.
+pub fn cubic_control(c: &BezierCurve) -> [[f64; 3]; 4] {
+    std::array::from_fn(|i| std::array::from_fn(|k| c.control()[(k, i)]))
+}
+
+/// One line of the accuracy study: the largest error of each evaluation method over random
+/// curves and parameters, against exact rational arithmetic, relative to the largest
+/// control coordinate (which is 1).
+#[derive(Debug, Clone, Copy)]
+pub struct AccuracyRow {
+    /// The degree.
+    pub degree: usize,
+    /// De Casteljau in `f64` ([`BezierCurve::eval`]).
+    pub de_casteljau: f64,
+    /// The Bernstein sum of the grid path ([`BezierCurve::eval_many_into`]).
+    pub basis_rows: f64,
+    /// The monomial (matrix) form in `f64` ([`BezierCurve::matrix_form`]).
+    pub monomial: f64,
+}
+
+/// Max errors of de Casteljau, the basis-row path and the monomial form at each degree:
+/// `curves` random curves (1-D, control values uniform in `[−1, 1]`, one of them set to ±1),
+/// `params` parameters in `[0, 1]` each (including 0 and 1), the exact value from de Casteljau
+/// in `BigRational` at the same double parameter.
+pub fn accuracy_study(degrees: &[usize], curves: usize, params: usize) -> Vec<AccuracyRow> {
+    let mut state = 0x2545_f491_4f6c_dd1du64;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let lift = |x: f64| <BigRational as Scalar>::from_f64(x).expect("finite");
+    degrees
+        .iter()
+        .map(|&n| {
+            let mut row = AccuracyRow {
+                degree: n,
+                de_casteljau: 0.0,
+                basis_rows: 0.0,
+                monomial: 0.0,
+            };
+            for c in 0..curves {
+                let mut values: Vec<f64> = (0..=n).map(|_| 2.0 * next() - 1.0).collect();
+                values[c % (n + 1)] = if c % 2 == 0 { 1.0 } else { -1.0 };
+                let curve =
+                    BezierCurve::new(DMatrix::from_row_slice(1, n + 1, &values)).expect("valid");
+                let exact = BezierCurve::new(DMatrix::from_row_slice(
+                    1,
+                    n + 1,
+                    &values.iter().map(|&x| lift(x)).collect::<Vec<_>>(),
+                ))
+                .expect("valid");
+                let form = curve.matrix_form();
+                let ts: Vec<f64> = (0..params)
+                    .map(|k| match k {
+                        0 => 0.0,
+                        1 => 1.0,
+                        _ => next(),
+                    })
+                    .collect();
+                let mut batch = vec![0.0; ts.len()];
+                curve.eval_many_into(&ts, &mut batch).expect("sizes match");
+                for (&t, &b) in ts.iter().zip(&batch) {
+                    let truth = exact.eval(lift(t))[0].to_f64();
+                    row.de_casteljau = row.de_casteljau.max((curve.eval(t)[0] - truth).abs());
+                    row.basis_rows = row.basis_rows.max((b - truth).abs());
+                    row.monomial = row.monomial.max((form.eval(t)[0] - truth).abs());
+                }
+            }
+            row
+        })
+        .collect()
+}
