@@ -375,6 +375,19 @@ pub(crate) fn blend<T: Scalar>(x: &DVector<T>, a: T, y: &DVector<T>, b: T) -> DV
     })
 }
 
+/// The point of a curve at `t` through the infallible [`Curve`] interface, shared by B-spline
+/// and NURBS curves: `t` is clamped to the domain `[lo, hi]`; the only parameter `try_eval` can
+/// then refuse is NaN, which gives a point of NaNs (NaN in, NaN out, as `f64` arithmetic does).
+pub(crate) fn eval_clamped<T: Scalar>(
+    dim: usize,
+    (lo, hi): (T, T),
+    t: T,
+    try_eval: impl FnOnce(T) -> Result<DVector<T>>,
+) -> DVector<T> {
+    let u = clamp(t, &lo, &hi);
+    try_eval(u.clone()).unwrap_or_else(|_| DVector::from_element(dim, u))
+}
+
 /// Clamps `u` to `[lo, hi]` (NaN stays NaN).
 pub(crate) fn clamp<T: Scalar>(u: T, lo: &T, hi: &T) -> T {
     if &u < lo {
@@ -392,10 +405,7 @@ impl<T: Scalar> Curve<T> for BSplineCurve<T> {
     }
 
     fn eval(&self, t: T) -> DVector<T> {
-        let (lo, hi) = self.domain();
-        let u = clamp(t, &lo, &hi);
-        self.try_eval(u.clone())
-            .unwrap_or_else(|_| DVector::from_element(self.dim(), u))
+        eval_clamped(self.dim(), self.domain(), t, |u| self.try_eval(u))
     }
 
     fn eval_derivative(&self, t: T) -> Option<DVector<T>> {

@@ -18,4 +18,4 @@ pub use curve::BSplineCurve;
 pub use knots::KnotVector;
 pub use surface::BSplineSurface;
 
-pub(crate) use curve::clamp;
+pub(crate) use curve::{clamp, eval_clamped};

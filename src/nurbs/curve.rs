@@ -3,7 +3,7 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::{check_weights, homogenize};
-use crate::bspline::{clamp, BSplineCurve};
+use crate::bspline::{clamp, eval_clamped, BSplineCurve};
 use crate::error::{Error, Result};
 use crate::param::Curve;
 use crate::scalar::Scalar;
@@ -284,10 +284,7 @@ impl<T: Scalar> Curve<T> for NurbsCurve<T> {
     }
 
     fn eval(&self, t: T) -> DVector<T> {
-        let (lo, hi) = self.domain();
-        let u = clamp(t, &lo, &hi);
-        self.try_eval(u.clone())
-            .unwrap_or_else(|_| DVector::from_element(self.dim(), u))
+        eval_clamped(self.dim(), self.domain(), t, |u| self.try_eval(u))
     }
 
     fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
