@@ -212,6 +212,17 @@ impl NurbsCurve<f64> {
             });
         }
         use std::f64::consts::PI;
+        // octave-nurbs' nrbcirc splits at most a full turn into quarter arcs; beyond a full turn
+        // its middle weights cos(sweep/2n) turn negative. An arc is at most one turn: refuse more.
+        if (end - start).abs() > 2.0 * PI {
+            return Err(Error::InvalidArgument {
+                what,
+                message: format!(
+                    "expected end − start within [−2π, 2π] (at most one full turn), got {} − {}",
+                    end, start
+                ),
+            });
+        }
         let mut sweep = end - start;
         if sweep < 0.0 {
             sweep += 2.0 * PI;
