@@ -128,7 +128,10 @@ fn zero_or_negative_weights() {
     // More than one full turn: nrbcirc's weights would turn negative (found by proptest).
     assert!(matches!(
         NurbsCurve::arc(0.1, &[0.0, 0.0], -6.079064392945602, 6.8378250569240775),
-        Err(Error::InvalidArgument { what: "circular arc", .. })
+        Err(Error::InvalidArgument {
+            what: "circular arc",
+            ..
+        })
     ));
     assert!(NurbsCurve::arc(1.0, &[0.0, 0.0], 1.0, 1.0 + 2.0 * std::f64::consts::PI).is_ok());
 }
