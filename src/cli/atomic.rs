@@ -60,6 +60,7 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
 /// stages every file before renaming any.
 #[derive(Debug, Default)]
 pub struct PendingWrites {
+    dirs: Vec<(String, PathBuf)>,
     files: Vec<(String, PathBuf, Vec<u8>)>,
 }
 
@@ -74,14 +75,41 @@ impl PendingWrites {
         self.files.push((argument.into(), path.into(), bytes));
     }
 
+    /// Adds a folder to create (with its parents) before the files are staged.
+    pub fn create_dir(&mut self, argument: impl Into<String>, path: impl Into<PathBuf>) {
+        self.dirs.push((argument.into(), path.into()));
+    }
+
     /// Whether no file was added.
     pub fn is_empty(&self) -> bool {
         self.files.is_empty()
     }
 
+    /// The paths of the files to be written, in the order added.
+    pub fn paths(&self) -> impl Iterator<Item = &Path> {
+        self.files.iter().map(|(_, p, _)| p.as_path())
+    }
+
+    /// The contents staged for `path`, if a file was added there.
+    pub fn contents(&self, path: &Path) -> Option<&[u8]> {
+        self.files
+            .iter()
+            .find(|(_, p, _)| p == path)
+            .map(|(_, _, b)| b.as_slice())
+    }
+
     /// Writes every file. On an error while staging, no file is written; the error names the
     /// argument and the path.
     pub fn commit(self) -> Result<(), super::CliError> {
+        for (argument, dir) in &self.dirs {
+            std::fs::create_dir_all(dir).map_err(|e| {
+                super::CliError::io(
+                    argument.as_str(),
+                    &e,
+                    "a folder that can be created and written",
+                )
+            })?;
+        }
         let mut staged = Vec::with_capacity(self.files.len());
         for (argument, path, bytes) in &self.files {
             let tmp = stage(path, bytes).map_err(|e| write_error(argument, path, &e))?;

@@ -4,19 +4,19 @@ use clap::{Args, ValueEnum};
 use nalgebra::{DMatrix, DVector};
 use ndarray::Array3;
 
-use cagd::cli::args::{
+use crate::cli::args::{
     CurveParamArgs, MeshArgs, OutputArgs, PlotArgs, RowsArgs, ScriptArgs, StepsArgs,
     SurfaceParamArgs,
 };
-use cagd::cli::{load_net, load_params, CliError, PendingWrites, Report, Value};
-use cagd::coons::{
+use crate::cli::{load_net, load_params, CliError, PendingWrites, Report, Value};
+use crate::coons::{
     discrete_coons, solve_mask, BicubicCoonsPatch, CoonsBoundary, CrossDerivatives, Mask, Twist,
 };
-use cagd::lagrange::Lagrange;
-use cagd::octave::literal::{Env, LiteralScalar};
-use cagd::octave::script::Script;
-use cagd::plot::{Colour, Figure};
-use cagd::{CoonsPatch, Curve, GordonSurface, Surface, Tolerance};
+use crate::lagrange::Lagrange;
+use crate::octave::literal::{Env, LiteralScalar};
+use crate::octave::script::Script;
+use crate::plot::{Colour, Figure};
+use crate::{CoonsPatch, Curve, GordonSurface, Surface, Tolerance};
 
 use super::bezier::point_mode;
 use super::common::*;
@@ -645,7 +645,7 @@ pub fn gordon<T: LiteralScalar>(cmd: &GordonCommand) -> Result<Outcome, CliError
     }
     .map_err(|e| {
         let form = match e {
-            cagd::Error::UnsortedNodes { .. } | cagd::Error::DuplicateNodes { .. } => form_nodes,
+            crate::Error::UnsortedNodes { .. } | crate::Error::DuplicateNodes { .. } => form_nodes,
             _ => expected,
         };
         CliError::library("--u-curve/--v-curve", e, form)

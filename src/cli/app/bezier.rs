@@ -3,14 +3,14 @@
 use clap::Args;
 use nalgebra::DMatrix;
 
-use cagd::bezier::{BezierCurve, BezierPatch};
-use cagd::cli::args::{
+use crate::bezier::{BezierCurve, BezierPatch};
+use crate::cli::args::{
     CurveParamArgs, MeshArgs, OutputArgs, PlotArgs, RowsArgs, ScriptArgs, StepsArgs,
     SurfaceParamArgs,
 };
-use cagd::cli::{load_net, CliError, PendingWrites, Report, Value};
-use cagd::octave::literal::{Env, LiteralScalar};
-use cagd::plot::{Colour, Figure};
+use crate::cli::{load_net, CliError, PendingWrites, Report, Value};
+use crate::octave::literal::{Env, LiteralScalar};
+use crate::plot::{Colour, Figure};
 
 use super::common::*;
 use super::{emit, prepare_script, Outcome};
@@ -106,7 +106,7 @@ pub struct BezierPatchCommand {
 pub fn point_mode(params: &SurfaceParamArgs) -> bool {
     let single = |s: &Option<String>| {
         s.as_ref()
-            .is_some_and(|t| cagd::cli::load_params::<f64>("", t).is_ok_and(|v| v.len() == 1))
+            .is_some_and(|t| crate::cli::load_params::<f64>("", t).is_ok_and(|v| v.len() == 1))
     };
     params.n.is_none() && single(&params.u) && single(&params.v)
 }
@@ -204,7 +204,7 @@ pub fn bernstein<T: LiteralScalar>(cmd: &BernsteinCommand) -> Result<Outcome, Cl
         ));
     }
     let ts: Vec<T> = params_or_samples("--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
-    let all = cagd::bernstein::basis_matrix(cmd.degree, &ts);
+    let all = crate::bernstein::basis_matrix(cmd.degree, &ts);
     let result = match cmd.i {
         Some(i) if i > cmd.degree => {
             return Err(shape(
@@ -264,7 +264,7 @@ pub fn derivative<T: LiteralScalar>(cmd: &DerivativeCommand) -> Result<Outcome, 
     let mut report = Report::new();
     report.push("control", Value::Matrix(d.control().clone()));
     if let Some(t) = &cmd.t {
-        let ts: Vec<T> = cagd::cli::load_params("--t", t)?;
+        let ts: Vec<T> = crate::cli::load_params("--t", t)?;
         let values = d
             .eval_many(&ts)
             .map_err(lib("--t", "finite parameter values"))?;
