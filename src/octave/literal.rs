@@ -271,7 +271,8 @@ impl LiteralError {
     }
 }
 
-/// Resource limits of the parser and evaluator. The defaults suit any hand-written input.
+/// Resource limits of the parser and evaluator. The defaults suit any hand-written input; they
+/// come from the process-wide [`crate::limits::Limits`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Limits {
     /// Longest input accepted, in bytes (default 1 MiB).
@@ -284,14 +285,11 @@ pub struct Limits {
     pub max_iterations: usize,
 }
 
+/// The limits in force in the process ([`crate::limits::Limits::current`]): by default 1 MiB,
+/// depth 64, 4 000 000 elements, 1 000 000 iterations.
 impl Default for Limits {
     fn default() -> Self {
-        Limits {
-            max_input_bytes: 1 << 20,
-            max_depth: 64,
-            max_elements: 4_000_000,
-            max_iterations: 1_000_000,
-        }
+        crate::limits::Limits::current().literal()
     }
 }
 

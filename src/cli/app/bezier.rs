@@ -39,6 +39,7 @@ pub struct DeCasteljauCommand {
 pub fn decasteljau<T: LiteralScalar>(cmd: &DeCasteljauCommand) -> Result<Outcome, CliError> {
     let script = prepare_script::<T>(&cmd.script, None)?;
     let control = points("CONTROL", &cmd.control, script.as_ref(), cmd.rows.rows)?;
+    check_degree("CONTROL", control.ncols().saturating_sub(1))?;
     let curve = BezierCurve::new(control).map_err(lib(
         "CONTROL",
         "control points b_0..b_n, one per column (or per row with --rows)",
@@ -115,12 +116,15 @@ pub fn point_mode(params: &SurfaceParamArgs) -> bool {
 pub fn bezier_patch<T: LiteralScalar>(cmd: &BezierPatchCommand) -> Result<Outcome, CliError> {
     let script = prepare_script::<T>(&cmd.script, cmd.params.n)?;
     let net = load_net::<T>("NET", &cmd.net, script.as_ref())?;
+    let (m1, n1, _) = net.dim();
+    check_degree("NET", m1.max(n1).saturating_sub(1))?;
     let patch = BezierPatch::from_array3(&net).map_err(lib(
         "NET",
         "a packed (m+1)×3(n+1) control net as ploskevB takes it",
     ))?;
     let us: Vec<T> = params_or_samples("--u", &cmd.params.u, cmd.params.n, DEFAULT_SAMPLES)?;
     let vs: Vec<T> = params_or_samples("--v", &cmd.params.v, cmd.params.n, DEFAULT_SAMPLES)?;
+    check_grid(us.len(), vs.len())?;
     let grid = patch
         .try_eval_grid(&us, &vs)
         .map_err(lib("--u/--v", "finite parameter values"))?;
@@ -195,14 +199,7 @@ pub struct BernsteinCommand {
 
 /// Bernstein polynomial values.
 pub fn bernstein<T: LiteralScalar>(cmd: &BernsteinCommand) -> Result<Outcome, CliError> {
-    const MAX_DEGREE: usize = 1000;
-    if cmd.degree > MAX_DEGREE {
-        return Err(shape(
-            "--degree",
-            format!("degree {} is too large", cmd.degree),
-            "a degree 0 ≤ n ≤ 1000",
-        ));
-    }
+    check_degree("--degree", cmd.degree)?;
     let ts: Vec<T> = params_or_samples("--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
     let all = crate::bernstein::basis_matrix(cmd.degree, &ts);
     let result = match cmd.i {
@@ -256,6 +253,7 @@ pub struct DerivativeCommand {
 pub fn derivative<T: LiteralScalar>(cmd: &DerivativeCommand) -> Result<Outcome, CliError> {
     let script = prepare_script::<T>(&cmd.script, None)?;
     let control = points("CONTROL", &cmd.control, script.as_ref(), cmd.rows.rows)?;
+    check_degree("CONTROL", control.ncols().saturating_sub(1))?;
     let curve =
         BezierCurve::new(control).map_err(lib("CONTROL", "control points, one per column"))?;
     let d = curve

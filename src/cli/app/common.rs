@@ -61,6 +61,26 @@ pub fn params_or_samples<T: LiteralScalar>(
     }
 }
 
+/// Refuses a grid of `nu × nv` points above [`crate::limits::Limits::max_grid_points`].
+pub fn check_grid(nu: usize, nv: usize) -> Result<(), CliError> {
+    crate::limits::Limits::current()
+        .check_grid("surface grid", nu, nv)
+        .map_err(lib(
+            "--u/--v",
+            "fewer grid points (a smaller --n, --u, --v), or a higher --max-grid-points",
+        ))
+}
+
+/// Refuses a degree above [`crate::limits::Limits::max_degree`].
+pub fn check_degree(argument: &str, degree: usize) -> Result<(), CliError> {
+    crate::limits::Limits::current()
+        .check_degree("degree", degree)
+        .map_err(lib(
+            argument,
+            "a lower degree (fewer control points or nodes), or a higher --max-degree",
+        ))
+}
+
 /// A 1×k row of values.
 pub fn row<T: LiteralScalar>(values: &[T]) -> DMatrix<T> {
     DMatrix::from_row_slice(1, values.len(), values)

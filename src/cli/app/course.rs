@@ -229,6 +229,7 @@ fn domain_params<T: LiteralScalar>(
 
 /// A B-spline curve.
 pub fn bspline<T: LiteralScalar>(cmd: &BSplineCommand) -> Result<Outcome, CliError> {
+    check_degree("--degree", cmd.degree)?;
     let control = points::<T>("CONTROL", &cmd.control, None, cmd.rows.rows)?;
     let form = "degree p, n+1 ≥ p+1 control points and n+p+2 non-decreasing knots";
     let curve = match &cmd.knots {
@@ -299,6 +300,7 @@ pub struct NurbsCommand {
 
 /// A NURBS curve.
 pub fn nurbs<T: LiteralScalar>(cmd: &NurbsCommand) -> Result<Outcome, CliError> {
+    check_degree("--degree", cmd.degree)?;
     let control = points("CONTROL", &cmd.control, None, cmd.rows.rows)?;
     let weights: Vec<T> = load_params("--weights", &cmd.weights)?;
     let n = control.ncols();

@@ -10,7 +10,6 @@ use nalgebra::DMatrix;
 use ndarray::Array3;
 use num_rational::BigRational;
 
-
 mod bezier;
 
 mod common;
@@ -22,7 +21,7 @@ mod patches;
 mod thesis;
 
 use crate::cli::args::{
-    CurveParamArgs, MeshArgs, OutputArgs, PlotArgs, ScriptArgs, SurfaceParamArgs,
+    CurveParamArgs, LimitArgs, MeshArgs, OutputArgs, PlotArgs, ScriptArgs, SurfaceParamArgs,
 };
 use crate::cli::{
     load_expression, load_params, load_script, render, samples, CliError, ErrorKind, PendingWrites,
@@ -38,6 +37,8 @@ use crate::plot::{Colour, Figure, ImageKind};
 struct Cli {
     #[command(subcommand)]
     command: Command,
+    #[command(flatten)]
+    limits: LimitArgs,
 }
 
 #[derive(Debug, Subcommand)]
@@ -281,6 +282,14 @@ where
         Ok(cli) => cli,
         Err(e) => return usage_error(e),
     };
+    let limits = cli.limits.resolve().map_err(|e| {
+        CliError::library(
+            "limits",
+            e,
+            "whole numbers in the CAGD_MAX_… variables and --max-… flags",
+        )
+    })?;
+    limits.set_current();
     let result = match &cli.command {
         Command::Curve(c) if c.output.exact => curve::<BigRational>(c),
         Command::Curve(c) => curve::<f64>(c),
@@ -442,6 +451,7 @@ fn surface<T: LiteralScalar>(cmd: &SurfaceCommand) -> Result<Outcome, CliError> 
     };
     let us = grid_samples(&cmd.params.u, "--u")?;
     let vs = grid_samples(&cmd.params.v, "--v")?;
+    common::check_grid(us.len(), vs.len())?;
     let grid = expr.sample_surface(&mut env, &us, &vs).map_err(|e| {
         CliError::literal(
             "EXPR",
