@@ -30,6 +30,8 @@ pub mod continuity;
 pub mod conversion;
 pub mod coons;
 pub mod error;
+#[doc = include_str!("../docs/ERRORS.md")]
+pub mod error_catalogue {}
 pub mod gordon;
 pub mod hermite;
 pub mod interpolation;
