@@ -602,6 +602,11 @@ fn usage_error(e: clap::Error) -> Result<Outcome, CliError> {
         ClapKind::MissingRequiredArgument => {
             (arg, "missing".into(), "the argument (see --help)".into())
         }
+        ClapKind::ArgumentConflict
+            if context(ContextKind::PriorArg).map(strip).as_deref() == Some(arg.as_str()) =>
+        {
+            (arg, "given more than once".into(), "the option once".into())
+        }
         ClapKind::ArgumentConflict => (
             arg,
             format!(
