@@ -112,14 +112,55 @@ impl PendingWrites {
         }
         let mut staged = Vec::with_capacity(self.files.len());
         for (argument, path, bytes) in &self.files {
+            // A folder in the way would only fail at the rename, after other files were
+            // renamed into place: refuse it before anything is written.
+            if path.is_dir() {
+                let e = std::io::Error::new(std::io::ErrorKind::IsADirectory, "is a folder");
+                return Err(write_error(argument, path, &e));
+            }
             let tmp = stage(path, bytes).map_err(|e| write_error(argument, path, &e))?;
             staged.push((argument, path, tmp));
         }
+        // Renames can still fail (a race, a file system that refuses): undo the ones done, so
+        // that the files are all written or none is.
+        let mut done: Vec<(&PathBuf, Option<tempfile::TempPath>)> = Vec::new();
         for (argument, path, tmp) in staged {
-            tmp.persist(path)
-                .map_err(|e| write_error(argument, path, &e.error))?;
+            let backup = backup_of(path);
+            if let Err(e) = tmp.persist(path) {
+                roll_back(done);
+                return Err(write_error(argument, path, &e.error));
+            }
+            done.push((path, backup));
         }
         Ok(())
+    }
+}
+
+/// A hard link to the file at `path` under a temporary name, if there is one, so that a
+/// replaced file can be restored.
+fn backup_of(path: &Path) -> Option<tempfile::TempPath> {
+    if !path.is_file() {
+        return None;
+    }
+    let name = tempfile::Builder::new()
+        .prefix(".cagd-backup-")
+        .suffix(".tmp")
+        .make_in(directory_of(path), |p| std::fs::hard_link(path, p))
+        .ok()?;
+    Some(name.into_temp_path())
+}
+
+/// Restores the files replaced and removes the files created by the renames in `done`.
+fn roll_back(done: Vec<(&PathBuf, Option<tempfile::TempPath>)>) {
+    for (path, backup) in done.into_iter().rev() {
+        match backup {
+            Some(b) => {
+                let _ = b.persist(path);
+            }
+            None => {
+                let _ = std::fs::remove_file(path);
+            }
+        }
     }
 }
 

@@ -1299,13 +1299,14 @@ pub fn write_text(ws: &Workspace) -> Result<String> {
     Ok(out)
 }
 
-/// [`write_text`] into a file (created or truncated).
+/// [`write_text`] into a file, atomically ([`crate::cli::write_atomic`]: a temporary file in
+/// the same folder renamed over `path`, so the file is complete or absent, never partial).
 ///
 /// # Errors
 /// As [`write_text`], and [`TextFormatError::Io`] if the file cannot be written.
 pub fn write_text_file(path: impl AsRef<Path>, ws: &Workspace) -> Result<()> {
     let text = write_text(ws)?;
-    std::fs::write(path.as_ref(), text).map_err(|e| TextFormatError::Io {
+    crate::cli::write_atomic(path.as_ref(), text.as_bytes()).map_err(|e| TextFormatError::Io {
         path: path.as_ref().display().to_string(),
         message: e.to_string(),
     })
