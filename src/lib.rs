@@ -19,6 +19,16 @@
 //! Around them: [`plot`] (pictures as the thesis's Octave code draws them), [`mesh`]
 //! (triangulated surfaces as STL, OBJ, PLY) and [`cli`] (the command line as a library:
 //! inputs, output formats, atomic files, one-line errors).
+//!
+//! **NaN and infinity** are rejected, once and for all: every entry point (constructors,
+//! evaluations taking parameters, tolerances, the parsers of literals, expressions and data
+//! scripts, every command-line input) answers a non-finite number with a typed error
+//! ([`Error::NonFinite`], [`octave::literal::LiteralError::NonFinite`]) instead of propagating
+//! it. Only [`octave::text_format`] keeps the `Inf`, `NaN` and `NA` that Octave wrote, as data.
+//!
+//! **Resource limits** ([`limits`]) refuse sizes that would not fit in memory with
+//! [`Error::TooLarge`]; every error variant, with an example triggering it, is listed in the
+//! [`error_catalogue`].
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
