@@ -115,7 +115,7 @@ impl PendingWrites {
             // A folder in the way would only fail at the rename, after other files were
             // renamed into place: refuse it before anything is written.
             if path.is_dir() {
-                let e = std::io::Error::new(std::io::ErrorKind::IsADirectory, "is a folder");
+                let e = std::io::Error::other("is a folder, not a file");
                 return Err(write_error(argument, path, &e));
             }
             let tmp = stage(path, bytes).map_err(|e| write_error(argument, path, &e))?;

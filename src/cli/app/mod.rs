@@ -290,7 +290,7 @@ where
         )
     })?;
     limits.set_current();
-    let result = match &cli.command {
+    match &cli.command {
         Command::Curve(c) if c.output.exact => curve::<BigRational>(c),
         Command::Curve(c) => curve::<f64>(c),
         Command::Surface(c) if c.output.exact => surface::<BigRational>(c),
@@ -324,8 +324,7 @@ where
         Command::Bspline(c) => course::bspline::<f64>(c),
         Command::Nurbs(c) if c.output.exact => course::nurbs::<BigRational>(c),
         Command::Nurbs(c) => course::nurbs::<f64>(c),
-    };
-    result
+    }
 }
 
 /// Runs `--script` if given, binding `N` first.
