@@ -41,9 +41,12 @@ pub const CURVE_FORM: &str = "an expression in the curve parameter such as \"[u;
 /// Reads a file (or standard input for `-`) as text, with the size limit.
 pub fn read_text(argument: &str, path: &str) -> Result<String, CliError> {
     let limit = crate::limits::Limits::current().max_input_bytes;
-    let form = format!(
-        "a readable UTF-8 text file (at most {limit} bytes, see --max-input-bytes), or - for standard input"
-    );
+    let size = if limit % (1 << 20) == 0 {
+        format!("{} MiB", limit >> 20)
+    } else {
+        format!("{limit} bytes")
+    };
+    let form = format!("a readable UTF-8 text file (at most {size}), or - for standard input");
     let form = form.as_str();
     let mut bytes = Vec::new();
     let result = if path == "-" {
@@ -64,7 +67,7 @@ pub fn read_text(argument: &str, path: &str) -> Result<String, CliError> {
     if bytes.len() as u64 > limit {
         return Err(CliError::new(
             shown,
-            format!("the input is larger than {limit} bytes"),
+            format!("the input is larger than {size} (see --max-input-bytes)"),
             form,
             ErrorKind::Data,
         ));
@@ -242,8 +245,10 @@ fn array_to_scalars<T: LiteralScalar>(
 /// plain numeric text.
 ///
 /// ```
-/// let text = "# name: s\n# type: string\n# elements: 1\n# length: 1\nx\n\n\
-///             # name: B\n# type: matrix\n# rows: 1\n# columns: 2\n 1 0.5\n";
+/// let text = concat!(
+///     "# name: s\n# type: string\n# elements: 1\n# length: 1\nx\n\n",
+///     "# name: B\n# type: matrix\n# rows: 1\n# columns: 2\n 1 0.5\n",
+/// );
 /// let m = cagd::cli::parse_data_text::<f64>("--control", text).unwrap();
 /// assert_eq!(m, nalgebra::DMatrix::from_row_slice(1, 2, &[1.0, 0.5]));
 /// ```
