@@ -129,3 +129,26 @@ fn scripts_have_a_work_budget() {
     assert!(matches!(err, LiteralError::TooLarge { .. }), "{err}");
     assert!(err.to_string().contains("all together"), "{err}");
 }
+
+/// One evaluation is bounded in work (64 × max_elements element operations), so a short text
+/// cannot run for minutes: chains of large products or sums stop with `TooLarge`.
+#[test]
+fn one_evaluation_has_a_work_budget() {
+    let products = format!("ones(500,512){}", "*ones(512,500)*ones(500,512)".repeat(40));
+    let start = std::time::Instant::now();
+    let result = parse_matrix::<f64>(&products).map(|m| m.shape());
+    assert!(
+        matches!(result, Err(LiteralError::TooLarge { .. })),
+        "{result:?}"
+    );
+    let sums = format!("ones(2000,2000){}", "+1".repeat(2000));
+    let result = parse_matrix::<f64>(&sums).map(|m| m.shape());
+    assert!(
+        matches!(result, Err(LiteralError::TooLarge { .. })),
+        "{result:?}"
+    );
+    assert!(start.elapsed().as_secs() < 60, "{:?}", start.elapsed());
+    // Ordinary work is far inside the budget.
+    let m = parse_matrix::<f64>("ones(1000,1000)*ones(1000,1)+1").unwrap();
+    assert_eq!((m.nrows(), m[(999, 0)]), (1000, 1001.0));
+}

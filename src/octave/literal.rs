@@ -283,6 +283,8 @@ pub struct Limits {
     pub max_elements: usize,
     /// Most loop iterations a data script may run, all loops together (default 1 000 000).
     pub max_iterations: usize,
+    // One evaluation (an expression, a statement of a script, a curve at one parameter) may
+    // compute at most 64 × `max_elements` element results and matrix-product terms.
 }
 
 /// The limits in force in the process ([`crate::limits::Limits::current`]): by default 1 MiB,
@@ -556,6 +558,7 @@ pub struct Env<T: LiteralScalar = f64> {
     vars: BTreeMap<String, DMatrix<T>>,
     warnings: BTreeSet<Warning>,
     limits: Limits,
+    pub(crate) meter: eval::Meter,
 }
 
 impl<T: LiteralScalar> Default for Env<T> {
@@ -564,6 +567,7 @@ impl<T: LiteralScalar> Default for Env<T> {
             vars: BTreeMap::new(),
             warnings: BTreeSet::new(),
             limits: Limits::default(),
+            meter: eval::Meter::default(),
         }
     }
 }
