@@ -152,3 +152,27 @@ fn one_evaluation_has_a_work_budget() {
     let m = parse_matrix::<f64>("ones(1000,1000)*ones(1000,1)+1").unwrap();
     assert_eq!((m.nrows(), m[(999, 0)]), (1000, 1001.0));
 }
+
+/// Fuzzing (`text_format`, out-of-memory after 4.9 million runs): a `range` variable whose
+/// base, limit and increment ask for 2·10⁹ elements made `to_array` allocate 16 GB. Ranges
+/// are now expanded only up to the element limit; beyond it the accessors give a typed error.
+#[test]
+fn fuzz_text_format_oom_huge_range() {
+    use cagd::octave::text_format::{read_text, TextFormatError};
+    // The input as libFuzzer minimised it (artifacts/text_format/oom-24c6a13e…).
+    let bytes = b"#name:\xf3\x96\x91\x91#namer\n# type: range\n#nt\n1 16666666666.00 8";
+    let text = std::str::from_utf8(bytes).unwrap();
+    let ws = read_text(text).unwrap();
+    let name = ws.names().next().unwrap().to_string();
+    assert!(matches!(
+        ws.array(&name),
+        Err(TextFormatError::WrongType { .. })
+    ));
+    assert!(ws.matrix(&name).is_err());
+    // A range within the limit still expands.
+    let ws = read_text("# name: r\n# type: range\n# base, limit, increment\n1 9 2\n").unwrap();
+    assert_eq!(
+        ws.matrix("r").unwrap().row(0).to_vec(),
+        vec![1.0, 3.0, 5.0, 7.0, 9.0]
+    );
+}
