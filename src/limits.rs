@@ -23,6 +23,12 @@
 //! point: degree 1000 keeps both at about half a million. 10⁸ system entries are 800 MB in
 //! `f64`.
 //!
+//! Two budgets derive from `max_elements`: one evaluation of an expression may do at most
+//! 64 × `max_elements` element operations (results of every operation and matrix-product
+//! terms), and a data script may assign at most 25 × `max_elements` elements in all; so a
+//! short text (`A*A*A*…`, a loop rebuilding a large matrix) stops with an error instead of
+//! running for minutes.
+//!
 //! The limits in force are process-wide ([`Limits::current`], set with
 //! [`Limits::set_current`]); the command line sets them from its flags and the environment
 //! ([`Limits::from_env`]) before running.
