@@ -12,6 +12,7 @@
 //! | [`max_grid_points`](Limits::max_grid_points) | 10 000 000 | points of a surface grid (`nu · nv`) | `CAGD_MAX_GRID_POINTS` / `--max-grid-points` |
 //! | [`max_degree`](Limits::max_degree) | 1 000 | degree of a Bernstein basis, Bézier curve or patch direction, B-spline, Lagrange basis (nodes − 1), curves of a Gordon network | `CAGD_MAX_DEGREE` / `--max-degree` |
 //! | [`max_system_entries`](Limits::max_system_entries) | 100 000 000 | stored entries of a linear system (the banded system of a discrete Coons mask) | `CAGD_MAX_SYSTEM_ENTRIES` / `--max-system-entries` |
+//! | [`max_work`](Limits::max_work) | 2 000 000 000 | arithmetic operations of one command, estimated before it starts (points × cost per point: `(n+1)²` for de Casteljau, the band solve of a mask) | `CAGD_MAX_WORK` / `--max-work` |
 //!
 //! Why these numbers (a machine with 24 GiB shared by other work): a grid point of a 3-D
 //! surface costs 24 bytes in `f64`, and a command keeps up to about eight copies of it (the
@@ -66,6 +67,9 @@ pub struct Limits {
     pub max_degree: usize,
     /// Most stored entries of a linear system.
     pub max_system_entries: usize,
+    /// Most arithmetic operations of one command, estimated up front (about 2–20 seconds in
+    /// `f64`; exact rationals are slower).
+    pub max_work: u64,
 }
 
 impl Default for Limits {
@@ -80,12 +84,13 @@ impl Default for Limits {
             max_grid_points: 10_000_000,
             max_degree: 1000,
             max_system_entries: 100_000_000,
+            max_work: 2_000_000_000,
         }
     }
 }
 
 /// The settings, in field order: (field, environment variable, command-line flag).
-pub const SETTINGS: [(&str, &str, &str); 9] = [
+pub const SETTINGS: [(&str, &str, &str); 10] = [
     (
         "max_input_bytes",
         "CAGD_MAX_INPUT_BYTES",
@@ -111,17 +116,18 @@ pub const SETTINGS: [(&str, &str, &str); 9] = [
         "CAGD_MAX_SYSTEM_ENTRIES",
         "--max-system-entries",
     ),
+    ("max_work", "CAGD_MAX_WORK", "--max-work"),
 ];
 
 /// The process-wide limits, in [`SETTINGS`] order; `u64::MAX` means "default".
-static CURRENT: [AtomicU64; 9] = [const { AtomicU64::new(u64::MAX) }; 9];
+static CURRENT: [AtomicU64; 10] = [const { AtomicU64::new(u64::MAX) }; 10];
 
 fn to_usize(x: u64) -> usize {
     usize::try_from(x).unwrap_or(usize::MAX)
 }
 
 impl Limits {
-    fn to_array(self) -> [u64; 9] {
+    fn to_array(self) -> [u64; 10] {
         [
             self.max_input_bytes,
             self.max_expression_bytes as u64,
@@ -132,10 +138,11 @@ impl Limits {
             self.max_grid_points as u64,
             self.max_degree as u64,
             self.max_system_entries as u64,
+            self.max_work,
         ]
     }
 
-    fn from_array(a: [u64; 9]) -> Limits {
+    fn from_array(a: [u64; 10]) -> Limits {
         Limits {
             max_input_bytes: a[0],
             max_expression_bytes: to_usize(a[1]),
@@ -146,6 +153,7 @@ impl Limits {
             max_grid_points: to_usize(a[6]),
             max_degree: to_usize(a[7]),
             max_system_entries: to_usize(a[8]),
+            max_work: a[9],
         }
     }
 
@@ -153,7 +161,7 @@ impl Limits {
     /// called).
     pub fn current() -> Limits {
         let defaults = Limits::default().to_array();
-        let mut a = [0u64; 9];
+        let mut a = [0u64; 10];
         for (k, slot) in CURRENT.iter().enumerate() {
             let v = slot.load(Ordering::Relaxed);
             a[k] = if v == u64::MAX { defaults[k] } else { v };
@@ -242,6 +250,19 @@ impl Limits {
     /// [`Error::TooLarge`] above [`Limits::max_degree`].
     pub fn check_degree(&self, what: &'static str, degree: usize) -> Result<()> {
         too_large(what, "max_degree", degree as u128, self.max_degree)
+    }
+
+    /// A computation of about `operations` arithmetic operations.
+    ///
+    /// # Errors
+    /// [`Error::TooLarge`] above [`Limits::max_work`].
+    pub fn check_work(&self, what: &'static str, operations: u128) -> Result<()> {
+        too_large(
+            what,
+            "max_work",
+            operations,
+            usize::try_from(self.max_work).unwrap_or(usize::MAX),
+        )
     }
 
     /// A linear system storing `entries` numbers.

@@ -213,6 +213,26 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
             "--u/--v",
             "Library::TooLarge",
         ),
+        (
+            s(&["decasteljau", "zeros(3, 1000)", "--n", "100000"]),
+            "--t",
+            "Library::TooLarge",
+        ),
+        (
+            s(&["bernstein", "--degree", "1000", "--n", "100000"]),
+            "--t",
+            "Library::TooLarge",
+        ),
+        (
+            s(&["lagrange", "--nodes", "0:0.001:0.999", "--n", "100000"]),
+            "--t",
+            "Library::TooLarge",
+        ),
+        (
+            s(&["derivative", "zeros(3, 1000)", "--t", "0:1e-5:1"]),
+            "--t",
+            "Library::TooLarge",
+        ),
         (s(&["bezier-patch", "[1 2]"]), "NET", "Shape"),
         (
             s(&["surface", "[u; v; u.*v]", "--n", "5000"]),

@@ -127,6 +127,9 @@ pub struct LimitArgs {
     /// Most stored entries of a linear system [env: CAGD_MAX_SYSTEM_ENTRIES; default 100000000].
     #[arg(long, global = true, value_name = "N", help_heading = "Limits")]
     pub max_system_entries: Option<u64>,
+    /// Most arithmetic operations of one command, estimated up front [env: CAGD_MAX_WORK; default 2000000000].
+    #[arg(long, global = true, value_name = "N", help_heading = "Limits")]
+    pub max_work: Option<u64>,
 }
 
 impl LimitArgs {
@@ -143,6 +146,7 @@ impl LimitArgs {
             ("max_grid_points", self.max_grid_points),
             ("max_degree", self.max_degree),
             ("max_system_entries", self.max_system_entries),
+            ("max_work", self.max_work),
         ];
         for (name, value) in flags {
             if let Some(v) = value {

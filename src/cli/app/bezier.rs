@@ -45,6 +45,11 @@ pub fn decasteljau<T: LiteralScalar>(cmd: &DeCasteljauCommand) -> Result<Outcome
         "control points b_0..b_n, one per column (or per row with --rows)",
     ))?;
     let ts: Vec<T> = params_or_samples("--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
+    // de Casteljau: (n+1)² operations per coordinate and parameter.
+    check_work(
+        "--t",
+        ts.len() as u128 * curve.dim() as u128 * (curve.degree() as u128 + 1).pow(2),
+    )?;
     let values = curve
         .eval_many(&ts)
         .map_err(lib("--t", "finite parameter values"))?;
@@ -125,6 +130,11 @@ pub fn bezier_patch<T: LiteralScalar>(cmd: &BezierPatchCommand) -> Result<Outcom
     let us: Vec<T> = params_or_samples("--u", &cmd.params.u, cmd.params.n, DEFAULT_SAMPLES)?;
     let vs: Vec<T> = params_or_samples("--v", &cmd.params.v, cmd.params.n, DEFAULT_SAMPLES)?;
     check_grid(us.len(), vs.len())?;
+    // Tensor de Casteljau (also --steps): about (m+1)(n+1)·(m+n+2) per coordinate and point.
+    check_work(
+        "--u/--v",
+        us.len() as u128 * vs.len() as u128 * 3 * (m1 as u128 * n1 as u128) * (m1 + n1) as u128,
+    )?;
     let grid = patch
         .try_eval_grid(&us, &vs)
         .map_err(lib("--u/--v", "finite parameter values"))?;
@@ -201,6 +211,7 @@ pub struct BernsteinCommand {
 pub fn bernstein<T: LiteralScalar>(cmd: &BernsteinCommand) -> Result<Outcome, CliError> {
     check_degree("--degree", cmd.degree)?;
     let ts: Vec<T> = params_or_samples("--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
+    check_work("--t", ts.len() as u128 * (cmd.degree as u128 + 1).pow(2))?;
     let all = crate::bernstein::basis_matrix(cmd.degree, &ts);
     let result = match cmd.i {
         Some(i) if i > cmd.degree => {
@@ -263,6 +274,10 @@ pub fn derivative<T: LiteralScalar>(cmd: &DerivativeCommand) -> Result<Outcome, 
     report.push("control", Value::Matrix(d.control().clone()));
     if let Some(t) = &cmd.t {
         let ts: Vec<T> = crate::cli::load_params("--t", t)?;
+        check_work(
+            "--t",
+            ts.len() as u128 * d.dim() as u128 * (d.degree() as u128 + 1).pow(2),
+        )?;
         let values = d
             .eval_many(&ts)
             .map_err(lib("--t", "finite parameter values"))?;

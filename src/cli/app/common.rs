@@ -81,6 +81,17 @@ pub fn check_degree(argument: &str, degree: usize) -> Result<(), CliError> {
         ))
 }
 
+/// Refuses a computation of about `operations` arithmetic operations above
+/// [`crate::limits::Limits::max_work`].
+pub fn check_work(argument: &str, operations: u128) -> Result<(), CliError> {
+    crate::limits::Limits::current()
+        .check_work("estimated operations", operations)
+        .map_err(lib(
+            argument,
+            "fewer points or a lower degree, or a higher --max-work",
+        ))
+}
+
 /// A 1×k row of values.
 pub fn row<T: LiteralScalar>(values: &[T]) -> DMatrix<T> {
     DMatrix::from_row_slice(1, values.len(), values)

@@ -754,6 +754,7 @@ pub fn lagrange<T: LiteralScalar>(cmd: &LagrangeCommand) -> Result<Outcome, CliE
     let basis = Lagrange::new(nodes.clone())
         .map_err(lib("--nodes", "distinct finite nodes, at least one"))?;
     let ts: Vec<T> = params_or_samples("--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
+    check_work("--t", ts.len() as u128 * (nodes.len() as u128 + 1).pow(2))?;
     let mut report = Report::new();
     report.push("t", Value::Matrix(row(&ts)));
     let mut files = PendingWrites::new();
