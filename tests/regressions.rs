@@ -176,3 +176,21 @@ fn fuzz_text_format_oom_huge_range() {
         vec![1.0, 3.0, 5.0, 7.0, 9.0]
     );
 }
+
+/// Fuzzing (`literal`, timeout in the instrumented build at the default limits): the exact
+/// range `1e-3:1e-3:2e2-2` has 198 000 elements. Linear work within the limits, not a hang
+/// (about a second in a debug build); the fuzz targets now run with limits of 10⁵ elements.
+/// The range must be exact and complete.
+#[test]
+fn fuzz_literal_timeout_long_exact_range() {
+    use num_rational::BigRational;
+    let start = std::time::Instant::now();
+    let r = cagd::octave::literal::parse_params::<BigRational>("1e-3:1e-3:2e2-2").unwrap();
+    assert_eq!(r.len(), 198_000);
+    assert_eq!(r[197_999], BigRational::new(198.into(), 1.into()));
+    assert_eq!(r[0], BigRational::new(1.into(), 1000.into()));
+    assert!(start.elapsed().as_secs() < 30, "{:?}", start.elapsed());
+    // Above the element limit it is an error, not an allocation.
+    let over = cagd::octave::literal::parse_params::<BigRational>("1e-9:1e-9:1");
+    assert!(matches!(over, Err(LiteralError::TooLarge { .. })));
+}

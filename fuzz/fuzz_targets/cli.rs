@@ -65,6 +65,18 @@ fn init() {
         let dir = std::env::temp_dir().join(format!("cagd-fuzz-cli-{}", std::process::id()));
         std::fs::create_dir_all(&dir).expect("scratch folder");
         std::env::set_current_dir(&dir).expect("enter scratch folder");
+        // Smaller limits than the defaults (see the other targets): `run` reads them from
+        // the environment, and `--max-…` arguments are dropped below.
+        for (var, value) in [
+            ("CAGD_MAX_ELEMENTS", "100000"),
+            ("CAGD_MAX_ITERATIONS", "100000"),
+            ("CAGD_MAX_SAMPLES", "10000"),
+            ("CAGD_MAX_GRID_POINTS", "100000"),
+            ("CAGD_MAX_WORK", "50000000"),
+            ("CAGD_MAX_SYSTEM_ENTRIES", "1000000"),
+        ] {
+            std::env::set_var(var, value);
+        }
     });
 }
 
@@ -88,6 +100,7 @@ fuzz_target!(|data: &[u8]| {
             },
         };
         let reads_outside = arg == "-"
+            || arg.starts_with("--max-")
             || arg.starts_with('/')
             || arg.contains("..")
             || arg.starts_with('~')
