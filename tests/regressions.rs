@@ -194,3 +194,39 @@ fn fuzz_literal_timeout_long_exact_range() {
     let over = cagd::octave::literal::parse_params::<BigRational>("1e-9:1e-9:1");
     assert!(matches!(over, Err(LiteralError::TooLarge { .. })));
 }
+
+/// Fuzzing (`literal`, timeout): the exact power `-(24.445^46913)` built a 985 000-bit
+/// rational by repeated squaring with a gcd at every step (minutes). Exact numbers are now
+/// limited to 2¹⁶ bits of numerator and denominator, and powers skip the gcd.
+#[test]
+fn fuzz_literal_timeout_huge_exact_power() {
+    use num_rational::BigRational;
+    let start = std::time::Instant::now();
+    let r = cagd::octave::literal::parse_matrix::<BigRational>("-(24.445^46913) ");
+    assert!(
+        matches!(r, Err(LiteralError::NumberOutOfRange { .. })),
+        "{:?}",
+        r.map(|m| m.shape())
+    );
+    // Products of large exact numbers stop at the size limit too.
+    let r = cagd::octave::literal::parse_matrix::<BigRational>("3^20000 * 3^20000 * 3^20000");
+    assert!(
+        matches!(r, Err(LiteralError::TooLarge { .. })),
+        "{:?}",
+        r.map(|m| m.shape())
+    );
+    assert!(start.elapsed().as_secs() < 10, "{:?}", start.elapsed());
+    // Ordinary exact powers are exact.
+    let p = cagd::octave::literal::parse_matrix::<BigRational>("(-2/3)^-3").unwrap();
+    assert_eq!(p[(0, 0)], BigRational::new((-27).into(), 8.into()));
+    let p = cagd::octave::literal::parse_matrix::<BigRational>("2^100").unwrap();
+    assert_eq!(
+        p[(0, 0)],
+        BigRational::from_integer(num_bigint::BigInt::from(2).pow(100))
+    );
+    // f64 is unaffected: the double overflows and is refused as non-finite.
+    assert!(matches!(
+        cagd::octave::literal::parse_matrix::<f64>("24.445^46913"),
+        Err(LiteralError::NonFinite { .. })
+    ));
+}

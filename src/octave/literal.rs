@@ -374,6 +374,12 @@ pub trait LiteralScalar: Scalar {
     /// Whether arithmetic is exact (no rounding).
     const EXACT: bool;
 
+    /// Whether an exact number has grown too large to compute with in reasonable time
+    /// (numerator and denominator together longer than [`MAX_EXACT_BITS`]); never for `f64`.
+    fn is_oversized(&self) -> bool {
+        false
+    }
+
     /// The value of a decimal literal (`text` as lexed; `nearest` its nearest double).
     /// `None` if it is not finite in this type.
     fn from_literal(text: &str, nearest: f64) -> Option<Self>;
@@ -469,11 +475,18 @@ impl LiteralScalar for f64 {
     }
 }
 
-/// Largest size, in bits, of an exact power's numerator plus denominator.
-const MAX_EXACT_POWER_BITS: u64 = 1 << 20;
+/// Largest size, in bits, of an exact number's numerator plus denominator (about 20 000
+/// decimal digits): exact results beyond it are refused ([`LiteralError::TooLarge`]), since
+/// every further operation on them would cost a gcd of that size (found by fuzzing:
+/// `24.445^46913` took minutes).
+pub const MAX_EXACT_BITS: u64 = 1 << 16;
 
 impl LiteralScalar for BigRational {
     const EXACT: bool = true;
+
+    fn is_oversized(&self) -> bool {
+        self.numer().bits() + self.denom().bits() > MAX_EXACT_BITS
+    }
 
     fn from_literal(text: &str, _nearest: f64) -> Option<Self> {
         rational_from_decimal(text)
@@ -512,10 +525,16 @@ impl LiteralScalar for BigRational {
         }
         let bits = base.numer().bits() + base.denom().bits();
         let magnitude = n.magnitude().to_u64().unwrap_or(u64::MAX);
-        if magnitude.saturating_mul(bits) > MAX_EXACT_POWER_BITS {
+        if magnitude.saturating_mul(bits) > MAX_EXACT_BITS {
             return Err(PowerError::TooLarge);
         }
-        let p = num_traits::pow(base.clone(), magnitude as usize);
+        // Numerator and denominator are coprime, so are their powers: no gcd needed (a gcd
+        // at every squaring made large powers quadratic).
+        let e = magnitude as u32;
+        let p = BigRational::new_raw(
+            num_traits::pow(base.numer().clone(), e as usize),
+            num_traits::pow(base.denom().clone(), e as usize),
+        );
         Ok(if n.is_negative() { p.recip() } else { p })
     }
 

@@ -152,7 +152,14 @@ fn finite<T: LiteralScalar>(
     at: Position,
     what: impl FnOnce() -> String,
 ) -> Result<T, LiteralError> {
-    if x.is_finite_value() {
+    if x.is_oversized() {
+        Err(LiteralError::TooLarge {
+            at,
+            what: "an exact number's numerator and denominator (in bits)".into(),
+            count: u128::from(crate::octave::literal::MAX_EXACT_BITS) + 1,
+            limit: crate::octave::literal::MAX_EXACT_BITS as usize,
+        })
+    } else if x.is_finite_value() {
         Ok(x)
     } else {
         Err(LiteralError::NonFinite { at, what: what() })
