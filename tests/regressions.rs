@@ -230,3 +230,26 @@ fn fuzz_literal_timeout_huge_exact_power() {
         Err(LiteralError::NonFinite { .. })
     ));
 }
+
+/// Fuzzing (`script`, timeout and slow unit): the same exact-power growth through a data
+/// script, with negative and tower exponents. Both now stop at once with a typed error.
+#[test]
+fn fuzz_script_timeout_exact_power_towers() {
+    use num_rational::BigRational;
+    let start = std::time::Instant::now();
+    for source in ["03333333^-33333", "033093333306;366063333^33166^33333"] {
+        let mut env = Env::<BigRational>::new();
+        env.bind_scalar("N", BigRational::from_integer(4.into()));
+        let r = cagd::octave::script::run::<BigRational>(source, env);
+        assert!(
+            matches!(
+                r,
+                Err(LiteralError::NumberOutOfRange { .. } | LiteralError::TooLarge { .. })
+            ),
+            "{source}"
+        );
+        // In doubles the same scripts run (the values are finite or refused as non-finite).
+        let _ = cagd::octave::script::run::<f64>(source, Env::new());
+    }
+    assert!(start.elapsed().as_secs() < 10, "{:?}", start.elapsed());
+}
