@@ -68,12 +68,12 @@ fn init() {
         // Smaller limits than the defaults (see the other targets): `run` reads them from
         // the environment, and `--max-…` arguments are dropped below.
         for (var, value) in [
-            ("CAGD_MAX_ELEMENTS", "100000"),
-            ("CAGD_MAX_ITERATIONS", "100000"),
-            ("CAGD_MAX_SAMPLES", "10000"),
-            ("CAGD_MAX_GRID_POINTS", "100000"),
-            ("CAGD_MAX_WORK", "50000000"),
-            ("CAGD_MAX_SYSTEM_ENTRIES", "1000000"),
+            ("CAGD_MAX_ELEMENTS", "10000"),
+            ("CAGD_MAX_ITERATIONS", "10000"),
+            ("CAGD_MAX_SAMPLES", "1000"),
+            ("CAGD_MAX_GRID_POINTS", "10000"),
+            ("CAGD_MAX_WORK", "5000000"),
+            ("CAGD_MAX_SYSTEM_ENTRIES", "100000"),
         ] {
             std::env::set_var(var, value);
         }
