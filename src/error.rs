@@ -277,6 +277,24 @@ pub enum Error {
         /// The smallest eigenvalue in absolute value (0 for an exactly singular system).
         eigenvalue: f64,
     },
+    /// A size that would need more memory or time than the [`crate::limits::Limits`] in force
+    /// allow (a grid, a degree, a linear system, an input): refused before anything is
+    /// allocated.
+    #[error(
+        "{what}: {requested} exceeds the limit of {limit} (raise it with {setting} or {variable})"
+    )]
+    TooLarge {
+        /// Which argument.
+        what: &'static str,
+        /// The size asked for (grid points, degree, entries, bytes).
+        requested: u128,
+        /// The limit in force.
+        limit: u128,
+        /// The command-line flag that sets the limit, e.g. `--max-grid-points`.
+        setting: &'static str,
+        /// The environment variable that sets the limit, e.g. `CAGD_MAX_GRID_POINTS`.
+        variable: &'static str,
+    },
 }
 
 /// One line per corner gap, for the message of [`Error::CornerMismatch`].

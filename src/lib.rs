@@ -23,6 +23,16 @@
 //! Whole grids are evaluated into caller-given buffers ([`Surface::eval_grid_into`],
 //! [`Curve::eval_many_into`], layouts in [`grid`]) with `O(m + n)` work per point, no allocation
 //! per point, and both cores for large grids; `docs/PERFORMANCE.md` has the measurements.
+//!
+//! **NaN and infinity** are rejected, once and for all: every entry point (constructors,
+//! evaluations taking parameters, tolerances, the parsers of literals, expressions and data
+//! scripts, every command-line input) answers a non-finite number with a typed error
+//! ([`Error::NonFinite`], [`octave::literal::LiteralError::NonFinite`]) instead of propagating
+//! it. Only [`octave::text_format`] keeps the `Inf`, `NaN` and `NA` that Octave wrote, as data.
+//!
+//! **Resource limits** ([`limits`]) refuse sizes that would not fit in memory with
+//! [`Error::TooLarge`]; every error variant, with an example triggering it, is listed in the
+//! [`error_catalogue`].
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -34,11 +44,14 @@ pub mod continuity;
 pub mod conversion;
 pub mod coons;
 pub mod error;
+#[doc = include_str!("../docs/ERRORS.md")]
+pub mod error_catalogue {}
 pub mod gordon;
 pub mod grid;
 pub mod hermite;
 pub mod interpolation;
 pub mod lagrange;
+pub mod limits;
 pub mod linspace;
 pub mod mesh;
 pub mod nurbs;
@@ -55,6 +68,7 @@ pub use coons::{CoonsPatch, Tolerance};
 pub use error::{Error, Result};
 pub use gordon::GordonSurface;
 pub use hermite::HermiteCubic;
+pub use limits::Limits;
 pub use linspace::linspace;
 pub use nurbs::{NurbsCurve, NurbsSurface};
 pub use param::{Curve, FnCurve, SampledCurve, Surface};

@@ -95,3 +95,64 @@ pub struct RowsArgs {
     #[arg(long)]
     pub rows: bool,
 }
+
+/// Resource limits (see [`crate::limits`]); each overrides its `CAGD_MAX_…` environment
+/// variable, which overrides the default.
+#[derive(Debug, Clone, Default, Args)]
+pub struct LimitArgs {
+    /// Largest input file or standard input, in bytes [env: CAGD_MAX_INPUT_BYTES; default 64 MiB].
+    #[arg(long, global = true, value_name = "BYTES", help_heading = "Limits")]
+    pub max_input_bytes: Option<u64>,
+    /// Longest literal, expression or script, in bytes [env: CAGD_MAX_EXPRESSION_BYTES; default 1 MiB].
+    #[arg(long, global = true, value_name = "BYTES", help_heading = "Limits")]
+    pub max_expression_bytes: Option<u64>,
+    /// Deepest nesting in an expression [env: CAGD_MAX_DEPTH; default 64].
+    #[arg(long, global = true, value_name = "N", help_heading = "Limits")]
+    pub max_depth: Option<u64>,
+    /// Most elements of a matrix or range in a literal or script [env: CAGD_MAX_ELEMENTS; default 4000000].
+    #[arg(long, global = true, value_name = "N", help_heading = "Limits")]
+    pub max_elements: Option<u64>,
+    /// Most loop iterations of a data script [env: CAGD_MAX_ITERATIONS; default 1000000].
+    #[arg(long, global = true, value_name = "N", help_heading = "Limits")]
+    pub max_iterations: Option<u64>,
+    /// Most parameter values along one axis [env: CAGD_MAX_SAMPLES; default 1000000].
+    #[arg(long, global = true, value_name = "N", help_heading = "Limits")]
+    pub max_samples: Option<u64>,
+    /// Most points of a surface grid [env: CAGD_MAX_GRID_POINTS; default 10000000].
+    #[arg(long, global = true, value_name = "N", help_heading = "Limits")]
+    pub max_grid_points: Option<u64>,
+    /// Highest degree of a curve, patch direction or basis [env: CAGD_MAX_DEGREE; default 1000].
+    #[arg(long, global = true, value_name = "N", help_heading = "Limits")]
+    pub max_degree: Option<u64>,
+    /// Most stored entries of a linear system [env: CAGD_MAX_SYSTEM_ENTRIES; default 100000000].
+    #[arg(long, global = true, value_name = "N", help_heading = "Limits")]
+    pub max_system_entries: Option<u64>,
+    /// Most arithmetic operations of one command, estimated up front [env: CAGD_MAX_WORK; default 2000000000].
+    #[arg(long, global = true, value_name = "N", help_heading = "Limits")]
+    pub max_work: Option<u64>,
+}
+
+impl LimitArgs {
+    /// The limits: defaults, then the environment, then these flags.
+    pub fn resolve(&self) -> crate::Result<crate::limits::Limits> {
+        let mut limits = crate::limits::Limits::from_env()?;
+        let flags = [
+            ("max_input_bytes", self.max_input_bytes),
+            ("max_expression_bytes", self.max_expression_bytes),
+            ("max_depth", self.max_depth),
+            ("max_elements", self.max_elements),
+            ("max_iterations", self.max_iterations),
+            ("max_samples", self.max_samples),
+            ("max_grid_points", self.max_grid_points),
+            ("max_degree", self.max_degree),
+            ("max_system_entries", self.max_system_entries),
+            ("max_work", self.max_work),
+        ];
+        for (name, value) in flags {
+            if let Some(v) = value {
+                limits.set(name, v)?;
+            }
+        }
+        Ok(limits)
+    }
+}

@@ -60,6 +60,7 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
 /// stages every file before renaming any.
 #[derive(Debug, Default)]
 pub struct PendingWrites {
+    dirs: Vec<(String, PathBuf)>,
     files: Vec<(String, PathBuf, Vec<u8>)>,
 }
 
@@ -74,24 +75,92 @@ impl PendingWrites {
         self.files.push((argument.into(), path.into(), bytes));
     }
 
+    /// Adds a folder to create (with its parents) before the files are staged.
+    pub fn create_dir(&mut self, argument: impl Into<String>, path: impl Into<PathBuf>) {
+        self.dirs.push((argument.into(), path.into()));
+    }
+
     /// Whether no file was added.
     pub fn is_empty(&self) -> bool {
         self.files.is_empty()
     }
 
+    /// The paths of the files to be written, in the order added.
+    pub fn paths(&self) -> impl Iterator<Item = &Path> {
+        self.files.iter().map(|(_, p, _)| p.as_path())
+    }
+
+    /// The contents staged for `path`, if a file was added there.
+    pub fn contents(&self, path: &Path) -> Option<&[u8]> {
+        self.files
+            .iter()
+            .find(|(_, p, _)| p == path)
+            .map(|(_, _, b)| b.as_slice())
+    }
+
     /// Writes every file. On an error while staging, no file is written; the error names the
     /// argument and the path.
     pub fn commit(self) -> Result<(), super::CliError> {
+        for (argument, dir) in &self.dirs {
+            std::fs::create_dir_all(dir).map_err(|e| {
+                super::CliError::io(
+                    argument.as_str(),
+                    &e,
+                    "a folder that can be created and written",
+                )
+            })?;
+        }
         let mut staged = Vec::with_capacity(self.files.len());
         for (argument, path, bytes) in &self.files {
+            // A folder in the way would only fail at the rename, after other files were
+            // renamed into place: refuse it before anything is written.
+            if path.is_dir() {
+                let e = std::io::Error::other("is a folder, not a file");
+                return Err(write_error(argument, path, &e));
+            }
             let tmp = stage(path, bytes).map_err(|e| write_error(argument, path, &e))?;
             staged.push((argument, path, tmp));
         }
+        // Renames can still fail (a race, a file system that refuses): undo the ones done, so
+        // that the files are all written or none is.
+        let mut done: Vec<(&PathBuf, Option<tempfile::TempPath>)> = Vec::new();
         for (argument, path, tmp) in staged {
-            tmp.persist(path)
-                .map_err(|e| write_error(argument, path, &e.error))?;
+            let backup = backup_of(path);
+            if let Err(e) = tmp.persist(path) {
+                roll_back(done);
+                return Err(write_error(argument, path, &e.error));
+            }
+            done.push((path, backup));
         }
         Ok(())
+    }
+}
+
+/// A hard link to the file at `path` under a temporary name, if there is one, so that a
+/// replaced file can be restored.
+fn backup_of(path: &Path) -> Option<tempfile::TempPath> {
+    if !path.is_file() {
+        return None;
+    }
+    let name = tempfile::Builder::new()
+        .prefix(".cagd-backup-")
+        .suffix(".tmp")
+        .make_in(directory_of(path), |p| std::fs::hard_link(path, p))
+        .ok()?;
+    Some(name.into_temp_path())
+}
+
+/// Restores the files replaced and removes the files created by the renames in `done`.
+fn roll_back(done: Vec<(&PathBuf, Option<tempfile::TempPath>)>) {
+    for (path, backup) in done.into_iter().rev() {
+        match backup {
+            Some(b) => {
+                let _ = b.persist(path);
+            }
+            None => {
+                let _ = std::fs::remove_file(path);
+            }
+        }
     }
 }
 

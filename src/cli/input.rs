@@ -25,7 +25,8 @@ use super::{CliError, ErrorKind};
 use crate::octave::literal::{Env, Expr, LiteralScalar, ParamExpr};
 use crate::octave::script::Script;
 
-/// Largest input file or standard input accepted, in bytes (64 MiB).
+/// Largest input file or standard input accepted by default, in bytes (64 MiB); the limit in
+/// force is [`crate::limits::Limits::max_input_bytes`].
 pub const MAX_INPUT_BYTES: u64 = 64 << 20;
 
 /// The form of a matrix argument, for error messages.
@@ -39,15 +40,23 @@ pub const CURVE_FORM: &str = "an expression in the curve parameter such as \"[u;
 
 /// Reads a file (or standard input for `-`) as text, with the size limit.
 pub fn read_text(argument: &str, path: &str) -> Result<String, CliError> {
-    let form = "a readable UTF-8 text file (at most 64 MiB), or - for standard input";
+    let limit = crate::limits::Limits::current().max_input_bytes;
+    let size = if limit % (1 << 20) == 0 {
+        format!("{} MiB", limit >> 20)
+    } else {
+        format!("{limit} bytes")
+    };
+    let form = format!("a readable UTF-8 text file (at most {size}), or - for standard input");
+    let form = form.as_str();
     let mut bytes = Vec::new();
     let result = if path == "-" {
         std::io::stdin()
             .lock()
-            .take(MAX_INPUT_BYTES + 1)
+            .take(limit.saturating_add(1))
             .read_to_end(&mut bytes)
     } else {
-        std::fs::File::open(path).and_then(|f| f.take(MAX_INPUT_BYTES + 1).read_to_end(&mut bytes))
+        std::fs::File::open(path)
+            .and_then(|f| f.take(limit.saturating_add(1)).read_to_end(&mut bytes))
     };
     let shown = if path == "-" {
         argument.to_string()
@@ -55,10 +64,10 @@ pub fn read_text(argument: &str, path: &str) -> Result<String, CliError> {
         format!("{argument} {path}")
     };
     result.map_err(|e| CliError::io(shown.clone(), &e, form))?;
-    if bytes.len() as u64 > MAX_INPUT_BYTES {
+    if bytes.len() as u64 > limit {
         return Err(CliError::new(
             shown,
-            "the input is larger than 64 MiB",
+            format!("the input is larger than {size} (see --max-input-bytes)"),
             form,
             ErrorKind::Data,
         ));
@@ -418,6 +427,9 @@ pub fn load_params<T: LiteralScalar>(argument: &str, text: &str) -> Result<Vec<T
             ErrorKind::Shape,
         ));
     }
+    crate::limits::Limits::current()
+        .check_samples("parameter values", values.len())
+        .map_err(|e| CliError::library(argument, e, PARAMS_FORM))?;
     Ok(values)
 }
 
@@ -429,15 +441,24 @@ pub fn load_params<T: LiteralScalar>(argument: &str, text: &str) -> Result<Vec<T
 /// assert!(cagd::cli::samples::<f64>(1, 2).is_err());
 /// ```
 pub fn samples<T: LiteralScalar>(n: usize, min: usize) -> Result<Vec<T>, CliError> {
-    const MAX_SAMPLES: usize = 1_000_000;
-    if n < min || n > MAX_SAMPLES {
+    let max = crate::limits::Limits::current().max_samples;
+    if n < min {
         return Err(CliError::new(
             "--n",
-            format!("N = {n} is too {}", if n < min { "small" } else { "large" }),
-            format!("an integer N with {min} ≤ N ≤ {MAX_SAMPLES} (samples linspace(0,1,N))"),
+            format!("N = {n} is too small"),
+            format!("an integer N with {min} ≤ N ≤ {max} (samples linspace(0,1,N))"),
             ErrorKind::Shape,
         ));
     }
+    crate::limits::Limits::current()
+        .check_samples("samples N", n)
+        .map_err(|e| {
+            CliError::library(
+                "--n",
+                e,
+                &format!("an integer N with {min} ≤ N ≤ {max} (samples linspace(0,1,N))"),
+            )
+        })?;
     Ok(T::linspace(&T::zero(), &T::one(), n))
 }
 

@@ -6,15 +6,22 @@
 //! [`Report`] with [`render`] and writes files with [`PendingWrites`] (atomically: a file is
 //! complete or absent).
 //!
+//! The whole command line runs in-process with [`run`]: it parses the arguments, computes, and
+//! returns an [`Outcome`] holding the text for standard output and the files to write, staged
+//! in memory; nothing touches the file system until the caller commits the files (the binary
+//! does, fuzzing and tests need not).
+//!
 //! Every failure is a [`CliError`]: one line `<argument>: <problem>; expected <form>`, exit
 //! code 2 (1 only for internal faults).
 
+mod app;
 pub mod args;
 mod atomic;
 mod error;
 mod input;
 mod output;
 
+pub use app::{run, Outcome};
 pub use atomic::{write_atomic, PendingWrites};
 pub use error::{CliError, ErrorKind};
 pub use input::{

@@ -176,7 +176,10 @@ const SINGULAR_EIGENVALUE: f64 = 1e-12;
 /// # Errors
 /// Those of the net ([`Error::ShapeMismatch`], [`Error::TooFewPoints`], [`Error::NonFinite`]);
 /// [`Error::SingularMask`] when the system is singular: some eigenvalue `λ_pq` is below
-/// `1e-12 · (1 + 4|α| + 4|β|)` in modulus, or elimination meets an exactly zero pivot.
+/// `1e-12 · (1 + 4|α| + 4|β|)` in modulus, or elimination meets an exactly zero pivot;
+/// [`Error::TooLarge`] when the band would hold more than
+/// [`crate::limits::Limits::max_system_entries`] numbers or the elimination would take more
+/// than [`crate::limits::Limits::max_work`] operations.
 ///
 /// ```
 /// use cagd::coons::{discrete_coons, solve_mask, Mask};
@@ -217,6 +220,11 @@ pub fn solve_mask<T: Scalar>(net: &[DMatrix<T>], mask: &Mask<T>) -> Result<Vec<D
             (j - 1) * inner_len + (i - 1)
         }
     };
+    // The band stores size × (3w + 1) entries: refuse what would not fit in memory.
+    let limits = crate::limits::Limits::current();
+    limits.check_system("mask net", size as u128 * (3 * w as u128 + 1))?;
+    // Banded elimination: about size · w² operations per coordinate.
+    limits.check_work("mask net", size as u128 * (w as u128 + 1).pow(2))?;
     let dims = net.len();
     let mut band = Band::new(size, w);
     let mut rhs = DMatrix::from_element(size, dims, T::zero());

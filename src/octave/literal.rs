@@ -271,7 +271,8 @@ impl LiteralError {
     }
 }
 
-/// Resource limits of the parser and evaluator. The defaults suit any hand-written input.
+/// Resource limits of the parser and evaluator. The defaults suit any hand-written input; they
+/// come from the process-wide [`crate::limits::Limits`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Limits {
     /// Longest input accepted, in bytes (default 1 MiB).
@@ -282,16 +283,15 @@ pub struct Limits {
     pub max_elements: usize,
     /// Most loop iterations a data script may run, all loops together (default 1 000 000).
     pub max_iterations: usize,
+    // One evaluation (an expression, a statement of a script, a curve at one parameter) may
+    // compute at most 64 × `max_elements` element results and matrix-product terms.
 }
 
+/// The limits in force in the process ([`crate::limits::Limits::current`]): by default 1 MiB,
+/// depth 64, 4 000 000 elements, 1 000 000 iterations.
 impl Default for Limits {
     fn default() -> Self {
-        Limits {
-            max_input_bytes: 1 << 20,
-            max_depth: 64,
-            max_elements: 4_000_000,
-            max_iterations: 1_000_000,
-        }
+        crate::limits::Limits::current().literal()
     }
 }
 
@@ -373,6 +373,12 @@ pub enum PowerError {
 pub trait LiteralScalar: Scalar {
     /// Whether arithmetic is exact (no rounding).
     const EXACT: bool;
+
+    /// Whether an exact number has grown too large to compute with in reasonable time
+    /// (numerator and denominator together longer than [`MAX_EXACT_BITS`]); never for `f64`.
+    fn is_oversized(&self) -> bool {
+        false
+    }
 
     /// The value of a decimal literal (`text` as lexed; `nearest` its nearest double).
     /// `None` if it is not finite in this type.
@@ -469,14 +475,22 @@ impl LiteralScalar for f64 {
     }
 }
 
-/// Largest size, in bits, of an exact power's numerator plus denominator.
-const MAX_EXACT_POWER_BITS: u64 = 1 << 20;
+/// Largest size, in bits, of an exact number's numerator plus denominator (about 1 200
+/// decimal digits): exact literals and results beyond it are refused
+/// ([`LiteralError::NumberOutOfRange`], [`LiteralError::TooLarge`]), since every operation on
+/// them costs a gcd quadratic in their size (found by fuzzing: `24.445^46913` took minutes,
+/// a range stepping by `1e-5828 - 2` took seconds per thousand elements).
+pub const MAX_EXACT_BITS: u64 = 1 << 12;
 
 impl LiteralScalar for BigRational {
     const EXACT: bool = true;
 
+    fn is_oversized(&self) -> bool {
+        self.numer().bits() + self.denom().bits() > MAX_EXACT_BITS
+    }
+
     fn from_literal(text: &str, _nearest: f64) -> Option<Self> {
-        rational_from_decimal(text)
+        rational_from_decimal(text).filter(|x| !x.is_oversized())
     }
 
     fn apply(f: Function, x: &Self) -> Option<Self> {
@@ -512,10 +526,16 @@ impl LiteralScalar for BigRational {
         }
         let bits = base.numer().bits() + base.denom().bits();
         let magnitude = n.magnitude().to_u64().unwrap_or(u64::MAX);
-        if magnitude.saturating_mul(bits) > MAX_EXACT_POWER_BITS {
+        if magnitude.saturating_mul(bits) > MAX_EXACT_BITS {
             return Err(PowerError::TooLarge);
         }
-        let p = num_traits::pow(base.clone(), magnitude as usize);
+        // Numerator and denominator are coprime, so are their powers: no gcd needed (a gcd
+        // at every squaring made large powers quadratic).
+        let e = magnitude as u32;
+        let p = BigRational::new_raw(
+            num_traits::pow(base.numer().clone(), e as usize),
+            num_traits::pow(base.denom().clone(), e as usize),
+        );
         Ok(if n.is_negative() { p.recip() } else { p })
     }
 
@@ -558,6 +578,7 @@ pub struct Env<T: LiteralScalar = f64> {
     vars: BTreeMap<String, DMatrix<T>>,
     warnings: BTreeSet<Warning>,
     limits: Limits,
+    pub(crate) meter: eval::Meter,
 }
 
 impl<T: LiteralScalar> Default for Env<T> {
@@ -566,6 +587,7 @@ impl<T: LiteralScalar> Default for Env<T> {
             vars: BTreeMap::new(),
             warnings: BTreeSet::new(),
             limits: Limits::default(),
+            meter: eval::Meter::default(),
         }
     }
 }

@@ -104,7 +104,16 @@ pub struct Script<T: LiteralScalar = f64> {
     functions: BTreeMap<String, usize>,
     order: Vec<String>,
     iterations: usize,
+    /// Elements of all values assigned so far (see [`WORK_PER_ELEMENT_LIMIT`]).
+    work: u128,
 }
+
+/// A script may assign at most this many times [`Limits::max_elements`] elements in total
+/// (10⁸ by default), so that a loop that rebuilds a large matrix at every iteration
+/// (`x = [x i]` a million times) stops with an error instead of running for hours.
+///
+/// [`Limits::max_elements`]: crate::octave::literal::Limits::max_elements
+pub const WORK_PER_ELEMENT_LIMIT: u128 = 25;
 
 /// Runs a data script. `env` holds variables bound before the script starts (the command line
 /// binds `N` from `--n`, so appendix C's script, which uses `N` without setting it, runs) and
@@ -133,6 +142,7 @@ pub fn run<T: LiteralScalar>(source: &str, env: Env<T>) -> Result<Script<T>, Lit
         definitions: Vec::new(),
         functions: BTreeMap::new(),
         iterations: 0,
+        work: 0,
     };
     script.execute(&program)?;
     Ok(script)
@@ -224,6 +234,21 @@ impl<T: LiteralScalar> Script<T> {
         if !self.order.iter().any(|n| n == name) {
             self.order.push(name.to_string());
         }
+    }
+
+    /// Counts `elements` assigned against the script's work limit.
+    fn charge(&mut self, elements: usize, at: Position) -> Result<(), LiteralError> {
+        self.work += elements as u128 + 1;
+        let limit = self.env.limits().max_elements;
+        if self.work > WORK_PER_ELEMENT_LIMIT * limit as u128 {
+            return Err(LiteralError::TooLarge {
+                at,
+                what: "the values assigned by the script, all together,".into(),
+                count: self.work,
+                limit: limit.saturating_mul(WORK_PER_ELEMENT_LIMIT as usize),
+            });
+        }
+        Ok(())
     }
 
     /// Refuses to change `name` if a parameter expression reads it.
@@ -329,6 +354,7 @@ impl<T: LiteralScalar> Script<T> {
         self.note_name(name);
         if !free && needs.is_empty() {
             let v = value.eval(&mut self.env)?;
+            self.charge(v.len(), at)?;
             self.functions.remove(name);
             self.env.bind(name, v);
             return Ok(());
@@ -397,17 +423,12 @@ impl<T: LiteralScalar> Script<T> {
             });
         }
         let x = rhs[(0, 0)].clone();
-        let mut m = self
-            .env
-            .get(name)
-            .cloned()
-            .unwrap_or_else(|| DMatrix::from_vec(0, 0, Vec::new()));
         let max = self.env.limits().max_elements;
-        let (r, c) = m.shape();
+        let (r, c) = self.env.get(name).map_or((0, 0), |m| m.shape());
         let (target, new_shape) = match positions.as_slice() {
             [k] => {
                 let k = *k;
-                if k <= m.len() {
+                if k <= r * c {
                     (((k - 1) % r.max(1), (k - 1) / r.max(1)), (r, c))
                 } else if r <= 1 {
                     ((0, k - 1), (1, k))
@@ -440,17 +461,34 @@ impl<T: LiteralScalar> Script<T> {
                     limit: max,
                 });
             }
-            let old = m;
-            m = DMatrix::from_fn(new_shape.0, new_shape.1, |i, j| {
-                if i < r && j < c {
-                    old[(i, j)].clone()
-                } else {
-                    T::zero()
-                }
-            });
+        }
+        // Taken out of the environment, not cloned: `x(i) = ...` in a loop costs O(1) per
+        // assignment, not a copy of `x` (which made filling a vector quadratic).
+        let mut m = self
+            .env
+            .unbind(name)
+            .unwrap_or_else(|| DMatrix::from_vec(0, 0, Vec::new()));
+        if new_shape != (r, c) {
+            let vector_growth = (r <= 1 && new_shape.0 == 1) || (c == 1 && new_shape.1 == 1);
+            m = if vector_growth || m.is_empty() {
+                // Column-major storage of a vector grows at its end: amortized O(1).
+                let mut data: Vec<T> = m.data.into();
+                data.resize(new_shape.0 * new_shape.1, T::zero());
+                DMatrix::from_vec(new_shape.0, new_shape.1, data)
+            } else {
+                let old = m;
+                DMatrix::from_fn(new_shape.0, new_shape.1, |i, j| {
+                    if i < r && j < c {
+                        old[(i, j)].clone()
+                    } else {
+                        T::zero()
+                    }
+                })
+            };
         }
         m[target] = x;
         self.env.bind(name, m);
+        self.charge(1, at)?;
         self.note_name(name);
         Ok(())
     }

@@ -341,7 +341,8 @@ impl Value {
     /// `base + i*increment` (with a relative allowance of a few ULPs in the count, so that
     /// `0:0.1:1` has 11 elements); the last element is clipped to `limit`. This is exact for
     /// integer ranges; for fractional ranges Octave's own elements may differ in the last bit.
-    /// Ranges of more than 2³¹ elements give `None`.
+    /// Ranges of more elements than [`crate::limits::Limits::max_elements`] (4 000 000 by
+    /// default) give `None`.
     pub fn to_array(&self) -> Option<ArrayD<f64>> {
         match self {
             Value::Scalar(x) => Some(ArrayD::from_elem(IxDyn(&[1, 1]), *x)),
@@ -417,15 +418,14 @@ fn range_count(base: f64, limit: f64, increment: f64) -> Option<usize> {
     let q = (limit - base) / increment;
     // Allow a few ULPs, as Octave does, so that 0:0.1:1 has 11 elements and not 10.
     let n = (q + q.abs() * 4.0 * f64::EPSILON).floor();
-    if n >= MAX_RANGE_ELEMENTS as f64 {
+    // A malformed file must not make the reader allocate without bound: a range is expanded
+    // only up to the element limit in force (found by fuzzing: `1 16666666666 8` asked for
+    // 16 GB).
+    if n >= crate::limits::Limits::current().max_elements as f64 {
         return None;
     }
     Some(n as usize + 1)
 }
-
-/// Ranges longer than this are not expanded by [`Value::to_array`] (no file holds one; a
-/// malformed file must not make the reader allocate without bound).
-const MAX_RANGE_ELEMENTS: usize = 1 << 31;
 
 /// The variables of one file, in order (as `save` wrote them and `load` returns them).
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -1299,13 +1299,14 @@ pub fn write_text(ws: &Workspace) -> Result<String> {
     Ok(out)
 }
 
-/// [`write_text`] into a file (created or truncated).
+/// [`write_text`] into a file, atomically ([`crate::cli::write_atomic`]: a temporary file in
+/// the same folder renamed over `path`, so the file is complete or absent, never partial).
 ///
 /// # Errors
 /// As [`write_text`], and [`TextFormatError::Io`] if the file cannot be written.
 pub fn write_text_file(path: impl AsRef<Path>, ws: &Workspace) -> Result<()> {
     let text = write_text(ws)?;
-    std::fs::write(path.as_ref(), text).map_err(|e| TextFormatError::Io {
+    crate::cli::write_atomic(path.as_ref(), text.as_bytes()).map_err(|e| TextFormatError::Io {
         path: path.as_ref().display().to_string(),
         message: e.to_string(),
     })

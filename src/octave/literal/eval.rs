@@ -152,18 +152,76 @@ fn finite<T: LiteralScalar>(
     at: Position,
     what: impl FnOnce() -> String,
 ) -> Result<T, LiteralError> {
-    if x.is_finite_value() {
+    if x.is_oversized() {
+        Err(LiteralError::TooLarge {
+            at,
+            what: "an exact number's numerator and denominator (in bits)".into(),
+            count: u128::from(crate::octave::literal::MAX_EXACT_BITS) + 1,
+            limit: crate::octave::literal::MAX_EXACT_BITS as usize,
+        })
+    } else if x.is_finite_value() {
         Ok(x)
     } else {
         Err(LiteralError::NonFinite { at, what: what() })
     }
 }
 
-/// Evaluates `e` in `env`.
+/// Work done by the evaluation in progress: nesting of `eval` calls and the number of element
+/// results (and matrix-product terms) computed since the outermost call began. Bounds the
+/// time of one evaluation to `64 × max_elements` element operations, so that a short text
+/// (`A*A*A*…` of large matrices, long chains of large sums) cannot run for minutes.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct Meter {
+    depth: usize,
+    work: u128,
+}
+
+/// Meters never make two environments different.
+impl PartialEq for Meter {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+/// How many element operations one evaluation may do, per allowed element.
+const WORK_PER_ELEMENT: u128 = 64;
+
+fn charge<T: LiteralScalar>(
+    env: &mut Env<T>,
+    at: Position,
+    work: u128,
+) -> Result<(), LiteralError> {
+    env.meter.work = env.meter.work.saturating_add(work);
+    let max = env.limits().max_elements;
+    let limit = WORK_PER_ELEMENT * max as u128;
+    if env.meter.work > limit {
+        return Err(LiteralError::TooLarge {
+            at,
+            what: "the evaluation's work (element operations)".into(),
+            count: env.meter.work,
+            limit: usize::try_from(limit).unwrap_or(usize::MAX),
+        });
+    }
+    Ok(())
+}
+
+/// Evaluates `e` in `env`, within the work limit of one evaluation.
 pub(crate) fn eval<T: LiteralScalar>(
     e: &Expr,
     env: &mut Env<T>,
 ) -> Result<DMatrix<T>, LiteralError> {
+    if env.meter.depth == 0 {
+        env.meter.work = 0;
+    }
+    env.meter.depth += 1;
+    let result = eval_node(e, env);
+    env.meter.depth -= 1;
+    let m = result?;
+    charge(env, e.at, m.len() as u128)?;
+    Ok(m)
+}
+
+fn eval_node<T: LiteralScalar>(e: &Expr, env: &mut Env<T>) -> Result<DMatrix<T>, LiteralError> {
     match &e.node {
         Node::Number { text, value } => {
             T::from_literal(text, *value).map(scalar).ok_or_else(|| {
@@ -187,6 +245,7 @@ pub(crate) fn eval<T: LiteralScalar>(
             for (op, at, rhs) in rest {
                 let r = eval(rhs, env)?;
                 acc = binary(*op, acc, r, *at, env)?;
+                charge(env, *at, acc.len() as u128)?;
             }
             Ok(acc)
         }
@@ -605,6 +664,8 @@ fn binary<T: LiteralScalar>(
             if a_scalar || b_scalar {
                 elementwise(op, &a, &b, at, max)
             } else if a.ncols() == b.nrows() {
+                let terms = a.nrows() as u128 * b.ncols() as u128 * a.ncols() as u128;
+                charge(env, at, terms)?;
                 matrix_product(&a, &b, at, max)
             } else if same_shape_vectors {
                 lenient(env, ".*");

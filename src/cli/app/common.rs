@@ -6,15 +6,15 @@ use std::path::Path;
 use nalgebra::{DMatrix, DVector};
 use ndarray::Array3;
 
-use cagd::bezier::BezierCurve;
-use cagd::cli::{
+use crate::bezier::BezierCurve;
+use crate::cli::{
     load_expression, load_matrix, load_params, samples, CliError, ErrorKind, PendingWrites,
     CURVE_FORM,
 };
-use cagd::octave::literal::{Env, LiteralScalar, ParamExpr, Warning};
-use cagd::octave::script::{Binding, Script};
-use cagd::plot::{Figure, ImageKind};
-use cagd::{Curve, SampledCurve};
+use crate::octave::literal::{Env, LiteralScalar, ParamExpr, Warning};
+use crate::octave::script::{Binding, Script};
+use crate::plot::{Figure, ImageKind};
+use crate::{Curve, SampledCurve};
 
 /// Samples taken when neither `--t`/`--u`/`--v` nor `--n` is given: 0:0.1:1.
 pub const DEFAULT_SAMPLES: usize = 11;
@@ -23,7 +23,7 @@ pub const DEFAULT_SAMPLES: usize = 11;
 pub const CURVE_ARG_FORM: &str = "an expression in the curve parameter such as \"[u; 0; u-u^2]\", or control points (columns) of a Bézier curve such as \"[0 0 0; 1 0 1]'\"";
 
 /// A library error about `argument`.
-pub fn lib<'a>(argument: &'a str, expected: &'a str) -> impl Fn(cagd::Error) -> CliError + 'a {
+pub fn lib<'a>(argument: &'a str, expected: &'a str) -> impl Fn(crate::Error) -> CliError + 'a {
     move |e| CliError::library(argument, e, expected)
 }
 
@@ -59,6 +59,37 @@ pub fn params_or_samples<T: LiteralScalar>(
         Some(text) => load_params(argument, text),
         None => samples(n.unwrap_or(default), 2),
     }
+}
+
+/// Refuses a grid of `nu × nv` points above [`crate::limits::Limits::max_grid_points`].
+pub fn check_grid(nu: usize, nv: usize) -> Result<(), CliError> {
+    crate::limits::Limits::current()
+        .check_grid("surface grid", nu, nv)
+        .map_err(lib(
+            "--u/--v",
+            "fewer grid points (a smaller --n, --u, --v), or a higher --max-grid-points",
+        ))
+}
+
+/// Refuses a degree above [`crate::limits::Limits::max_degree`].
+pub fn check_degree(argument: &str, degree: usize) -> Result<(), CliError> {
+    crate::limits::Limits::current()
+        .check_degree("degree", degree)
+        .map_err(lib(
+            argument,
+            "a lower degree (fewer control points or nodes), or a higher --max-degree",
+        ))
+}
+
+/// Refuses a computation of about `operations` arithmetic operations above
+/// [`crate::limits::Limits::max_work`].
+pub fn check_work(argument: &str, operations: u128) -> Result<(), CliError> {
+    crate::limits::Limits::current()
+        .check_work("estimated operations", operations)
+        .map_err(lib(
+            argument,
+            "fewer points or a lower degree, or a higher --max-work",
+        ))
 }
 
 /// A 1×k row of values.
@@ -263,7 +294,7 @@ pub fn add_plot(
     figure: &Figure,
 ) -> Result<(), CliError> {
     let plot_error =
-        |e: cagd::plot::PlotError| CliError::plot(format!("{argument} {}", path.display()), &e);
+        |e: crate::plot::PlotError| CliError::plot(format!("{argument} {}", path.display()), &e);
     let kind = ImageKind::from_path(path).map_err(plot_error)?;
     let bytes = figure.render(kind).map_err(plot_error)?;
     files.add(argument, path, bytes);
@@ -278,9 +309,9 @@ pub fn add_mesh(
     grid: &Array3<f64>,
 ) -> Result<(), CliError> {
     let mesh_error =
-        |e: cagd::mesh::MeshError| CliError::mesh(format!("{argument} {}", path.display()), &e);
-    let format = cagd::mesh::MeshFormat::from_path(path).map_err(mesh_error)?;
-    let bytes = cagd::mesh::encode(grid, format).map_err(mesh_error)?;
+        |e: crate::mesh::MeshError| CliError::mesh(format!("{argument} {}", path.display()), &e);
+    let format = crate::mesh::MeshFormat::from_path(path).map_err(mesh_error)?;
+    let bytes = crate::mesh::encode(grid, format).map_err(mesh_error)?;
     files.add(argument, path, bytes);
     Ok(())
 }

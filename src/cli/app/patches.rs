@@ -4,19 +4,19 @@ use clap::{Args, ValueEnum};
 use nalgebra::{DMatrix, DVector};
 use ndarray::Array3;
 
-use cagd::cli::args::{
+use crate::cli::args::{
     CurveParamArgs, MeshArgs, OutputArgs, PlotArgs, RowsArgs, ScriptArgs, StepsArgs,
     SurfaceParamArgs,
 };
-use cagd::cli::{load_net, load_params, CliError, PendingWrites, Report, Value};
-use cagd::coons::{
+use crate::cli::{load_net, load_params, CliError, PendingWrites, Report, Value};
+use crate::coons::{
     discrete_coons, solve_mask, BicubicCoonsPatch, CoonsBoundary, CrossDerivatives, Mask, Twist,
 };
-use cagd::lagrange::Lagrange;
-use cagd::octave::literal::{Env, LiteralScalar};
-use cagd::octave::script::Script;
-use cagd::plot::{Colour, Figure};
-use cagd::{CoonsPatch, Curve, GordonSurface, Surface, Tolerance};
+use crate::lagrange::Lagrange;
+use crate::octave::literal::{Env, LiteralScalar};
+use crate::octave::script::Script;
+use crate::plot::{Colour, Figure};
+use crate::{CoonsPatch, Curve, GordonSurface, Surface, Tolerance};
 
 use super::bezier::point_mode;
 use super::common::*;
@@ -90,10 +90,12 @@ fn surface_params<T: LiteralScalar>(
         (None, None, Some(s)) => Ok(s.to_vec()),
         _ => params_or_samples(arg, given, params.n, DEFAULT_SAMPLES),
     };
-    Ok((
+    let (us, vs) = (
         pick("--u", &params.u, from_script.0)?,
         pick("--v", &params.v, from_script.1)?,
-    ))
+    );
+    check_grid(us.len(), vs.len())?;
+    Ok((us, vs))
 }
 
 #[derive(Debug, Args)]
@@ -423,6 +425,7 @@ pub fn discrete<T: LiteralScalar>(cmd: &DiscreteCoonsCommand) -> Result<Outcome,
     let script = prepare_script::<T>(&cmd.script, None)?;
     let net = load_net::<T>("NET", &cmd.net, script.as_ref())?;
     let (m1, n1, d) = net.dim();
+    check_degree("NET", m1.max(n1).saturating_sub(1))?;
     let coords: Vec<DMatrix<T>> = (0..d)
         .map(|k| DMatrix::from_fn(m1, n1, |i, j| net[[i, j, k]].clone()))
         .collect();
@@ -512,6 +515,7 @@ fn packed_network<T: LiteralScalar>(s: &Script<T>) -> Result<PackedNetwork<T>, C
     let (g_u, g_v, g_uv, x) = (need("g_u")?, need("g_v")?, need("g_uv")?, need("x")?);
     let nodes: Vec<T> = x.iter().cloned().collect();
     let k = nodes.len();
+    check_degree("--script", k.saturating_sub(1))?;
     let split = |name: &str,
                  m: &DMatrix<T>,
                  param: &str|
@@ -600,6 +604,8 @@ pub fn gordon<T: LiteralScalar>(cmd: &GordonCommand) -> Result<Outcome, CliError
                 )),
             }
         };
+        check_degree("--u-curve", at_u.len().saturating_sub(1))?;
+        check_degree("--v-curve", at_v.len().saturating_sub(1))?;
         let un = nodes("--u-nodes", &cmd.u_nodes, at_u.len())?;
         let vn = nodes("--v-nodes", &cmd.v_nodes, at_v.len())?;
         (un, vn, at_u, at_v, None)
@@ -645,7 +651,7 @@ pub fn gordon<T: LiteralScalar>(cmd: &GordonCommand) -> Result<Outcome, CliError
     }
     .map_err(|e| {
         let form = match e {
-            cagd::Error::UnsortedNodes { .. } | cagd::Error::DuplicateNodes { .. } => form_nodes,
+            crate::Error::UnsortedNodes { .. } | crate::Error::DuplicateNodes { .. } => form_nodes,
             _ => expected,
         };
         CliError::library("--u-curve/--v-curve", e, form)
@@ -744,9 +750,11 @@ pub struct LagrangeCommand {
 /// Lagrange basis values or interpolation (thesis algorithm 8, `Lagrange`).
 pub fn lagrange<T: LiteralScalar>(cmd: &LagrangeCommand) -> Result<Outcome, CliError> {
     let nodes: Vec<T> = load_params("--nodes", &cmd.nodes)?;
+    check_degree("--nodes", nodes.len().saturating_sub(1))?;
     let basis = Lagrange::new(nodes.clone())
         .map_err(lib("--nodes", "distinct finite nodes, at least one"))?;
     let ts: Vec<T> = params_or_samples("--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
+    check_work("--t", ts.len() as u128 * (nodes.len() as u128 + 1).pow(2))?;
     let mut report = Report::new();
     report.push("t", Value::Matrix(row(&ts)));
     let mut files = PendingWrites::new();

@@ -9,11 +9,11 @@ use nalgebra::{DMatrix, DVector};
 use ndarray::Array3;
 use num_rational::BigRational;
 
-use cagd::bezier::{BezierCurve, BezierPatch};
-use cagd::cli::{render, CliError, Format, PendingWrites, Report, Value};
-use cagd::octave::literal::{Env, LiteralScalar, ParamExpr};
-use cagd::plot::{Colour, Figure};
-use cagd::{CoonsPatch, GordonSurface, SampledCurve, Surface, Tolerance};
+use crate::bezier::{BezierCurve, BezierPatch};
+use crate::cli::{render, CliError, Format, PendingWrites, Report, Value};
+use crate::octave::literal::{Env, LiteralScalar, ParamExpr};
+use crate::plot::{Colour, Figure};
+use crate::{CoonsPatch, GordonSurface, SampledCurve, Surface, Tolerance};
 
 use super::common::*;
 use super::patches::coons_figure;
@@ -133,18 +133,13 @@ pub fn thesis(cmd: &ThesisCommand) -> Result<Outcome, CliError> {
         cmd.out.display(),
         files.written.join("\n  ")
     );
-    // Everything is computed: only now create the folder; the files are then written
-    // atomically (all staged before any is renamed into place).
-    std::fs::create_dir_all(&cmd.out).map_err(|e| {
-        CliError::io(
-            format!("--out {}", cmd.out.display()),
-            &e,
-            "a folder that can be created and written",
-        )
-    })?;
+    // Everything is computed: the folder is created only when the files are committed, and
+    // the files are then written atomically (all staged before any is renamed into place).
+    let mut pending = files.pending;
+    pending.create_dir(format!("--out {}", cmd.out.display()), &cmd.out);
     Ok(Outcome {
         stdout: out,
-        files: files.pending,
+        files: pending,
         warnings: Vec::new(),
     })
 }
@@ -165,14 +160,14 @@ fn primer_2_4(out: &mut String, files: &mut Files) -> Result<(), CliError> {
     out.push_str(&text(&r));
     out.push_str("The thesis prints (3.5, 1.5, 0.75): the same.\n\n");
     let curve = BezierCurve::new(to_f64(exact.control())).map_err(lib("thesis", INTERNAL))?;
-    let ts = cagd::linspace(0.0, 1.0, 11);
+    let ts = crate::linspace(0.0, 1.0, 11);
     let points = curve.eval_many(&ts).map_err(lib("thesis", INTERNAL))?;
     out.push_str("The curve over [0,1] (deCasteljau(B, 11): T, one point per column):\n\n");
     let mut r = Report::<f64>::new();
     r.push("T", Value::Matrix(points));
     out.push_str(&text(&r));
     let dense = curve
-        .eval_many(&cagd::linspace(0.0, 1.0, 101))
+        .eval_many(&crate::linspace(0.0, 1.0, 101))
         .map_err(lib("thesis", INTERNAL))?;
     let s = curve.scheme(0.5);
     let mut figure =
@@ -221,7 +216,7 @@ fn patch_example(out: &mut String, files: &mut Files) -> Result<(), CliError> {
     );
     out.push_str(&text(&r));
     let patch = BezierPatch::from_array3(&example_net::<f64>()).map_err(lib("thesis", INTERNAL))?;
-    let t = cagd::linspace(0.0, 1.0, 5);
+    let t = crate::linspace(0.0, 1.0, 5);
     let grid = patch
         .try_eval_grid(&t, &t)
         .map_err(lib("thesis", INTERNAL))?;
@@ -229,7 +224,7 @@ fn patch_example(out: &mut String, files: &mut Files) -> Result<(), CliError> {
     let mut r = Report::<f64>::new();
     r.push("P", Value::Grid(grid));
     out.push_str(&text(&r));
-    let t = cagd::linspace(0.0, 1.0, 21);
+    let t = crate::linspace(0.0, 1.0, 21);
     let grid = patch
         .try_eval_grid(&t, &t)
         .map_err(lib("thesis", INTERNAL))?;
@@ -272,7 +267,7 @@ fn primer_4_3(out: &mut String, files: &mut Files) -> Result<(), CliError> {
         "The thesis prints r_c = (0.2, 0.5, 0.18), r_d = (0.2, 0.3, 0.3), r_cd = (0.2, 0.5, 0.1)\n\
          and x = (0.2, 0.3, 0.38): the same.\n\n",
     );
-    let t = cagd::linspace(0.0, 1.0, 21);
+    let t = crate::linspace(0.0, 1.0, 21);
     let [c1, c2, d1, d2] =
         [(C1, "u"), (C2, "u"), (D1, "v"), (D2, "v")].map(|(e, p)| expr_curve::<f64>(e, p, &t));
     let (c1, c2, d1, d2) = (c1?, c2?, d1?, d2?);
@@ -297,7 +292,7 @@ fn appendix_c(out: &mut String, files: &mut Files) -> Result<(), CliError> {
          script uses it undefined) and the last line sets P4 = [1;1;1] (the printed script sets\n\
          P3 twice, so krpaCoons would fail on the missing P4).\n\n",
     );
-    let script = cagd::octave::script::run::<f64>(APPENDIX_C, Env::new())
+    let script = crate::octave::script::run::<f64>(APPENDIX_C, Env::new())
         .map_err(|e| CliError::literal("thesis", e, INTERNAL))?;
     let get =
         |name: &str| script_curve(&script, name, if name.starts_with('c') { "u" } else { "v" });
@@ -324,7 +319,7 @@ fn appendix_c(out: &mut String, files: &mut Files) -> Result<(), CliError> {
         Tolerance::default(),
     )
     .map_err(lib("thesis", INTERNAL))?;
-    let t = cagd::linspace(0.0, 1.0, 10);
+    let t = crate::linspace(0.0, 1.0, 10);
     let grid = patch.eval_grid(&t, &t);
     out.push_str("krpaCoons(c1,c2,d1,d2,P1,P2,P3,P4) with N = 10: the grid P = tenzor(R):\n\n");
     let mut r = Report::<f64>::new();
@@ -363,7 +358,7 @@ fn gordon_of<T: LiteralScalar>(
         .iter()
         .map(|e| expr_curve::<T>(e, "u", &at_u))
         .collect::<Result<Vec<_>, _>>()?;
-    let g_uv = cagd::cli::load_matrix::<T>("thesis", G_UV, None)?;
+    let g_uv = crate::cli::load_matrix::<T>("thesis", G_UV, None)?;
     let points = (0..3)
         .map(|i| {
             (0..3)
@@ -407,7 +402,7 @@ fn appendix_d(out: &mut String, files: &mut Files) -> Result<(), CliError> {
     out.push_str(
         "The network lies on (u, v, v + u - u^2), which Gordon reproduces: 15/16 = 3/4 + 1/4 - 1/16.\n\n",
     );
-    let t = cagd::linspace(0.0, 1.0, 10);
+    let t = crate::linspace(0.0, 1.0, 10);
     let g = gordon_of::<f64>(&t, &t)?;
     let grid = g.eval_grid(&t, &t);
     out.push_str("krpaGordon(g_u, g_v, g_uv, x, 10): the grid P:\n\n");
@@ -422,7 +417,7 @@ fn appendix_d(out: &mut String, files: &mut Files) -> Result<(), CliError> {
         c.v.value,
         c.amplification()
     );
-    let t = cagd::linspace(0.0, 1.0, 21);
+    let t = crate::linspace(0.0, 1.0, 21);
     let g = gordon_of::<f64>(&t, &t)?;
     let grid = g.eval_grid(&t, &t);
     let mut figure = Figure::new("Appendix D: Gordon surface and its curve network")

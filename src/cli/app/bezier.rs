@@ -3,14 +3,14 @@
 use clap::Args;
 use nalgebra::DMatrix;
 
-use cagd::bezier::{BezierCurve, BezierPatch};
-use cagd::cli::args::{
+use crate::bezier::{BezierCurve, BezierPatch};
+use crate::cli::args::{
     CurveParamArgs, MeshArgs, OutputArgs, PlotArgs, RowsArgs, ScriptArgs, StepsArgs,
     SurfaceParamArgs,
 };
-use cagd::cli::{load_net, CliError, PendingWrites, Report, Value};
-use cagd::octave::literal::{Env, LiteralScalar};
-use cagd::plot::{Colour, Figure};
+use crate::cli::{load_net, CliError, PendingWrites, Report, Value};
+use crate::octave::literal::{Env, LiteralScalar};
+use crate::plot::{Colour, Figure};
 
 use super::common::*;
 use super::{emit, prepare_script, Outcome};
@@ -39,11 +39,17 @@ pub struct DeCasteljauCommand {
 pub fn decasteljau<T: LiteralScalar>(cmd: &DeCasteljauCommand) -> Result<Outcome, CliError> {
     let script = prepare_script::<T>(&cmd.script, None)?;
     let control = points("CONTROL", &cmd.control, script.as_ref(), cmd.rows.rows)?;
+    check_degree("CONTROL", control.ncols().saturating_sub(1))?;
     let curve = BezierCurve::new(control).map_err(lib(
         "CONTROL",
         "control points b_0..b_n, one per column (or per row with --rows)",
     ))?;
     let ts: Vec<T> = params_or_samples("--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
+    // de Casteljau: (n+1)² operations per coordinate and parameter.
+    check_work(
+        "--t",
+        ts.len() as u128 * curve.dim() as u128 * (curve.degree() as u128 + 1).pow(2),
+    )?;
     let values = curve
         .eval_many(&ts)
         .map_err(lib("--t", "finite parameter values"))?;
@@ -106,7 +112,7 @@ pub struct BezierPatchCommand {
 pub fn point_mode(params: &SurfaceParamArgs) -> bool {
     let single = |s: &Option<String>| {
         s.as_ref()
-            .is_some_and(|t| cagd::cli::load_params::<f64>("", t).is_ok_and(|v| v.len() == 1))
+            .is_some_and(|t| crate::cli::load_params::<f64>("", t).is_ok_and(|v| v.len() == 1))
     };
     params.n.is_none() && single(&params.u) && single(&params.v)
 }
@@ -115,12 +121,20 @@ pub fn point_mode(params: &SurfaceParamArgs) -> bool {
 pub fn bezier_patch<T: LiteralScalar>(cmd: &BezierPatchCommand) -> Result<Outcome, CliError> {
     let script = prepare_script::<T>(&cmd.script, cmd.params.n)?;
     let net = load_net::<T>("NET", &cmd.net, script.as_ref())?;
+    let (m1, n1, _) = net.dim();
+    check_degree("NET", m1.max(n1).saturating_sub(1))?;
     let patch = BezierPatch::from_array3(&net).map_err(lib(
         "NET",
         "a packed (m+1)×3(n+1) control net as ploskevB takes it",
     ))?;
     let us: Vec<T> = params_or_samples("--u", &cmd.params.u, cmd.params.n, DEFAULT_SAMPLES)?;
     let vs: Vec<T> = params_or_samples("--v", &cmd.params.v, cmd.params.n, DEFAULT_SAMPLES)?;
+    check_grid(us.len(), vs.len())?;
+    // Tensor de Casteljau (also --steps): about (m+1)(n+1)·(m+n+2) per coordinate and point.
+    check_work(
+        "--u/--v",
+        us.len() as u128 * vs.len() as u128 * 3 * (m1 as u128 * n1 as u128) * (m1 + n1) as u128,
+    )?;
     let grid = patch
         .try_eval_grid(&us, &vs)
         .map_err(lib("--u/--v", "finite parameter values"))?;
@@ -195,16 +209,10 @@ pub struct BernsteinCommand {
 
 /// Bernstein polynomial values.
 pub fn bernstein<T: LiteralScalar>(cmd: &BernsteinCommand) -> Result<Outcome, CliError> {
-    const MAX_DEGREE: usize = 1000;
-    if cmd.degree > MAX_DEGREE {
-        return Err(shape(
-            "--degree",
-            format!("degree {} is too large", cmd.degree),
-            "a degree 0 ≤ n ≤ 1000",
-        ));
-    }
+    check_degree("--degree", cmd.degree)?;
     let ts: Vec<T> = params_or_samples("--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
-    let all = cagd::bernstein::basis_matrix(cmd.degree, &ts);
+    check_work("--t", ts.len() as u128 * (cmd.degree as u128 + 1).pow(2))?;
+    let all = crate::bernstein::basis_matrix(cmd.degree, &ts);
     let result = match cmd.i {
         Some(i) if i > cmd.degree => {
             return Err(shape(
@@ -256,6 +264,7 @@ pub struct DerivativeCommand {
 pub fn derivative<T: LiteralScalar>(cmd: &DerivativeCommand) -> Result<Outcome, CliError> {
     let script = prepare_script::<T>(&cmd.script, None)?;
     let control = points("CONTROL", &cmd.control, script.as_ref(), cmd.rows.rows)?;
+    check_degree("CONTROL", control.ncols().saturating_sub(1))?;
     let curve =
         BezierCurve::new(control).map_err(lib("CONTROL", "control points, one per column"))?;
     let d = curve
@@ -264,7 +273,11 @@ pub fn derivative<T: LiteralScalar>(cmd: &DerivativeCommand) -> Result<Outcome, 
     let mut report = Report::new();
     report.push("control", Value::Matrix(d.control().clone()));
     if let Some(t) = &cmd.t {
-        let ts: Vec<T> = cagd::cli::load_params("--t", t)?;
+        let ts: Vec<T> = crate::cli::load_params("--t", t)?;
+        check_work(
+            "--t",
+            ts.len() as u128 * d.dim() as u128 * (d.degree() as u128 + 1).pow(2),
+        )?;
         let values = d
             .eval_many(&ts)
             .map_err(lib("--t", "finite parameter values"))?;

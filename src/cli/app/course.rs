@@ -3,17 +3,17 @@
 use clap::{Args, ValueEnum};
 use nalgebra::{DMatrix, DVector};
 
-use cagd::cli::args::{CurveParamArgs, OutputArgs, PlotArgs, RowsArgs, StepsArgs};
-use cagd::cli::{load_params, samples, CliError, PendingWrites, Report, Value};
-use cagd::octave::literal::LiteralScalar;
-use cagd::plot::{Colour, Figure};
-use cagd::{BSplineCurve, CubicSpline, EndCondition, HermiteCubic, NurbsCurve};
+use crate::cli::args::{CurveParamArgs, OutputArgs, PlotArgs, RowsArgs, StepsArgs};
+use crate::cli::{load_params, samples, CliError, PendingWrites, Report, Value};
+use crate::octave::literal::LiteralScalar;
+use crate::plot::{Colour, Figure};
+use crate::{BSplineCurve, CubicSpline, EndCondition, HermiteCubic, NurbsCurve};
 
 use super::common::*;
 use super::{emit, Outcome};
 
 fn vector<T: LiteralScalar>(arg: &str, text: &str) -> Result<DVector<T>, CliError> {
-    let m = cagd::cli::load_matrix::<T>(arg, text, None)?;
+    let m = crate::cli::load_matrix::<T>(arg, text, None)?;
     if m.nrows() != 1 && m.ncols() != 1 {
         return Err(shape(
             arg,
@@ -163,7 +163,7 @@ pub fn hermite<T: LiteralScalar>(cmd: &HermiteCommand) -> Result<Outcome, CliErr
     let mut report = Report::new();
     if cmd.steps.steps {
         let basis = DMatrix::from_fn(ts.len(), 4, |i, j| {
-            cagd::hermite::hermite_basis(ts[i].clone())[j].clone()
+            crate::hermite::hermite_basis(ts[i].clone())[j].clone()
         });
         report.push("hermite_basis", Value::Matrix(basis));
         report.push(
@@ -229,6 +229,7 @@ fn domain_params<T: LiteralScalar>(
 
 /// A B-spline curve.
 pub fn bspline<T: LiteralScalar>(cmd: &BSplineCommand) -> Result<Outcome, CliError> {
+    check_degree("--degree", cmd.degree)?;
     let control = points::<T>("CONTROL", &cmd.control, None, cmd.rows.rows)?;
     let form = "degree p, n+1 ≥ p+1 control points and n+p+2 non-decreasing knots";
     let curve = match &cmd.knots {
@@ -299,6 +300,7 @@ pub struct NurbsCommand {
 
 /// A NURBS curve.
 pub fn nurbs<T: LiteralScalar>(cmd: &NurbsCommand) -> Result<Outcome, CliError> {
+    check_degree("--degree", cmd.degree)?;
     let control = points("CONTROL", &cmd.control, None, cmd.rows.rows)?;
     let weights: Vec<T> = load_params("--weights", &cmd.weights)?;
     let n = control.ncols();

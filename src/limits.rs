@@ -1,0 +1,338 @@
+//! Resource limits: sizes that would need more memory (or time) than a machine has are refused
+//! up front with [`Error::TooLarge`], never left to an out-of-memory kill.
+//!
+//! | limit | default | guards | environment variable / flag |
+//! |---|---|---|---|
+//! | [`max_input_bytes`](Limits::max_input_bytes) | 64 MiB | an input file or standard input | `CAGD_MAX_INPUT_BYTES` / `--max-input-bytes` |
+//! | [`max_expression_bytes`](Limits::max_expression_bytes) | 1 MiB | a literal, expression or data script | `CAGD_MAX_EXPRESSION_BYTES` / `--max-expression-bytes` |
+//! | [`max_depth`](Limits::max_depth) | 64 | nesting of brackets, calls, unary operators, loops | `CAGD_MAX_DEPTH` / `--max-depth` |
+//! | [`max_elements`](Limits::max_elements) | 4 000 000 | elements of a matrix or range built by a literal or script | `CAGD_MAX_ELEMENTS` / `--max-elements` |
+//! | [`max_iterations`](Limits::max_iterations) | 1 000 000 | loop iterations of a data script | `CAGD_MAX_ITERATIONS` / `--max-iterations` |
+//! | [`max_samples`](Limits::max_samples) | 1 000 000 | parameter values along one axis (`--n`, `--t`, `--u`, `--v`) | `CAGD_MAX_SAMPLES` / `--max-samples` |
+//! | [`max_grid_points`](Limits::max_grid_points) | 10 000 000 | points of a surface grid (`nu · nv`) | `CAGD_MAX_GRID_POINTS` / `--max-grid-points` |
+//! | [`max_degree`](Limits::max_degree) | 1 000 | degree of a Bernstein basis, Bézier curve or patch direction, B-spline, Lagrange basis (nodes − 1), curves of a Gordon network | `CAGD_MAX_DEGREE` / `--max-degree` |
+//! | [`max_system_entries`](Limits::max_system_entries) | 100 000 000 | stored entries of a linear system (the banded system of a discrete Coons mask) | `CAGD_MAX_SYSTEM_ENTRIES` / `--max-system-entries` |
+//! | [`max_work`](Limits::max_work) | 2 000 000 000 | arithmetic operations of one command, estimated before it starts (points × cost per point: `(n+1)²` for de Casteljau, the band solve of a mask) | `CAGD_MAX_WORK` / `--max-work` |
+//!
+//! Why these numbers (a machine with 24 GiB shared by other work): a grid point of a 3-D
+//! surface costs 24 bytes in `f64`, and a command keeps up to about eight copies of it (the
+//! grid, the three Coons or Gordon terms for `--steps`, the copy in doubles for pictures and
+//! meshes, and the formatted text at up to 25 bytes per number), about 200 bytes per point:
+//! 10⁷ points stay near 2 GB. Exact rationals cost several times more per number and are
+//! also far slower, so an exact grid of 10⁷ points is allowed but slow. A de Casteljau scheme
+//! of degree `n` holds `(n+1)(n+2)/2` points per parameter, and evaluation costs `O(n²)` per
+//! point: degree 1000 keeps both at about half a million. 10⁸ system entries are 800 MB in
+//! `f64`.
+//!
+//! Two budgets derive from `max_elements`: one evaluation of an expression may do at most
+//! 64 × `max_elements` element operations (results of every operation and matrix-product
+//! terms), and a data script may assign at most 25 × `max_elements` elements in all; so a
+//! short text (`A*A*A*…`, a loop rebuilding a large matrix) stops with an error instead of
+//! running for minutes.
+//!
+//! The limits in force are process-wide ([`Limits::current`], set with
+//! [`Limits::set_current`]); the command line sets them from its flags and the environment
+//! ([`Limits::from_env`]) before running.
+//!
+//! ```
+//! use cagd::limits::Limits;
+//! let limits = Limits { max_grid_points: 100, ..Limits::default() };
+//! let err = limits.check_grid("--u/--v", 20, 20).unwrap_err();
+//! assert!(matches!(err, cagd::Error::TooLarge { requested: 400, limit: 100, .. }));
+//! assert!(limits.check_grid("--u/--v", 10, 10).is_ok());
+//! ```
+
+use std::sync::atomic::{AtomicU64, Ordering};
+
+use crate::error::{Error, Result};
+
+/// The resource limits (see the [module documentation](self) for the defaults and why).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Limits {
+    /// Largest input file (or standard input) read, in bytes.
+    pub max_input_bytes: u64,
+    /// Longest literal, expression or data script parsed, in bytes.
+    pub max_expression_bytes: usize,
+    /// Deepest nesting of parentheses, brackets, call arguments, unary operators and loops.
+    pub max_depth: usize,
+    /// Most elements of any matrix or range built while evaluating a literal or script.
+    pub max_elements: usize,
+    /// Most loop iterations a data script may run, all loops together.
+    pub max_iterations: usize,
+    /// Most parameter values along one axis.
+    pub max_samples: usize,
+    /// Most points of a surface grid.
+    pub max_grid_points: usize,
+    /// Highest degree of a basis, curve or patch direction; most curves of a network − 1.
+    pub max_degree: usize,
+    /// Most stored entries of a linear system.
+    pub max_system_entries: usize,
+    /// Most arithmetic operations of one command, estimated up front (about 2–20 seconds in
+    /// `f64`; exact rationals are slower).
+    pub max_work: u64,
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Limits {
+            max_input_bytes: 64 << 20,
+            max_expression_bytes: 1 << 20,
+            max_depth: 64,
+            max_elements: 4_000_000,
+            max_iterations: 1_000_000,
+            max_samples: 1_000_000,
+            max_grid_points: 10_000_000,
+            max_degree: 1000,
+            max_system_entries: 100_000_000,
+            max_work: 2_000_000_000,
+        }
+    }
+}
+
+/// The settings, in field order: (field, environment variable, command-line flag).
+pub const SETTINGS: [(&str, &str, &str); 10] = [
+    (
+        "max_input_bytes",
+        "CAGD_MAX_INPUT_BYTES",
+        "--max-input-bytes",
+    ),
+    (
+        "max_expression_bytes",
+        "CAGD_MAX_EXPRESSION_BYTES",
+        "--max-expression-bytes",
+    ),
+    ("max_depth", "CAGD_MAX_DEPTH", "--max-depth"),
+    ("max_elements", "CAGD_MAX_ELEMENTS", "--max-elements"),
+    ("max_iterations", "CAGD_MAX_ITERATIONS", "--max-iterations"),
+    ("max_samples", "CAGD_MAX_SAMPLES", "--max-samples"),
+    (
+        "max_grid_points",
+        "CAGD_MAX_GRID_POINTS",
+        "--max-grid-points",
+    ),
+    ("max_degree", "CAGD_MAX_DEGREE", "--max-degree"),
+    (
+        "max_system_entries",
+        "CAGD_MAX_SYSTEM_ENTRIES",
+        "--max-system-entries",
+    ),
+    ("max_work", "CAGD_MAX_WORK", "--max-work"),
+];
+
+/// The process-wide limits, in [`SETTINGS`] order; `u64::MAX` means "default".
+static CURRENT: [AtomicU64; 10] = [const { AtomicU64::new(u64::MAX) }; 10];
+
+fn to_usize(x: u64) -> usize {
+    usize::try_from(x).unwrap_or(usize::MAX)
+}
+
+impl Limits {
+    fn to_array(self) -> [u64; 10] {
+        [
+            self.max_input_bytes,
+            self.max_expression_bytes as u64,
+            self.max_depth as u64,
+            self.max_elements as u64,
+            self.max_iterations as u64,
+            self.max_samples as u64,
+            self.max_grid_points as u64,
+            self.max_degree as u64,
+            self.max_system_entries as u64,
+            self.max_work,
+        ]
+    }
+
+    fn from_array(a: [u64; 10]) -> Limits {
+        Limits {
+            max_input_bytes: a[0],
+            max_expression_bytes: to_usize(a[1]),
+            max_depth: to_usize(a[2]),
+            max_elements: to_usize(a[3]),
+            max_iterations: to_usize(a[4]),
+            max_samples: to_usize(a[5]),
+            max_grid_points: to_usize(a[6]),
+            max_degree: to_usize(a[7]),
+            max_system_entries: to_usize(a[8]),
+            max_work: a[9],
+        }
+    }
+
+    /// The limits in force in this process (the defaults unless [`Limits::set_current`] was
+    /// called).
+    pub fn current() -> Limits {
+        let defaults = Limits::default().to_array();
+        let mut a = [0u64; 10];
+        for (k, slot) in CURRENT.iter().enumerate() {
+            let v = slot.load(Ordering::Relaxed);
+            a[k] = if v == u64::MAX { defaults[k] } else { v };
+        }
+        Limits::from_array(a)
+    }
+
+    /// Puts `self` in force for the whole process.
+    pub fn set_current(self) {
+        for (slot, v) in CURRENT.iter().zip(self.to_array()) {
+            slot.store(v.min(u64::MAX - 1), Ordering::Relaxed);
+        }
+    }
+
+    /// The defaults, overridden by the environment variables of [`SETTINGS`] that are set.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] naming the variable if one is not a whole number.
+    ///
+    /// ```
+    /// let limits = cagd::limits::Limits::from_env().unwrap();
+    /// assert!(limits.max_grid_points >= 1);
+    /// ```
+    pub fn from_env() -> Result<Limits> {
+        let mut a = Limits::default().to_array();
+        for (k, (_, var, _)) in SETTINGS.iter().enumerate() {
+            if let Ok(text) = std::env::var(var) {
+                a[k] = parse_limit(var, &text)?;
+            }
+        }
+        Ok(Limits::from_array(a))
+    }
+
+    /// Sets the limit named by its flag (`--max-grid-points`) or field (`max_grid_points`).
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] for an unknown name.
+    pub fn set(&mut self, name: &str, value: u64) -> Result<()> {
+        let k = SETTINGS
+            .iter()
+            .position(|(field, var, flag)| name == *field || name == *var || name == *flag)
+            .ok_or_else(|| Error::InvalidArgument {
+                what: "limit",
+                message: format!("unknown limit `{name}`"),
+            })?;
+        let mut a = self.to_array();
+        a[k] = value;
+        *self = Limits::from_array(a);
+        Ok(())
+    }
+
+    /// The parser's limits ([`crate::octave::literal::Limits`]) taken from these.
+    pub fn literal(&self) -> crate::octave::literal::Limits {
+        crate::octave::literal::Limits {
+            max_input_bytes: self.max_expression_bytes,
+            max_depth: self.max_depth,
+            max_elements: self.max_elements,
+            max_iterations: self.max_iterations,
+        }
+    }
+
+    /// `count` parameter values along one axis.
+    ///
+    /// # Errors
+    /// [`Error::TooLarge`] above [`Limits::max_samples`].
+    pub fn check_samples(&self, what: &'static str, count: usize) -> Result<()> {
+        too_large(what, "max_samples", count as u128, self.max_samples)
+    }
+
+    /// A grid of `nu × nv` points.
+    ///
+    /// # Errors
+    /// [`Error::TooLarge`] above [`Limits::max_grid_points`].
+    pub fn check_grid(&self, what: &'static str, nu: usize, nv: usize) -> Result<()> {
+        too_large(
+            what,
+            "max_grid_points",
+            nu as u128 * nv as u128,
+            self.max_grid_points,
+        )
+    }
+
+    /// A basis, curve or patch direction of degree `degree`.
+    ///
+    /// # Errors
+    /// [`Error::TooLarge`] above [`Limits::max_degree`].
+    pub fn check_degree(&self, what: &'static str, degree: usize) -> Result<()> {
+        too_large(what, "max_degree", degree as u128, self.max_degree)
+    }
+
+    /// A computation of about `operations` arithmetic operations.
+    ///
+    /// # Errors
+    /// [`Error::TooLarge`] above [`Limits::max_work`].
+    pub fn check_work(&self, what: &'static str, operations: u128) -> Result<()> {
+        too_large(
+            what,
+            "max_work",
+            operations,
+            usize::try_from(self.max_work).unwrap_or(usize::MAX),
+        )
+    }
+
+    /// A linear system storing `entries` numbers.
+    ///
+    /// # Errors
+    /// [`Error::TooLarge`] above [`Limits::max_system_entries`].
+    pub fn check_system(&self, what: &'static str, entries: u128) -> Result<()> {
+        too_large(what, "max_system_entries", entries, self.max_system_entries)
+    }
+}
+
+fn too_large(
+    what: &'static str,
+    limit_name: &'static str,
+    requested: u128,
+    limit: usize,
+) -> Result<()> {
+    if requested > limit as u128 {
+        let (_, variable, flag) = SETTINGS
+            .iter()
+            .find(|(field, _, _)| *field == limit_name)
+            .copied()
+            .unwrap_or((limit_name, limit_name, limit_name));
+        return Err(Error::TooLarge {
+            what,
+            requested,
+            limit: limit as u128,
+            setting: flag,
+            variable,
+        });
+    }
+    Ok(())
+}
+
+fn parse_limit(var: &'static str, text: &str) -> Result<u64> {
+    let clean: String = text.trim().chars().filter(|c| *c != '_').collect();
+    clean.parse::<u64>().map_err(|_| Error::InvalidArgument {
+        what: var,
+        message: format!("`{text}` is not a whole number; expected a limit such as 10000000"),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn set_by_flag_field_or_variable() {
+        let mut l = Limits::default();
+        l.set("--max-grid-points", 5).unwrap();
+        l.set("max_degree", 7).unwrap();
+        l.set("CAGD_MAX_DEPTH", 9).unwrap();
+        assert_eq!((l.max_grid_points, l.max_degree, l.max_depth), (5, 7, 9));
+        assert!(l.set("--max-nothing", 1).is_err());
+        assert_eq!(Limits::from_array(l.to_array()), l);
+    }
+
+    #[test]
+    fn grid_product_does_not_overflow() {
+        let err = Limits::default()
+            .check_grid("g", usize::MAX, usize::MAX)
+            .unwrap_err();
+        assert!(matches!(
+            err,
+            Error::TooLarge {
+                limit: 10_000_000,
+                ..
+            }
+        ));
+        assert!(parse_limit("X", "1_000").is_ok_and(|v| v == 1000));
+        assert!(parse_limit("X", "-1").is_err());
+    }
+}

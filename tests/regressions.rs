@@ -1,0 +1,270 @@
+//! Regression tests: inputs found by fuzzing (fuzz/) and by the reliability review, each of
+//! which once crashed, hung, or ran out of memory, and now gives a typed error or a value.
+//! Also: every recursive path of the expression parser is bounded by the depth limit.
+
+use cagd::octave::literal::{parse_matrix, Env, Expr, LiteralError, ParamExpr};
+
+/// Nestings through every recursive rule of the grammar, far past the limit: each must be a
+/// `TooDeep` error (no stack overflow), in a thread with a small stack.
+#[test]
+fn every_recursive_path_is_bounded_by_the_depth_limit() {
+    let n = 20_000;
+    let cases: Vec<(&str, String)> = vec![
+        (
+            "parentheses",
+            format!("{}1{}", "(".repeat(n), ")".repeat(n)),
+        ),
+        ("brackets", format!("{}1{}", "[".repeat(n), "]".repeat(n))),
+        ("unary minus", format!("{}1", "-".repeat(n))),
+        ("unary plus and not", format!("{}1", "+-".repeat(n))),
+        (
+            "call arguments",
+            format!("{}1{}", "sin(".repeat(n), ")".repeat(n)),
+        ),
+        (
+            "power operands",
+            format!("2{}", "^-(2".repeat(n)) + &")".repeat(n),
+        ),
+        (
+            "transpose of groups",
+            format!("{}1{}", "(".repeat(n), ")'".repeat(n)),
+        ),
+        (
+            "index arguments",
+            format!("x{}1{}", "(x(".repeat(n), "))".repeat(n)),
+        ),
+        (
+            "matrix rows",
+            format!("{}1{}", "[1;".repeat(n), "]".repeat(n)),
+        ),
+    ];
+    let handle = std::thread::Builder::new()
+        .stack_size(512 * 1024)
+        .spawn(move || {
+            for (what, text) in &cases {
+                let err = Expr::parse(text).expect_err(what);
+                assert!(
+                    matches!(err, LiteralError::TooDeep { limit: 64, .. }),
+                    "{what}: {err}"
+                );
+                assert!(parse_matrix::<f64>(text).is_err(), "{what}");
+                assert!(ParamExpr::parse(text).is_err(), "{what}");
+            }
+            // Data scripts: nested loops and deep expressions in statements.
+            let loops = format!(
+                "{}x = 1;\n{}",
+                "for i = 1:1\n".repeat(100),
+                "end\n".repeat(100)
+            );
+            assert!(cagd::octave::script::run::<f64>(&loops, Env::new()).is_err());
+            let deep = format!("y = {}1{};\n", "(".repeat(n), ")".repeat(n));
+            assert!(matches!(
+                cagd::octave::script::run::<f64>(&deep, Env::new()),
+                Err(LiteralError::TooDeep { .. })
+            ));
+            // Just inside the limit: parses and evaluates.
+            let ok = format!("{}1{}", "(".repeat(60), ")".repeat(60));
+            assert_eq!(parse_matrix::<f64>(&ok).unwrap()[(0, 0)], 1.0);
+        })
+        .unwrap();
+    handle.join().expect("no stack overflow");
+}
+
+/// Curves defined from curves in a script are evaluated once each, in order (not inlined):
+/// a chain of doublings stays linear in time.
+#[test]
+fn chained_script_curves_stay_linear() {
+    let mut source = String::from("c0 = [u; u];\n");
+    for k in 1..200 {
+        source.push_str(&format!("c{k} = c{} + c{};\n", k - 1, k - 1));
+    }
+    let script = cagd::octave::script::run::<f64>(&source, Env::new()).unwrap();
+    let c = script.resolve("c199").unwrap();
+    let p = c
+        .sample_curve(&mut script.env().clone(), "u", &[1.0])
+        .unwrap();
+    assert_eq!(p[(0, 0)], 2f64.powi(199));
+}
+
+/// `x(i) = ...` in a loop used to copy `x` at every assignment (quadratic: 10⁵ elements took
+/// 16 s); now the vector is updated in place and grows at its end. Same values as Octave.
+#[test]
+fn indexed_assignment_in_a_loop_is_linear() {
+    let start = std::time::Instant::now();
+    let s = cagd::octave::script::run::<f64>(
+        "for i = 1:200000\n  x(i) = i;\nend\ny = [1;2]; y(4) = 3;\nz = zeros(1,3); z(5) = 7;\nw(2,3) = 1; w(3,1) = 2;\n",
+        Env::new(),
+    )
+    .unwrap();
+    assert!(start.elapsed().as_secs() < 20, "{:?}", start.elapsed());
+    let x = s.value("x").unwrap();
+    assert_eq!(
+        (x.nrows(), x.ncols(), x[(0, 199_999)]),
+        (1, 200_000, 200_000.0)
+    );
+    assert_eq!(s.value("y").unwrap().as_slice(), &[1.0, 2.0, 0.0, 3.0]);
+    assert_eq!(s.value("z").unwrap().as_slice(), &[0.0, 0.0, 0.0, 0.0, 7.0]);
+    let w = s.value("w").unwrap();
+    assert_eq!(
+        (w.nrows(), w.ncols(), w[(1, 2)], w[(2, 0)]),
+        (3, 3, 1.0, 2.0)
+    );
+}
+
+/// A loop that rebuilds a growing matrix (`x = [x i]`) is quadratic in Octave too; the total
+/// work of a script is bounded (25 × max_elements elements assigned), so it stops with an
+/// error instead of running for hours.
+#[test]
+fn scripts_have_a_work_budget() {
+    use cagd::octave::literal::Limits;
+    let limits = Limits {
+        max_elements: 10_000,
+        ..Limits::default()
+    };
+    let err = cagd::octave::script::run::<f64>(
+        "x = [];\nfor i = 1:5000\n  x = [x i];\nend\n",
+        Env::with_limits(limits),
+    )
+    .unwrap_err();
+    assert!(matches!(err, LiteralError::TooLarge { .. }), "{err}");
+    assert!(err.to_string().contains("all together"), "{err}");
+}
+
+/// One evaluation is bounded in work (64 × max_elements element operations), so a short text
+/// cannot run for minutes: chains of large products or sums stop with `TooLarge`.
+#[test]
+fn one_evaluation_has_a_work_budget() {
+    let products = format!("ones(500,512){}", "*ones(512,500)*ones(500,512)".repeat(40));
+    let start = std::time::Instant::now();
+    let result = parse_matrix::<f64>(&products).map(|m| m.shape());
+    assert!(
+        matches!(result, Err(LiteralError::TooLarge { .. })),
+        "{result:?}"
+    );
+    let sums = format!("ones(2000,2000){}", "+1".repeat(2000));
+    let result = parse_matrix::<f64>(&sums).map(|m| m.shape());
+    assert!(
+        matches!(result, Err(LiteralError::TooLarge { .. })),
+        "{result:?}"
+    );
+    assert!(start.elapsed().as_secs() < 60, "{:?}", start.elapsed());
+    // Ordinary work is far inside the budget.
+    let m = parse_matrix::<f64>("ones(1000,1000)*ones(1000,1)+1").unwrap();
+    assert_eq!((m.nrows(), m[(999, 0)]), (1000, 1001.0));
+}
+
+/// Fuzzing (`text_format`, out-of-memory after 4.9 million runs): a `range` variable whose
+/// base, limit and increment ask for 2·10⁹ elements made `to_array` allocate 16 GB. Ranges
+/// are now expanded only up to the element limit; beyond it the accessors give a typed error.
+#[test]
+fn fuzz_text_format_oom_huge_range() {
+    use cagd::octave::text_format::{read_text, TextFormatError};
+    // The input as libFuzzer minimised it (artifacts/text_format/oom-24c6a13e…).
+    let bytes = b"#name:\xf3\x96\x91\x91#namer\n# type: range\n#nt\n1 16666666666.00 8";
+    let text = std::str::from_utf8(bytes).unwrap();
+    let ws = read_text(text).unwrap();
+    let name = ws.names().next().unwrap().to_string();
+    assert!(matches!(
+        ws.array(&name),
+        Err(TextFormatError::WrongType { .. })
+    ));
+    assert!(ws.matrix(&name).is_err());
+    // A range within the limit still expands.
+    let ws = read_text("# name: r\n# type: range\n# base, limit, increment\n1 9 2\n").unwrap();
+    assert_eq!(
+        ws.matrix("r").unwrap().row(0).to_vec(),
+        vec![1.0, 3.0, 5.0, 7.0, 9.0]
+    );
+}
+
+/// Fuzzing (`literal`, timeout in the instrumented build at the default limits): the exact
+/// range `1e-3:1e-3:2e2-2` has 198 000 elements. Linear work within the limits, not a hang
+/// (about a second in a debug build); the fuzz targets now run with limits of 10⁴ elements.
+/// The range must be exact and complete.
+#[test]
+fn fuzz_literal_timeout_long_exact_range() {
+    use num_rational::BigRational;
+    let start = std::time::Instant::now();
+    let r = cagd::octave::literal::parse_params::<BigRational>("1e-3:1e-3:2e2-2").unwrap();
+    assert_eq!(r.len(), 198_000);
+    assert_eq!(r[197_999], BigRational::new(198.into(), 1.into()));
+    assert_eq!(r[0], BigRational::new(1.into(), 1000.into()));
+    assert!(start.elapsed().as_secs() < 30, "{:?}", start.elapsed());
+    // Third finding: a step of 1e-5828 − 2 (a 19 000-bit denominator): the literal is now
+    // out of range for exact evaluation.
+    let r = cagd::octave::literal::parse_params::<BigRational>("1:1e-5828-2:1e0-5828-2");
+    assert!(
+        matches!(r, Err(LiteralError::NumberOutOfRange { .. })),
+        "{:?}",
+        r.map(|v| v.len())
+    );
+    // Second finding of the same kind: 61 401 elements with a 10⁻³³ offset (110-bit
+    // denominators).
+    let r = cagd::octave::literal::parse_params::<BigRational>("1e-33-612e2-1:2e2").unwrap();
+    // Exactly (200 − base) = 61401 − 10⁻³³, so 61 401 elements (in doubles the offset vanishes
+    // and Octave counts 61 402).
+    assert_eq!(r.len(), 61_401);
+    assert!(start.elapsed().as_secs() < 30, "{:?}", start.elapsed());
+    // Above the element limit it is an error, not an allocation.
+    let over = cagd::octave::literal::parse_params::<BigRational>("1e-9:1e-9:1");
+    assert!(matches!(over, Err(LiteralError::TooLarge { .. })));
+}
+
+/// Fuzzing (`literal`, timeout): the exact power `-(24.445^46913)` built a 985 000-bit
+/// rational by repeated squaring with a gcd at every step (minutes). Exact numbers are now
+/// limited to 2¹² bits of numerator and denominator, and powers skip the gcd.
+#[test]
+fn fuzz_literal_timeout_huge_exact_power() {
+    use num_rational::BigRational;
+    let start = std::time::Instant::now();
+    let r = cagd::octave::literal::parse_matrix::<BigRational>("-(24.445^46913) ");
+    assert!(
+        matches!(r, Err(LiteralError::NumberOutOfRange { .. })),
+        "{:?}",
+        r.map(|m| m.shape())
+    );
+    // Products of large exact numbers stop at the size limit too.
+    let r = cagd::octave::literal::parse_matrix::<BigRational>("3^1000 * 3^1000 * 3^1000");
+    assert!(
+        matches!(r, Err(LiteralError::TooLarge { .. })),
+        "{:?}",
+        r.map(|m| m.shape())
+    );
+    assert!(start.elapsed().as_secs() < 10, "{:?}", start.elapsed());
+    // Ordinary exact powers are exact.
+    let p = cagd::octave::literal::parse_matrix::<BigRational>("(-2/3)^-3").unwrap();
+    assert_eq!(p[(0, 0)], BigRational::new((-27).into(), 8.into()));
+    let p = cagd::octave::literal::parse_matrix::<BigRational>("2^100").unwrap();
+    assert_eq!(
+        p[(0, 0)],
+        BigRational::from_integer(num_bigint::BigInt::from(2).pow(100))
+    );
+    // f64 is unaffected: the double overflows and is refused as non-finite.
+    assert!(matches!(
+        cagd::octave::literal::parse_matrix::<f64>("24.445^46913"),
+        Err(LiteralError::NonFinite { .. })
+    ));
+}
+
+/// Fuzzing (`script`, timeout and slow unit): the same exact-power growth through a data
+/// script, with negative and tower exponents. Both now stop at once with a typed error.
+#[test]
+fn fuzz_script_timeout_exact_power_towers() {
+    use num_rational::BigRational;
+    let start = std::time::Instant::now();
+    for source in ["03333333^-33333", "033093333306;366063333^33166^33333"] {
+        let mut env = Env::<BigRational>::new();
+        env.bind_scalar("N", BigRational::from_integer(4.into()));
+        let r = cagd::octave::script::run::<BigRational>(source, env);
+        assert!(
+            matches!(
+                r,
+                Err(LiteralError::NumberOutOfRange { .. } | LiteralError::TooLarge { .. })
+            ),
+            "{source}"
+        );
+        // In doubles the same scripts run (the values are finite or refused as non-finite).
+        let _ = cagd::octave::script::run::<f64>(source, Env::new());
+    }
+    assert!(start.elapsed().as_secs() < 10, "{:?}", start.elapsed());
+}
