@@ -2,7 +2,6 @@
 //! would be printed and written (see [`crate::cli::run`]).
 
 use std::ffi::OsString;
-use std::path::Path;
 
 use clap::error::{ContextKind, ErrorKind as ClapKind};
 use clap::{Args, CommandFactory, Parser, Subcommand};
@@ -29,7 +28,7 @@ use crate::cli::{
 };
 use crate::octave::literal::{Env, LiteralScalar, Warning};
 use crate::octave::script::{Binding, Script};
-use crate::plot::{Colour, Figure, ImageKind};
+use crate::plot::{Colour, Figure};
 
 /// Curves and surfaces of computer-aided geometric design, checked against GNU Octave.
 #[derive(Debug, Parser)]
@@ -376,15 +375,6 @@ fn to_f64_matrix<T: LiteralScalar>(m: &DMatrix<T>) -> DMatrix<f64> {
     m.map(|x| x.to_f64())
 }
 
-fn add_plot(files: &mut PendingWrites, path: &Path, figure: &Figure) -> Result<(), CliError> {
-    let plot_error =
-        |e: crate::plot::PlotError| CliError::plot(format!("--plot {}", path.display()), &e);
-    let kind = ImageKind::from_path(path).map_err(plot_error)?;
-    let bytes = figure.render(kind).map_err(plot_error)?;
-    files.add("--plot", path, bytes);
-    Ok(())
-}
-
 fn curve<T: LiteralScalar>(cmd: &CurveCommand) -> Result<Outcome, CliError> {
     let loaded = prepare_script::<T>(&cmd.script, cmd.params.n)?;
     let expr = load_expression("EXPR", &cmd.expr, loaded.as_ref())?;
@@ -426,7 +416,7 @@ fn curve<T: LiteralScalar>(cmd: &CurveCommand) -> Result<Outcome, CliError> {
             Colour::Blue,
             format!("{param} ↦ {}", cmd.expr.trim()),
         );
-        add_plot(&mut files, path, &figure)?;
+        common::add_plot(&mut files, "--plot", path, &figure)?;
     }
     let stdout = emit(&report, &cmd.output, &mut files)?;
     let mut warnings = script_warnings(&cmd.script, loaded.as_ref());
@@ -473,14 +463,10 @@ fn surface<T: LiteralScalar>(cmd: &SurfaceCommand) -> Result<Outcome, CliError> 
     if let Some(path) = &cmd.plot.plot {
         let figure = Figure::new(format!("surface {}", cmd.expr.trim()))
             .surface(grid_f64.clone(), "surface");
-        add_plot(&mut files, path, &figure)?;
+        common::add_plot(&mut files, "--plot", path, &figure)?;
     }
     if let Some(path) = &cmd.mesh.mesh {
-        let mesh_error =
-            |e: crate::mesh::MeshError| CliError::mesh(format!("--mesh {}", path.display()), &e);
-        let format = crate::mesh::MeshFormat::from_path(path).map_err(mesh_error)?;
-        let bytes = crate::mesh::encode(&grid_f64, format).map_err(mesh_error)?;
-        files.add("--mesh", path, bytes);
+        common::add_mesh(&mut files, "--mesh", path, &grid_f64)?;
     }
     let stdout = emit(&report, &cmd.output, &mut files)?;
     let mut warnings = script_warnings(&cmd.script, loaded.as_ref());

@@ -198,19 +198,16 @@ pub fn coons<T: LiteralScalar>(cmd: &CoonsCommand) -> Result<Outcome, CliError> 
     let mut files = PendingWrites::new();
     if pictures {
         let grid = grid_f64(&patch.eval_grid(&pus, &pvs));
-        if let Some(path) = &cmd.plot.plot {
-            let figure = coons_figure(
-                "Coons patch",
-                grid.clone(),
-                [&c1, &c2, &d1, &d2],
-                &pus,
-                &pvs,
-            );
-            add_plot(&mut files, "--plot", path, &figure)?;
-        }
-        if let Some(path) = &cmd.mesh.mesh {
-            add_mesh(&mut files, "--mesh", path, &grid)?;
-        }
+        let curves = [&c1, &c2, &d1, &d2];
+        add_coons_pictures(
+            &mut files,
+            "Coons patch",
+            grid,
+            curves,
+            (&pus, &pvs),
+            &cmd.plot,
+            &cmd.mesh,
+        )?;
     }
     let stdout = emit(&report, &cmd.output, &mut files)?;
     Ok(Outcome {
@@ -218,6 +215,27 @@ pub fn coons<T: LiteralScalar>(cmd: &CoonsCommand) -> Result<Outcome, CliError> 
         files,
         warnings: warnings(&cmd.script.script, script.as_ref(), &mut env),
     })
+}
+
+/// The `--plot` and `--mesh` files of a Coons-type patch whose surface `grid` was sampled at
+/// `us × vs`: the picture is [`coons_figure`], the mesh the grid itself.
+fn add_coons_pictures<T: LiteralScalar, C: Curve<T>>(
+    files: &mut PendingWrites,
+    title: &str,
+    grid: Array3<f64>,
+    curves: [&C; 4],
+    (us, vs): (&[T], &[T]),
+    plot: &PlotArgs,
+    mesh: &MeshArgs,
+) -> Result<(), CliError> {
+    if let Some(path) = &plot.plot {
+        let figure = coons_figure(title, grid.clone(), curves, us, vs);
+        add_plot(files, "--plot", path, &figure)?;
+    }
+    if let Some(path) = &mesh.mesh {
+        add_mesh(files, "--mesh", path, &grid)?;
+    }
+    Ok(())
 }
 
 /// The picture of appendix C: the surface, c1 and c2 in red, d1 and d2 in green.
@@ -379,19 +397,16 @@ pub fn coons_bicubic<T: LiteralScalar>(cmd: &CoonsBicubicCommand) -> Result<Outc
     let mut files = PendingWrites::new();
     if pictures {
         let grid = grid_f64(&patch.eval_grid(&pus, &pvs));
-        if let Some(path) = &cmd.plot.plot {
-            let figure = coons_figure(
-                "bicubic Coons patch",
-                grid.clone(),
-                [&c1, &c2, &d1, &d2],
-                &pus,
-                &pvs,
-            );
-            add_plot(&mut files, "--plot", path, &figure)?;
-        }
-        if let Some(path) = &cmd.mesh.mesh {
-            add_mesh(&mut files, "--mesh", path, &grid)?;
-        }
+        let curves = [&c1, &c2, &d1, &d2];
+        add_coons_pictures(
+            &mut files,
+            "bicubic Coons patch",
+            grid,
+            curves,
+            (&pus, &pvs),
+            &cmd.plot,
+            &cmd.mesh,
+        )?;
     }
     let stdout = emit(&report, &cmd.output, &mut files)?;
     Ok(Outcome {
