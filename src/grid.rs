@@ -50,7 +50,7 @@ pub(crate) fn grid_len(what: &'static str, sizes: &[usize]) -> Result<usize> {
 /// multiply-adds) is at least [`PARALLEL_MIN_WORK`] and the feature `parallel` is on.
 pub(crate) fn for_each_row<T, S, I, F>(out: &mut [T], row_len: usize, work: usize, init: I, row: F)
 where
-    T: Send,
+    T: Scalar,
     I: Fn() -> S + Sync,
     F: Fn(&mut S, usize, &mut [T]) + Sync,
 {
@@ -58,11 +58,14 @@ where
         return;
     }
     let rows = out.len().div_ceil(row_len);
+    // Each block runs in code compiled for the processor's widest vectors (`Scalar::vectorized`).
     let run_block = |first: usize, block: &mut [T]| {
-        let mut scratch = init();
-        for (r, chunk) in block.chunks_mut(row_len).enumerate() {
-            row(&mut scratch, first + r, chunk);
-        }
+        T::vectorized(|| {
+            let mut scratch = init();
+            for (r, chunk) in block.chunks_mut(row_len).enumerate() {
+                row(&mut scratch, first + r, chunk);
+            }
+        })
     };
     #[cfg(feature = "parallel")]
     {
