@@ -125,7 +125,8 @@ fn cubic_basis(t: f64) -> [f64; 4] {
 
 /// A hand-specialised bicubic grid kernel in plain `f64`: fixed-size arrays, the same
 /// algorithm as `BezierPatch::eval_grid_into` (u-contraction per row, then 4 terms per point),
-/// the same rayon split over rows. `net[i][j]` is `b_{i,j}`; `out` is (nu, nv, 3) row-major.
+/// the same rayon split over rows, the same run-time choice of vector instructions
+/// ([`f64::vectorized`]). `net[i][j]` is `b_{i,j}`; `out` is (nu, nv, 3) row-major.
 pub fn hand_bicubic_grid(net: &[[[f64; 3]; 4]; 4], us: &[f64], vs: &[f64], out: &mut [f64]) {
     use rayon::prelude::*;
     let bv: Vec<[f64; 4]> = vs.iter().map(|&v| cubic_basis(v)).collect();
@@ -134,40 +135,45 @@ pub fn hand_bicubic_grid(net: &[[[f64; 3]; 4]; 4], us: &[f64], vs: &[f64], out: 
         .zip(us.par_iter())
         .with_min_len(16)
         .for_each(|(row, &u)| {
-            let wu = cubic_basis(u);
-            let mut c = [[0.0; 3]; 4];
-            for (j, cj) in c.iter_mut().enumerate() {
-                for (k, x) in cj.iter_mut().enumerate() {
-                    *x = wu[0] * net[0][j][k]
-                        + wu[1] * net[1][j][k]
-                        + wu[2] * net[2][j][k]
-                        + wu[3] * net[3][j][k];
+            f64::vectorized(|| {
+                let wu = cubic_basis(u);
+                let mut c = [[0.0; 3]; 4];
+                for (j, cj) in c.iter_mut().enumerate() {
+                    for (k, x) in cj.iter_mut().enumerate() {
+                        *x = wu[0] * net[0][j][k]
+                            + wu[1] * net[1][j][k]
+                            + wu[2] * net[2][j][k]
+                            + wu[3] * net[3][j][k];
+                    }
                 }
-            }
-            for (p, w) in row.chunks_exact_mut(3).zip(&bv) {
-                for k in 0..3 {
-                    p[k] = w[0] * c[0][k] + w[1] * c[1][k] + w[2] * c[2][k] + w[3] * c[3][k];
+                for (p, w) in row.chunks_exact_mut(3).zip(&bv) {
+                    for k in 0..3 {
+                        p[k] = w[0] * c[0][k] + w[1] * c[1][k] + w[2] * c[2][k] + w[3] * c[3][k];
+                    }
                 }
-            }
+            })
         });
 }
 
 /// A hand-specialised cubic 3-D curve kernel in plain `f64` (`ctrl[i]` = `b_i`, `out` is
-/// (k, 3) row-major), split over threads like the library.
+/// (k, 3) row-major), split over threads like the library, in the same run-time choice of
+/// vector instructions ([`f64::vectorized`]).
 pub fn hand_cubic_curve(ctrl: &[[f64; 3]; 4], ts: &[f64], out: &mut [f64]) {
     use rayon::prelude::*;
     out.par_chunks_mut(3 * 4096)
         .zip(ts.par_chunks(4096))
         .for_each(|(chunk, ts)| {
-            for (p, &t) in chunk.chunks_exact_mut(3).zip(ts) {
-                let w = cubic_basis(t);
-                for k in 0..3 {
-                    p[k] = w[0] * ctrl[0][k]
-                        + w[1] * ctrl[1][k]
-                        + w[2] * ctrl[2][k]
-                        + w[3] * ctrl[3][k];
+            f64::vectorized(|| {
+                for (p, &t) in chunk.chunks_exact_mut(3).zip(ts) {
+                    let w = cubic_basis(t);
+                    for k in 0..3 {
+                        p[k] = w[0] * ctrl[0][k]
+                            + w[1] * ctrl[1][k]
+                            + w[2] * ctrl[2][k]
+                            + w[3] * ctrl[3][k];
+                    }
                 }
-            }
+            })
         });
 }
 
