@@ -791,7 +791,7 @@ fn axis_name_positions(
                 let (_, y1) = coord.translate(&(s[0], s[1], s[2]));
                 let (_, y2) = coord.translate(&(e[0], e[1], e[2]));
                 let key = (depth(s) + depth(e), y1 + y2);
-                if best.as_ref().map_or(true, |b| key < b.0) {
+                if best.as_ref().is_none_or(|b| key < b.0) {
                     best = Some((key, s, e));
                 }
             }

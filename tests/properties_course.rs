@@ -27,7 +27,7 @@ fn clamped_knots(p: usize, n: usize) -> impl Strategy<Value = Vec<f64>> {
         }
         out.sort_by(|a, b| a.total_cmp(b));
         knots.extend(out);
-        knots.extend(std::iter::repeat(1.0).take(p + 1));
+        knots.extend(std::iter::repeat_n(1.0, p + 1));
         knots
     })
 }

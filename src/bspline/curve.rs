@@ -124,7 +124,7 @@ impl<T: Scalar> BSplineCurve<T> {
         let n = curve.degree();
         let (a, b) = curve.interval();
         let mut knots = vec![a.clone(); n + 1];
-        knots.extend(std::iter::repeat(b.clone()).take(n + 1));
+        knots.extend(std::iter::repeat_n(b.clone(), n + 1));
         BSplineCurve {
             degree: n,
             knots: KnotVector::new(knots).expect("a < b"),

@@ -68,7 +68,7 @@ impl<T: Scalar> KnotVector<T> {
         for j in 1..spans {
             knots.push(T::from_ratio(j as i64, spans as i64));
         }
-        knots.extend(std::iter::repeat(T::one()).take(p + 1));
+        knots.extend(std::iter::repeat_n(T::one(), p + 1));
         Ok(KnotVector { knots })
     }
 

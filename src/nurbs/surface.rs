@@ -116,7 +116,7 @@ impl<T: Scalar> NurbsSurface<T> {
                     a.iter().filter(|y| *y == x).count(),
                     b.iter().filter(|y| *y == x).count(),
                 );
-                out.extend(std::iter::repeat(x.clone()).take(mb.saturating_sub(ma)));
+                out.extend(std::iter::repeat_n(x.clone(), mb.saturating_sub(ma)));
             }
             out
         };

@@ -320,7 +320,7 @@ pub fn nurbs<T: LiteralScalar>(cmd: &NurbsCommand) -> Result<Outcome, CliError> 
             for i in 1..inner {
                 k.push(T::from_ratio(i as i64, inner as i64));
             }
-            k.extend(std::iter::repeat(T::one()).take(p + 1));
+            k.extend(std::iter::repeat_n(T::one(), p + 1));
             k
         }
     };

@@ -124,7 +124,7 @@ pub(crate) fn column_vector(
     a: &ArrayView2<'_, f64>,
     dim: Option<usize>,
 ) -> Result<DVector<f64>> {
-    let ok = a.ncols() == 1 && a.nrows() >= 1 && dim.map_or(true, |d| a.nrows() == d);
+    let ok = a.ncols() == 1 && a.nrows() >= 1 && dim.is_none_or(|d| a.nrows() == d);
     if !ok {
         return Err(Error::ShapeMismatch {
             what,
@@ -146,7 +146,7 @@ pub(crate) fn check_shape(
     rows: Option<usize>,
     cols: Option<usize>,
 ) -> Result<()> {
-    let ok = rows.map_or(true, |r| a.nrows() == r) && cols.map_or(true, |c| a.ncols() == c);
+    let ok = rows.is_none_or(|r| a.nrows() == r) && cols.is_none_or(|c| a.ncols() == c);
     if ok {
         return Ok(());
     }
