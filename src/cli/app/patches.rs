@@ -20,7 +20,7 @@ use crate::{CoonsPatch, Curve, GordonSurface, Surface, Tolerance};
 
 use super::bezier::point_mode;
 use super::common::*;
-use super::{emit, prepare_script, Outcome};
+use super::{prepare_script, Outcome};
 
 /// The boundary curve arguments shared by `coons` and `coons-bicubic`.
 #[derive(Debug, Clone, Args)]
@@ -98,6 +98,43 @@ fn surface_params<T: LiteralScalar>(
     Ok((us, vs))
 }
 
+/// The parameters of the pictures of a patch: the result's, or a 21 × 21 grid when the
+/// result is a single point; and whether there are pictures (`--plot` or `--mesh`) at all.
+fn picture_params<T: LiteralScalar>(
+    (us, vs): (&[T], &[T]),
+    single: bool,
+    plot: &PlotArgs,
+    mesh: &MeshArgs,
+) -> (bool, Vec<T>, Vec<T>) {
+    let pictures = plot.plot.is_some() || mesh.mesh.is_some();
+    if single && pictures {
+        let t = T::linspace(&T::zero(), &T::one(), 21);
+        (pictures, t.clone(), t)
+    } else {
+        (pictures, us.to_vec(), vs.to_vec())
+    }
+}
+
+/// The four boundary curves as parts for [`build_curves`]: c1, c2 sampled at `at_u`, d1, d2
+/// at `at_v`.
+fn boundary_parts<'a, T: LiteralScalar>(
+    sources: &'a [CurveSource<T>; 4],
+    at_u: &'a [T],
+    at_v: &'a [T],
+) -> Vec<(&'static str, &'a CurveSource<T>, &'a [T])> {
+    ["--c1", "--c2", "--d1", "--d2"]
+        .into_iter()
+        .zip(sources)
+        .enumerate()
+        .map(|(k, (arg, s))| (arg, s, if k < 2 { at_u } else { at_v }))
+        .collect()
+}
+
+/// Four curves from a vector of four.
+fn four<T: LiteralScalar>(curves: Vec<CliCurve<T>>) -> [CliCurve<T>; 4] {
+    curves.try_into().unwrap_or_else(|_| unreachable!())
+}
+
 #[derive(Debug, Args)]
 pub struct CoonsCommand {
     #[command(flatten)]
@@ -128,22 +165,13 @@ pub fn coons<T: LiteralScalar>(cmd: &CoonsCommand) -> Result<Outcome, CliError> 
         &cmd.params,
         (sources[0].sample_params(), sources[2].sample_params()),
     )?;
-    let pictures = cmd.plot.plot.is_some() || cmd.mesh.mesh.is_some();
-    let (pus, pvs) = if single && pictures {
-        let t = T::linspace(&T::zero(), &T::one(), 21);
-        (t.clone(), t)
-    } else {
-        (us.clone(), vs.clone())
-    };
+    let (pictures, pus, pvs) = picture_params((&us, &vs), single, &cmd.plot, &cmd.mesh);
     let at_u = needed(&[&us, &pus]);
     let at_v = needed(&[&vs, &pvs]);
-    let names = ["--c1", "--c2", "--d1", "--d2"];
-    let mut curves = Vec::with_capacity(4);
-    for (k, s) in sources.iter().enumerate() {
-        let at = if k < 2 { &at_u } else { &at_v };
-        curves.push(s.build(names[k], at, &mut env)?);
-    }
-    let [c1, c2, d1, d2]: [CliCurve<T>; 4] = curves.try_into().unwrap_or_else(|_| unreachable!());
+    let [c1, c2, d1, d2] = four(build_curves(
+        &boundary_parts(&sources, &at_u, &at_v),
+        &mut env,
+    )?);
     let expected = "four boundary curves that meet at the corners: c1(0)=d1(0), c1(1)=d2(0), c2(0)=d1(1), c2(1)=d2(1)";
     let patch = match script_corners(script.as_ref()) {
         Some(corners) if cmd.boundary.c1.is_none() => CoonsPatch::with_corners(
@@ -209,12 +237,12 @@ pub fn coons<T: LiteralScalar>(cmd: &CoonsCommand) -> Result<Outcome, CliError> 
             &cmd.mesh,
         )?;
     }
-    let stdout = emit(&report, &cmd.output, &mut files)?;
-    Ok(Outcome {
-        stdout,
+    finish(
+        &report,
+        &cmd.output,
         files,
-        warnings: warnings(&cmd.script.script, script.as_ref(), &mut env),
-    })
+        warnings(&cmd.script.script, script.as_ref(), &mut env),
+    )
 }
 
 /// The `--plot` and `--mesh` files of a Coons-type patch whose surface `grid` was sampled at
@@ -309,22 +337,9 @@ pub fn coons_bicubic<T: LiteralScalar>(cmd: &CoonsBicubicCommand) -> Result<Outc
     let sources = boundary_sources(&cmd.boundary, script.as_ref(), cmd.rows.rows, &env)?;
     let single = point_mode(&cmd.params);
     let (us, vs) = surface_params(&cmd.params, (None, None))?;
-    let pictures = cmd.plot.plot.is_some() || cmd.mesh.mesh.is_some();
-    let (pus, pvs) = if single && pictures {
-        let t = T::linspace(&T::zero(), &T::one(), 21);
-        (t.clone(), t)
-    } else {
-        (us.clone(), vs.clone())
-    };
+    let (pictures, pus, pvs) = picture_params((&us, &vs), single, &cmd.plot, &cmd.mesh);
     let at_u = needed(&[&us, &pus]);
     let at_v = needed(&[&vs, &pvs]);
-    let names = ["--c1", "--c2", "--d1", "--d2"];
-    let mut curves = Vec::with_capacity(4);
-    for (k, s) in sources.iter().enumerate() {
-        let at = if k < 2 { &at_u } else { &at_v };
-        curves.push(s.build(names[k], at, &mut env)?);
-    }
-    let [c1, c2, d1, d2]: [CliCurve<T>; 4] = curves.try_into().unwrap_or_else(|_| unreachable!());
     let mut cross = Vec::with_capacity(4);
     for (arg, given, at) in [
         ("--d1u", &cmd.d1u, &at_v),
@@ -340,10 +355,14 @@ pub fn coons_bicubic<T: LiteralScalar>(cmd: &CoonsBicubicCommand) -> Result<Outc
             )
         })?;
         let source = load_curve(arg, text, script.as_ref(), cmd.rows.rows, &env)?;
-        cross.push(source.build(arg, at, &mut env)?);
+        cross.push((arg, source, at.as_slice()));
     }
-    let [du0, du1, dv0, dv1]: [CliCurve<T>; 4] =
-        cross.try_into().unwrap_or_else(|_| unreachable!());
+    // All eight curves are estimated together, before any is sampled.
+    let mut parts = boundary_parts(&sources, &at_u, &at_v);
+    parts.extend(cross.iter().map(|(arg, s, at)| (*arg, s, *at)));
+    let mut curves = build_curves(&parts, &mut env)?;
+    let [du0, du1, dv0, dv1] = four(curves.split_off(4));
+    let [c1, c2, d1, d2] = four(curves);
     let twist = match cmd.twist {
         TwistChoice::Zero => Twist::Zero,
         TwistChoice::Gregory => Twist::Gregory,
@@ -408,12 +427,12 @@ pub fn coons_bicubic<T: LiteralScalar>(cmd: &CoonsBicubicCommand) -> Result<Outc
             &cmd.mesh,
         )?;
     }
-    let stdout = emit(&report, &cmd.output, &mut files)?;
-    Ok(Outcome {
-        stdout,
+    finish(
+        &report,
+        &cmd.output,
         files,
-        warnings: warnings(&cmd.script.script, script.as_ref(), &mut env),
-    })
+        warnings(&cmd.script.script, script.as_ref(), &mut env),
+    )
 }
 
 #[derive(Debug, Args)]
@@ -468,12 +487,12 @@ pub fn discrete<T: LiteralScalar>(cmd: &DiscreteCoonsCommand) -> Result<Outcome,
             .net(g, Colour::Red, "control net");
         add_plot(&mut files, "--plot", path, &figure)?;
     }
-    let stdout = emit(&report, &cmd.output, &mut files)?;
-    Ok(Outcome {
-        stdout,
+    finish(
+        &report,
+        &cmd.output,
         files,
-        warnings: warnings(&cmd.script.script, script.as_ref(), &mut Env::new()),
-    })
+        warnings(&cmd.script.script, script.as_ref(), &mut Env::new()),
+    )
 }
 
 #[derive(Debug, Args)]
@@ -635,22 +654,17 @@ pub fn gordon<T: LiteralScalar>(cmd: &GordonCommand) -> Result<Outcome, CliError
         .and_then(|c| c.sample_params())
         .map(<[T]>::to_vec);
     let (us, vs) = surface_params(&cmd.params, (sampled_u.as_deref(), sampled_v.as_deref()))?;
-    let pictures = cmd.plot.plot.is_some() || cmd.mesh.mesh.is_some();
-    let (pus, pvs) = if single && pictures {
-        let t = T::linspace(&T::zero(), &T::one(), 21);
-        (t.clone(), t)
-    } else {
-        (us.clone(), vs.clone())
-    };
+    let (pictures, pus, pvs) = picture_params((&us, &vs), single, &cmd.plot, &cmd.mesh);
     let need_u = needed(&[&us, &pus, &u_nodes]);
     let need_v = needed(&[&vs, &pvs, &v_nodes]);
-    let build = |arg: &str, list: &[CurveSource<T>], at: &[T], env: &mut Env<T>| {
-        list.iter()
-            .map(|c| c.build(arg, at, env))
-            .collect::<Result<Vec<_>, _>>()
-    };
-    let curves_u = build("--u-curve", &at_u, &need_v, &mut env)?;
-    let curves_v = build("--v-curve", &at_v, &need_u, &mut env)?;
+    // Curves g(u_i, ·) are sampled in v, curves g(·, v_j) in u.
+    let parts: Vec<(&str, &CurveSource<T>, &[T])> = at_u
+        .iter()
+        .map(|c| ("--u-curve", c, need_v.as_slice()))
+        .chain(at_v.iter().map(|c| ("--v-curve", c, need_u.as_slice())))
+        .collect();
+    let mut curves_u = build_curves(&parts, &mut env)?;
+    let curves_v = curves_u.split_off(at_u.len());
     let expected =
         "a compatible network: g(u_i, ·) at v_j equals g(·, v_j) at u_i, one curve per node";
     let surface = match points {
@@ -734,12 +748,12 @@ pub fn gordon<T: LiteralScalar>(cmd: &GordonCommand) -> Result<Outcome, CliError
             add_mesh(&mut files, "--mesh", path, &grid)?;
         }
     }
-    let stdout = emit(&report, &cmd.output, &mut files)?;
-    Ok(Outcome {
-        stdout,
+    finish(
+        &report,
+        &cmd.output,
         files,
-        warnings: warnings(&cmd.script.script, script.as_ref(), &mut env),
-    })
+        warnings(&cmd.script.script, script.as_ref(), &mut env),
+    )
 }
 
 #[derive(Debug, Args)]
@@ -818,10 +832,5 @@ pub fn lagrange<T: LiteralScalar>(cmd: &LagrangeCommand) -> Result<Outcome, CliE
             report.push("result", Value::Matrix(result));
         }
     }
-    let stdout = emit(&report, &cmd.output, &mut files)?;
-    Ok(Outcome {
-        stdout,
-        files,
-        warnings: Vec::new(),
-    })
+    finish(&report, &cmd.output, files, Vec::new())
 }
