@@ -134,3 +134,197 @@ fn the_mask_system_is_refused_before_it_is_allocated() {
         stderr(&out)
     );
 }
+
+/// `u+u+…+u` with `terms` terms: an expression of `terms + 1` nodes (the sum and its
+/// operands).
+fn long_sum(terms: usize) -> String {
+    vec!["u"; terms].join("+")
+}
+
+/// Runs `cagd args…` and checks that it is refused up front by the work estimate of the
+/// expressions it would sample, naming `argument`; returns the error line.
+fn refused_by_work(args: &[&str], argument: &str) -> String {
+    let start = std::time::Instant::now();
+    let out = cagd().args(args).output().unwrap();
+    let elapsed = start.elapsed();
+    let e = stderr(&out);
+    assert_eq!(out.status.code(), Some(2), "{e}");
+    assert!(out.stdout.is_empty());
+    assert_eq!(e.lines().count(), 1, "{e}");
+    assert!(
+        e.starts_with(&format!(
+            "cagd: error: {argument}: estimated operations (samples × expression nodes): "
+        )) && e.contains("(raise it with --max-work or CAGD_MAX_WORK)"),
+        "{e}"
+    );
+    // Sampling would take hours; the refusal comes before it.
+    assert!(elapsed.as_secs() < 20, "took {elapsed:?}");
+    e
+}
+
+#[test]
+fn large_expressions_at_many_samples_are_refused_before_sampling() {
+    // 50 001 nodes in the third coordinate (about 100 KB of text).
+    let big = long_sum(50_000);
+    let curve = format!("[u; 0; {big}]");
+    let e = refused_by_work(&["curve", &curve, "--n", "1000000"], "EXPR");
+    // 10⁶ samples × (the matrix, its three elements, the sum's 50 000 operands).
+    assert!(
+        e.contains("50004000000 exceeds the limit of 2000000000"),
+        "{e}"
+    );
+    let surface = format!("[u; v; {big}]");
+    let e = refused_by_work(&["surface", &surface, "--n", "1000"], "EXPR");
+    assert!(e.contains("50004000000 exceeds"), "{e}");
+    // Boundary and network curves: the largest share is named.
+    let many_u = ["--u", "0:2e-6:1", "--v", "0.5"];
+    let coons = [
+        "coons", "--c1", &curve, "--c2", "[u;1;u]", "--d1", "[0;v;0]", "--d2", "[1;v;v]",
+    ];
+    refused_by_work(&[&coons[..], &many_u].concat(), "--c1");
+    let bicubic = [
+        "coons-bicubic",
+        "--c1",
+        "[u;0;0]",
+        "--c2",
+        "[u;1;0]",
+        "--d1",
+        "[0;v;0]",
+        "--d2",
+        "[1;v;0]",
+        "--c1v",
+        &curve,
+        "--c2v",
+        "[0;1;0]",
+        "--d1u",
+        "[1;0;0]",
+        "--d2u",
+        "[1;0;0]",
+    ];
+    refused_by_work(&[&bicubic[..], &many_u].concat(), "--c1v");
+    let gordon = [
+        "gordon",
+        "--u-curve",
+        "[0;v;v]",
+        "--u-curve",
+        "[1;v;v]",
+        "--v-curve",
+        &curve,
+        "--v-curve",
+        "[u;1;1+u-u^2]",
+    ];
+    refused_by_work(&[&gordon[..], &many_u].concat(), "--v-curve");
+    // A curve of a data script counts with everything it is computed from.
+    let dir = tempfile::tempdir().unwrap();
+    let script = dir.path().join("big.m");
+    std::fs::write(
+        &script,
+        format!("w = {};\nc1 = [u; 0; w];\n", long_sum(400_000)),
+    )
+    .unwrap();
+    let e = refused_by_work(
+        &[
+            "curve",
+            "c1",
+            "--script",
+            script.to_str().unwrap(),
+            "--n",
+            "1000000",
+        ],
+        "EXPR",
+    );
+    assert!(e.contains("exceeds the limit of 2000000000"), "{e}");
+}
+
+#[test]
+fn a_higher_max_work_lets_the_same_command_run() {
+    let curve = format!("[u; 0; {}]", long_sum(1000));
+    let args = ["curve", curve.as_str(), "--n", "2000", "--format", "csv"];
+    // 2000 samples × 1004 nodes.
+    let out = cagd()
+        .args(args)
+        .args(["--max-work", "2000000"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        stderr(&out).starts_with("cagd: error: EXPR: estimated operations (samples × expression nodes): 2008000 exceeds the limit of 2000000"),
+        "{}",
+        stderr(&out)
+    );
+    let out = cagd()
+        .env("CAGD_MAX_WORK", "2000000")
+        .args(args)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let out = cagd()
+        .env("CAGD_MAX_WORK", "2000000")
+        .args(args)
+        .args(["--max-work", "2008000"])
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", stderr(&out));
+    // The last point is (1, 0, 1000): a thousand times u = 1.
+    let text = String::from_utf8(out.stdout).unwrap();
+    let last: Vec<f64> = text
+        .lines()
+        .filter_map(|l| l.rsplit(',').next()?.trim().parse().ok())
+        .collect();
+    assert_eq!(last[last.len() - 3..], [1.0, 0.0, 1000.0], "{text}");
+}
+
+#[test]
+fn typical_thesis_commands_stay_far_below_the_work_limit() {
+    let dir = tempfile::tempdir().unwrap();
+    let out_dir = dir.path().join("thesis");
+    let primer_4_3 = [
+        "coons",
+        "--c1",
+        "[u;0;u-u^2]",
+        "--c2",
+        "[u;1;u]",
+        "--d1",
+        "[0;v^2;v-v^2]",
+        "--d2",
+        "[1;v;v]",
+    ];
+    let gordon = [
+        "gordon",
+        "--v-curve",
+        "[u;0;u-u^2]",
+        "--v-curve",
+        "[u;0.5;0.5+u-u^2]",
+        "--v-curve",
+        "[u;1;1+u-u^2]",
+        "--u-curve",
+        "[0;v;v]",
+        "--u-curve",
+        "[0.5;v;0.25+v]",
+        "--u-curve",
+        "[1;v;v]",
+    ];
+    let commands: Vec<Vec<&str>> = vec![
+        vec!["thesis", "--out", out_dir.to_str().unwrap()],
+        [&primer_4_3[..], &["--u", "0.2", "--v", "0.5", "--exact"]].concat(),
+        [&primer_4_3[..], &["--n", "100"]].concat(),
+        vec!["coons", "--script", "tests/data/appendix_c.m", "--n", "10"],
+        [&gordon[..], &["--n", "100", "--steps"]].concat(),
+        vec!["gordon", "--script", "tests/data/appendix_d_odd.m"],
+        vec!["curve", "[u; 0.5; 0.5+u-u^2]", "--n", "1000"],
+        vec!["surface", "[u; v; u-u^2+v]", "--n", "100"],
+    ];
+    for args in &commands {
+        // With the default limits, and with a limit a thousand times lower.
+        for limit in [None, Some("2000000")] {
+            let mut c = cagd();
+            c.current_dir(env!("CARGO_MANIFEST_DIR")).args(args);
+            if let Some(l) = limit {
+                c.args(["--max-work", l]);
+            }
+            let out = c.output().unwrap();
+            assert!(out.status.success(), "{args:?}: {}", stderr(&out));
+            assert!(!out.stdout.is_empty(), "{args:?}");
+        }
+    }
+}
