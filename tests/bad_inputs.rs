@@ -10,19 +10,7 @@ use cagd::cli::{run, ErrorKind};
 mod common;
 
 use common::bad_input::{check_all, refused};
-
-const NET: &str = "[0 0 0 0 2 1 0 4 0; 2 0 1 2 2 4 2 4 1; 4 0 0 4 2 1 4 4 0]";
-const CUBIC: &str = "[0 0 0; 0 2 2; 8 2 0; 4 0 0]'";
-const COONS: [&str; 8] = [
-    "--c1",
-    "[u;0;u-u^2]",
-    "--c2",
-    "[u;1;u]",
-    "--d1",
-    "[0;v^2;v-v^2]",
-    "--d2",
-    "[1;v;v]",
-];
+use common::thesis_args::{NET_3X3 as NET, PRIMER_2_4 as CUBIC, PRIMER_4_3 as COONS};
 
 /// The kind of an error as `Kind` or `Kind::Variant` (the typed error underneath).
 fn label(kind: &ErrorKind) -> String {

@@ -497,36 +497,9 @@ mod matrix_arguments {
 // ---------------------------------------------------------------------------------------
 // The subcommands of the thesis and the course, on the thesis data
 
-const PRIMER_2_4: &str = "[0 0 0; 0 2 2; 8 2 0; 4 0 0]'";
-const NET_3X3: &str = "[0 0 0 0 2 1 0 4 0; 2 0 1 2 2 4 2 4 1; 4 0 0 4 2 1 4 4 0]";
-const PRIMER_4_3: [&str; 8] = [
-    "--c1",
-    "[u;0;u-u^2]",
-    "--c2",
-    "[u;1;u]",
-    "--d1",
-    "[0;v^2;v-v^2]",
-    "--d2",
-    "[1;v;v]",
-];
-const GORDON_D: [&str; 12] = [
-    "--v-curve",
-    "[u;0;u-u^2]",
-    "--v-curve",
-    "[u;0.5;0.5+u-u^2]",
-    "--v-curve",
-    "[u;1;1+u-u^2]",
-    "--u-curve",
-    "[0;v;v]",
-    "--u-curve",
-    "[0.5;v;0.25+v]",
-    "--u-curve",
-    "[1;v;v]",
-];
-
-fn with<'a>(head: &[&'a str], tail: &[&'a str]) -> Vec<&'a str> {
-    head.iter().chain(tail).copied().collect()
-}
+use common::thesis_args::{
+    with, FLAT_SQUARE, FLAT_SQUARE_CROSS, GORDON_D, NET_3X3, PRIMER_2_4, PRIMER_4_3,
+};
 
 #[test]
 fn decasteljau_primer_2_4_exact_scheme() {
@@ -647,28 +620,8 @@ fn coons_point_script_and_bezier_boundaries() {
 
 #[test]
 fn coons_bicubic_flat_square() {
-    insta::assert_snapshot!(ok(&[
-        "coons-bicubic",
-        "--c1",
-        "[u;0;0]",
-        "--c2",
-        "[u;1;0]",
-        "--d1",
-        "[0;v;0]",
-        "--d2",
-        "[1;v;0]",
-        "--c1v",
-        "[0;1;0]",
-        "--c2v",
-        "[0;1;0]",
-        "--d1u",
-        "[1;0;0]",
-        "--d2u",
-        "[1;0;0]",
-        "--n",
-        "3",
-        "--exact"
-    ]));
+    let args = [&["coons-bicubic"][..], &FLAT_SQUARE, &FLAT_SQUARE_CROSS].concat();
+    insta::assert_snapshot!(ok(&with(&args, &["--n", "3", "--exact"])));
 }
 
 #[test]

@@ -3,6 +3,10 @@
 
 use assert_cmd::Command;
 
+mod common;
+
+use common::thesis_args::{with, FLAT_SQUARE, FLAT_SQUARE_CROSS, GORDON_D, PRIMER_4_3};
+
 fn cagd() -> Command {
     let mut c = Command::cargo_bin("cagd").unwrap();
     for (_, var, _) in cagd::limits::SETTINGS {
@@ -13,6 +17,13 @@ fn cagd() -> Command {
 
 fn stderr(out: &std::process::Output) -> String {
     String::from_utf8_lossy(&out.stderr).into_owned()
+}
+
+/// Runs `cmd`, which must succeed; returns its standard output.
+fn succeeds(cmd: &mut Command) -> String {
+    let out = cmd.output().unwrap();
+    assert!(out.status.success(), "{}", stderr(&out));
+    String::from_utf8(out.stdout).unwrap()
 }
 
 #[test]
@@ -36,13 +47,12 @@ fn environment_and_flags_set_the_limits() {
         "{e}"
     );
     // The flag wins over the environment, before or after the subcommand.
-    let out = cagd()
-        .env("CAGD_MAX_GRID_POINTS", "10")
-        .args(surface)
-        .args(["--max-grid-points", "16"])
-        .output()
-        .unwrap();
-    assert!(out.status.success(), "{}", stderr(&out));
+    succeeds(
+        cagd()
+            .env("CAGD_MAX_GRID_POINTS", "10")
+            .args(surface)
+            .args(["--max-grid-points", "16"]),
+    );
     let out = cagd()
         .args(["--max-degree", "2", "decasteljau", "[0 1 2 3]"])
         .output()
@@ -141,11 +151,11 @@ fn long_sum(terms: usize) -> String {
     vec!["u"; terms].join("+")
 }
 
-/// Runs `cagd args…` and checks that it is refused up front by the work estimate of the
-/// expressions it would sample, naming `argument`; returns the error line.
-fn refused_by_work(args: &[&str], argument: &str) -> String {
+/// Runs `cmd` and checks that it is refused up front by the work estimate of the expressions
+/// it would sample, naming `argument`; returns the error line.
+fn refused_by_work(cmd: &mut Command, argument: &str) -> String {
     let start = std::time::Instant::now();
-    let out = cagd().args(args).output().unwrap();
+    let out = cmd.output().unwrap();
     let elapsed = start.elapsed();
     let e = stderr(&out);
     assert_eq!(out.status.code(), Some(2), "{e}");
@@ -167,53 +177,26 @@ fn large_expressions_at_many_samples_are_refused_before_sampling() {
     // 50 001 nodes in the third coordinate (about 100 KB of text).
     let big = long_sum(50_000);
     let curve = format!("[u; 0; {big}]");
-    let e = refused_by_work(&["curve", &curve, "--n", "1000000"], "EXPR");
+    let e = refused_by_work(cagd().args(["curve", &curve, "--n", "1000000"]), "EXPR");
     // 10⁶ samples × (the matrix, its three elements, the sum's 50 000 operands).
     assert!(
         e.contains("50004000000 exceeds the limit of 2000000000"),
         "{e}"
     );
     let surface = format!("[u; v; {big}]");
-    let e = refused_by_work(&["surface", &surface, "--n", "1000"], "EXPR");
+    let e = refused_by_work(cagd().args(["surface", &surface, "--n", "1000"]), "EXPR");
     assert!(e.contains("50004000000 exceeds"), "{e}");
-    // Boundary and network curves: the largest share is named.
+    // Boundary and network curves: the argument with the largest share is named.
     let many_u = ["--u", "0:2e-6:1", "--v", "0.5"];
-    let coons = [
-        "coons", "--c1", &curve, "--c2", "[u;1;u]", "--d1", "[0;v;0]", "--d2", "[1;v;v]",
-    ];
-    refused_by_work(&[&coons[..], &many_u].concat(), "--c1");
-    let bicubic = [
-        "coons-bicubic",
-        "--c1",
-        "[u;0;0]",
-        "--c2",
-        "[u;1;0]",
-        "--d1",
-        "[0;v;0]",
-        "--d2",
-        "[1;v;0]",
-        "--c1v",
-        &curve,
-        "--c2v",
-        "[0;1;0]",
-        "--d1u",
-        "[1;0;0]",
-        "--d2u",
-        "[1;0;0]",
-    ];
-    refused_by_work(&[&bicubic[..], &many_u].concat(), "--c1v");
-    let gordon = [
-        "gordon",
-        "--u-curve",
-        "[0;v;v]",
-        "--u-curve",
-        "[1;v;v]",
-        "--v-curve",
-        &curve,
-        "--v-curve",
-        "[u;1;1+u-u^2]",
-    ];
-    refused_by_work(&[&gordon[..], &many_u].concat(), "--v-curve");
+    let mut coons = with(&["coons"], &PRIMER_4_3);
+    coons[2] = &curve;
+    refused_by_work(cagd().args(coons).args(many_u), "--c1");
+    let mut bicubic = [&["coons-bicubic"][..], &FLAT_SQUARE, &FLAT_SQUARE_CROSS].concat();
+    bicubic[10] = &curve;
+    refused_by_work(cagd().args(bicubic).args(many_u), "--c1v");
+    let mut gordon = with(&["gordon"], &GORDON_D);
+    gordon[4] = &curve;
+    refused_by_work(cagd().args(gordon).args(many_u), "--v-curve");
     // A curve of a data script counts with everything it is computed from.
     let dir = tempfile::tempdir().unwrap();
     let script = dir.path().join("big.m");
@@ -222,15 +205,9 @@ fn large_expressions_at_many_samples_are_refused_before_sampling() {
         format!("w = {};\nc1 = [u; 0; w];\n", long_sum(400_000)),
     )
     .unwrap();
+    let script = script.to_str().unwrap();
     let e = refused_by_work(
-        &[
-            "curve",
-            "c1",
-            "--script",
-            script.to_str().unwrap(),
-            "--n",
-            "1000000",
-        ],
+        cagd().args(["curve", "c1", "--script", script, "--n", "1000000"]),
         "EXPR",
     );
     assert!(e.contains("exceeds the limit of 2000000000"), "{e}");
@@ -240,33 +217,17 @@ fn large_expressions_at_many_samples_are_refused_before_sampling() {
 fn a_higher_max_work_lets_the_same_command_run() {
     let curve = format!("[u; 0; {}]", long_sum(1000));
     let args = ["curve", curve.as_str(), "--n", "2000", "--format", "csv"];
-    // 2000 samples × 1004 nodes.
-    let out = cagd()
-        .args(args)
-        .args(["--max-work", "2000000"])
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(2));
-    assert!(
-        stderr(&out).starts_with("cagd: error: EXPR: estimated operations (samples × expression nodes): 2008000 exceeds the limit of 2000000"),
-        "{}",
-        stderr(&out)
+    // 2000 samples × 1004 nodes, refused by a lower flag or environment variable.
+    let e = refused_by_work(cagd().args(args).args(["--max-work", "2000000"]), "EXPR");
+    assert!(e.contains(": 2008000 exceeds the limit of 2000000 "), "{e}");
+    refused_by_work(cagd().env("CAGD_MAX_WORK", "2007999").args(args), "EXPR");
+    let text = succeeds(
+        cagd()
+            .env("CAGD_MAX_WORK", "2000000")
+            .args(args)
+            .args(["--max-work", "2008000"]),
     );
-    let out = cagd()
-        .env("CAGD_MAX_WORK", "2000000")
-        .args(args)
-        .output()
-        .unwrap();
-    assert_eq!(out.status.code(), Some(2));
-    let out = cagd()
-        .env("CAGD_MAX_WORK", "2000000")
-        .args(args)
-        .args(["--max-work", "2008000"])
-        .output()
-        .unwrap();
-    assert!(out.status.success(), "{}", stderr(&out));
     // The last point is (1, 0, 1000): a thousand times u = 1.
-    let text = String::from_utf8(out.stdout).unwrap();
     let last: Vec<f64> = text
         .lines()
         .filter_map(|l| l.rsplit(',').next()?.trim().parse().ok())
@@ -278,38 +239,14 @@ fn a_higher_max_work_lets_the_same_command_run() {
 fn typical_thesis_commands_stay_far_below_the_work_limit() {
     let dir = tempfile::tempdir().unwrap();
     let out_dir = dir.path().join("thesis");
-    let primer_4_3 = [
-        "coons",
-        "--c1",
-        "[u;0;u-u^2]",
-        "--c2",
-        "[u;1;u]",
-        "--d1",
-        "[0;v^2;v-v^2]",
-        "--d2",
-        "[1;v;v]",
-    ];
-    let gordon = [
-        "gordon",
-        "--v-curve",
-        "[u;0;u-u^2]",
-        "--v-curve",
-        "[u;0.5;0.5+u-u^2]",
-        "--v-curve",
-        "[u;1;1+u-u^2]",
-        "--u-curve",
-        "[0;v;v]",
-        "--u-curve",
-        "[0.5;v;0.25+v]",
-        "--u-curve",
-        "[1;v;v]",
-    ];
+    let coons = with(&["coons"], &PRIMER_4_3);
+    let gordon = with(&["gordon"], &GORDON_D);
     let commands: Vec<Vec<&str>> = vec![
         vec!["thesis", "--out", out_dir.to_str().unwrap()],
-        [&primer_4_3[..], &["--u", "0.2", "--v", "0.5", "--exact"]].concat(),
-        [&primer_4_3[..], &["--n", "100"]].concat(),
+        with(&coons, &["--u", "0.2", "--v", "0.5", "--exact"]),
+        with(&coons, &["--n", "100"]),
         vec!["coons", "--script", "tests/data/appendix_c.m", "--n", "10"],
-        [&gordon[..], &["--n", "100", "--steps"]].concat(),
+        with(&gordon, &["--n", "100", "--steps"]),
         vec!["gordon", "--script", "tests/data/appendix_d_odd.m"],
         vec!["curve", "[u; 0.5; 0.5+u-u^2]", "--n", "1000"],
         vec!["surface", "[u; v; u-u^2+v]", "--n", "100"],
@@ -322,9 +259,7 @@ fn typical_thesis_commands_stay_far_below_the_work_limit() {
             if let Some(l) = limit {
                 c.args(["--max-work", l]);
             }
-            let out = c.output().unwrap();
-            assert!(out.status.success(), "{args:?}: {}", stderr(&out));
-            assert!(!out.stdout.is_empty(), "{args:?}");
+            assert!(!succeeds(&mut c).is_empty(), "{args:?}");
         }
     }
 }

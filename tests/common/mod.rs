@@ -21,7 +21,7 @@
 //!
 //! # Bad input
 //! [`bad_input`] checks the command line's contract for bad input, for the tables of bad
-//! inputs.
+//! inputs; [`thesis_args`] holds the command-line arguments of the thesis's examples.
 #![allow(dead_code)] // every test binary uses a different subset
 
 use std::path::{Path, PathBuf};
@@ -32,6 +32,7 @@ use cagd::octave::text_format::{read_text_file, Workspace};
 use ndarray::{Array2, Array3, ArrayD, ArrayViewD, Dimension, Ix3};
 
 pub mod bad_input;
+pub mod thesis_args;
 
 /// Largest accepted distance in units in the last place.
 pub const MAX_ULPS: u64 = 4;
