@@ -165,7 +165,7 @@ pub fn coons<T: LiteralScalar>(cmd: &CoonsCommand) -> Result<Outcome, CliError> 
         &cmd.params,
         (sources[0].sample_params(), sources[2].sample_params()),
     )?;
-    let (pictures, pus, pvs) = picture_params((&us, &vs), single, &cmd.plot, &cmd.mesh);
+    let (_, pus, pvs) = picture_params((&us, &vs), single, &cmd.plot, &cmd.mesh);
     let at_u = needed(&[&us, &pus]);
     let at_v = needed(&[&vs, &pvs]);
     let [c1, c2, d1, d2] = four(build_curves(
@@ -188,55 +188,27 @@ pub fn coons<T: LiteralScalar>(cmd: &CoonsCommand) -> Result<Outcome, CliError> 
     let mut report = Report::new();
     report.push("u", Value::Matrix(row(&us)));
     report.push("v", Value::Matrix(row(&vs)));
-    if single {
-        let p = patch.eval_parts(us[0].clone(), vs[0].clone());
-        if cmd.steps.steps {
-            report.push("rc", Value::Matrix(column(&p.rc)));
-            report.push("rd", Value::Matrix(column(&p.rd)));
-            report.push("rcd", Value::Matrix(column(&p.rcd)));
-        }
-        report.push("result", Value::Matrix(column(&p.x)));
-    } else {
-        let d = c1.dim();
-        let shape = (us.len(), vs.len(), d);
-        let mut parts = [
-            Array3::from_elem(shape, T::zero()),
-            Array3::from_elem(shape, T::zero()),
-            Array3::from_elem(shape, T::zero()),
-            Array3::from_elem(shape, T::zero()),
-        ];
-        for (i, u) in us.iter().enumerate() {
-            for (j, v) in vs.iter().enumerate() {
-                let p = patch.eval_parts(u.clone(), v.clone());
-                for (a, x) in parts.iter_mut().zip([&p.rc, &p.rd, &p.rcd, &p.x]) {
-                    for k in 0..d {
-                        a[[i, j, k]] = x[k].clone();
-                    }
-                }
-            }
-        }
-        let [rc, rd, rcd, x] = parts;
-        if cmd.steps.steps {
-            report.push("rc", Value::Grid(rc));
-            report.push("rd", Value::Grid(rd));
-            report.push("rcd", Value::Grid(rcd));
-        }
-        report.push("result", Value::Grid(x));
-    }
-    let mut files = PendingWrites::new();
-    if pictures {
-        let grid = grid_f64(&patch.eval_grid(&pus, &pvs));
-        let curves = [&c1, &c2, &d1, &d2];
-        add_coons_pictures(
-            &mut files,
-            "Coons patch",
-            grid,
-            curves,
-            (&pus, &pvs),
-            &cmd.plot,
-            &cmd.mesh,
-        )?;
-    }
+    push_terms(
+        &mut report,
+        ["rc", "rd", "rcd"],
+        cmd.steps.steps,
+        (&us, &vs),
+        single,
+        c1.dim(),
+        |u, v| {
+            let p = patch.eval_parts(u, v);
+            [p.rc, p.rd, p.rcd, p.x]
+        },
+    );
+    let curves = [&c1, &c2, &d1, &d2];
+    let files = coons_pictures(
+        "Coons patch",
+        &patch,
+        curves,
+        (&pus, &pvs),
+        &cmd.plot,
+        &cmd.mesh,
+    )?;
     finish(
         &report,
         &cmd.output,
@@ -245,25 +217,73 @@ pub fn coons<T: LiteralScalar>(cmd: &CoonsCommand) -> Result<Outcome, CliError> 
     )
 }
 
-/// The `--plot` and `--mesh` files of a Coons-type patch whose surface `grid` was sampled at
-/// `us × vs`: the picture is [`coons_figure`], the mesh the grid itself.
-fn add_coons_pictures<T: LiteralScalar, C: Curve<T>>(
-    files: &mut PendingWrites,
+/// The result of a patch that is a sum of terms (Coons: x = rc + rd − rcd; Gordon:
+/// g = g1 + g2 − g12), `terms(u, v)` giving the three terms and the sum: at a single point
+/// the d×1 columns, else the grids `us × vs × d`; the three terms too, under `names`, with
+/// `--steps`.
+fn push_terms<T: LiteralScalar>(
+    report: &mut Report<T>,
+    names: [&str; 3],
+    steps: bool,
+    (us, vs): (&[T], &[T]),
+    single: bool,
+    d: usize,
+    terms: impl Fn(T, T) -> [DVector<T>; 4],
+) {
+    if single {
+        let [a, b, c, x] = terms(us[0].clone(), vs[0].clone());
+        if steps {
+            for (name, term) in names.into_iter().zip([a, b, c]) {
+                report.push(name, Value::Matrix(column(&term)));
+            }
+        }
+        report.push("result", Value::Matrix(column(&x)));
+        return;
+    }
+    let shape = (us.len(), vs.len(), d);
+    let mut grids: [Array3<T>; 4] = std::array::from_fn(|_| Array3::from_elem(shape, T::zero()));
+    for (i, u) in us.iter().enumerate() {
+        for (j, v) in vs.iter().enumerate() {
+            for (grid, term) in grids.iter_mut().zip(terms(u.clone(), v.clone())) {
+                for k in 0..d {
+                    grid[[i, j, k]] = term[k].clone();
+                }
+            }
+        }
+    }
+    let [a, b, c, x] = grids;
+    if steps {
+        for (name, grid) in names.into_iter().zip([a, b, c]) {
+            report.push(name, Value::Grid(grid));
+        }
+    }
+    report.push("result", Value::Grid(x));
+}
+
+/// The `--plot` and `--mesh` files of a Coons-type patch, sampled at `us × vs`: the picture
+/// is [`coons_figure`], the mesh the grid itself. The patch is sampled only if either is asked
+/// for.
+fn coons_pictures<T: LiteralScalar, C: Curve<T>, S: Surface<T>>(
     title: &str,
-    grid: Array3<f64>,
+    patch: &S,
     curves: [&C; 4],
     (us, vs): (&[T], &[T]),
     plot: &PlotArgs,
     mesh: &MeshArgs,
-) -> Result<(), CliError> {
+) -> Result<PendingWrites, CliError> {
+    let mut files = PendingWrites::new();
+    if plot.plot.is_none() && mesh.mesh.is_none() {
+        return Ok(files);
+    }
+    let grid = grid_f64(&patch.eval_grid(us, vs));
     if let Some(path) = &plot.plot {
         let figure = coons_figure(title, grid.clone(), curves, us, vs);
-        add_plot(files, "--plot", path, &figure)?;
+        add_plot(&mut files, "--plot", path, &figure)?;
     }
     if let Some(path) = &mesh.mesh {
-        add_mesh(files, "--mesh", path, &grid)?;
+        add_mesh(&mut files, "--mesh", path, &grid)?;
     }
-    Ok(())
+    Ok(files)
 }
 
 /// The picture of appendix C: the surface, c1 and c2 in red, d1 and d2 in green.
@@ -337,7 +357,7 @@ pub fn coons_bicubic<T: LiteralScalar>(cmd: &CoonsBicubicCommand) -> Result<Outc
     let sources = boundary_sources(&cmd.boundary, script.as_ref(), cmd.rows.rows, &env)?;
     let single = point_mode(&cmd.params);
     let (us, vs) = surface_params(&cmd.params, (None, None))?;
-    let (pictures, pus, pvs) = picture_params((&us, &vs), single, &cmd.plot, &cmd.mesh);
+    let (_, pus, pvs) = picture_params((&us, &vs), single, &cmd.plot, &cmd.mesh);
     let at_u = needed(&[&us, &pus]);
     let at_v = needed(&[&vs, &pvs]);
     let mut cross = Vec::with_capacity(4);
@@ -413,20 +433,15 @@ pub fn coons_bicubic<T: LiteralScalar>(cmd: &CoonsBicubicCommand) -> Result<Outc
     } else {
         report.push("result", Value::Grid(patch.eval_grid(&us, &vs)));
     }
-    let mut files = PendingWrites::new();
-    if pictures {
-        let grid = grid_f64(&patch.eval_grid(&pus, &pvs));
-        let curves = [&c1, &c2, &d1, &d2];
-        add_coons_pictures(
-            &mut files,
-            "bicubic Coons patch",
-            grid,
-            curves,
-            (&pus, &pvs),
-            &cmd.plot,
-            &cmd.mesh,
-        )?;
-    }
+    let curves = [&c1, &c2, &d1, &d2];
+    let files = coons_pictures(
+        "bicubic Coons patch",
+        &patch,
+        curves,
+        (&pus, &pvs),
+        &cmd.plot,
+        &cmd.mesh,
+    )?;
     finish(
         &report,
         &cmd.output,
@@ -689,36 +704,18 @@ pub fn gordon<T: LiteralScalar>(cmd: &GordonCommand) -> Result<Outcome, CliError
     report.push("u", Value::Matrix(row(&us)));
     report.push("v", Value::Matrix(row(&vs)));
     let d = curves_u[0].dim();
-    if single {
-        let p = surface.eval_parts(us[0].clone(), vs[0].clone());
-        if cmd.steps.steps {
-            report.push("g1", Value::Matrix(column(&p.g1)));
-            report.push("g2", Value::Matrix(column(&p.g2)));
-            report.push("g12", Value::Matrix(column(&p.g12)));
-        }
-        report.push("result", Value::Matrix(column(&p.g)));
-    } else {
-        let shape3 = (us.len(), vs.len(), d);
-        let mut parts: [Array3<T>; 4] =
-            std::array::from_fn(|_| Array3::from_elem(shape3, T::zero()));
-        for (i, u) in us.iter().enumerate() {
-            for (j, v) in vs.iter().enumerate() {
-                let p = surface.eval_parts(u.clone(), v.clone());
-                for (a, x) in parts.iter_mut().zip([&p.g1, &p.g2, &p.g12, &p.g]) {
-                    for k in 0..d {
-                        a[[i, j, k]] = x[k].clone();
-                    }
-                }
-            }
-        }
-        let [g1, g2, g12, g] = parts;
-        if cmd.steps.steps {
-            report.push("g1", Value::Grid(g1));
-            report.push("g2", Value::Grid(g2));
-            report.push("g12", Value::Grid(g12));
-        }
-        report.push("result", Value::Grid(g));
-    }
+    push_terms(
+        &mut report,
+        ["g1", "g2", "g12"],
+        cmd.steps.steps,
+        (&us, &vs),
+        single,
+        d,
+        |u, v| {
+            let p = surface.eval_parts(u, v);
+            [p.g1, p.g2, p.g12, p.g]
+        },
+    );
     let c = surface.conditioning();
     report.push(
         "conditioning",
