@@ -12,7 +12,7 @@
 //! | [`max_grid_points`](Limits::max_grid_points) | 10 000 000 | points of a surface grid (`nu · nv`) | `CAGD_MAX_GRID_POINTS` / `--max-grid-points` |
 //! | [`max_degree`](Limits::max_degree) | 1 000 | degree of a Bernstein basis, Bézier curve or patch direction, B-spline, Lagrange basis (nodes − 1), curves of a Gordon network | `CAGD_MAX_DEGREE` / `--max-degree` |
 //! | [`max_system_entries`](Limits::max_system_entries) | 100 000 000 | stored entries of a linear system (the banded system of a discrete Coons mask) | `CAGD_MAX_SYSTEM_ENTRIES` / `--max-system-entries` |
-//! | [`max_work`](Limits::max_work) | 2 000 000 000 | arithmetic operations of one command, estimated before it starts (points × cost per point: `(n+1)²` for de Casteljau, the band solve of a mask) | `CAGD_MAX_WORK` / `--max-work` |
+//! | [`max_work`](Limits::max_work) | 2 000 000 000 | arithmetic operations of one command, estimated before it starts (points × cost per point: `(n+1)²` for de Casteljau, the band solve of a mask, and for a user expression sampled by `curve`, `surface`, `coons`, `coons-bicubic` or `gordon` its size in nodes at every sample) | `CAGD_MAX_WORK` / `--max-work` |
 //!
 //! Why these numbers (a machine with 24 GiB shared by other work): a grid point of a 3-D
 //! surface costs 24 bytes in `f64`, and a command keeps up to about eight copies of it (the
@@ -23,6 +23,12 @@
 //! of degree `n` holds `(n+1)(n+2)/2` points per parameter, and evaluation costs `O(n²)` per
 //! point: degree 1000 keeps both at about half a million. 10⁸ system entries are 800 MB in
 //! `f64`.
+//!
+//! A user expression (a curve or surface written as in the thesis, `[u; 0; u-u^2]`, or one
+//! computed by a data script) is evaluated once per sample, and one evaluation does about
+//! one operation per node of its tree ([`crate::octave::literal::ParamExpr::node_count`]): the
+//! estimate charges samples × nodes before any sample is taken, so a long expression at many
+//! samples (100 KB of text at 10⁶ samples is 5·10¹⁰ node evaluations) is refused at once.
 //!
 //! Two budgets derive from `max_elements`: one evaluation of an expression may do at most
 //! 64 × `max_elements` element operations (results of every operation and matrix-product

@@ -478,139 +478,59 @@ impl Figure {
             .map_err(drawing)?;
         }
 
-        for layer in self.ordered() {
-            match layer {
-                Layer::Surface { grid, label } => {
-                    let (nu, nv, _) = grid.dim();
-                    let p = |i: usize, j: usize| {
-                        to3([
-                            grid[[i, j, 0]],
-                            grid[[i, j, 1]],
-                            if grid.dim().2 > 2 {
-                                grid[[i, j, 2]]
-                            } else {
-                                0.0
-                            },
-                        ])
-                    };
-                    let mut cells = Vec::new();
-                    for i in 0..nu.saturating_sub(1) {
-                        for j in 0..nv.saturating_sub(1) {
-                            let quad = [p(i, j), p(i + 1, j), p(i + 1, j + 1), p(i, j + 1)];
-                            let height = quad.iter().map(|q| q.1).sum::<f64>() / 4.0;
-                            let centre = (
-                                quad.iter().map(|q| q.0).sum::<f64>() / 4.0,
-                                height,
-                                quad.iter().map(|q| q.2).sum::<f64>() / 4.0,
-                            );
-                            let depth = chart
-                                .as_coord_spec()
-                                .projected_depth(&centre.0, &centre.1, &centre.2);
-                            cells.push((depth, height, quad));
-                        }
-                    }
-                    // Painter's algorithm: far cells first.
-                    cells.sort_by_key(|c| std::cmp::Reverse(c.0));
-                    let (zlo, zhi) = bz;
-                    let anno = chart
-                        .draw_series(cells.iter().map(|(_, height, quad)| {
-                            let c = viridis((height - zlo) / (zhi - zlo));
-                            Polygon::new(quad.to_vec(), c.filled())
-                        }))
-                        .map_err(drawing)?;
-                    if !label.is_empty() {
-                        anno.label(label.as_str()).legend(|(x, y)| {
-                            Rectangle::new([(x, y - 6), (x + 20, y + 6)], viridis(0.6).filled())
-                        });
-                    }
-                    chart
-                        .draw_series(cells.iter().map(|(_, _, quad)| {
-                            let mut ring = quad.to_vec();
-                            ring.push(quad[0]);
-                            PathElement::new(ring, BLACK.mix(0.55).stroke_width(1))
-                        }))
-                        .map_err(drawing)?;
-                }
-                Layer::Net {
-                    grid,
-                    colour,
-                    label,
-                } => {
-                    let style = colour.rgb().stroke_width(1);
-                    let lines = net_lines(grid);
-                    let legend_style = style;
-                    let anno = chart
-                        .draw_series(lines.into_iter().map(|l| {
-                            PathElement::new(l.into_iter().map(to3).collect::<Vec<_>>(), style)
-                        }))
-                        .map_err(drawing)?;
-                    if !label.is_empty() {
-                        anno.label(label.as_str()).legend(move |(x, y)| {
-                            PathElement::new(vec![(x, y), (x + 20, y)], legend_style)
-                        });
-                    }
-                    chart
-                        .draw_series(
-                            layer
-                                .points()
-                                .into_iter()
-                                .map(|p| Circle::new(to3(p), 3, colour.rgb().filled())),
-                        )
-                        .map_err(drawing)?;
-                }
-                Layer::Curve {
-                    colour,
-                    width,
-                    label,
-                    ..
-                } => {
-                    let style = colour.rgb().stroke_width(*width);
-                    let anno = chart
-                        .draw_series(LineSeries::new(layer.points().into_iter().map(to3), style))
-                        .map_err(drawing)?;
-                    if !label.is_empty() {
-                        anno.label(label.as_str()).legend(move |(x, y)| {
-                            PathElement::new(vec![(x, y), (x + 20, y)], style)
-                        });
-                    }
-                }
-                Layer::ControlPolygon { label, .. } => {
-                    let red = Colour::Red.rgb();
-                    let anno = chart
-                        .draw_series(LineSeries::new(
-                            layer.points().into_iter().map(to3),
-                            red.stroke_width(1),
-                        ))
-                        .map_err(drawing)?;
-                    if !label.is_empty() {
-                        anno.label(label.as_str()).legend(move |(x, y)| {
-                            EmptyElement::at((x, y))
-                                + PathElement::new(vec![(0, 0), (20, 0)], red.stroke_width(1))
-                                + Circle::new((10, 0), 4, red.stroke_width(2))
-                        });
-                    }
-                    chart
-                        .draw_series(
-                            layer
-                                .points()
-                                .into_iter()
-                                .map(|p| Circle::new(to3(p), 5, red.stroke_width(2))),
-                        )
-                        .map_err(drawing)?;
+        // A 3-D net also marks its points.
+        self.draw_layers(&mut chart, to3, true, |chart, grid, label| {
+            let (nu, nv, _) = grid.dim();
+            let p = |i: usize, j: usize| {
+                to3([
+                    grid[[i, j, 0]],
+                    grid[[i, j, 1]],
+                    if grid.dim().2 > 2 {
+                        grid[[i, j, 2]]
+                    } else {
+                        0.0
+                    },
+                ])
+            };
+            let mut cells = Vec::new();
+            for i in 0..nu.saturating_sub(1) {
+                for j in 0..nv.saturating_sub(1) {
+                    let quad = [p(i, j), p(i + 1, j), p(i + 1, j + 1), p(i, j + 1)];
+                    let height = quad.iter().map(|q| q.1).sum::<f64>() / 4.0;
+                    let centre = (
+                        quad.iter().map(|q| q.0).sum::<f64>() / 4.0,
+                        height,
+                        quad.iter().map(|q| q.2).sum::<f64>() / 4.0,
+                    );
+                    let depth = chart
+                        .as_coord_spec()
+                        .projected_depth(&centre.0, &centre.1, &centre.2);
+                    cells.push((depth, height, quad));
                 }
             }
-        }
-        if self.has_legend() {
-            chart
-                .configure_series_labels()
-                .position(SeriesLabelPosition::UpperRight)
-                .background_style(WHITE.mix(0.85))
-                .border_style(BLACK.mix(0.5))
-                .label_font((FAMILY, 15))
-                .draw()
+            // Painter's algorithm: far cells first.
+            cells.sort_by_key(|c| std::cmp::Reverse(c.0));
+            let (zlo, zhi) = bz;
+            let anno = chart
+                .draw_series(cells.iter().map(|(_, height, quad)| {
+                    let c = viridis((height - zlo) / (zhi - zlo));
+                    Polygon::new(quad.to_vec(), c.filled())
+                }))
                 .map_err(drawing)?;
-        }
-        Ok(())
+            if !label.is_empty() {
+                anno.label(label).legend(|(x, y)| {
+                    Rectangle::new([(x, y - 6), (x + 20, y + 6)], viridis(0.6).filled())
+                });
+            }
+            chart
+                .draw_series(cells.iter().map(|(_, _, quad)| {
+                    let mut ring = quad.to_vec();
+                    ring.push(quad[0]);
+                    PathElement::new(ring, BLACK.mix(0.55).stroke_width(1))
+                }))
+                .map_err(drawing)?;
+            Ok(())
+        })
     }
 
     fn draw_2d<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), PlotError> {
@@ -638,39 +558,59 @@ impl Figure {
             .draw()
             .map_err(drawing)?;
         let to2 = |p: [f64; 3]| (p[0], p[1]);
+        self.draw_layers(&mut chart, to2, false, |chart, grid, label| {
+            let (nu, nv, _) = grid.dim();
+            let p = |i: usize, j: usize| (grid[[i, j, 0]], grid[[i, j, 1]]);
+            let mut cells = Vec::new();
+            for i in 0..nu.saturating_sub(1) {
+                for j in 0..nv.saturating_sub(1) {
+                    cells.push([p(i, j), p(i + 1, j), p(i + 1, j + 1), p(i, j + 1)]);
+                }
+            }
+            let fill = viridis(0.6).mix(0.35);
+            let anno = chart
+                .draw_series(
+                    cells
+                        .iter()
+                        .map(|q| Polygon::new(q.to_vec(), fill.filled())),
+                )
+                .map_err(drawing)?;
+            if !label.is_empty() {
+                anno.label(label).legend(move |(x, y)| {
+                    Rectangle::new([(x, y - 6), (x + 20, y + 6)], fill.filled())
+                });
+            }
+            chart
+                .draw_series(net_lines(grid).into_iter().map(|l| {
+                    PathElement::new(l.into_iter().map(to2).collect::<Vec<_>>(), BLACK.mix(0.55))
+                }))
+                .map_err(drawing)?;
+            Ok(())
+        })
+    }
+
+    /// Draws the layers in order on a 2-D or 3-D chart, then the legend. `project` maps a
+    /// point (padded to 3-D) to the chart's coordinates; `surface` draws a surface layer,
+    /// which differs between the two kinds of chart; `net_points` marks the points of a net.
+    fn draw_layers<'a, DB, CT, P>(
+        &self,
+        chart: &mut ChartContext<'a, DB, CT>,
+        project: impl Fn([f64; 3]) -> P + Copy,
+        net_points: bool,
+        mut surface: impl FnMut(
+            &mut ChartContext<'a, DB, CT>,
+            &Array3<f64>,
+            &str,
+        ) -> Result<(), PlotError>,
+    ) -> Result<(), PlotError>
+    where
+        DB: DrawingBackend + 'a,
+        CT: CoordTranslate<From = P>,
+        P: Clone + 'static,
+    {
         for layer in self.ordered() {
             match layer {
-                Layer::Surface { grid, label } => {
-                    let (nu, nv, _) = grid.dim();
-                    let p = |i: usize, j: usize| (grid[[i, j, 0]], grid[[i, j, 1]]);
-                    let mut cells = Vec::new();
-                    for i in 0..nu.saturating_sub(1) {
-                        for j in 0..nv.saturating_sub(1) {
-                            cells.push([p(i, j), p(i + 1, j), p(i + 1, j + 1), p(i, j + 1)]);
-                        }
-                    }
-                    let fill = viridis(0.6).mix(0.35);
-                    let anno = chart
-                        .draw_series(
-                            cells
-                                .iter()
-                                .map(|q| Polygon::new(q.to_vec(), fill.filled())),
-                        )
-                        .map_err(drawing)?;
-                    if !label.is_empty() {
-                        anno.label(label.as_str()).legend(move |(x, y)| {
-                            Rectangle::new([(x, y - 6), (x + 20, y + 6)], fill.filled())
-                        });
-                    }
-                    chart
-                        .draw_series(net_lines(grid).into_iter().map(|l| {
-                            PathElement::new(
-                                l.into_iter().map(to2).collect::<Vec<_>>(),
-                                BLACK.mix(0.55),
-                            )
-                        }))
-                        .map_err(drawing)?;
-                }
+                Layer::Surface { grid, label } => surface(chart, grid, label)?,
                 Layer::Net {
                     grid,
                     colour,
@@ -679,13 +619,23 @@ impl Figure {
                     let style = colour.rgb().stroke_width(1);
                     let anno = chart
                         .draw_series(net_lines(grid).into_iter().map(|l| {
-                            PathElement::new(l.into_iter().map(to2).collect::<Vec<_>>(), style)
+                            PathElement::new(l.into_iter().map(project).collect::<Vec<_>>(), style)
                         }))
                         .map_err(drawing)?;
                     if !label.is_empty() {
                         anno.label(label.as_str()).legend(move |(x, y)| {
                             PathElement::new(vec![(x, y), (x + 20, y)], style)
                         });
+                    }
+                    if net_points {
+                        chart
+                            .draw_series(
+                                layer
+                                    .points()
+                                    .into_iter()
+                                    .map(|p| Circle::new(project(p), 3, colour.rgb().filled())),
+                            )
+                            .map_err(drawing)?;
                     }
                 }
                 Layer::Curve {
@@ -696,7 +646,10 @@ impl Figure {
                 } => {
                     let style = colour.rgb().stroke_width(*width);
                     let anno = chart
-                        .draw_series(LineSeries::new(layer.points().into_iter().map(to2), style))
+                        .draw_series(LineSeries::new(
+                            layer.points().into_iter().map(project),
+                            style,
+                        ))
                         .map_err(drawing)?;
                     if !label.is_empty() {
                         anno.label(label.as_str()).legend(move |(x, y)| {
@@ -708,7 +661,7 @@ impl Figure {
                     let red = Colour::Red.rgb();
                     let anno = chart
                         .draw_series(LineSeries::new(
-                            layer.points().into_iter().map(to2),
+                            layer.points().into_iter().map(project),
                             red.stroke_width(1),
                         ))
                         .map_err(drawing)?;
@@ -724,7 +677,7 @@ impl Figure {
                             layer
                                 .points()
                                 .into_iter()
-                                .map(|p| Circle::new(to2(p), 5, red.stroke_width(2))),
+                                .map(|p| Circle::new(project(p), 5, red.stroke_width(2))),
                         )
                         .map_err(drawing)?;
                 }

@@ -7,18 +7,10 @@ use std::path::Path;
 use assert_cmd::Command;
 use cagd::cli::{run, ErrorKind};
 
-const NET: &str = "[0 0 0 0 2 1 0 4 0; 2 0 1 2 2 4 2 4 1; 4 0 0 4 2 1 4 4 0]";
-const CUBIC: &str = "[0 0 0; 0 2 2; 8 2 0; 4 0 0]'";
-const COONS: [&str; 8] = [
-    "--c1",
-    "[u;0;u-u^2]",
-    "--c2",
-    "[u;1;u]",
-    "--d1",
-    "[0;v^2;v-v^2]",
-    "--d2",
-    "[1;v;v]",
-];
+mod common;
+
+use common::bad_input::{check_all, refused};
+use common::thesis_args::{NET_3X3 as NET, PRIMER_2_4 as CUBIC, PRIMER_4_3 as COONS};
 
 /// The kind of an error as `Kind` or `Kind::Variant` (the typed error underneath).
 fn label(kind: &ErrorKind) -> String {
@@ -481,7 +473,7 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
 fn every_bad_input_names_its_argument_and_kind_exits_2_and_writes_nothing() {
     let inputs = tempfile::tempdir().unwrap();
     let table = cases(inputs.path());
-    assert!(table.len() >= 50, "{} cases", table.len());
+    assert!(table.len() >= 83, "{} cases", table.len());
     let subcommands: std::collections::BTreeSet<&str> = table
         .iter()
         .filter_map(|(a, _, _)| a.first().map(String::as_str))
@@ -507,22 +499,21 @@ fn every_bad_input_names_its_argument_and_kind_exits_2_and_writes_nothing() {
     ] {
         assert!(subcommands.contains(sub), "no bad input for {sub}");
     }
-    let mut failures = Vec::new();
-    for (args, argument, kind) in &table {
+    check_all(&table, |(args, argument, kind)| {
         // In-process: the exact argument and kind.
         let mut full = vec!["cagd".to_string()];
         full.extend(args.iter().cloned());
         // Output errors surface when the staged files are committed.
         match run(&full).and_then(|out| out.files.commit()) {
-            Ok(()) => failures.push(format!("{args:?}: succeeded")),
+            Ok(()) => return Err("succeeded".into()),
             Err(e) => {
                 let got = label(&e.kind);
                 // A file argument is named with its path: `CONTROL data.txt`.
                 let named =
                     e.argument == *argument || e.argument.starts_with(&format!("{argument} "));
                 if got != *kind || !named || e.exit_code() != 2 {
-                    failures.push(format!(
-                        "{args:?}: got ({}, {got}, exit {}), expected ({argument}, {kind}): {e}",
+                    return Err(format!(
+                        "got ({}, {got}, exit {}), expected ({argument}, {kind}): {e}",
                         e.argument,
                         e.exit_code()
                     ));
@@ -536,23 +527,8 @@ fn every_bad_input_names_its_argument_and_kind_exits_2_and_writes_nothing() {
         if args.first().is_some_and(|a| a != "thesis") && !args.iter().any(|a| a == "-o") {
             cmd.args(["-o", "result.txt"]);
         }
-        let out = cmd.output().unwrap();
-        let stderr = String::from_utf8_lossy(&out.stderr);
-        let ok = out.status.code() == Some(2)
-            && out.stdout.is_empty()
-            && stderr.lines().count() == 1
-            && stderr.starts_with("cagd: error: ")
-            && std::fs::read_dir(work.path()).unwrap().next().is_none();
-        if !ok {
-            failures.push(format!(
-                "binary {args:?}: exit {:?}, stderr {stderr:?}, files {:?}",
-                out.status.code(),
-                std::fs::read_dir(work.path())
-                    .unwrap()
-                    .map(|e| e.unwrap().file_name())
-                    .collect::<Vec<_>>()
-            ));
-        }
-    }
-    assert!(failures.is_empty(), "{}", failures.join("\n"));
+        refused(&mut cmd, Some(work.path()))
+            .map(drop)
+            .map_err(|e| format!("binary: {e}"))
+    });
 }

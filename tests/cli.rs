@@ -6,6 +6,10 @@ use std::path::{Path, PathBuf};
 
 use assert_cmd::Command;
 
+mod common;
+
+use common::bad_input::{check_all, mentions, refused};
+
 fn cagd() -> Command {
     let mut c = Command::cargo_bin("cagd").unwrap();
     c.current_dir(env!("CARGO_MANIFEST_DIR"));
@@ -25,16 +29,7 @@ fn ok(args: &[&str]) -> String {
 
 /// Runs `cagd args…` and checks the error contract; returns the one error line.
 fn fails(args: &[&str]) -> String {
-    let out = cagd().args(args).output().unwrap();
-    let stderr = String::from_utf8(out.stderr).unwrap();
-    assert_eq!(out.status.code(), Some(2), "cagd {args:?}: {stderr}");
-    assert!(out.stdout.is_empty(), "cagd {args:?} printed a result");
-    let lines: Vec<&str> = stderr.lines().collect();
-    assert_eq!(lines.len(), 1, "cagd {args:?}: not one line: {stderr}");
-    assert!(lines[0].starts_with("cagd: error: "), "{stderr}");
-    assert!(lines[0].contains("; expected "), "{stderr}");
-    assert!(!stderr.contains("panicked") && !stderr.contains("RUST_BACKTRACE"));
-    lines[0].to_string()
+    refused(cagd().args(args), None).unwrap_or_else(|e| panic!("cagd {args:?}: {e}"))
 }
 
 // ---------------------------------------------------------------------------------------
@@ -237,10 +232,6 @@ fn outputs(dir: &Path, surface: bool) -> Vec<String> {
     v
 }
 
-fn dir_is_empty(dir: &Path) -> bool {
-    std::fs::read_dir(dir).unwrap().next().is_none()
-}
-
 #[test]
 fn bad_inputs_exit_2_with_one_line_and_no_file() {
     let dir = tempfile::tempdir().unwrap();
@@ -350,26 +341,18 @@ fn bad_inputs_exit_2_with_one_line_and_no_file() {
         (vec!["frobnicate"], false, "unknown subcommand"),
         (vec![], false, "no subcommand given"),
     ];
-    for (args, surface, message) in cases {
-        let mut all: Vec<String> = args.iter().map(|s| s.to_string()).collect();
+    check_all(cases, |(args, surface, message)| {
+        let mut cmd = cagd();
+        cmd.args(args);
         let takes_outputs = !args.is_empty() && args[0] != "frobnicate" && args[0] != "script";
         if takes_outputs && !args.contains(&"--plot") && !args.contains(&"--mesh") {
-            all.extend(outputs(d, surface));
+            cmd.args(outputs(d, *surface));
         }
-        let all_ref: Vec<&str> = all.iter().map(String::as_str).collect();
-        let line = if args.first() == Some(&"script") && args.get(1) == Some(&"-") {
-            let out = cagd().args(&all_ref).write_stdin("x = ;").output().unwrap();
-            assert_eq!(out.status.code(), Some(2));
-            String::from_utf8(out.stderr)
-                .unwrap()
-                .trim_end()
-                .to_string()
-        } else {
-            fails(&all_ref)
-        };
-        assert!(line.contains(message), "cagd {args:?}: {line}");
-        assert!(dir_is_empty(d), "cagd {args:?} left a file behind");
-    }
+        if args.first() == Some(&"script") && args.get(1) == Some(&"-") {
+            cmd.write_stdin("x = ;");
+        }
+        mentions(&refused(&mut cmd, Some(d))?, message)
+    });
     // An unwritable output path: one line, and none of the other outputs is written.
     let line = fails(&[
         "surface",
@@ -382,7 +365,7 @@ fn bad_inputs_exit_2_with_one_line_and_no_file() {
         missing,
     ]);
     assert!(line.contains("cannot write"), "{line}");
-    assert!(dir_is_empty(d));
+    assert!(common::bad_input::files_in(d).is_empty());
 }
 
 #[test]
@@ -514,36 +497,9 @@ mod matrix_arguments {
 // ---------------------------------------------------------------------------------------
 // The subcommands of the thesis and the course, on the thesis data
 
-const PRIMER_2_4: &str = "[0 0 0; 0 2 2; 8 2 0; 4 0 0]'";
-const NET_3X3: &str = "[0 0 0 0 2 1 0 4 0; 2 0 1 2 2 4 2 4 1; 4 0 0 4 2 1 4 4 0]";
-const PRIMER_4_3: [&str; 8] = [
-    "--c1",
-    "[u;0;u-u^2]",
-    "--c2",
-    "[u;1;u]",
-    "--d1",
-    "[0;v^2;v-v^2]",
-    "--d2",
-    "[1;v;v]",
-];
-const GORDON_D: [&str; 12] = [
-    "--v-curve",
-    "[u;0;u-u^2]",
-    "--v-curve",
-    "[u;0.5;0.5+u-u^2]",
-    "--v-curve",
-    "[u;1;1+u-u^2]",
-    "--u-curve",
-    "[0;v;v]",
-    "--u-curve",
-    "[0.5;v;0.25+v]",
-    "--u-curve",
-    "[1;v;v]",
-];
-
-fn with<'a>(head: &[&'a str], tail: &[&'a str]) -> Vec<&'a str> {
-    head.iter().chain(tail).copied().collect()
-}
+use common::thesis_args::{
+    with, FLAT_SQUARE, FLAT_SQUARE_CROSS, GORDON_D, NET_3X3, PRIMER_2_4, PRIMER_4_3,
+};
 
 #[test]
 fn decasteljau_primer_2_4_exact_scheme() {
@@ -664,28 +620,8 @@ fn coons_point_script_and_bezier_boundaries() {
 
 #[test]
 fn coons_bicubic_flat_square() {
-    insta::assert_snapshot!(ok(&[
-        "coons-bicubic",
-        "--c1",
-        "[u;0;0]",
-        "--c2",
-        "[u;1;0]",
-        "--d1",
-        "[0;v;0]",
-        "--d2",
-        "[1;v;0]",
-        "--c1v",
-        "[0;1;0]",
-        "--c2v",
-        "[0;1;0]",
-        "--d1u",
-        "[1;0;0]",
-        "--d2u",
-        "[1;0;0]",
-        "--n",
-        "3",
-        "--exact"
-    ]));
+    let args = [&["coons-bicubic"][..], &FLAT_SQUARE, &FLAT_SQUARE_CROSS].concat();
+    insta::assert_snapshot!(ok(&with(&args, &["--n", "3", "--exact"])));
 }
 
 #[test]
@@ -1236,9 +1172,7 @@ fn new_subcommands_reject_bad_input_cleanly() {
             "weight",
         ),
     ];
-    for (args, message) in cases {
-        let line = fails(&args);
-        assert!(line.contains(message), "cagd {args:?}: {line}");
-        assert!(dir_is_empty(d), "cagd {args:?} left a file behind");
-    }
+    check_all(cases, |(args, message)| {
+        mentions(&refused(cagd().args(args), Some(d))?, message)
+    });
 }

@@ -3,6 +3,10 @@
 
 use assert_cmd::Command;
 
+mod common;
+
+use common::thesis_args::{with, FLAT_SQUARE, FLAT_SQUARE_CROSS, GORDON_D, PRIMER_4_3};
+
 fn cagd() -> Command {
     let mut c = Command::cargo_bin("cagd").unwrap();
     for (_, var, _) in cagd::limits::SETTINGS {
@@ -13,6 +17,13 @@ fn cagd() -> Command {
 
 fn stderr(out: &std::process::Output) -> String {
     String::from_utf8_lossy(&out.stderr).into_owned()
+}
+
+/// Runs `cmd`, which must succeed; returns its standard output.
+fn succeeds(cmd: &mut Command) -> String {
+    let out = cmd.output().unwrap();
+    assert!(out.status.success(), "{}", stderr(&out));
+    String::from_utf8(out.stdout).unwrap()
 }
 
 #[test]
@@ -36,13 +47,12 @@ fn environment_and_flags_set_the_limits() {
         "{e}"
     );
     // The flag wins over the environment, before or after the subcommand.
-    let out = cagd()
-        .env("CAGD_MAX_GRID_POINTS", "10")
-        .args(surface)
-        .args(["--max-grid-points", "16"])
-        .output()
-        .unwrap();
-    assert!(out.status.success(), "{}", stderr(&out));
+    succeeds(
+        cagd()
+            .env("CAGD_MAX_GRID_POINTS", "10")
+            .args(surface)
+            .args(["--max-grid-points", "16"]),
+    );
     let out = cagd()
         .args(["--max-degree", "2", "decasteljau", "[0 1 2 3]"])
         .output()
@@ -133,4 +143,123 @@ fn the_mask_system_is_refused_before_it_is_allocated() {
         "{}",
         stderr(&out)
     );
+}
+
+/// `u+u+…+u` with `terms` terms: an expression of `terms + 1` nodes (the sum and its
+/// operands).
+fn long_sum(terms: usize) -> String {
+    vec!["u"; terms].join("+")
+}
+
+/// Runs `cmd` and checks that it is refused up front by the work estimate of the expressions
+/// it would sample, naming `argument`; returns the error line.
+fn refused_by_work(cmd: &mut Command, argument: &str) -> String {
+    let start = std::time::Instant::now();
+    let out = cmd.output().unwrap();
+    let elapsed = start.elapsed();
+    let e = stderr(&out);
+    assert_eq!(out.status.code(), Some(2), "{e}");
+    assert!(out.stdout.is_empty());
+    assert_eq!(e.lines().count(), 1, "{e}");
+    assert!(
+        e.starts_with(&format!(
+            "cagd: error: {argument}: estimated operations (samples × expression nodes): "
+        )) && e.contains("(raise it with --max-work or CAGD_MAX_WORK)"),
+        "{e}"
+    );
+    // Sampling would take hours; the refusal comes before it.
+    assert!(elapsed.as_secs() < 20, "took {elapsed:?}");
+    e
+}
+
+#[test]
+fn large_expressions_at_many_samples_are_refused_before_sampling() {
+    // 50 001 nodes in the third coordinate (about 100 KB of text).
+    let big = long_sum(50_000);
+    let curve = format!("[u; 0; {big}]");
+    let e = refused_by_work(cagd().args(["curve", &curve, "--n", "1000000"]), "EXPR");
+    // 10⁶ samples × (the matrix, its three elements, the sum's 50 000 operands).
+    assert!(
+        e.contains("50004000000 exceeds the limit of 2000000000"),
+        "{e}"
+    );
+    let surface = format!("[u; v; {big}]");
+    let e = refused_by_work(cagd().args(["surface", &surface, "--n", "1000"]), "EXPR");
+    assert!(e.contains("50004000000 exceeds"), "{e}");
+    // Boundary and network curves: the argument with the largest share is named.
+    let many_u = ["--u", "0:2e-6:1", "--v", "0.5"];
+    let mut coons = with(&["coons"], &PRIMER_4_3);
+    coons[2] = &curve;
+    refused_by_work(cagd().args(coons).args(many_u), "--c1");
+    let mut bicubic = [&["coons-bicubic"][..], &FLAT_SQUARE, &FLAT_SQUARE_CROSS].concat();
+    bicubic[10] = &curve;
+    refused_by_work(cagd().args(bicubic).args(many_u), "--c1v");
+    let mut gordon = with(&["gordon"], &GORDON_D);
+    gordon[4] = &curve;
+    refused_by_work(cagd().args(gordon).args(many_u), "--v-curve");
+    // A curve of a data script counts with everything it is computed from.
+    let dir = tempfile::tempdir().unwrap();
+    let script = dir.path().join("big.m");
+    std::fs::write(
+        &script,
+        format!("w = {};\nc1 = [u; 0; w];\n", long_sum(400_000)),
+    )
+    .unwrap();
+    let script = script.to_str().unwrap();
+    let e = refused_by_work(
+        cagd().args(["curve", "c1", "--script", script, "--n", "1000000"]),
+        "EXPR",
+    );
+    assert!(e.contains("exceeds the limit of 2000000000"), "{e}");
+}
+
+#[test]
+fn a_higher_max_work_lets_the_same_command_run() {
+    let curve = format!("[u; 0; {}]", long_sum(1000));
+    let args = ["curve", curve.as_str(), "--n", "2000", "--format", "csv"];
+    // 2000 samples × 1004 nodes, refused by a lower flag or environment variable.
+    let e = refused_by_work(cagd().args(args).args(["--max-work", "2000000"]), "EXPR");
+    assert!(e.contains(": 2008000 exceeds the limit of 2000000 "), "{e}");
+    refused_by_work(cagd().env("CAGD_MAX_WORK", "2007999").args(args), "EXPR");
+    let text = succeeds(
+        cagd()
+            .env("CAGD_MAX_WORK", "2000000")
+            .args(args)
+            .args(["--max-work", "2008000"]),
+    );
+    // The last point is (1, 0, 1000): a thousand times u = 1.
+    let last: Vec<f64> = text
+        .lines()
+        .filter_map(|l| l.rsplit(',').next()?.trim().parse().ok())
+        .collect();
+    assert_eq!(last[last.len() - 3..], [1.0, 0.0, 1000.0], "{text}");
+}
+
+#[test]
+fn typical_thesis_commands_stay_far_below_the_work_limit() {
+    let dir = tempfile::tempdir().unwrap();
+    let out_dir = dir.path().join("thesis");
+    let coons = with(&["coons"], &PRIMER_4_3);
+    let gordon = with(&["gordon"], &GORDON_D);
+    let commands: Vec<Vec<&str>> = vec![
+        vec!["thesis", "--out", out_dir.to_str().unwrap()],
+        with(&coons, &["--u", "0.2", "--v", "0.5", "--exact"]),
+        with(&coons, &["--n", "100"]),
+        vec!["coons", "--script", "tests/data/appendix_c.m", "--n", "10"],
+        with(&gordon, &["--n", "100", "--steps"]),
+        vec!["gordon", "--script", "tests/data/appendix_d_odd.m"],
+        vec!["curve", "[u; 0.5; 0.5+u-u^2]", "--n", "1000"],
+        vec!["surface", "[u; v; u-u^2+v]", "--n", "100"],
+    ];
+    for args in &commands {
+        // With the default limits, and with a limit a thousand times lower.
+        for limit in [None, Some("2000000")] {
+            let mut c = cagd();
+            c.current_dir(env!("CARGO_MANIFEST_DIR")).args(args);
+            if let Some(l) = limit {
+                c.args(["--max-work", l]);
+            }
+            assert!(!succeeds(&mut c).is_empty(), "{args:?}");
+        }
+    }
 }

@@ -718,6 +718,19 @@ impl Expr {
         self.at
     }
 
+    /// The size of the expression: its number of nodes (numbers, names, operands, call
+    /// arguments, matrix elements). Evaluating it does about that many operations on values
+    /// of the size of its operands, so it is the cost of one evaluation on scalars.
+    ///
+    /// ```
+    /// use cagd::octave::literal::Expr;
+    /// // The matrix, its three elements, the two operands of `u-u^2` and the two of `u^2`.
+    /// assert_eq!(Expr::parse("[u; 0; u-u^2]").unwrap().node_count(), 8);
+    /// ```
+    pub fn node_count(&self) -> usize {
+        eval::node_count(self)
+    }
+
     /// The names the expression reads (variables and the names of calls and indexings),
     /// sorted, without builtin functions and constants.
     pub fn free_names(&self) -> BTreeSet<String> {
@@ -866,6 +879,20 @@ impl ParamExpr {
     /// The source text.
     pub fn source(&self) -> &str {
         &self.source
+    }
+
+    /// The size of one evaluation: the nodes of the expression and of its prelude
+    /// ([`Expr::node_count`]). Sampling at `k` parameter values costs about `k` times this.
+    ///
+    /// ```
+    /// use cagd::octave::literal::ParamExpr;
+    /// assert_eq!(ParamExpr::parse("[u; 0; u-u^2]").unwrap().node_count(), 8);
+    /// ```
+    pub fn node_count(&self) -> usize {
+        self.prelude
+            .iter()
+            .map(|(_, e)| e.node_count())
+            .fold(self.expr.node_count(), usize::saturating_add)
     }
 
     /// The parameters (`u`, `v`, `t`) used but not bound in `env`, sorted.

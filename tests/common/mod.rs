@@ -18,6 +18,10 @@
 //! [`assert_close`] checks this for a whole array, panics naming the variable, the index and
 //! both values of the first offending element, and records the worst error; [`report_worst`]
 //! prints the worst error seen by the test binary so far (to stderr: run with `--nocapture`).
+//!
+//! # Bad input
+//! [`bad_input`] checks the command line's contract for bad input, for the tables of bad
+//! inputs; [`thesis_args`] holds the command-line arguments of the thesis's examples.
 #![allow(dead_code)] // every test binary uses a different subset
 
 use std::path::{Path, PathBuf};
@@ -26,6 +30,9 @@ use std::sync::Mutex;
 
 use cagd::octave::text_format::{read_text_file, Workspace};
 use ndarray::{Array2, Array3, ArrayD, ArrayViewD, Dimension, Ix3};
+
+pub mod bad_input;
+pub mod thesis_args;
 
 /// Largest accepted distance in units in the last place.
 pub const MAX_ULPS: u64 = 4;

@@ -13,7 +13,7 @@ use crate::octave::literal::{Env, LiteralScalar};
 use crate::plot::{Colour, Figure};
 
 use super::common::*;
-use super::{emit, prepare_script, Outcome};
+use super::{prepare_script, Outcome};
 
 #[derive(Debug, Args)]
 pub struct DeCasteljauCommand {
@@ -79,12 +79,12 @@ pub fn decasteljau<T: LiteralScalar>(cmd: &DeCasteljauCommand) -> Result<Outcome
         }
         add_plot(&mut files, "--plot", path, &figure)?;
     }
-    let stdout = emit(&report, &cmd.output, &mut files)?;
-    Ok(Outcome {
-        stdout,
+    finish(
+        &report,
+        &cmd.output,
         files,
-        warnings: warnings(&cmd.script.script, script.as_ref(), &mut Env::new()),
-    })
+        warnings(&cmd.script.script, script.as_ref(), &mut Env::new()),
+    )
 }
 
 #[derive(Debug, Args)]
@@ -185,12 +185,12 @@ pub fn bezier_patch<T: LiteralScalar>(cmd: &BezierPatchCommand) -> Result<Outcom
     if let Some(path) = &cmd.mesh.mesh {
         add_mesh(&mut files, "--mesh", path, &grid_f64(&picture_grid))?;
     }
-    let stdout = emit(&report, &cmd.output, &mut files)?;
-    Ok(Outcome {
-        stdout,
+    finish(
+        &report,
+        &cmd.output,
         files,
-        warnings: warnings(&cmd.script.script, script.as_ref(), &mut Env::new()),
-    })
+        warnings(&cmd.script.script, script.as_ref(), &mut Env::new()),
+    )
 }
 
 #[derive(Debug, Args)]
@@ -230,13 +230,7 @@ pub fn bernstein<T: LiteralScalar>(cmd: &BernsteinCommand) -> Result<Outcome, Cl
         Value::Matrix(DMatrix::from_column_slice(ts.len(), 1, &ts)),
     );
     report.push("result", Value::Matrix(result));
-    let mut files = PendingWrites::new();
-    let stdout = emit(&report, &cmd.output, &mut files)?;
-    Ok(Outcome {
-        stdout,
-        files,
-        warnings: Vec::new(),
-    })
+    finish(&report, &cmd.output, PendingWrites::new(), Vec::new())
 }
 
 #[derive(Debug, Args)]
@@ -293,10 +287,10 @@ pub fn derivative<T: LiteralScalar>(cmd: &DerivativeCommand) -> Result<Outcome, 
             .control_polygon(to_f64(d.control()), "its control polygon");
         add_plot(&mut files, "--plot", path, &figure)?;
     }
-    let stdout = emit(&report, &cmd.output, &mut files)?;
-    Ok(Outcome {
-        stdout,
+    finish(
+        &report,
+        &cmd.output,
         files,
-        warnings: warnings(&cmd.script.script, script.as_ref(), &mut Env::new()),
-    })
+        warnings(&cmd.script.script, script.as_ref(), &mut Env::new()),
+    )
 }

@@ -7,14 +7,17 @@ use nalgebra::{DMatrix, DVector};
 use ndarray::Array3;
 
 use crate::bezier::BezierCurve;
+use crate::cli::args::OutputArgs;
 use crate::cli::{
-    load_expression, load_matrix, load_params, samples, CliError, ErrorKind, PendingWrites,
-    CURVE_FORM,
+    load_expression, load_matrix, load_params, render, samples, CliError, ErrorKind, PendingWrites,
+    Report, CURVE_FORM,
 };
 use crate::octave::literal::{Env, LiteralScalar, ParamExpr, Warning};
 use crate::octave::script::{Binding, Script};
 use crate::plot::{Figure, ImageKind};
 use crate::{Curve, SampledCurve};
+
+use super::Outcome;
 
 /// Samples taken when neither `--t`/`--u`/`--v` nor `--n` is given: 0:0.1:1.
 pub const DEFAULT_SAMPLES: usize = 11;
@@ -90,6 +93,41 @@ pub fn check_work(argument: &str, operations: u128) -> Result<(), CliError> {
             argument,
             "fewer points or a lower degree, or a higher --max-work",
         ))
+}
+
+/// Refuses evaluating user expressions whose estimated cost is above
+/// [`crate::limits::Limits::max_work`]: each of `parts` is (argument, expression, number of
+/// samples), and costs samples × expression size ([`ParamExpr::node_count`]). The error names
+/// the argument with the largest share.
+pub fn check_expression_work(parts: &[(&str, &ParamExpr, usize)]) -> Result<(), CliError> {
+    let cost =
+        |(_, e, samples): &(&str, &ParamExpr, usize)| *samples as u128 * e.node_count() as u128;
+    let total: u128 = parts.iter().map(cost).sum();
+    let argument = parts.iter().max_by_key(|p| cost(p)).map_or("EXPR", |p| p.0);
+    crate::limits::Limits::current()
+        .check_work("estimated operations (samples × expression nodes)", total)
+        .map_err(lib(
+            argument,
+            "fewer samples (a smaller --n, --t, --u, --v) or a shorter expression, or a higher --max-work",
+        ))
+}
+
+/// Builds curves, each exact at its parameters, after refusing the lot if sampling their
+/// expressions would cost more than `--max-work` ([`check_expression_work`]): each of
+/// `parts` is (argument, source, parameters).
+pub fn build_curves<T: LiteralScalar>(
+    parts: &[(&str, &CurveSource<T>, &[T])],
+    env: &mut Env<T>,
+) -> Result<Vec<CliCurve<T>>, CliError> {
+    let expressions: Vec<(&str, &ParamExpr, usize)> = parts
+        .iter()
+        .filter_map(|(arg, s, at)| s.expression().map(|e| (*arg, e, at.len())))
+        .collect();
+    check_expression_work(&expressions)?;
+    parts
+        .iter()
+        .map(|(arg, s, at)| s.build(arg, at, env))
+        .collect()
 }
 
 /// A 1×k row of values.
@@ -271,6 +309,14 @@ impl<T: LiteralScalar> CurveSource<T> {
         }
     }
 
+    /// The expression, if this is one.
+    pub fn expression(&self) -> Option<&ParamExpr> {
+        match self {
+            CurveSource::Expr(e, _) => Some(e),
+            _ => None,
+        }
+    }
+
     /// The parameters of thesis-style samples, if that is what this is.
     pub fn sample_params(&self) -> Option<&[T]> {
         match self {
@@ -314,6 +360,30 @@ pub fn add_mesh(
     let bytes = crate::mesh::encode(grid, format).map_err(mesh_error)?;
     files.add(argument, path, bytes);
     Ok(())
+}
+
+/// The end of every subcommand: the result text goes to standard output, or with `-o FILE`
+/// to that file (staged with the other `files`), and is handed back with the files and the
+/// warnings.
+pub fn finish<T: LiteralScalar>(
+    report: &Report<T>,
+    output: &OutputArgs,
+    mut files: PendingWrites,
+    warnings: Vec<(String, Warning)>,
+) -> Result<Outcome, CliError> {
+    let text = render(report, output.format)?;
+    let stdout = match &output.output {
+        Some(path) => {
+            files.add("--output", path, text.into_bytes());
+            String::new()
+        }
+        None => text,
+    };
+    Ok(Outcome {
+        stdout,
+        files,
+        warnings,
+    })
 }
 
 /// Warnings of a script and of an evaluation environment, named by argument.

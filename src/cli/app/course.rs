@@ -10,7 +10,7 @@ use crate::plot::{Colour, Figure};
 use crate::{BSplineCurve, CubicSpline, EndCondition, HermiteCubic, NurbsCurve};
 
 use super::common::*;
-use super::{emit, Outcome};
+use super::Outcome;
 
 fn vector<T: LiteralScalar>(arg: &str, text: &str) -> Result<DVector<T>, CliError> {
     let m = crate::cli::load_matrix::<T>(arg, text, None)?;
@@ -22,19 +22,6 @@ fn vector<T: LiteralScalar>(arg: &str, text: &str) -> Result<DVector<T>, CliErro
         ));
     }
     Ok(DVector::from_iterator(m.len(), m.iter().cloned()))
-}
-
-fn finish<T: LiteralScalar>(
-    report: Report<T>,
-    output: &OutputArgs,
-    mut files: PendingWrites,
-) -> Result<Outcome, CliError> {
-    let stdout = emit(&report, output, &mut files)?;
-    Ok(Outcome {
-        stdout,
-        files,
-        warnings: Vec::new(),
-    })
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -120,7 +107,7 @@ pub fn spline<T: LiteralScalar>(cmd: &SplineCommand) -> Result<Outcome, CliError
             .control_polygon(to_f64(s.points()), "points");
         add_plot(&mut files, "--plot", path, &figure)?;
     }
-    finish(report, &cmd.output, files)
+    finish(&report, &cmd.output, files, Vec::new())
 }
 
 #[derive(Debug, Args)]
@@ -184,7 +171,7 @@ pub fn hermite<T: LiteralScalar>(cmd: &HermiteCommand) -> Result<Outcome, CliErr
             .control_polygon(to_f64(h.to_bezier().control()), "Bézier control polygon");
         add_plot(&mut files, "--plot", path, &figure)?;
     }
-    finish(report, &cmd.output, files)
+    finish(&report, &cmd.output, files, Vec::new())
 }
 
 #[derive(Debug, Args)]
@@ -269,7 +256,7 @@ pub fn bspline<T: LiteralScalar>(cmd: &BSplineCommand) -> Result<Outcome, CliErr
             .control_polygon(to_f64(curve.control()), "control polygon");
         add_plot(&mut files, "--plot", path, &figure)?;
     }
-    finish(report, &cmd.output, files)
+    finish(&report, &cmd.output, files, Vec::new())
 }
 
 #[derive(Debug, Args)]
@@ -373,5 +360,5 @@ pub fn nurbs<T: LiteralScalar>(cmd: &NurbsCommand) -> Result<Outcome, CliError> 
             .control_polygon(to_f64(&curve.points()), "control polygon");
         add_plot(&mut files, "--plot", path, &figure)?;
     }
-    finish(report, &cmd.output, files)
+    finish(&report, &cmd.output, files, Vec::new())
 }

@@ -23,8 +23,8 @@ use crate::cli::args::{
     CurveParamArgs, LimitArgs, MeshArgs, OutputArgs, PlotArgs, ScriptArgs, SurfaceParamArgs,
 };
 use crate::cli::{
-    load_expression, load_params, load_script, render, samples, CliError, ErrorKind, PendingWrites,
-    Report, Value, CURVE_FORM,
+    load_expression, load_params, load_script, samples, CliError, ErrorKind, PendingWrites, Report,
+    Value, CURVE_FORM,
 };
 use crate::octave::literal::{Env, LiteralScalar, Warning};
 use crate::octave::script::{Binding, Script};
@@ -355,22 +355,6 @@ fn script_warnings<T: LiteralScalar>(
     }
 }
 
-/// The result text (to standard output, or to `-o FILE`).
-pub fn emit<T: LiteralScalar>(
-    report: &Report<T>,
-    output: &OutputArgs,
-    files: &mut PendingWrites,
-) -> Result<String, CliError> {
-    let text = render(report, output.format)?;
-    match &output.output {
-        Some(path) => {
-            files.add("--output", path, text.into_bytes());
-            Ok(String::new())
-        }
-        None => Ok(text),
-    }
-}
-
 fn to_f64_matrix<T: LiteralScalar>(m: &DMatrix<T>) -> DMatrix<f64> {
     m.map(|x| x.to_f64())
 }
@@ -400,6 +384,7 @@ fn curve<T: LiteralScalar>(cmd: &CurveCommand) -> Result<Outcome, CliError> {
         (Some(t), _) => load_params("--t", t)?,
         (None, n) => samples(n.unwrap_or(DEFAULT_SAMPLES), 2)?,
     };
+    common::check_expression_work(&[("EXPR", &expr, values.len())])?;
     let points = expr
         .sample_curve(&mut env, param, &values)
         .map_err(|e| CliError::literal("EXPR", e, CURVE_FORM))?;
@@ -418,14 +403,9 @@ fn curve<T: LiteralScalar>(cmd: &CurveCommand) -> Result<Outcome, CliError> {
         );
         common::add_plot(&mut files, "--plot", path, &figure)?;
     }
-    let stdout = emit(&report, &cmd.output, &mut files)?;
     let mut warnings = script_warnings(&cmd.script, loaded.as_ref());
     warnings.extend(env.take_warnings().into_iter().map(|w| ("EXPR".into(), w)));
-    Ok(Outcome {
-        stdout,
-        files,
-        warnings,
-    })
+    common::finish(&report, &cmd.output, files, warnings)
 }
 
 fn surface<T: LiteralScalar>(cmd: &SurfaceCommand) -> Result<Outcome, CliError> {
@@ -441,6 +421,7 @@ fn surface<T: LiteralScalar>(cmd: &SurfaceCommand) -> Result<Outcome, CliError> 
     let us = grid_samples(&cmd.params.u, "--u")?;
     let vs = grid_samples(&cmd.params.v, "--v")?;
     common::check_grid(us.len(), vs.len())?;
+    common::check_expression_work(&[("EXPR", &expr, us.len() * vs.len())])?;
     let grid = expr.sample_surface(&mut env, &us, &vs).map_err(|e| {
         CliError::literal(
             "EXPR",
@@ -468,14 +449,9 @@ fn surface<T: LiteralScalar>(cmd: &SurfaceCommand) -> Result<Outcome, CliError> 
     if let Some(path) = &cmd.mesh.mesh {
         common::add_mesh(&mut files, "--mesh", path, &grid_f64)?;
     }
-    let stdout = emit(&report, &cmd.output, &mut files)?;
     let mut warnings = script_warnings(&cmd.script, loaded.as_ref());
     warnings.extend(env.take_warnings().into_iter().map(|w| ("EXPR".into(), w)));
-    Ok(Outcome {
-        stdout,
-        files,
-        warnings,
-    })
+    common::finish(&report, &cmd.output, files, warnings)
 }
 
 fn script<T: LiteralScalar>(cmd: &ScriptCommand) -> Result<Outcome, CliError> {
@@ -504,17 +480,12 @@ fn script<T: LiteralScalar>(cmd: &ScriptCommand) -> Result<Outcome, CliError> {
             None => {}
         }
     }
-    let mut files = PendingWrites::new();
-    let stdout = emit(&report, &cmd.output, &mut files)?;
-    Ok(Outcome {
-        stdout,
-        files,
-        warnings: loaded
-            .warnings()
-            .into_iter()
-            .map(|w| (cmd.file.clone(), w))
-            .collect(),
-    })
+    let warnings = loaded
+        .warnings()
+        .into_iter()
+        .map(|w| (cmd.file.clone(), w))
+        .collect();
+    common::finish(&report, &cmd.output, PendingWrites::new(), warnings)
 }
 
 /// Turns a clap error into the one-line form (help and version are printed as a result).

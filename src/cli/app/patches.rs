@@ -20,7 +20,7 @@ use crate::{CoonsPatch, Curve, GordonSurface, Surface, Tolerance};
 
 use super::bezier::point_mode;
 use super::common::*;
-use super::{emit, prepare_script, Outcome};
+use super::{prepare_script, Outcome};
 
 /// The boundary curve arguments shared by `coons` and `coons-bicubic`.
 #[derive(Debug, Clone, Args)]
@@ -98,6 +98,43 @@ fn surface_params<T: LiteralScalar>(
     Ok((us, vs))
 }
 
+/// The parameters of the pictures of a patch: the result's, or a 21 × 21 grid when the
+/// result is a single point; and whether there are pictures (`--plot` or `--mesh`) at all.
+fn picture_params<T: LiteralScalar>(
+    (us, vs): (&[T], &[T]),
+    single: bool,
+    plot: &PlotArgs,
+    mesh: &MeshArgs,
+) -> (bool, Vec<T>, Vec<T>) {
+    let pictures = plot.plot.is_some() || mesh.mesh.is_some();
+    if single && pictures {
+        let t = T::linspace(&T::zero(), &T::one(), 21);
+        (pictures, t.clone(), t)
+    } else {
+        (pictures, us.to_vec(), vs.to_vec())
+    }
+}
+
+/// The four boundary curves as parts for [`build_curves`]: c1, c2 sampled at `at_u`, d1, d2
+/// at `at_v`.
+fn boundary_parts<'a, T: LiteralScalar>(
+    sources: &'a [CurveSource<T>; 4],
+    at_u: &'a [T],
+    at_v: &'a [T],
+) -> Vec<(&'static str, &'a CurveSource<T>, &'a [T])> {
+    ["--c1", "--c2", "--d1", "--d2"]
+        .into_iter()
+        .zip(sources)
+        .enumerate()
+        .map(|(k, (arg, s))| (arg, s, if k < 2 { at_u } else { at_v }))
+        .collect()
+}
+
+/// Four curves from a vector of four.
+fn four<T: LiteralScalar>(curves: Vec<CliCurve<T>>) -> [CliCurve<T>; 4] {
+    curves.try_into().unwrap_or_else(|_| unreachable!())
+}
+
 #[derive(Debug, Args)]
 pub struct CoonsCommand {
     #[command(flatten)]
@@ -128,22 +165,13 @@ pub fn coons<T: LiteralScalar>(cmd: &CoonsCommand) -> Result<Outcome, CliError> 
         &cmd.params,
         (sources[0].sample_params(), sources[2].sample_params()),
     )?;
-    let pictures = cmd.plot.plot.is_some() || cmd.mesh.mesh.is_some();
-    let (pus, pvs) = if single && pictures {
-        let t = T::linspace(&T::zero(), &T::one(), 21);
-        (t.clone(), t)
-    } else {
-        (us.clone(), vs.clone())
-    };
+    let (_, pus, pvs) = picture_params((&us, &vs), single, &cmd.plot, &cmd.mesh);
     let at_u = needed(&[&us, &pus]);
     let at_v = needed(&[&vs, &pvs]);
-    let names = ["--c1", "--c2", "--d1", "--d2"];
-    let mut curves = Vec::with_capacity(4);
-    for (k, s) in sources.iter().enumerate() {
-        let at = if k < 2 { &at_u } else { &at_v };
-        curves.push(s.build(names[k], at, &mut env)?);
-    }
-    let [c1, c2, d1, d2]: [CliCurve<T>; 4] = curves.try_into().unwrap_or_else(|_| unreachable!());
+    let [c1, c2, d1, d2] = four(build_curves(
+        &boundary_parts(&sources, &at_u, &at_v),
+        &mut env,
+    )?);
     let expected = "four boundary curves that meet at the corners: c1(0)=d1(0), c1(1)=d2(0), c2(0)=d1(1), c2(1)=d2(1)";
     let patch = match script_corners(script.as_ref()) {
         Some(corners) if cmd.boundary.c1.is_none() => CoonsPatch::with_corners(
@@ -160,82 +188,102 @@ pub fn coons<T: LiteralScalar>(cmd: &CoonsCommand) -> Result<Outcome, CliError> 
     let mut report = Report::new();
     report.push("u", Value::Matrix(row(&us)));
     report.push("v", Value::Matrix(row(&vs)));
+    push_terms(
+        &mut report,
+        ["rc", "rd", "rcd"],
+        cmd.steps.steps,
+        (&us, &vs),
+        single,
+        c1.dim(),
+        |u, v| {
+            let p = patch.eval_parts(u, v);
+            [p.rc, p.rd, p.rcd, p.x]
+        },
+    );
+    let curves = [&c1, &c2, &d1, &d2];
+    let files = coons_pictures(
+        "Coons patch",
+        &patch,
+        curves,
+        (&pus, &pvs),
+        &cmd.plot,
+        &cmd.mesh,
+    )?;
+    finish(
+        &report,
+        &cmd.output,
+        files,
+        warnings(&cmd.script.script, script.as_ref(), &mut env),
+    )
+}
+
+/// The result of a patch that is a sum of terms (Coons: x = rc + rd − rcd; Gordon:
+/// g = g1 + g2 − g12), `terms(u, v)` giving the three terms and the sum: at a single point
+/// the d×1 columns, else the grids `us × vs × d`; the three terms too, under `names`, with
+/// `--steps`.
+fn push_terms<T: LiteralScalar>(
+    report: &mut Report<T>,
+    names: [&str; 3],
+    steps: bool,
+    (us, vs): (&[T], &[T]),
+    single: bool,
+    d: usize,
+    terms: impl Fn(T, T) -> [DVector<T>; 4],
+) {
     if single {
-        let p = patch.eval_parts(us[0].clone(), vs[0].clone());
-        if cmd.steps.steps {
-            report.push("rc", Value::Matrix(column(&p.rc)));
-            report.push("rd", Value::Matrix(column(&p.rd)));
-            report.push("rcd", Value::Matrix(column(&p.rcd)));
+        let [a, b, c, x] = terms(us[0].clone(), vs[0].clone());
+        if steps {
+            for (name, term) in names.into_iter().zip([a, b, c]) {
+                report.push(name, Value::Matrix(column(&term)));
+            }
         }
-        report.push("result", Value::Matrix(column(&p.x)));
-    } else {
-        let d = c1.dim();
-        let shape = (us.len(), vs.len(), d);
-        let mut parts = [
-            Array3::from_elem(shape, T::zero()),
-            Array3::from_elem(shape, T::zero()),
-            Array3::from_elem(shape, T::zero()),
-            Array3::from_elem(shape, T::zero()),
-        ];
-        for (i, u) in us.iter().enumerate() {
-            for (j, v) in vs.iter().enumerate() {
-                let p = patch.eval_parts(u.clone(), v.clone());
-                for (a, x) in parts.iter_mut().zip([&p.rc, &p.rd, &p.rcd, &p.x]) {
-                    for k in 0..d {
-                        a[[i, j, k]] = x[k].clone();
-                    }
+        report.push("result", Value::Matrix(column(&x)));
+        return;
+    }
+    let shape = (us.len(), vs.len(), d);
+    let mut grids: [Array3<T>; 4] = std::array::from_fn(|_| Array3::from_elem(shape, T::zero()));
+    for (i, u) in us.iter().enumerate() {
+        for (j, v) in vs.iter().enumerate() {
+            for (grid, term) in grids.iter_mut().zip(terms(u.clone(), v.clone())) {
+                for k in 0..d {
+                    grid[[i, j, k]] = term[k].clone();
                 }
             }
         }
-        let [rc, rd, rcd, x] = parts;
-        if cmd.steps.steps {
-            report.push("rc", Value::Grid(rc));
-            report.push("rd", Value::Grid(rd));
-            report.push("rcd", Value::Grid(rcd));
+    }
+    let [a, b, c, x] = grids;
+    if steps {
+        for (name, grid) in names.into_iter().zip([a, b, c]) {
+            report.push(name, Value::Grid(grid));
         }
-        report.push("result", Value::Grid(x));
     }
-    let mut files = PendingWrites::new();
-    if pictures {
-        let grid = grid_f64(&patch.eval_grid(&pus, &pvs));
-        let curves = [&c1, &c2, &d1, &d2];
-        add_coons_pictures(
-            &mut files,
-            "Coons patch",
-            grid,
-            curves,
-            (&pus, &pvs),
-            &cmd.plot,
-            &cmd.mesh,
-        )?;
-    }
-    let stdout = emit(&report, &cmd.output, &mut files)?;
-    Ok(Outcome {
-        stdout,
-        files,
-        warnings: warnings(&cmd.script.script, script.as_ref(), &mut env),
-    })
+    report.push("result", Value::Grid(x));
 }
 
-/// The `--plot` and `--mesh` files of a Coons-type patch whose surface `grid` was sampled at
-/// `us × vs`: the picture is [`coons_figure`], the mesh the grid itself.
-fn add_coons_pictures<T: LiteralScalar, C: Curve<T>>(
-    files: &mut PendingWrites,
+/// The `--plot` and `--mesh` files of a Coons-type patch, sampled at `us × vs`: the picture
+/// is [`coons_figure`], the mesh the grid itself. The patch is sampled only if either is asked
+/// for.
+fn coons_pictures<T: LiteralScalar, C: Curve<T>, S: Surface<T>>(
     title: &str,
-    grid: Array3<f64>,
+    patch: &S,
     curves: [&C; 4],
     (us, vs): (&[T], &[T]),
     plot: &PlotArgs,
     mesh: &MeshArgs,
-) -> Result<(), CliError> {
+) -> Result<PendingWrites, CliError> {
+    let mut files = PendingWrites::new();
+    if plot.plot.is_none() && mesh.mesh.is_none() {
+        return Ok(files);
+    }
+    let grid = grid_f64(&patch.eval_grid(us, vs));
     if let Some(path) = &plot.plot {
         let figure = coons_figure(title, grid.clone(), curves, us, vs);
-        add_plot(files, "--plot", path, &figure)?;
+        add_plot(&mut files, "--plot", path, &figure)?;
     }
     if let Some(path) = &mesh.mesh {
-        add_mesh(files, "--mesh", path, &grid)?;
+        add_mesh(&mut files, "--mesh", path, &grid)?;
     }
-    Ok(())
+    Ok(files)
 }
 
 /// The picture of appendix C: the surface, c1 and c2 in red, d1 and d2 in green.
@@ -309,22 +357,9 @@ pub fn coons_bicubic<T: LiteralScalar>(cmd: &CoonsBicubicCommand) -> Result<Outc
     let sources = boundary_sources(&cmd.boundary, script.as_ref(), cmd.rows.rows, &env)?;
     let single = point_mode(&cmd.params);
     let (us, vs) = surface_params(&cmd.params, (None, None))?;
-    let pictures = cmd.plot.plot.is_some() || cmd.mesh.mesh.is_some();
-    let (pus, pvs) = if single && pictures {
-        let t = T::linspace(&T::zero(), &T::one(), 21);
-        (t.clone(), t)
-    } else {
-        (us.clone(), vs.clone())
-    };
+    let (_, pus, pvs) = picture_params((&us, &vs), single, &cmd.plot, &cmd.mesh);
     let at_u = needed(&[&us, &pus]);
     let at_v = needed(&[&vs, &pvs]);
-    let names = ["--c1", "--c2", "--d1", "--d2"];
-    let mut curves = Vec::with_capacity(4);
-    for (k, s) in sources.iter().enumerate() {
-        let at = if k < 2 { &at_u } else { &at_v };
-        curves.push(s.build(names[k], at, &mut env)?);
-    }
-    let [c1, c2, d1, d2]: [CliCurve<T>; 4] = curves.try_into().unwrap_or_else(|_| unreachable!());
     let mut cross = Vec::with_capacity(4);
     for (arg, given, at) in [
         ("--d1u", &cmd.d1u, &at_v),
@@ -340,10 +375,14 @@ pub fn coons_bicubic<T: LiteralScalar>(cmd: &CoonsBicubicCommand) -> Result<Outc
             )
         })?;
         let source = load_curve(arg, text, script.as_ref(), cmd.rows.rows, &env)?;
-        cross.push(source.build(arg, at, &mut env)?);
+        cross.push((arg, source, at.as_slice()));
     }
-    let [du0, du1, dv0, dv1]: [CliCurve<T>; 4] =
-        cross.try_into().unwrap_or_else(|_| unreachable!());
+    // All eight curves are estimated together, before any is sampled.
+    let mut parts = boundary_parts(&sources, &at_u, &at_v);
+    parts.extend(cross.iter().map(|(arg, s, at)| (*arg, s, *at)));
+    let mut curves = build_curves(&parts, &mut env)?;
+    let [du0, du1, dv0, dv1] = four(curves.split_off(4));
+    let [c1, c2, d1, d2] = four(curves);
     let twist = match cmd.twist {
         TwistChoice::Zero => Twist::Zero,
         TwistChoice::Gregory => Twist::Gregory,
@@ -394,26 +433,21 @@ pub fn coons_bicubic<T: LiteralScalar>(cmd: &CoonsBicubicCommand) -> Result<Outc
     } else {
         report.push("result", Value::Grid(patch.eval_grid(&us, &vs)));
     }
-    let mut files = PendingWrites::new();
-    if pictures {
-        let grid = grid_f64(&patch.eval_grid(&pus, &pvs));
-        let curves = [&c1, &c2, &d1, &d2];
-        add_coons_pictures(
-            &mut files,
-            "bicubic Coons patch",
-            grid,
-            curves,
-            (&pus, &pvs),
-            &cmd.plot,
-            &cmd.mesh,
-        )?;
-    }
-    let stdout = emit(&report, &cmd.output, &mut files)?;
-    Ok(Outcome {
-        stdout,
+    let curves = [&c1, &c2, &d1, &d2];
+    let files = coons_pictures(
+        "bicubic Coons patch",
+        &patch,
+        curves,
+        (&pus, &pvs),
+        &cmd.plot,
+        &cmd.mesh,
+    )?;
+    finish(
+        &report,
+        &cmd.output,
         files,
-        warnings: warnings(&cmd.script.script, script.as_ref(), &mut env),
-    })
+        warnings(&cmd.script.script, script.as_ref(), &mut env),
+    )
 }
 
 #[derive(Debug, Args)]
@@ -468,12 +502,12 @@ pub fn discrete<T: LiteralScalar>(cmd: &DiscreteCoonsCommand) -> Result<Outcome,
             .net(g, Colour::Red, "control net");
         add_plot(&mut files, "--plot", path, &figure)?;
     }
-    let stdout = emit(&report, &cmd.output, &mut files)?;
-    Ok(Outcome {
-        stdout,
+    finish(
+        &report,
+        &cmd.output,
         files,
-        warnings: warnings(&cmd.script.script, script.as_ref(), &mut Env::new()),
-    })
+        warnings(&cmd.script.script, script.as_ref(), &mut Env::new()),
+    )
 }
 
 #[derive(Debug, Args)]
@@ -635,22 +669,17 @@ pub fn gordon<T: LiteralScalar>(cmd: &GordonCommand) -> Result<Outcome, CliError
         .and_then(|c| c.sample_params())
         .map(<[T]>::to_vec);
     let (us, vs) = surface_params(&cmd.params, (sampled_u.as_deref(), sampled_v.as_deref()))?;
-    let pictures = cmd.plot.plot.is_some() || cmd.mesh.mesh.is_some();
-    let (pus, pvs) = if single && pictures {
-        let t = T::linspace(&T::zero(), &T::one(), 21);
-        (t.clone(), t)
-    } else {
-        (us.clone(), vs.clone())
-    };
+    let (pictures, pus, pvs) = picture_params((&us, &vs), single, &cmd.plot, &cmd.mesh);
     let need_u = needed(&[&us, &pus, &u_nodes]);
     let need_v = needed(&[&vs, &pvs, &v_nodes]);
-    let build = |arg: &str, list: &[CurveSource<T>], at: &[T], env: &mut Env<T>| {
-        list.iter()
-            .map(|c| c.build(arg, at, env))
-            .collect::<Result<Vec<_>, _>>()
-    };
-    let curves_u = build("--u-curve", &at_u, &need_v, &mut env)?;
-    let curves_v = build("--v-curve", &at_v, &need_u, &mut env)?;
+    // Curves g(u_i, ·) are sampled in v, curves g(·, v_j) in u.
+    let parts: Vec<(&str, &CurveSource<T>, &[T])> = at_u
+        .iter()
+        .map(|c| ("--u-curve", c, need_v.as_slice()))
+        .chain(at_v.iter().map(|c| ("--v-curve", c, need_u.as_slice())))
+        .collect();
+    let mut curves_u = build_curves(&parts, &mut env)?;
+    let curves_v = curves_u.split_off(at_u.len());
     let expected =
         "a compatible network: g(u_i, ·) at v_j equals g(·, v_j) at u_i, one curve per node";
     let surface = match points {
@@ -675,36 +704,18 @@ pub fn gordon<T: LiteralScalar>(cmd: &GordonCommand) -> Result<Outcome, CliError
     report.push("u", Value::Matrix(row(&us)));
     report.push("v", Value::Matrix(row(&vs)));
     let d = curves_u[0].dim();
-    if single {
-        let p = surface.eval_parts(us[0].clone(), vs[0].clone());
-        if cmd.steps.steps {
-            report.push("g1", Value::Matrix(column(&p.g1)));
-            report.push("g2", Value::Matrix(column(&p.g2)));
-            report.push("g12", Value::Matrix(column(&p.g12)));
-        }
-        report.push("result", Value::Matrix(column(&p.g)));
-    } else {
-        let shape3 = (us.len(), vs.len(), d);
-        let mut parts: [Array3<T>; 4] =
-            std::array::from_fn(|_| Array3::from_elem(shape3, T::zero()));
-        for (i, u) in us.iter().enumerate() {
-            for (j, v) in vs.iter().enumerate() {
-                let p = surface.eval_parts(u.clone(), v.clone());
-                for (a, x) in parts.iter_mut().zip([&p.g1, &p.g2, &p.g12, &p.g]) {
-                    for k in 0..d {
-                        a[[i, j, k]] = x[k].clone();
-                    }
-                }
-            }
-        }
-        let [g1, g2, g12, g] = parts;
-        if cmd.steps.steps {
-            report.push("g1", Value::Grid(g1));
-            report.push("g2", Value::Grid(g2));
-            report.push("g12", Value::Grid(g12));
-        }
-        report.push("result", Value::Grid(g));
-    }
+    push_terms(
+        &mut report,
+        ["g1", "g2", "g12"],
+        cmd.steps.steps,
+        (&us, &vs),
+        single,
+        d,
+        |u, v| {
+            let p = surface.eval_parts(u, v);
+            [p.g1, p.g2, p.g12, p.g]
+        },
+    );
     let c = surface.conditioning();
     report.push(
         "conditioning",
@@ -734,12 +745,12 @@ pub fn gordon<T: LiteralScalar>(cmd: &GordonCommand) -> Result<Outcome, CliError
             add_mesh(&mut files, "--mesh", path, &grid)?;
         }
     }
-    let stdout = emit(&report, &cmd.output, &mut files)?;
-    Ok(Outcome {
-        stdout,
+    finish(
+        &report,
+        &cmd.output,
         files,
-        warnings: warnings(&cmd.script.script, script.as_ref(), &mut env),
-    })
+        warnings(&cmd.script.script, script.as_ref(), &mut env),
+    )
 }
 
 #[derive(Debug, Args)]
@@ -818,10 +829,5 @@ pub fn lagrange<T: LiteralScalar>(cmd: &LagrangeCommand) -> Result<Outcome, CliE
             report.push("result", Value::Matrix(result));
         }
     }
-    let stdout = emit(&report, &cmd.output, &mut files)?;
-    Ok(Outcome {
-        stdout,
-        files,
-        warnings: Vec::new(),
-    })
+    finish(&report, &cmd.output, files, Vec::new())
 }

@@ -78,6 +78,14 @@ fn walk<'e>(e: &'e Expr, f: &mut dyn FnMut(&'e Expr)) {
     }
 }
 
+/// The number of nodes of the tree: numbers, names, operands of a chain, calls and their
+/// arguments, matrix elements, range parts.
+pub(crate) fn node_count(e: &Expr) -> usize {
+    let mut count = 0usize;
+    walk(e, &mut |_| count += 1);
+    count
+}
+
 fn is_called(e: &Expr, name: &str, at: Position) -> bool {
     let mut found = false;
     walk(e, &mut |x| {
