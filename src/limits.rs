@@ -6,7 +6,7 @@
 //! | [`max_input_bytes`](Limits::max_input_bytes) | 64 MiB | an input file or standard input | `CAGD_MAX_INPUT_BYTES` / `--max-input-bytes` |
 //! | [`max_expression_bytes`](Limits::max_expression_bytes) | 1 MiB | a literal, expression or data script | `CAGD_MAX_EXPRESSION_BYTES` / `--max-expression-bytes` |
 //! | [`max_depth`](Limits::max_depth) | 64 | nesting of brackets, calls, unary operators, loops | `CAGD_MAX_DEPTH` / `--max-depth` |
-//! | [`max_elements`](Limits::max_elements) | 4 000 000 | elements of a matrix or range built by a literal or script | `CAGD_MAX_ELEMENTS` / `--max-elements` |
+//! | [`max_elements`](Limits::max_elements) | 4 000 000 | elements of a matrix or range built by a literal or script; every length of an array read from a `save -text` file | `CAGD_MAX_ELEMENTS` / `--max-elements` |
 //! | [`max_iterations`](Limits::max_iterations) | 1 000 000 | loop iterations of a data script | `CAGD_MAX_ITERATIONS` / `--max-iterations` |
 //! | [`max_samples`](Limits::max_samples) | 1 000 000 | parameter values along one axis (`--n`, `--t`, `--u`, `--v`) | `CAGD_MAX_SAMPLES` / `--max-samples` |
 //! | [`max_grid_points`](Limits::max_grid_points) | 10 000 000 | points of a surface grid (`nu · nv`) | `CAGD_MAX_GRID_POINTS` / `--max-grid-points` |
@@ -32,7 +32,8 @@
 //!
 //! Two budgets derive from `max_elements`: one evaluation of an expression may do at most
 //! 64 × `max_elements` element operations (results of every operation and matrix-product
-//! terms), and a data script may assign at most 25 × `max_elements` elements in all; so a
+//! terms; in exact arithmetic an operation on numbers of `a` and `b` 64-bit words counts as
+//! `(a + b)²`, the cost of the gcd behind it), and a data script may assign at most 25 × `max_elements` elements in all; so a
 //! short text (`A*A*A*…`, a loop rebuilding a large matrix) stops with an error instead of
 //! running for minutes.
 //!

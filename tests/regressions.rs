@@ -268,3 +268,79 @@ fn fuzz_script_timeout_exact_power_towers() {
     }
     assert!(start.elapsed().as_secs() < 10, "{:?}", start.elapsed());
 }
+
+/// Fuzzing (`text_format`, timeout after 3.8 million runs): a 218-byte file declaring a
+/// `20002114 × 0` matrix. It has no elements, so it passed every size check, but Octave's
+/// layout gives an R×0 matrix one blank line per row: writing it back made a 20 MB text and
+/// reading that again took seconds. Every length of an array read is now bounded by the
+/// element limit, even when the array is empty; within the limit R×0 matrices still read and
+/// round-trip as Octave writes them.
+#[test]
+fn fuzz_text_format_timeout_empty_matrix_with_huge_row_count() {
+    use cagd::octave::text_format::{read_text, write_text, TextFormatError};
+    let start = std::time::Instant::now();
+    // The decisive variable of the artifact (timeout-aaea22b1…).
+    let text = "# Created by Octa columns: 0\n\n\n\n# name:_a0_n0\n# type: matrix\n# rows: 20002114\n# columns: 0\n\n\n\n# name: _n0a_lb1_b\n# type: scalar\n1\n";
+    let err = read_text(text).unwrap_err();
+    assert!(
+        matches!(err, TextFormatError::BadHeader { line: 8, ref found, .. } if found.contains("20002114")),
+        "{err:?}"
+    );
+    assert!(start.elapsed().as_secs() < 5, "{:?}", start.elapsed());
+    // A 5×0 matrix as Octave 7.3 writes it (`A = zeros(5, 0); save -text`): five blank lines.
+    let octave = "# name: A\n# type: matrix\n# rows: 5\n# columns: 0\n\n\n\n\n\n\n\n";
+    let ws = read_text(octave).unwrap();
+    assert_eq!(ws.matrix("A").unwrap().shape(), &[5, 0]);
+    let again = read_text(&write_text(&ws).unwrap()).unwrap();
+    assert_eq!(again.matrix("A").unwrap().shape(), &[5, 0]);
+}
+
+/// Fuzzing (`literal`, timeout after 0.64 million runs): 121 bytes of exact arithmetic on
+/// 1000-bit rationals over a range of a few hundred elements took a third of a second in a
+/// release build (over 10 s instrumented), while the work meter charged one unit per
+/// element. Exact operations are now charged `(a + b)²` for operands of `a` and `b` 64-bit
+/// words (the gcd behind every exact result), before they are computed, and exact ranges are
+/// charged per element the same way.
+#[test]
+fn fuzz_literal_timeout_large_exact_operands() {
+    use num_rational::BigRational;
+    let artifact = "1e-310-3-310--[77777.7777777-754./ 1.7777777-7777-777./ 1.77777:777./ 1.777777-7777:52-1e-10--2-1e7-777751]-310-310--2-A2";
+    // At the fuzzing limits (10⁴ elements: a budget of 640 000 operations) the work limit
+    // stops it at once.
+    let small = cagd::octave::literal::Limits {
+        max_elements: 10_000,
+        ..cagd::octave::literal::Limits::default()
+    };
+    let mut env = Env::<BigRational>::with_limits(small);
+    let start = std::time::Instant::now();
+    let r = cagd::octave::literal::Expr::parse(artifact)
+        .unwrap()
+        .eval(&mut env);
+    assert!(
+        matches!(r, Err(LiteralError::TooLarge { ref what, .. }) if what.contains("work")),
+        "{:?}",
+        r.map(|m| m.shape())
+    );
+    assert!(start.elapsed().as_secs() < 5, "{:?}", start.elapsed());
+    // At the default limits a range of 10⁶ elements of 1000-bit numbers is refused before it
+    // is built (it would cost about 4·10⁹ units, 16 times the budget) ...
+    let start = std::time::Instant::now();
+    let r = cagd::octave::literal::parse_params::<BigRational>(
+        "(1e-300:1e-300+1/7:1e-300+1000000/7) + 1e-301",
+    );
+    assert!(
+        matches!(r, Err(LiteralError::TooLarge { ref what, .. }) if what.contains("work")),
+        "{:?}",
+        r.map(|m| m.len())
+    );
+    assert!(start.elapsed().as_secs() < 5, "{:?}", start.elapsed());
+    // ... while short-word exact ranges of the same length stay within it and are exact.
+    let r = cagd::octave::literal::parse_params::<BigRational>("(1/3:1/7:100000/7) + 1/9").unwrap();
+    assert_eq!(r.len(), 99_998);
+    assert_eq!(r[0], BigRational::new(4.into(), 9.into()));
+    // f64 evaluation of the artifact is unaffected (an unknown variable at its end).
+    assert!(matches!(
+        cagd::octave::literal::parse_matrix::<f64>(artifact),
+        Err(LiteralError::UnknownVariable { .. })
+    ));
+}

@@ -292,8 +292,7 @@ pub(crate) fn patch_steps(m: usize, n: usize) -> impl Iterator<Item = PatchStep>
     } else {
         PatchStep::LinearV
     };
-    std::iter::repeat_n(PatchStep::Bilinear, both)
-        .chain(std::iter::repeat_n(rest, m.max(n) - both))
+    std::iter::repeat_n(PatchStep::Bilinear, both).chain(std::iter::repeat_n(rest, m.max(n) - both))
 }
 
 /// The full tensor de Casteljau scheme of a Bézier patch at `(u, v)` (thesis §3.2, fixed for

@@ -774,6 +774,20 @@ fn dims(cur: &mut Cursor<'_>) -> Result<Vec<usize>> {
 
 /// The number of elements of an array of this shape, or an error if it cannot exist.
 fn element_count(shape: &[usize], line: usize) -> Result<usize> {
+    // No length may exceed the element limit, even in an empty array: Octave writes one
+    // (blank) line per row of an R×0 matrix, so a 20 000 000×0 matrix in a 200-byte file
+    // would be written back as 20 MB (found by fuzzing).
+    let max = crate::limits::Limits::current().max_elements;
+    if let Some(&too_long) = shape.iter().find(|&&d| d > max) {
+        return Err(TextFormatError::BadHeader {
+            line,
+            expected: format!(
+                "array lengths of at most {max} (the element limit: --max-elements or \
+                 CAGD_MAX_ELEMENTS)"
+            ),
+            found: format!("a length of {too_long}"),
+        });
+    }
     // Like ndarray, also bound the product of the non-zero lengths: a 2^64 x 0 array has no
     // elements but no valid shape either.
     let nonzero = shape

@@ -203,14 +203,44 @@ fn charge<T: LiteralScalar>(
     let max = env.limits().max_elements;
     let limit = WORK_PER_ELEMENT * max as u128;
     if env.meter.work > limit {
-        return Err(LiteralError::TooLarge {
-            at,
-            what: "the evaluation's work (element operations)".into(),
-            count: env.meter.work,
-            limit: usize::try_from(limit).unwrap_or(usize::MAX),
-        });
+        return Err(work_exceeded(env.meter.work, limit, at));
     }
     Ok(())
+}
+
+fn work_exceeded(work: u128, limit: u128, at: Position) -> LiteralError {
+    LiteralError::TooLarge {
+        at,
+        what: "the evaluation's work (element operations)".into(),
+        count: work,
+        limit: usize::try_from(limit).unwrap_or(usize::MAX),
+    }
+}
+
+/// The work still allowed to the evaluation in progress.
+fn remaining_work<T: LiteralScalar>(env: &Env<T>) -> u128 {
+    let limit = WORK_PER_ELEMENT * env.limits().max_elements as u128;
+    limit.saturating_sub(env.meter.work)
+}
+
+/// The largest [`LiteralScalar::words`] among `xs` (1 for `f64` without looking).
+fn largest_words<'a, T: LiteralScalar + 'a>(xs: impl IntoIterator<Item = &'a T>) -> u128 {
+    if T::EXACT {
+        xs.into_iter().map(T::words).max().unwrap_or(1)
+    } else {
+        1
+    }
+}
+
+/// The cost of one operation on operands of `a` and `b` words: 1 in `f64`, `(a + b)²` for
+/// exact numbers (see [`LiteralScalar::words`]).
+fn op_cost<T: LiteralScalar>(a: u128, b: u128) -> u128 {
+    if T::EXACT {
+        let w = a.saturating_add(b);
+        w.saturating_mul(w)
+    } else {
+        1
+    }
 }
 
 /// Evaluates `e` in `env`, within the work limit of one evaluation.
@@ -269,12 +299,27 @@ fn eval_node<T: LiteralScalar>(e: &Expr, env: &mut Env<T>) -> Result<DMatrix<T>,
             };
             let l = range_bound(limit, env, "the limit of a range")?;
             let max = env.limits().max_elements;
-            let values = T::range(&b, &s, &l, max).map_err(|count| LiteralError::TooLarge {
-                at: e.at,
-                what: "the range".into(),
-                count,
-                limit: max,
-            })?;
+            // Each element is one operation on numbers the size of the bounds: a range the
+            // remaining work cannot pay for is refused before it is built.
+            let cost = op_cost::<T>(largest_words([&b, &l]), largest_words([&s]));
+            let affordable = usize::try_from(remaining_work(env) / cost).unwrap_or(usize::MAX);
+            let values = match T::range(&b, &s, &l, max.min(affordable)) {
+                Ok(values) => values,
+                Err(count) if count <= max as u128 => {
+                    let limit = WORK_PER_ELEMENT * max as u128;
+                    let work = env.meter.work.saturating_add(count.saturating_mul(cost));
+                    return Err(work_exceeded(work, limit, e.at));
+                }
+                Err(count) => {
+                    return Err(LiteralError::TooLarge {
+                        at: e.at,
+                        what: "the range".into(),
+                        count,
+                        limit: max,
+                    });
+                }
+            };
+            charge(env, e.at, values.len() as u128 * cost)?;
             Ok(DMatrix::from_row_slice(1, values.len(), &values))
         }
         Node::Matrix(rows) => concatenate(rows, e.at, env),
@@ -664,6 +709,17 @@ fn binary<T: LiteralScalar>(
             ),
         );
     };
+    // Exact operations cost more the longer their operands: charged before computing.
+    if T::EXACT {
+        let cost = op_cost::<T>(largest_words(a.iter()), largest_words(b.iter()));
+        let n = a.len().max(b.len()) as u128;
+        let inner = if op == BinOp::Mul && !a_scalar && !b_scalar {
+            a.ncols() as u128
+        } else {
+            1
+        };
+        charge(env, at, n.saturating_mul(inner).saturating_mul(cost))?;
+    }
     match op {
         BinOp::Add | BinOp::Sub | BinOp::ElMul | BinOp::ElDiv | BinOp::ElPow => {
             elementwise(op, &a, &b, at, max)
