@@ -13,7 +13,7 @@ use crate::coons::{
     discrete_coons, solve_mask, BicubicCoonsPatch, CoonsBoundary, CrossDerivatives, Mask, Twist,
 };
 use crate::lagrange::Lagrange;
-use crate::octave::literal::{Env, LiteralScalar};
+use crate::octave::literal::{Env, LiteralScalar, Warning};
 use crate::octave::script::Script;
 use crate::plot::{Colour, Figure};
 use crate::{CoonsPatch, Curve, GordonSurface, Surface, Tolerance};
@@ -200,19 +200,13 @@ pub fn coons<T: LiteralScalar>(cmd: &CoonsCommand) -> Result<Outcome, CliError> 
             [p.rc, p.rd, p.rcd, p.x]
         },
     );
-    let curves = [&c1, &c2, &d1, &d2];
-    let files = coons_pictures(
+    coons_outcome(
         "Coons patch",
         &patch,
-        curves,
+        [&c1, &c2, &d1, &d2],
         (&pus, &pvs),
-        &cmd.plot,
-        &cmd.mesh,
-    )?;
-    finish(
+        (&cmd.plot, &cmd.mesh, &cmd.output),
         &report,
-        &cmd.output,
-        files,
         warnings(&cmd.script.script, script.as_ref(), &mut env),
     )
 }
@@ -260,30 +254,31 @@ fn push_terms<T: LiteralScalar>(
     report.push("result", Value::Grid(x));
 }
 
-/// The `--plot` and `--mesh` files of a Coons-type patch, sampled at `us × vs`: the picture
-/// is [`coons_figure`], the mesh the grid itself. The patch is sampled only if either is asked
+/// The outcome of a Coons-type subcommand: the report (written as `--format`/`-o` say) and the
+/// `--plot` and `--mesh` files of the patch sampled at `us × vs` — the picture is
+/// [`coons_figure`], the mesh the grid itself; the patch is sampled only if either is asked
 /// for.
-fn coons_pictures<T: LiteralScalar, C: Curve<T>, S: Surface<T>>(
+fn coons_outcome<T: LiteralScalar, C: Curve<T>, S: Surface<T>>(
     title: &str,
     patch: &S,
     curves: [&C; 4],
     (us, vs): (&[T], &[T]),
-    plot: &PlotArgs,
-    mesh: &MeshArgs,
-) -> Result<PendingWrites, CliError> {
+    (plot, mesh, output): (&PlotArgs, &MeshArgs, &OutputArgs),
+    report: &Report<T>,
+    warnings: Vec<(String, Warning)>,
+) -> Result<Outcome, CliError> {
     let mut files = PendingWrites::new();
-    if plot.plot.is_none() && mesh.mesh.is_none() {
-        return Ok(files);
+    if plot.plot.is_some() || mesh.mesh.is_some() {
+        let grid = grid_f64(&patch.eval_grid(us, vs));
+        if let Some(path) = &plot.plot {
+            let figure = coons_figure(title, grid.clone(), curves, us, vs);
+            add_plot(&mut files, "--plot", path, &figure)?;
+        }
+        if let Some(path) = &mesh.mesh {
+            add_mesh(&mut files, "--mesh", path, &grid)?;
+        }
     }
-    let grid = grid_f64(&patch.eval_grid(us, vs));
-    if let Some(path) = &plot.plot {
-        let figure = coons_figure(title, grid.clone(), curves, us, vs);
-        add_plot(&mut files, "--plot", path, &figure)?;
-    }
-    if let Some(path) = &mesh.mesh {
-        add_mesh(&mut files, "--mesh", path, &grid)?;
-    }
-    Ok(files)
+    finish(report, output, files, warnings)
 }
 
 /// The picture of appendix C: the surface, c1 and c2 in red, d1 and d2 in green.
@@ -433,19 +428,13 @@ pub fn coons_bicubic<T: LiteralScalar>(cmd: &CoonsBicubicCommand) -> Result<Outc
     } else {
         report.push("result", Value::Grid(patch.eval_grid(&us, &vs)));
     }
-    let curves = [&c1, &c2, &d1, &d2];
-    let files = coons_pictures(
+    coons_outcome(
         "bicubic Coons patch",
         &patch,
-        curves,
+        [&c1, &c2, &d1, &d2],
         (&pus, &pvs),
-        &cmd.plot,
-        &cmd.mesh,
-    )?;
-    finish(
+        (&cmd.plot, &cmd.mesh, &cmd.output),
         &report,
-        &cmd.output,
-        files,
         warnings(&cmd.script.script, script.as_ref(), &mut env),
     )
 }
