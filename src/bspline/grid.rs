@@ -167,11 +167,87 @@ pub(crate) fn curve_points_into<T: Scalar>(
             }
         }
     };
-    for_each_row(out, BLOCK * d, work, init, |sc, block, chunk| {
-        for (t, x) in ts[block * BLOCK..].iter().zip(chunk.chunks_exact_mut(d)) {
-            point(sc, t, x);
+    // Degrees 1…5 with up to 4 numbers per control point: basis, triangle and sums in arrays
+    // of sizes fixed at compile time (registers, unrolled loops); the same operations.
+    macro_rules! fixed {
+        ($n:literal, $dh:literal) => {
+            for_each_row(
+                out,
+                BLOCK * d,
+                work,
+                || p,
+                |hint, block, chunk| {
+                    for (t, x) in ts[block * BLOCK..].iter().zip(chunk.chunks_exact_mut(d)) {
+                        let Some((s, u)) = finder.locate(t, hint) else {
+                            x.iter_mut().for_each(|o| *o = t.clone());
+                            continue;
+                        };
+                        let n = basis_fixed::<T, $n>(knots, s, &u);
+                        let first = (s - p) * $dh;
+                        let terms = &control[first..first + $n * $dh];
+                        sum_fixed::<T, $dh>(&n, terms, project, x);
+                    }
+                },
+            )
+        };
+    }
+    macro_rules! by_dim {
+        ($n:literal) => {
+            match dh {
+                1 => fixed!($n, 1),
+                2 => fixed!($n, 2),
+                3 => fixed!($n, 3),
+                _ => fixed!($n, 4),
+            }
+        };
+    }
+    match (p, dh) {
+        (1, 1..=4) => by_dim!(2),
+        (2, 1..=4) => by_dim!(3),
+        (3, 1..=4) => by_dim!(4),
+        (4, 1..=4) => by_dim!(5),
+        (5, 1..=4) => by_dim!(6),
+        _ => for_each_row(out, BLOCK * d, work, init, |sc, block, chunk| {
+            for (t, x) in ts[block * BLOCK..].iter().zip(chunk.chunks_exact_mut(d)) {
+                point(sc, t, x);
+            }
+        }),
+    }
+}
+
+/// The `N = p + 1` non-zero basis values on the span `span`: [`basis_functions_into`] with
+/// every size fixed at compile time (the same operations, so the same values).
+#[inline]
+fn basis_fixed<T: Scalar, const N: usize>(knots: &[T], span: usize, u: &T) -> [T; N] {
+    let p = N - 1;
+    // knots[span + 1 − p ..= span + p]: left[j] = u − k[p − j], right[j] = k[p − 1 + j].
+    let k = &knots[span + 1 - p..span + 1 + p];
+    let mut n: [T; N] = std::array::from_fn(|_| T::zero());
+    let left: [T; N] = std::array::from_fn(|j| {
+        if j == 0 {
+            T::zero()
+        } else {
+            u.clone() - k[p - j].clone()
         }
     });
+    let right: [T; N] = std::array::from_fn(|j| {
+        if j == 0 {
+            T::zero()
+        } else {
+            k[p - 1 + j].clone() - u.clone()
+        }
+    });
+    n[0] = T::one();
+    for j in 1..N {
+        let mut saved = T::zero();
+        for r in 0..j {
+            let temp = n[r].clone() / (right[r + 1].clone() + left[j - r].clone());
+            n[r] = saved + right[r + 1].clone() * temp.clone();
+            saved = left[j - r].clone() * temp;
+        }
+        n[j] = saved;
+    }
+    n
 }
 
 /// `Σ_j w[j] · c_j` (`D` coordinates each, sum from zero, `j` ascending), then
@@ -261,6 +337,7 @@ pub(crate) fn surface_grid_into<T: Scalar>(s: &Net<'_, T>, us: &[T], vs: &[T], o
             }
         }
     };
+    let no_nan_v = sv.iter().all(Option::is_some);
     let work = us.len().saturating_mul(
         vs.len()
             .saturating_mul((q + 1) * dh)
@@ -281,13 +358,48 @@ pub(crate) fn surface_grid_into<T: Scalar>(s: &Net<'_, T>, us: &[T], vs: &[T], o
             &s.net[(span - p) * block..(span + 1) * block],
             coeffs,
         );
-        if s.project {
+        if !s.project {
+            fill(coeffs, row);
+        } else if (2..=4).contains(&dh) && no_nan_v {
+            // Homogeneous sums kept in registers and divided at once, no second pass.
+            for &(b0, b1, span) in &runs {
+                let t = span.unwrap_or(q);
+                let (ws, c) = (&bv[b0 * (q + 1)..b1 * (q + 1)], &coeffs[(t - q) * dh..]);
+                let x = &mut row[b0 * d..b1 * d];
+                match dh {
+                    2 => contract_project_row::<T, 2>(ws, q + 1, c, x),
+                    3 => contract_project_row::<T, 3>(ws, q + 1, c, x),
+                    _ => contract_project_row::<T, 4>(ws, q + 1, c, x),
+                }
+            }
+        } else {
             fill(coeffs, hrow);
             for (x, h) in row.chunks_exact_mut(d).zip(hrow.chunks_exact(dh)) {
                 finish(h, true, x);
             }
-        } else {
-            fill(coeffs, row);
         }
     });
+}
+
+/// For every point of a run: the homogeneous sum `h = Σ_l ws[b][l] · c_l` (`D` numbers,
+/// [`contract_row`]'s operations: from `ws[b][0] · c_0`, `l` ascending), then
+/// `x_k = h_k / h_{D−1}` into `row` (`D − 1` numbers per point).
+#[inline]
+fn contract_project_row<T: Scalar, const D: usize>(
+    ws: &[T],
+    terms: usize,
+    coeffs: &[T],
+    row: &mut [T],
+) {
+    for (w, x) in ws.chunks_exact(terms).zip(row.chunks_exact_mut(D - 1)) {
+        let mut acc: [T; D] = std::array::from_fn(|k| w[0].clone() * coeffs[k].clone());
+        for (wl, cl) in w[1..].iter().zip(coeffs[D..].chunks_exact(D)) {
+            for k in 0..D {
+                acc[k] = acc[k].clone() + wl.clone() * cl[k].clone();
+            }
+        }
+        for k in 0..D - 1 {
+            x[k] = acc[k].clone() / acc[D - 1].clone();
+        }
+    }
 }
