@@ -51,8 +51,8 @@ impl<'a, T: Scalar> SpanFinder<'a, T> {
     #[inline]
     pub(crate) fn locate(&self, t: &T, hint: &mut usize) -> Option<(usize, T)> {
         let u = clamp(t.clone(), &self.lo, &self.hi);
-        // After clamping only NaN is outside the domain.
-        if !(self.lo <= u) {
+        // After clamping (±∞ to the ends) only NaN is outside the domain.
+        if !u.is_finite_value() {
             return None;
         }
         let s = self.span(&u, *hint);
