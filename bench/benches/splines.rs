@@ -12,7 +12,7 @@ use cagd::bspline::{BSplineCurve, BSplineSurface, KnotVector};
 use cagd::nurbs::NurbsSurface;
 use cagd::spline::{CubicSpline, EndCondition};
 use cagd::{Curve, Surface};
-use cagd_bench::per_point_grid;
+use cagd_bench::{bspline_surface, per_point_grid};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use nalgebra::DMatrix;
 
@@ -24,20 +24,14 @@ fn knots(p: usize, n: usize) -> Vec<f64> {
         .to_vec()
 }
 
-/// The net of the patches of `cagd_bench`, `n × n` points:
-/// `P_{i,j} = (i/(n−1), j/(n−1), ((7i + 3j) mod 5)/4 − 1/2)`.
+/// The `n × n` net of [`bspline_surface`] (one matrix per coordinate).
 fn net(n: usize) -> Vec<DMatrix<f64>> {
-    let f = |i: usize| i as f64 / (n - 1) as f64;
-    vec![
-        DMatrix::from_fn(n, n, |i, _| f(i)),
-        DMatrix::from_fn(n, n, |_, j| f(j)),
-        DMatrix::from_fn(n, n, |i, j| ((7 * i + 3 * j) % 5) as f64 / 4.0 - 0.5),
-    ]
+    bspline_surface(1, n).coordinates().to_vec()
 }
 
 /// The B-spline surface of degree `(p, p)` over the `n × n` net, clamped uniform knots.
 fn surface(p: usize, n: usize) -> BSplineSurface {
-    BSplineSurface::new(p, p, knots(p, n), knots(p, n), net(n)).expect("valid surface")
+    bspline_surface(p, n)
 }
 
 /// The cubic 3-D B-spline curve with 10 control points on a spiral, clamped uniform knots.
