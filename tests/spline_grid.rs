@@ -65,7 +65,7 @@ fn random_knots(rng: &mut Lcg, p: usize, n: usize, clamped: bool) -> Vec<f64> {
         if clamped {
             let mut full = vec![a; p + 1];
             full.extend(k);
-            full.extend(std::iter::repeat(b).take(p + 1));
+            full.extend(std::iter::repeat_n(b, p + 1));
             k = full;
         }
         // Interior multiplicity may have grown by sorting; cap it by skipping such vectors.
