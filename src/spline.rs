@@ -445,14 +445,116 @@ impl<T: Scalar> CubicSpline<T> {
         v
     }
 
-    /// The points at `ts`, one per column.
+    /// The points at `ts`, one per column (`d × ts.len()`), by
+    /// [`eval_many_into`](Self::eval_many_into) (the values of [`eval`](Self::eval), bit for
+    /// bit).
     pub fn eval_many(&self, ts: &[T]) -> DMatrix<T> {
         let mut out = DMatrix::from_element(self.dim(), ts.len(), T::zero());
-        for (k, t) in ts.iter().enumerate() {
-            out.set_column(k, &self.eval(t.clone()));
-        }
+        self.fill_many(ts, out.as_mut_slice());
         out
     }
+
+    /// The points at all parameters `ts` written into `out`, one after the other:
+    /// `out[k·d + c]` is coordinate `c` of `x(ts[k])` (`ts.len() × d` row-major, the storage
+    /// of [`eval_many`](Self::eval_many)'s `d × ts.len()` matrix; see [`crate::grid`]). As
+    /// [`eval`](Self::eval), any parameter is accepted: outside `[t_0, t_last]` the end
+    /// segments continue.
+    ///
+    /// The coefficients `y_k, x'_k, c_2, c_3` of every segment's local polynomial are computed
+    /// once per call (`4·d` numbers per segment, by the formulas of
+    /// [`eval_with_derivatives`](Self::eval_with_derivatives)); each parameter then finds its
+    /// segment — the previous parameter's segment or the next one first (`O(1)` for sorted
+    /// parameters), otherwise a binary search, no allocation — and the point is
+    /// `y_k + s(x'_k + s(c_2 + s c_3))`, `s = t − t_k`: the operations of `eval`, so the same
+    /// values bit for bit. Long batches are split over all cores.
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] unless `out.len() == ts.len() · d`.
+    ///
+    /// ```
+    /// use cagd::spline::{CubicSpline, EndCondition};
+    /// use nalgebra::DMatrix;
+    /// let x = DMatrix::from_column_slice(1, 3, &[0.0, 1.0, 0.0]);
+    /// let s = CubicSpline::interpolate(x, EndCondition::Natural)?;
+    /// let mut out = [0.0; 3];
+    /// s.eval_many_into(&[0.0, 1.0, 2.0], &mut out)?;
+    /// assert_eq!(out, [0.0, 1.0, 0.0]);
+    /// assert!(s.eval_many_into(&[0.5], &mut out).is_err());
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
+        let len = crate::grid::grid_len("spline points", &[ts.len(), self.dim()])?;
+        crate::grid::check_len("spline point buffer", len, out)?;
+        self.fill_many(ts, out);
+        Ok(())
+    }
+
+    /// [`eval_many_into`](Self::eval_many_into) after the length check.
+    fn fill_many(&self, ts: &[T], out: &mut [T]) {
+        /// Points per block (one segment hint per block).
+        const BLOCK: usize = 256;
+        let d = self.dim();
+        let segs = self.segment_count();
+        let m = self.points.ncols();
+        let (two, three) = (T::from_usize(2), T::from_usize(3));
+        // coef[(k·d + r)·4 ..] = (y, x', c_2, c_3) of coordinate r on segment k.
+        let mut coef = Vec::with_capacity(segs * d * 4);
+        for k in 0..segs {
+            let j = (k + 1) % m;
+            let h = self.params[k + 1].clone() - self.params[k].clone();
+            for r in 0..d {
+                let y = self.points[(r, k)].clone();
+                let (m0, m1) = (self.tangents[(r, k)].clone(), self.tangents[(r, j)].clone());
+                let delta = (self.points[(r, j)].clone() - y.clone()) / h.clone();
+                let c2 = (three.clone() * delta.clone() - two.clone() * m0.clone() - m1.clone())
+                    / h.clone();
+                let c3 = (m0.clone() + m1 - two.clone() * delta) / (h.clone() * h.clone());
+                coef.extend([y, m0, c2, c3]);
+            }
+        }
+        let params = &self.params;
+        let last = segs - 1;
+        let work = ts.len().saturating_mul(6 * d + 8);
+        crate::grid::for_each_row(
+            out,
+            BLOCK * d,
+            work,
+            || 0usize,
+            |hint, block, chunk| {
+                for (t, x) in ts[block * BLOCK..].iter().zip(chunk.chunks_exact_mut(d)) {
+                    let k = segment_of(params, last, t, hint);
+                    let s = t.clone() - params[k].clone();
+                    for (o, c) in x.iter_mut().zip(coef[k * d * 4..].chunks_exact(4)) {
+                        *o = c[0].clone()
+                            + s.clone()
+                                * (c[1].clone()
+                                    + s.clone() * (c[2].clone() + s.clone() * c[3].clone()));
+                    }
+                }
+            },
+        );
+    }
+}
+
+/// The segment `k ≤ last` of `t` that [`CubicSpline`]'s `locate` finds (the largest `k` with
+/// `params[k] ≤ t`, at least 0 and at most `last`): the segment `hint` of the previous
+/// parameter or the next one if it holds `t`, else a binary search; `hint` is updated.
+#[inline]
+fn segment_of<T: Scalar>(params: &[T], last: usize, t: &T, hint: &mut usize) -> usize {
+    let holds =
+        |k: usize| k <= last && (k == 0 || params[k] <= *t) && (k == last || *t < params[k + 1]);
+    let k = if holds(*hint) {
+        *hint
+    } else if holds(*hint + 1) {
+        *hint + 1
+    } else {
+        params
+            .partition_point(|p| p <= t)
+            .saturating_sub(1)
+            .min(last)
+    };
+    *hint = k;
+    k
 }
 
 impl<T: Scalar> Curve<T> for CubicSpline<T> {
@@ -465,5 +567,9 @@ impl<T: Scalar> Curve<T> for CubicSpline<T> {
     fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
         let [_, d, _] = self.eval_with_derivatives(t);
         Some(d)
+    }
+    /// [`CubicSpline::eval_many_into`]: segment coefficients once, no allocation per point.
+    fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
+        CubicSpline::eval_many_into(self, ts, out)
     }
 }

@@ -2,6 +2,9 @@
 //! caller-given buffer allocates only the basis rows and per-line samples (`O(N·(m+n))` bytes,
 //! a number of allocations that does not grow with the grid), never anything per point.
 //!
+//! B-spline, NURBS and interpolating-spline batches likewise: basis rows and spans per grid
+//! line, segment coefficients, a scratch per block of rows.
+//!
 //! All cases run in one test function, so that no other test thread allocates meanwhile.
 
 use std::alloc::{GlobalAlloc, Layout, System};
@@ -9,9 +12,12 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 use cagd::bernstein::bernstein_all;
 use cagd::bezier::{BezierCurve, BezierPatch};
+use cagd::bspline::{BSplineCurve, BSplineSurface, KnotVector};
 use cagd::coons::CoonsPatch;
 use cagd::gordon::GordonSurface;
-use cagd::Edge;
+use cagd::nurbs::{NurbsCurve, NurbsSurface};
+use cagd::spline::{CubicSpline, EndCondition};
+use cagd::{Curve, Edge, Surface};
 use nalgebra::DMatrix;
 
 struct Counting;
@@ -176,5 +182,87 @@ fn grid_evaluation_allocates_basis_rows_not_points() {
             bytes <= F64 * size * 60 + 64 * 1024,
             "Gordon {size}²: {bytes}"
         );
+    }
+
+    splines_allocate_per_line_not_per_point();
+}
+
+/// B-spline, NURBS and interpolating-spline batches (called from the one test above, so that
+/// no other test thread allocates meanwhile): basis rows and spans per grid line, the repacked
+/// net, segment coefficients, and a scratch per block of rows — nothing per point. The number
+/// of blocks is at most four per thread of the pool.
+fn splines_allocate_per_line_not_per_point() {
+    let blocks = 4 * std::thread::available_parallelism().map_or(1, |n| n.get()) + 1;
+    let k = |p: usize, n: usize| KnotVector::<f64>::clamped_uniform(p, n).unwrap();
+    let coords: Vec<DMatrix<f64>> = (0..3)
+        .map(|c| DMatrix::from_fn(10, 10, |i, j| ((i * 7 + j * 3 + c) % 5) as f64 - 2.0))
+        .collect();
+    let ku = k(3, 10).as_slice().to_vec();
+    let s = BSplineSurface::new(3, 3, ku.clone(), ku.clone(), coords.clone()).unwrap();
+    let w = DMatrix::from_fn(10, 10, |i, j| 1.0 + ((i + j) % 3) as f64 / 2.0);
+    let n = NurbsSurface::new(3, 3, ku.clone(), ku.clone(), coords, w).unwrap();
+    for (name, surface) in [
+        ("B-spline", &s as &dyn Surface),
+        ("NURBS", &n as &dyn Surface),
+    ] {
+        let mut seen = Vec::new();
+        for size in [10, 40, 200, 1000] {
+            let ts = cagd::linspace(0.0, 1.0, size);
+            let mut out = vec![0.0; size * size * 3];
+            let (allocs, bytes) = count(|| surface.eval_grid_into(&ts, &ts, &mut out).unwrap());
+            // Basis rows and spans of u and v (4 + 4 numbers per line), the net (300), the
+            // runs of v in one span; per block the row's curve (10·4) and, for NURBS, one
+            // homogeneous row (4 per point of the row).
+            let per_block = 40 + 4 * size;
+            assert!(
+                allocs <= 24 + 2 * blocks,
+                "{name} {size}²: {allocs} allocations"
+            );
+            assert!(
+                bytes <= F64 * (size * 16 + 300 + blocks * per_block) + 8192,
+                "{name} {size}²: {bytes} bytes"
+            );
+            seen.push((size, allocs, bytes));
+        }
+        println!("{name} bicubic 10×10: (N, allocations, bytes) = {seen:?}");
+        let (small, large) = (seen[0], seen[3]);
+        assert!(large.1 <= small.1 + 2 * blocks, "{seen:?}");
+    }
+
+    // 10⁶ points of a cubic B-spline / NURBS curve and of an interpolating spline.
+    let control = DMatrix::from_fn(3, 10, |c, i| ((i * 5 + c) % 7) as f64);
+    let c = BSplineCurve::new(3, ku.clone(), control.clone()).unwrap();
+    let r = NurbsCurve::new(
+        3,
+        ku,
+        control.clone(),
+        (0..10).map(|i| 1.0 + i as f64 / 9.0).collect(),
+    )
+    .unwrap();
+    let sp = CubicSpline::interpolate(control, EndCondition::Natural).unwrap();
+    for (name, curve, ts) in [
+        (
+            "B-spline",
+            &c as &dyn Curve,
+            cagd::linspace(0.0, 1.0, 1_000_000),
+        ),
+        (
+            "NURBS",
+            &r as &dyn Curve,
+            cagd::linspace(0.0, 1.0, 1_000_000),
+        ),
+        (
+            "spline",
+            &sp as &dyn Curve,
+            cagd::linspace(-1.0, 10.0, 1_000_000),
+        ),
+    ] {
+        let mut out = vec![0.0; ts.len() * 3];
+        let (allocs, bytes) = count(|| curve.eval_many_into(&ts, &mut out).unwrap());
+        println!("{name} curve 10⁶ points: {allocs} allocations, {bytes} bytes");
+        // Four scratch vectors of p + 1 or d + 1 numbers per block; the spline's segment
+        // coefficients (9 segments · 3 coordinates · 4).
+        assert!(allocs <= 8 + 4 * blocks, "{name}: {allocs}");
+        assert!(bytes <= F64 * (108 + 16 * blocks) + 8192, "{name}: {bytes}");
     }
 }

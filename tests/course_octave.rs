@@ -15,7 +15,7 @@ use cagd::interpolation::{LagrangePolynomial, PiecewiseLinear};
 use cagd::nurbs::{NurbsCurve, NurbsSurface};
 use cagd::octave::Workspace;
 use cagd::spline::{CubicSpline, EndCondition};
-use cagd::Surface;
+use cagd::{Curve, Surface};
 use common::{array, assert_close, expected, matrix, report_worst, row};
 use nalgebra::{DMatrix, DVector};
 use ndarray::{Array2, Array3, Axis};
@@ -78,6 +78,14 @@ fn bspline_curves_match_octave_nurbs() {
         close(
             &format!("P_{key}"),
             &nd(&ours),
+            &matrix(&ws, &format!("P_{key}")),
+        );
+        // The batch path of the Curve trait (clamping, no allocation per point).
+        let mut batch = vec![f64::NAN; u.len() * ours.nrows()];
+        Curve::eval_many_into(&curve, &u, &mut batch).unwrap();
+        close(
+            &format!("P_{key} (eval_many_into)"),
+            &nd(&DMatrix::from_column_slice(ours.nrows(), u.len(), &batch)),
             &matrix(&ws, &format!("P_{key}")),
         );
         let by_de_boor = DMatrix::from_fn(ours.nrows(), u.len(), |r, k| {
@@ -147,13 +155,41 @@ fn bspline_surfaces_match_octave_nurbs() {
             &row(&ws, &format!("gu_{key}")),
             &row(&ws, &format!("gv_{key}")),
         );
-        close(
-            &format!("S_{key}"),
-            &grid,
-            &octave_grid(&ws, &format!("S_{key}")),
-        );
+        let expected = octave_grid(&ws, &format!("S_{key}"));
+        close(&format!("S_{key} (eval_grid)"), &grid, &expected);
+        check_grid_paths(&s, &format!("S_{key}"), &ws, key, &expected);
     }
     report_worst("bspline surfaces");
+}
+
+/// The grid `gu_<key> × gv_<key>` of `s` by `eval_grid_into` and point by point with `eval`,
+/// both against Octave's `expected`.
+fn check_grid_paths<S: Surface>(
+    s: &S,
+    name: &str,
+    ws: &Workspace,
+    key: &str,
+    expected: &Array3<f64>,
+) {
+    let (gu, gv) = (row(ws, &format!("gu_{key}")), row(ws, &format!("gv_{key}")));
+    check_grid_paths_at(s, name, &gu, &gv, expected);
+}
+
+fn check_grid_paths_at<S: Surface>(
+    s: &S,
+    name: &str,
+    gu: &[f64],
+    gv: &[f64],
+    expected: &Array3<f64>,
+) {
+    let d = s.dim();
+    let mut out = vec![f64::NAN; gu.len() * gv.len() * d];
+    s.eval_grid_into(gu, gv, &mut out).unwrap();
+    let into = Array3::from_shape_vec((gu.len(), gv.len(), d), out).unwrap();
+    close(&format!("{name} (eval_grid_into)"), &into, expected);
+    let per_point =
+        Array3::from_shape_fn((gu.len(), gv.len(), d), |(a, b, k)| s.eval(gu[a], gv[b])[k]);
+    close(&format!("{name} (eval per point)"), &per_point, expected);
 }
 
 #[test]
@@ -169,6 +205,13 @@ fn nurbs_curves_match_octave_nurbs() {
         close(
             &format!("P_{key}"),
             &nd(&pts),
+            &matrix(&ws, &format!("P_{key}")),
+        );
+        let mut batch = vec![f64::NAN; u.len() * 3];
+        c.try_eval_many_into(&u, &mut batch).unwrap();
+        close(
+            &format!("P_{key} (try_eval_many_into)"),
+            &nd(&DMatrix::from_column_slice(3, u.len(), &batch)),
             &matrix(&ws, &format!("P_{key}")),
         );
         let tan = DMatrix::from_fn(3, u.len(), |r, k| c.try_eval_derivative(u[k]).unwrap()[r]);
@@ -212,6 +255,13 @@ fn circles_match_nrbcirc() {
             &nd(&pts),
             &matrix(&ws, &format!("circ_{k}_P")),
         );
+        let mut batch = vec![f64::NAN; u.len() * 3];
+        Curve::eval_many_into(&c, &u, &mut batch).unwrap();
+        close(
+            &format!("circ_{k}_P (eval_many_into)"),
+            &nd(&DMatrix::from_column_slice(3, u.len(), &batch)),
+            &matrix(&ws, &format!("circ_{k}_P")),
+        );
         for j in 0..u.len() {
             let x = pts.column(j);
             let r = ((x[0] - a[1]).powi(2) + (x[1] - a[2]).powi(2)).sqrt();
@@ -235,7 +285,15 @@ fn nurbs_surface_and_ruled_surface_match_octave_nurbs() {
     let s =
         NurbsSurface::from_homogeneous(BSplineSurface::new(p, q, ku, kv, coords).unwrap()).unwrap();
     let grid = s.eval_grid(&row(&ws, "srf_gu"), &row(&ws, "srf_gv"));
-    close("srf_S", &grid, &octave_grid(&ws, "srf_S"));
+    let expected = octave_grid(&ws, "srf_S");
+    close("srf_S", &grid, &expected);
+    check_grid_paths_at(
+        &s,
+        "srf_S",
+        &row(&ws, "srf_gu"),
+        &row(&ws, "srf_gv"),
+        &expected,
+    );
 
     let curve = |h: &str, k: &str| {
         let h = dm(&matrix(&ws, h));
@@ -246,7 +304,15 @@ fn nurbs_surface_and_ruled_surface_match_octave_nurbs() {
     let ruled =
         NurbsSurface::ruled(&curve("rul_H1", "rul_k1"), &curve("rul_H2", "rul_k2")).unwrap();
     let grid = ruled.eval_grid(&row(&ws, "rul_gu"), &row(&ws, "rul_gv"));
-    close("rul_S", &grid, &octave_grid(&ws, "rul_S"));
+    let expected = octave_grid(&ws, "rul_S");
+    close("rul_S", &grid, &expected);
+    check_grid_paths_at(
+        &ruled,
+        "rul_S",
+        &row(&ws, "rul_gu"),
+        &row(&ws, "rul_gv"),
+        &expected,
+    );
     report_worst("nurbs surfaces");
 }
 
@@ -276,6 +342,20 @@ fn splines_match_octave_spline_and_csape() {
         close(
             &format!("V_{key}"),
             &nd(&s.eval_many(&e)),
+            &matrix(&ws, &format!("V_{key}")),
+        );
+        let d = s.dim();
+        let mut batch = vec![f64::NAN; e.len() * d];
+        Curve::eval_many_into(&s, &e, &mut batch).unwrap();
+        close(
+            &format!("V_{key} (eval_many_into)"),
+            &nd(&DMatrix::from_column_slice(d, e.len(), &batch)),
+            &matrix(&ws, &format!("V_{key}")),
+        );
+        let per_point = DMatrix::from_fn(d, e.len(), |r, k| s.eval(e[k])[r]);
+        close(
+            &format!("V_{key} (eval per point)"),
+            &nd(&per_point),
             &matrix(&ws, &format!("V_{key}")),
         );
     }

@@ -6,6 +6,8 @@
 %   cubic curve    (0,0,0), (1,2,1), (3,-1,2), (4,1,0)
 %   Coons          the four boundary curves of the patch, sampled at linspace(0,1,N)
 %   Gordon         the 5 x 5 network of its isoparametric cubics at 0, 1/4, 1/2, 3/4, 1
+%   B-spline       bicubic over the 10 x 10 net (i/9, j/9, mod(7i+3j, 5)/4 - 1/2), clamped
+%                  uniform knots 0 0 0 0 1/7 ... 6/7 1 1 1 1
 % Functions: the fixed thesis functions (octave_ref/fixed: ploskevB, krpaCoons, krpaGordon)
 % and octave-nurbs nrbeval.  Sampling the curves for krpaCoons / krpaGordon is not timed.
 % Run from the repository root: octave --no-gui --quiet bench/octave/timings.m
@@ -70,6 +72,20 @@ end
 for N = [100 1000]
   t = linspace(0, 1, N);
   report(sprintf('patch_bicubic_N%d', N), 'nrbeval', best_of(@() nrbeval(srf, {t, t}), 3));
+end
+% B-spline surface: bicubic over the 10 x 10 net P(i,j) = (i/9, j/9, mod(7i+3j, 5)/4 - 1/2),
+% clamped uniform knots (as cagd-bench bspline_surface(3, 10)).
+kn = [0 0 0 0 (1:6)/7 1 1 1 1];
+bcoefs = ones(4, 10, 10);
+for i = 0:9
+  for j = 0:9
+    bcoefs(1:3, i+1, j+1) = [i/9; j/9; mod(7*i + 3*j, 5)/4 - 0.5];
+  end
+end
+bsrf = nrbmak(bcoefs, {kn, kn});
+for N = [100 1000]
+  t = linspace(0, 1, N);
+  report(sprintf('bspline_bicubic_N%d', N), 'nrbeval', best_of(@() nrbeval(bsrf, {t, t}), 3));
 end
 for K = [10000 1000000]
   t = linspace(0, 1, K);

@@ -258,3 +258,21 @@ pub fn accuracy_study(degrees: &[usize], curves: usize, params: usize) -> Vec<Ac
         })
         .collect()
 }
+
+/// The B-spline surface of degree `(p, p)` over the `n × n` net
+/// `P_{i,j} = (i/(n−1), j/(n−1), ((7i + 3j) mod 5)/4 − 1/2)` (the formula of [`patch`] on a
+/// larger net) with clamped uniform knots on `[0, 1]` in both directions (for `p = 3`,
+/// `n = 10`: `0 0 0 0 1/7 … 6/7 1 1 1 1`, what `compare_octave.sh` builds for `nrbeval`).
+pub fn bspline_surface(p: usize, n: usize) -> cagd::bspline::BSplineSurface {
+    let knots = cagd::bspline::KnotVector::<f64>::clamped_uniform(p, n)
+        .expect("n ≥ p + 1")
+        .as_slice()
+        .to_vec();
+    let f = |i: usize| i as f64 / (n - 1) as f64;
+    let coords = vec![
+        DMatrix::from_fn(n, n, |i, _| f(i)),
+        DMatrix::from_fn(n, n, |_, j| f(j)),
+        DMatrix::from_fn(n, n, |i, j| ((7 * i + 3 * j) % 5) as f64 / 4.0 - 0.5),
+    ];
+    cagd::bspline::BSplineSurface::new(p, p, knots.clone(), knots, coords).expect("valid surface")
+}

@@ -23,25 +23,38 @@ use crate::scalar::Scalar;
 /// ```
 pub fn find_span<T: Scalar>(p: usize, n_control: usize, knots: &[T], u: &T) -> Result<usize> {
     let (lo, hi) = (&knots[p], &knots[n_control]);
-    if !(u.is_finite_value() && lo <= u && u <= hi) {
-        return Err(Error::ParameterOutOfRange {
-            what: "B-spline parameter",
-            value: u.to_f64(),
-            min: lo.to_f64(),
-            max: hi.to_f64(),
-        });
-    }
+    check_in_domain(u, lo, hi)?;
     if u == hi {
-        // The last span of positive length ending at u_n.
-        let mut s = n_control - 1;
-        while s > p && knots[s] == knots[s + 1] {
-            s -= 1;
-        }
-        return Ok(s);
+        return Ok(last_span(p, n_control, knots));
     }
     // Largest s with u_s <= u, within [p, n_control − 1].
     let above = knots[..=n_control].partition_point(|k| k <= u);
     Ok((above - 1).clamp(p, n_control - 1))
+}
+
+/// The span [`find_span`] gives for the right end `u_{n_control}` of the domain: the last span
+/// of positive length ending there.
+pub(crate) fn last_span<T: Scalar>(p: usize, n_control: usize, knots: &[T]) -> usize {
+    let mut s = n_control - 1;
+    while s > p && knots[s] == knots[s + 1] {
+        s -= 1;
+    }
+    s
+}
+
+/// `Ok` if `lo ≤ u ≤ hi` (so not NaN), else the [`Error::ParameterOutOfRange`] that
+/// [`find_span`] reports.
+pub(crate) fn check_in_domain<T: Scalar>(u: &T, lo: &T, hi: &T) -> Result<()> {
+    if u.is_finite_value() && lo <= u && u <= hi {
+        Ok(())
+    } else {
+        Err(Error::ParameterOutOfRange {
+            what: "B-spline parameter",
+            value: u.to_f64(),
+            min: lo.to_f64(),
+            max: hi.to_f64(),
+        })
+    }
 }
 
 /// The non-zero basis functions `N_{s−p,p}(u), …, N_{s,p}(u)` on the span `s`
@@ -60,6 +73,24 @@ pub fn basis_functions<T: Scalar>(p: usize, knots: &[T], span: usize, u: &T) -> 
     let mut n = vec![T::zero(); p + 1];
     let mut left = vec![T::zero(); p + 1];
     let mut right = vec![T::zero(); p + 1];
+    basis_functions_into(p, knots, span, u, &mut n, &mut left, &mut right);
+    n
+}
+
+/// [`basis_functions`] into caller-given buffers: `n` receives `N_{s−p,p}(u), …, N_{s,p}(u)`;
+/// `left` and `right` are scratch. All three must hold at least `p + 1` entries. The same
+/// operations in the same order as [`basis_functions`] (so the same values, bit for bit), with
+/// no allocation: the batch evaluations of B-spline and NURBS curves and surfaces call it once
+/// per parameter.
+pub(crate) fn basis_functions_into<T: Scalar>(
+    p: usize,
+    knots: &[T],
+    span: usize,
+    u: &T,
+    n: &mut [T],
+    left: &mut [T],
+    right: &mut [T],
+) {
     n[0] = T::one();
     for j in 1..=p {
         left[j] = u.clone() - knots[span + 1 - j].clone();
@@ -72,7 +103,6 @@ pub fn basis_functions<T: Scalar>(p: usize, knots: &[T], span: usize, u: &T) -> 
         }
         n[j] = saved;
     }
-    n
 }
 
 /// The basis function `N_{i,p}(u)` by the Cox–de Boor recursion itself:

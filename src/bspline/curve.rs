@@ -2,7 +2,8 @@
 
 use nalgebra::{DMatrix, DVector};
 
-use super::basis::{basis_all, basis_functions, find_span};
+use super::basis::{basis_all, basis_functions, check_in_domain, find_span};
+use super::grid::curve_points_into;
 use super::knots::{check_knots, KnotVector};
 use crate::bezier::BezierCurve;
 use crate::error::{check_finite, Error, Result};
@@ -200,16 +201,70 @@ impl<T: Scalar> BSplineCurve<T> {
         Ok(d.swap_remove(p))
     }
 
-    /// The points at the parameters `us`, one per column (`d × us.len()`).
+    /// The points at the parameters `us`, one per column (`d × us.len()`), by
+    /// [`try_eval_many_into`](Self::try_eval_many_into) (the values of
+    /// [`try_eval`](Self::try_eval), bit for bit).
     ///
     /// # Errors
     /// [`Error::ParameterOutOfRange`] for a parameter outside the domain.
     pub fn eval_many(&self, us: &[T]) -> Result<DMatrix<T>> {
         let mut out = DMatrix::from_element(self.dim(), us.len(), T::zero());
-        for (k, u) in us.iter().enumerate() {
-            out.set_column(k, &self.try_eval(u.clone())?);
-        }
+        self.try_eval_many_into(us, out.as_mut_slice())?;
         Ok(out)
+    }
+
+    /// The points at all parameters `us` written into `out`, one after the other:
+    /// `out[k·d + c]` is coordinate `c` of `C(us[k])` (`us.len() × d` row-major, which is the
+    /// storage of the `d × us.len()` matrix of [`eval_many`](Self::eval_many); see
+    /// [`crate::grid`]). As [`Curve::eval`], a parameter outside the domain `[u_p, u_n]` is
+    /// clamped to it and a NaN parameter gives a point of NaNs.
+    ///
+    /// Per parameter: the knot span `s` (the previous parameter's span or the next one is tried
+    /// first, so sorted parameters cost `O(1)`; otherwise a binary search), the `p + 1`
+    /// non-zero basis values `N_{s−p,p}(u), …, N_{s,p}(u)` by the triangular scheme of
+    /// [`basis_functions`] (non-negative terms), then `Σ_{i=0}^{p} N_{s−p+i,p}(u) P_{s−p+i}`:
+    /// `O(p² + p·d)` operations, the same ones as [`try_eval`](Self::try_eval), so the same
+    /// values bit for bit. Nothing is allocated per point (one scratch per block of points)
+    /// and long batches are split over all cores.
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · d`.
+    ///
+    /// ```
+    /// use cagd::bspline::BSplineCurve;
+    /// use nalgebra::DMatrix;
+    /// let p = DMatrix::from_column_slice(2, 4, &[0.0, 0.0, 1.0, 2.0, 3.0, 2.0, 4.0, 0.0]);
+    /// let c = BSplineCurve::new(2, vec![0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0], p)?;
+    /// let mut out = [0.0; 6];
+    /// c.eval_many_into(&[0.0, 0.5, 7.0], &mut out)?; // 7 is clamped to 1
+    /// assert_eq!(out, [0.0, 0.0, 2.0, 2.0, 4.0, 0.0]);
+    /// assert!(c.eval_many_into(&[0.5], &mut out).is_err());
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn eval_many_into(&self, us: &[T], out: &mut [T]) -> Result<()> {
+        let d = self.dim();
+        let len = crate::grid::grid_len("B-spline curve points", &[us.len(), d])?;
+        crate::grid::check_len("B-spline curve point buffer", len, out)?;
+        let (p, knots) = (self.degree, self.knots.as_slice());
+        curve_points_into(p, knots, self.control.as_slice(), d, false, us, out);
+        Ok(())
+    }
+
+    /// [`eval_many_into`](Self::eval_many_into) for parameters that must lie in the domain,
+    /// as [`try_eval`](Self::try_eval): nothing is written unless all do.
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · d`;
+    /// [`Error::ParameterOutOfRange`] for the first parameter outside the domain (or NaN).
+    pub fn try_eval_many_into(&self, us: &[T], out: &mut [T]) -> Result<()> {
+        let d = self.dim();
+        let len = crate::grid::grid_len("B-spline curve points", &[us.len(), d])?;
+        crate::grid::check_len("B-spline curve point buffer", len, out)?;
+        let (lo, hi) = self.domain();
+        for u in us {
+            check_in_domain(u, &lo, &hi)?;
+        }
+        self.eval_many_into(us, out)
     }
 
     /// The derivative curve `C'(u) = Σ Q_i N_{i,p−1}(u)` with
@@ -411,6 +466,11 @@ impl<T: Scalar> Curve<T> for BSplineCurve<T> {
     fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
         let (lo, hi) = self.domain();
         self.try_eval_derivative(clamp(t, &lo, &hi)).ok()
+    }
+
+    /// [`BSplineCurve::eval_many_into`]: span and basis per parameter, no allocation per point.
+    fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
+        BSplineCurve::eval_many_into(self, ts, out)
     }
 }
 

@@ -10,6 +10,7 @@
 
 mod basis;
 mod curve;
+mod grid;
 mod knots;
 mod surface;
 
@@ -18,4 +19,6 @@ pub use curve::BSplineCurve;
 pub use knots::KnotVector;
 pub use surface::BSplineSurface;
 
+pub(crate) use basis::check_in_domain;
 pub(crate) use curve::{clamp, eval_clamped};
+pub(crate) use grid::curve_points_into;

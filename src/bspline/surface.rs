@@ -1,9 +1,11 @@
 //! Tensor-product B-spline surfaces (seed 004 "B-spline plocha", seed 001).
 
 use nalgebra::{DMatrix, DVector};
+use ndarray::Array3;
 
 use super::basis::{basis_functions, find_span};
 use super::curve::clamp;
+use super::grid::{surface_grid_into, Net, SpanFinder};
 use super::knots::{check_knots, KnotVector};
 use crate::error::{check_finite, Error, Result};
 use crate::param::Surface;
@@ -141,6 +143,92 @@ impl<T: Scalar> BSplineSurface<T> {
             })
         }))
     }
+
+    /// The surface on the grid `us × vs` written into `out`, row by row:
+    /// `out[(a·nv + b)·d + c]` is coordinate `c` of `S(us[a], vs[b])` (`(nu, nv, d)` row-major,
+    /// the memory layout of [`Surface::eval_grid`]; see [`crate::grid`]). As
+    /// [`Surface::eval`], parameters outside the domain are clamped to it and a NaN parameter
+    /// gives points of NaNs.
+    ///
+    /// The algorithm: the knot span and the `p + 1` (`q + 1`) non-zero basis values of every
+    /// `u` (`v`) are computed once (`O(N·(p + q))` memory for an `N × N` grid, binary search
+    /// for a span unless it is the previous one or the next). For each grid row `u_a` in span
+    /// `s`, the net is contracted with the `u` basis,
+    /// `c_j = Σ_{i=0}^{p} N_{s−p+i,p}(u_a) P_{s−p+i,j}` for `j = 0, …, nv − 1` (the control
+    /// points of the B-spline curve `v ↦ S(u_a, v)`, `(p + 1)·nv·d` operations per row); then
+    /// each point is `Σ_{l=0}^{q} N_{t−q+l,q}(v_b) c_{t−q+l}` (`t` the span of `v_b`):
+    /// `(q + 1)·d` multiply-adds per point, `O(p + q)` per point instead of the `O(p·q)` of
+    /// [`try_eval`](Self::try_eval). Nothing is allocated per point, and large grids are split
+    /// by rows over all cores.
+    ///
+    /// Accuracy: the sums run along `u` first ([`try_eval`](Self::try_eval) runs along `v`
+    /// first), with non-negative basis values, so the two agree to a few units of
+    /// `(p + q) ε · max |P_{i,j}|` in `f64` and exactly for rationals.
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · vs.len() · d`.
+    ///
+    /// ```
+    /// use cagd::bspline::BSplineSurface;
+    /// use nalgebra::DMatrix;
+    /// // z = u·v as a bilinear B-spline surface, evaluated on a 2 × 3 grid.
+    /// let z = DMatrix::from_row_slice(2, 2, &[0.0, 0.0, 0.0, 1.0]);
+    /// let k = vec![0.0, 0.0, 1.0, 1.0];
+    /// let s = BSplineSurface::new(1, 1, k.clone(), k, vec![z])?;
+    /// let mut out = [0.0; 6];
+    /// s.eval_grid_into(&[0.5, 1.0], &[0.0, 0.5, 2.0], &mut out)?; // v = 2 is clamped to 1
+    /// assert_eq!(out, [0.0, 0.25, 0.5, 0.0, 0.5, 1.0]);
+    /// assert!(s.eval_grid_into(&[0.5], &[0.5], &mut [0.0; 2]).is_err());
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn eval_grid_into(&self, us: &[T], vs: &[T], out: &mut [T]) -> Result<()> {
+        let d = self.coords.len();
+        let len = crate::grid::grid_len("B-spline surface grid", &[us.len(), vs.len(), d])?;
+        crate::grid::check_len("B-spline surface grid buffer", len, out)?;
+        self.fill_grid(us, vs, out, false);
+        Ok(())
+    }
+
+    /// [`eval_grid_into`](Self::eval_grid_into) after the length check; with `project` the
+    /// last coordinate is a weight and the points written are the others divided by it
+    /// (`d − 1` numbers per point: the NURBS surface of this homogeneous one).
+    pub(crate) fn fill_grid(&self, us: &[T], vs: &[T], out: &mut [T], project: bool) {
+        let (p, q) = self.degrees;
+        let (nu, nv) = self.coords[0].shape();
+        let dh = self.coords.len();
+        let mut net = Vec::with_capacity(nu * nv * dh);
+        for i in 0..nu {
+            for j in 0..nv {
+                net.extend(self.coords.iter().map(|x| x[(i, j)].clone()));
+            }
+        }
+        let net = Net {
+            u: SpanFinder::new(p, nu, self.knots.0.as_slice()),
+            v: SpanFinder::new(q, nv, self.knots.1.as_slice()),
+            net,
+            dh,
+            project,
+        };
+        surface_grid_into(&net, us, vs, out);
+    }
+
+    /// The grid `us × vs` as an array of shape `(us.len(), vs.len(), d)` by
+    /// [`eval_grid_into`](Self::eval_grid_into)'s algorithm (see [`Surface::eval_grid`]).
+    pub(crate) fn grid_array(&self, us: &[T], vs: &[T], d: usize, project: bool) -> Array3<T> {
+        let mut grid = Array3::from_elem((us.len(), vs.len(), d), T::zero());
+        let out = grid
+            .as_slice_mut()
+            .expect("a new array is contiguous in standard order");
+        self.fill_grid(us, vs, out, project);
+        grid
+    }
+}
+
+/// The point of a clamped evaluation that failed: NaN in, NaN out (after clamping only a NaN
+/// parameter is outside the domain).
+pub(crate) fn nan_point<T: Scalar>(dim: usize, u: T, v: T) -> DVector<T> {
+    let nan = if u.is_finite_value() { v } else { u };
+    DVector::from_element(dim, nan)
 }
 
 impl<T: Scalar> Surface<T> for BSplineSurface<T> {
@@ -148,12 +236,21 @@ impl<T: Scalar> Surface<T> for BSplineSurface<T> {
         self.coords.len()
     }
 
-    /// The point at `(u, v)` clamped to the domain (NaN gives NaN).
+    /// The point at `(u, v)` clamped to the domain (a NaN parameter gives a point of NaNs).
     fn eval(&self, u: T, v: T) -> DVector<T> {
         let ((a, b), (c, d)) = self.domain();
         let u = clamp(u, &a, &b);
         let v = clamp(v, &c, &d);
-        self.try_eval(u.clone(), v)
-            .unwrap_or_else(|_| DVector::from_element(self.coords.len(), u))
+        self.try_eval(u.clone(), v.clone())
+            .unwrap_or_else(|_| nan_point(self.coords.len(), u, v))
+    }
+
+    /// The grid by [`BSplineSurface::eval_grid_into`]'s algorithm (`O(p + q)` per point).
+    fn eval_grid(&self, us: &[T], vs: &[T]) -> Array3<T> {
+        self.grid_array(us, vs, self.coords.len(), false)
+    }
+
+    fn eval_grid_into(&self, us: &[T], vs: &[T], out: &mut [T]) -> Result<()> {
+        BSplineSurface::eval_grid_into(self, us, vs, out)
     }
 }

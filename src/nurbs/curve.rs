@@ -3,7 +3,7 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::{check_weights, homogenize};
-use crate::bspline::{clamp, eval_clamped, BSplineCurve};
+use crate::bspline::{check_in_domain, clamp, curve_points_into, eval_clamped, BSplineCurve};
 use crate::error::{Error, Result};
 use crate::param::Curve;
 use crate::scalar::Scalar;
@@ -132,6 +132,65 @@ impl<T: Scalar> NurbsCurve<T> {
     /// [`Error::ParameterOutOfRange`] outside the domain.
     pub fn try_eval(&self, u: T) -> Result<DVector<T>> {
         Ok(project(&self.homogeneous.try_eval(u)?))
+    }
+
+    /// The points at all parameters `us` written into `out`, one after the other:
+    /// `out[k·d + c]` is coordinate `c` of `C(us[k])` (`us.len() × d` row-major; see
+    /// [`crate::grid`]). As [`Curve::eval`], a parameter outside the domain is clamped to it
+    /// and a NaN parameter gives a point of NaNs.
+    ///
+    /// Per parameter the homogeneous point `Σ_i N_{s−p+i,p}(u) (w P, w)_{s−p+i}` is formed as in
+    /// [`BSplineCurve::eval_many_into`] (span, `p + 1` basis values, no allocation per point,
+    /// long batches on all cores) and divided by its weight — the operations of
+    /// [`try_eval`](Self::try_eval), so the same values bit for bit.
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · d`.
+    ///
+    /// ```
+    /// use cagd::nurbs::NurbsCurve;
+    /// let c = NurbsCurve::circle(1.0, &[0.0, 0.0])?;
+    /// let ts = cagd::linspace(0.0, 1.0, 9);
+    /// let mut out = vec![0.0; 9 * 2];
+    /// c.eval_many_into(&ts, &mut out)?;
+    /// for x in out.chunks_exact(2) {
+    ///     assert!((x[0].hypot(x[1]) - 1.0).abs() < 1e-15);
+    /// }
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn eval_many_into(&self, us: &[T], out: &mut [T]) -> Result<()> {
+        let d = self.dim();
+        let len = crate::grid::grid_len("NURBS curve points", &[us.len(), d])?;
+        crate::grid::check_len("NURBS curve point buffer", len, out)?;
+        let h = &self.homogeneous;
+        let knots = h.knots().as_slice();
+        curve_points_into(
+            h.degree(),
+            knots,
+            h.control().as_slice(),
+            d + 1,
+            true,
+            us,
+            out,
+        );
+        Ok(())
+    }
+
+    /// [`eval_many_into`](Self::eval_many_into) for parameters that must lie in the domain,
+    /// as [`try_eval`](Self::try_eval): nothing is written unless all do.
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · d`;
+    /// [`Error::ParameterOutOfRange`] for the first parameter outside the domain (or NaN).
+    pub fn try_eval_many_into(&self, us: &[T], out: &mut [T]) -> Result<()> {
+        let d = self.dim();
+        let len = crate::grid::grid_len("NURBS curve points", &[us.len(), d])?;
+        crate::grid::check_len("NURBS curve point buffer", len, out)?;
+        let (lo, hi) = self.domain();
+        for u in us {
+            check_in_domain(u, &lo, &hi)?;
+        }
+        self.eval_many_into(us, out)
     }
 
     /// The rational basis `R_{0,p}(u), …, R_{n−1,p}(u)` (seed 001 eq. (4)).
@@ -301,5 +360,10 @@ impl<T: Scalar> Curve<T> for NurbsCurve<T> {
     fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
         let (lo, hi) = self.domain();
         self.try_eval_derivative(clamp(t, &lo, &hi)).ok()
+    }
+
+    /// [`NurbsCurve::eval_many_into`]: span and basis per parameter, no allocation per point.
+    fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
+        NurbsCurve::eval_many_into(self, ts, out)
     }
 }

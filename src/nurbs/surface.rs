@@ -157,6 +157,45 @@ impl<T: Scalar> NurbsSurface<T> {
     pub fn try_eval(&self, u: T, v: T) -> Result<DVector<T>> {
         Ok(project(&self.homogeneous.try_eval(u, v)?))
     }
+
+    /// The surface on the grid `us × vs` written into `out`, row by row:
+    /// `out[(a·nv + b)·d + c]` is coordinate `c` of `S(us[a], vs[b])` (`(nu, nv, d)`
+    /// row-major; see [`crate::grid`]). As [`Surface::eval`], parameters outside the domain
+    /// are clamped to it and a NaN parameter gives points of NaNs.
+    ///
+    /// The homogeneous surface (weighted points and weights, `d + 1` coordinates) is evaluated
+    /// row by row as in [`BSplineSurface::eval_grid_into`] (`O(p + q)` per point, nothing
+    /// allocated per point, large grids on all cores), then each point is divided by its
+    /// weight, `S = (Σ w P N N) / (Σ w N N)` — what [`try_eval`](Self::try_eval) does with the
+    /// homogeneous point. The values agree with `try_eval` to a few units of `ε` relative to
+    /// the size of the control points (with weights of moderate ratio), and exactly for
+    /// rationals.
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · vs.len() · d`.
+    ///
+    /// ```
+    /// use cagd::nurbs::NurbsSurface;
+    /// use nalgebra::DMatrix;
+    /// // A bilinear patch with one corner weighted 3: x(u, v) = (u, v) still, on a 2 × 2 grid.
+    /// let x = DMatrix::from_row_slice(2, 2, &[0.0, 0.0, 1.0, 1.0]);
+    /// let y = DMatrix::from_row_slice(2, 2, &[0.0, 1.0, 0.0, 1.0]);
+    /// let w = DMatrix::from_row_slice(2, 2, &[1.0, 1.0, 1.0, 3.0]);
+    /// let k = vec![0.0, 0.0, 1.0, 1.0];
+    /// let s = NurbsSurface::new(1, 1, k.clone(), k, vec![x, y], w)?;
+    /// let mut out = [0.0; 8];
+    /// s.eval_grid_into(&[0.0, 1.0], &[0.0, 1.0], &mut out)?;
+    /// assert_eq!(out, [0.0, 0.0, 0.0, 1.0, 1.0, 0.0, 1.0, 1.0]);
+    /// assert!(s.eval_grid_into(&[0.0], &[0.0], &mut out).is_err());
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn eval_grid_into(&self, us: &[T], vs: &[T], out: &mut [T]) -> Result<()> {
+        let d = self.dim();
+        let len = crate::grid::grid_len("NURBS surface grid", &[us.len(), vs.len(), d])?;
+        crate::grid::check_len("NURBS surface grid buffer", len, out)?;
+        self.homogeneous.fill_grid(us, vs, out, true);
+        Ok(())
+    }
 }
 
 impl<T: Scalar> Surface<T> for NurbsSurface<T> {
@@ -167,5 +206,14 @@ impl<T: Scalar> Surface<T> for NurbsSurface<T> {
     /// The point at `(u, v)` clamped to the domain.
     fn eval(&self, u: T, v: T) -> DVector<T> {
         project(&Surface::eval(&self.homogeneous, u, v))
+    }
+
+    /// The grid by [`NurbsSurface::eval_grid_into`]'s algorithm (`O(p + q)` per point).
+    fn eval_grid(&self, us: &[T], vs: &[T]) -> ndarray::Array3<T> {
+        self.homogeneous.grid_array(us, vs, self.dim(), true)
+    }
+
+    fn eval_grid_into(&self, us: &[T], vs: &[T], out: &mut [T]) -> Result<()> {
+        NurbsSurface::eval_grid_into(self, us, vs, out)
     }
 }

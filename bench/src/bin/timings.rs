@@ -8,7 +8,7 @@ use std::hint::black_box;
 use std::time::{Duration, Instant};
 
 use cagd_bench::{
-    accuracy_study, bicubic_net, coons_of, cubic_control, cubic_curve, gordon_of,
+    accuracy_study, bicubic_net, bspline_surface, coons_of, cubic_control, cubic_curve, gordon_of,
     hand_bicubic_grid, hand_cubic_curve, patch, per_point_grid,
 };
 
@@ -69,6 +69,18 @@ fn main() {
             "hand_bicubic_N1000",
             best_of(|| hand_bicubic_grid(&net, &ts, &ts, black_box(&mut out))),
         );
+    }
+    // B-spline surface: bicubic over a 10 × 10 net (clamped uniform knots, 7 × 7 spans).
+    {
+        let s = bspline_surface(3, 10);
+        for n in [100, 1000] {
+            let ts = cagd::linspace(0.0, 1.0, n);
+            let mut out = vec![0.0; n * n * 3];
+            report(
+                &format!("bspline_bicubic_N{n}"),
+                best_of(|| s.eval_grid_into(&ts, &ts, black_box(&mut out)).unwrap()),
+            );
+        }
     }
     // Degree (10, 10) on 500 × 500, grid path and per-point de Casteljau (on 100 × 100,
     // reported per 500 × 500 grid).
