@@ -299,8 +299,9 @@ fn fuzz_text_format_timeout_empty_matrix_with_huge_row_count() {
 /// 1000-bit rationals over a range of a few hundred elements took a third of a second in a
 /// release build (over 10 s instrumented), while the work meter charged one unit per
 /// element. Exact operations are now charged `(a + b)²` for operands of `a` and `b` 64-bit
-/// words (the gcd behind every exact result), before they are computed, and exact ranges are
-/// charged per element the same way.
+/// words (the gcd behind every exact result) times 32, before they are computed, and exact
+/// ranges are charged per element the same way. The second finding (`1e-85*9-3e-31:3555*2`,
+/// after 3·10⁵ runs with the unweighted `(a + b)²`) set the weight.
 #[test]
 fn fuzz_literal_timeout_large_exact_operands() {
     use num_rational::BigRational;
@@ -322,6 +323,19 @@ fn fuzz_literal_timeout_large_exact_operands() {
         r.map(|m| m.shape())
     );
     assert!(start.elapsed().as_secs() < 5, "{:?}", start.elapsed());
+    // The second artifact: 7 111 exact elements with 283-bit denominators, 48 ms in a release
+    // build per evaluation, is refused at the fuzzing limits and still exact at the defaults.
+    let second = "1e-85*9-3e-31:3555*2";
+    let r = cagd::octave::literal::Expr::parse(second)
+        .unwrap()
+        .eval(&mut Env::<BigRational>::with_limits(small));
+    assert!(
+        matches!(r, Err(LiteralError::TooLarge { ref what, .. }) if what.contains("work")),
+        "{:?}",
+        r.map(|m| m.shape())
+    );
+    let r = cagd::octave::literal::parse_params::<BigRational>(second).unwrap();
+    assert_eq!(r.len(), 7_111);
     // At the default limits a range of 10⁶ elements of 1000-bit numbers is refused before it
     // is built (it would cost about 4·10⁹ units, 16 times the budget) ...
     let start = std::time::Instant::now();

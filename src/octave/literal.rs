@@ -381,9 +381,9 @@ pub trait LiteralScalar: Scalar {
     }
 
     /// The length of the number in 64-bit words (numerator and denominator together, at least
-    /// 1; always 1 for `f64`). An exact operation on operands of `a` and `b` words costs
-    /// about `(a + b)²` double operations — the gcd that reduces every exact result — and is
-    /// charged so against an evaluation's work limit (found by fuzzing: a short expression on
+    /// 1; always 1 for `f64`). An exact operation on operands of `a` and `b` words is
+    /// charged `32 (a + b)²` element operations against an evaluation's work limit — the
+    /// binary gcd that reduces every exact result is quadratic in the length (found by fuzzing: a short expression on
     /// 1000-bit rationals over a range of a few hundred elements took a third of a second
     /// while charged as a few thousand operations).
     fn words(&self) -> u128 {
