@@ -358,3 +358,30 @@ fn fuzz_literal_timeout_large_exact_operands() {
         Err(LiteralError::UnknownVariable { .. })
     ));
 }
+
+/// Fuzzing (`script`, stack overflow after 10⁶ runs): `.5555` followed by 1 300 transposes
+/// built a 1 300-deep tree of transpose nodes (postfix operators did not pass the depth
+/// check), and evaluating it overflowed the stack. Two transposes cancel on real matrices,
+/// so a run of them is now one node or none; the values are Octave's (`x''` is `x`).
+#[test]
+fn fuzz_script_stack_overflow_long_transpose_run() {
+    let handle = std::thread::Builder::new()
+        .stack_size(512 * 1024)
+        .spawn(|| {
+            let artifact = format!(".5555{}#", "'".repeat(1300));
+            let r = cagd::octave::script::run::<f64>(&artifact, Env::new());
+            assert!(r.is_ok(), "{:?}", r.err());
+            for (quotes, odd) in [(20_000, false), (20_001, true)] {
+                let text = format!("[1 2 3]{}", "'".repeat(quotes));
+                let m = parse_matrix::<f64>(&text).unwrap();
+                let expect = if odd { (3, 1) } else { (1, 3) };
+                assert_eq!(m.shape(), expect, "{quotes} quotes");
+                assert_eq!(m[(if odd { 2 } else { 0 }, if odd { 0 } else { 2 })], 3.0);
+            }
+            // Mixed `'` and `.'` count alike.
+            let m = parse_matrix::<f64>("[1 2; 3 4].''.'").unwrap();
+            assert_eq!(m, parse_matrix::<f64>("[1 3; 2 4]").unwrap());
+        })
+        .unwrap();
+    handle.join().expect("no stack overflow");
+}
