@@ -12,9 +12,12 @@
 //! blocks are evaluated with rayon; each block allocates its scratch once. Smaller grids run on
 //! the calling thread and never touch the thread pool.
 //!
-//! **Vectors.** Each block runs inside [`Scalar::vectorized`]: for `f64` with the default
-//! feature `simd`, in code compiled for the processor's widest vector instructions, chosen at
-//! run time; the results are the same as without it.
+//! **Vectors.** The row kernels ([`contract_row`], [`blend_row`], and the curve kernels that
+//! call [`Scalar::vectorized`] themselves) run inside `Scalar::vectorized`: for `f64` with the
+//! default feature `simd`, in code compiled for the processor's widest vector instructions,
+//! chosen at run time; the results are the same as without it. The dispatch is made per row,
+//! around a kernel that is inlined whole (`#[inline(always)]`) into the dispatched code:
+//! a kernel left as a separate function would be compiled for the baseline only.
 
 use crate::error::{Error, Result};
 use crate::scalar::Scalar;
@@ -62,14 +65,11 @@ where
         return;
     }
     let rows = out.len().div_ceil(row_len);
-    // Each block runs in code compiled for the processor's widest vectors (`Scalar::vectorized`).
     let run_block = |first: usize, block: &mut [T]| {
-        T::vectorized(|| {
-            let mut scratch = init();
-            for (r, chunk) in block.chunks_mut(row_len).enumerate() {
-                row(&mut scratch, first + r, chunk);
-            }
-        })
+        let mut scratch = init();
+        for (r, chunk) in block.chunks_mut(row_len).enumerate() {
+            row(&mut scratch, first + r, chunk);
+        }
     };
     #[cfg(feature = "parallel")]
     {
@@ -103,7 +103,7 @@ pub(crate) fn rows_of<T: Scalar>(ts: &[T], width: usize, f: impl Fn(&T, &mut [T]
 /// `out = Σ_j w[j] · x_j`, where `x_j = xs[j·len .. (j+1)·len]`: a weighted sum of `w.len()`
 /// vectors of length `len = out.len()`, accumulated in ascending `j` starting from
 /// `w[0] · x_0`.
-#[inline]
+#[inline(always)]
 pub(crate) fn weighted_sum_into<T: Scalar>(w: &[T], xs: &[T], out: &mut [T]) {
     let len = out.len();
     let mut parts = w.iter().zip(xs.chunks_exact(len));
@@ -127,6 +127,12 @@ pub(crate) fn weighted_sum_into<T: Scalar>(w: &[T], xs: &[T], out: &mut [T]) {
 /// at compile time for `d ≤ 4`, so that the sums stay in registers.
 #[inline]
 pub(crate) fn contract_row<T: Scalar>(ws: &[T], terms: usize, coeffs: &[T], row: &mut [T]) {
+    T::vectorized(|| contract_row_inline(ws, terms, coeffs, row));
+}
+
+/// [`contract_row`] without the dispatch, inlined into its callers' dispatched code.
+#[inline(always)]
+fn contract_row_inline<T: Scalar>(ws: &[T], terms: usize, coeffs: &[T], row: &mut [T]) {
     let d = coeffs.len() / terms.max(1);
     // Common small cases with both sizes fixed at compile time: the coefficients live in
     // registers and the loops unroll. Same arithmetic (and result) as the general kernels.
@@ -151,7 +157,7 @@ pub(crate) fn contract_row<T: Scalar>(ws: &[T], terms: usize, coeffs: &[T], row:
     }
 }
 
-#[inline]
+#[inline(always)]
 fn contract_row_const<T: Scalar, const L: usize, const D: usize>(
     ws: &[T],
     coeffs: &[T],
@@ -172,7 +178,7 @@ fn contract_row_const<T: Scalar, const L: usize, const D: usize>(
     }
 }
 
-#[inline]
+#[inline(always)]
 fn contract_row_fixed<T: Scalar, const D: usize>(
     ws: &[T],
     terms: usize,
@@ -217,7 +223,20 @@ pub(crate) fn blend_row<T: Scalar>(
     xs: &[T],
     row: &mut [T],
 ) {
-    contract_row(ws, terms, coeffs, row);
+    T::vectorized(|| blend_row_inline(ws, terms, coeffs, w, xs, row));
+}
+
+/// [`blend_row`] without the dispatch.
+#[inline(always)]
+fn blend_row_inline<T: Scalar>(
+    ws: &[T],
+    terms: usize,
+    coeffs: &[T],
+    w: &[T],
+    xs: &[T],
+    row: &mut [T],
+) {
+    contract_row_inline(ws, terms, coeffs, row);
     if row.is_empty() {
         return;
     }
@@ -242,7 +261,7 @@ pub(crate) fn blend_row<T: Scalar>(
 
 /// `row[q] += Σ_i w[i] · xs[i·len + q]` (`i` ascending, `len = row.len()`), in one pass;
 /// `xs` must hold `P` whole rows.
-#[inline]
+#[inline(always)]
 fn add_planes<T: Scalar, const P: usize>(w: &[T], xs: &[T], row: &mut [T]) {
     let len = row.len();
     let w: [T; P] = std::array::from_fn(|i| w[i].clone());
