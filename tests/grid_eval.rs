@@ -10,30 +10,8 @@ use cagd::{Curve, Error, FnCurve, Scalar, Surface};
 use nalgebra::{dvector, DMatrix, DVector};
 use num_rational::BigRational as Q;
 
-/// A small deterministic generator (64-bit LCG, top bits), values in `[0, 1)`.
-struct Lcg(u64);
-
-impl Lcg {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn signed(&mut self) -> f64 {
-        2.0 * self.next() - 1.0
-    }
-    /// `count` parameters in `[0, 1]` including both ends.
-    fn params(&mut self, count: usize) -> Vec<f64> {
-        let mut ts: Vec<f64> = (0..count).map(|_| self.next()).collect();
-        ts[0] = 0.0;
-        if count > 1 {
-            ts[count - 1] = 1.0;
-        }
-        ts
-    }
-}
+mod common;
+use common::lcg::Lcg;
 
 fn q(n: i64, d: i64) -> Q {
     <Q as Scalar>::from_ratio(n, d)

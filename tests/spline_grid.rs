@@ -15,29 +15,8 @@ use cagd::{Curve, Error, Scalar, Surface};
 use nalgebra::{DMatrix, DVector};
 use num_rational::BigRational as Q;
 
-/// A small deterministic generator (64-bit LCG, top bits), values in `[0, 1)`.
-struct Lcg(u64);
-
-impl Lcg {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn signed(&mut self) -> f64 {
-        2.0 * self.next() - 1.0
-    }
-    fn below(&mut self, n: usize) -> usize {
-        ((self.next() * n as f64) as usize).min(n - 1)
-    }
-    fn shuffle<T>(&mut self, v: &mut [T]) {
-        for i in (1..v.len()).rev() {
-            v.swap(i, self.below(i + 1));
-        }
-    }
-}
+mod common;
+use common::lcg::Lcg;
 
 /// A random knot vector for `n` control points of degree `p`: clamped or not, non-uniform,
 /// interior knots repeated up to `p + 1` times, domain `[u_p, u_n]` of positive length.

@@ -2,8 +2,10 @@
 //! cubic Bézier curves) on N × N grids, N = 10…2000, next to the bicubic Bézier patch they
 //! come from on the same grids.
 
+mod common;
+use common::config;
+
 use std::hint::black_box;
-use std::time::Duration;
 
 use cagd::Surface;
 use cagd_bench::{coons_of, gordon_of, patch};
@@ -30,13 +32,6 @@ fn coons_gordon(c: &mut Criterion) {
         }
     }
     g.finish();
-}
-
-fn config() -> Criterion {
-    Criterion::default()
-        .measurement_time(Duration::from_secs(2))
-        .warm_up_time(Duration::from_secs(1))
-        .sample_size(10)
 }
 
 criterion_group! { name = benches; config = config(); targets = coons_gordon }

@@ -1,8 +1,10 @@
 //! Bézier curves into a buffer: scaling in the number of points (cubic, 10…10⁶) and in the
 //! degree (1…20, 10⁵ points), with per-point de Casteljau for comparison.
 
+mod common;
+use common::config;
+
 use std::hint::black_box;
-use std::time::Duration;
 
 use cagd_bench::{cubic_curve, curve_of_degree};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
@@ -43,13 +45,6 @@ fn degree_scaling(c: &mut Criterion) {
         });
     }
     g.finish();
-}
-
-fn config() -> Criterion {
-    Criterion::default()
-        .measurement_time(Duration::from_secs(2))
-        .warm_up_time(Duration::from_secs(1))
-        .sample_size(10)
 }
 
 criterion_group! { name = benches; config = config(); targets = points_scaling, degree_scaling }

@@ -1,8 +1,10 @@
 //! Lagrange bases (first barycentric form) for 2…21 uniform nodes at 10⁴ parameters: `O(m)`
 //! per parameter, into one buffer.
 
+mod common;
+use common::config;
+
 use std::hint::black_box;
-use std::time::Duration;
 
 use cagd::lagrange::{Lagrange, NodePlacement};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
@@ -23,13 +25,6 @@ fn basis_rows(c: &mut Criterion) {
         });
     }
     g.finish();
-}
-
-fn config() -> Criterion {
-    Criterion::default()
-        .measurement_time(Duration::from_secs(2))
-        .warm_up_time(Duration::from_secs(1))
-        .sample_size(10)
 }
 
 criterion_group! { name = benches; config = config(); targets = basis_rows }

@@ -2,8 +2,10 @@
 //! ((m, m), m = 1…20, on 500 × 500: linear in m), and the grid path against per-point tensor
 //! de Casteljau at degree (10, 10).
 
+mod common;
+use common::config;
+
 use std::hint::black_box;
-use std::time::Duration;
 
 use cagd::bezier::BezierPatch;
 use cagd_bench::{patch, per_point_grid};
@@ -56,13 +58,6 @@ fn degree10_vs_de_casteljau(c: &mut Criterion) {
         })
     });
     g.finish();
-}
-
-fn config() -> Criterion {
-    Criterion::default()
-        .measurement_time(Duration::from_secs(2))
-        .warm_up_time(Duration::from_secs(1))
-        .sample_size(10)
 }
 
 criterion_group! { name = benches; config = config(); targets = bicubic_scaling, degree_scaling, degree10_vs_de_casteljau }

@@ -3,8 +3,10 @@
 //! hand-specialised f64 kernel, truck-geometry (`BSplineSurface::subs` / `BSplineCurve::subs`
 //! per point) and curvo (`point_at` per point), all on the same control points.
 
+mod common;
+use common::config;
+
 use std::hint::black_box;
-use std::time::Duration;
 
 use cagd_bench::{
     bicubic_net, cubic_control, cubic_curve, hand_bicubic_grid, hand_cubic_curve, patch,
@@ -144,13 +146,6 @@ fn cubic_curve_1e6(c: &mut Criterion) {
         })
     });
     g.finish();
-}
-
-fn config() -> Criterion {
-    Criterion::default()
-        .measurement_time(Duration::from_secs(2))
-        .warm_up_time(Duration::from_secs(1))
-        .sample_size(10)
 }
 
 criterion_group! { name = benches; config = config(); targets = bicubic_1000, cubic_curve_1e6 }

@@ -5,8 +5,10 @@
 //! group also times the per-point `eval` (span search, basis and a new vector per point) at
 //! one size, for the speed-up.
 
+mod common;
+use common::config;
+
 use std::hint::black_box;
-use std::time::Duration;
 
 use cagd::bspline::{BSplineCurve, BSplineSurface, KnotVector};
 use cagd::nurbs::NurbsSurface;
@@ -155,13 +157,6 @@ fn interpolating_spline_points(c: &mut Criterion) {
         }
     }
     g.finish();
-}
-
-fn config() -> Criterion {
-    Criterion::default()
-        .measurement_time(Duration::from_secs(2))
-        .warm_up_time(Duration::from_secs(1))
-        .sample_size(10)
 }
 
 criterion_group! {

@@ -32,6 +32,7 @@ use cagd::octave::text_format::{read_text_file, Workspace};
 use ndarray::{Array2, Array3, ArrayD, ArrayViewD, Dimension, Ix3};
 
 pub mod bad_input;
+pub mod lcg;
 pub mod thesis_args;
 
 /// Largest accepted distance in units in the last place.
