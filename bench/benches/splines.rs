@@ -71,10 +71,11 @@ fn bspline_curve_points(c: &mut Criterion) {
     g.finish();
 }
 
-fn bspline_surface_grid(c: &mut Criterion) {
-    let s = surface(3, 10);
-    let mut g = c.benchmark_group("bspline_bicubic_10x10_grid");
-    for n in [10, 100, 1000, 2000] {
+/// `eval_grid_into` of `s` on `n × n` grids for every `n` in `sizes`, and per-point `eval` at
+/// `n = 100` for the speed-up.
+fn surface_grid_group(c: &mut Criterion, name: &str, s: &impl Surface, sizes: &[usize]) {
+    let mut g = c.benchmark_group(name);
+    for &n in sizes {
         let ts = cagd::linspace(0.0, 1.0, n);
         let mut out = vec![0.0; n * n * 3];
         g.throughput(Throughput::Elements((n * n) as u64));
@@ -85,7 +86,7 @@ fn bspline_surface_grid(c: &mut Criterion) {
             g.bench_with_input(BenchmarkId::new("eval_per_point", n), &n, |b, _| {
                 b.iter(|| {
                     per_point_grid(&ts, &ts, black_box(&mut out), |u, v| {
-                        let x = Surface::eval(&s, u, v);
+                        let x = s.eval(u, v);
                         [x[0], x[1], x[2]]
                     })
                 })
@@ -93,6 +94,11 @@ fn bspline_surface_grid(c: &mut Criterion) {
         }
     }
     g.finish();
+}
+
+fn bspline_surface_grid(c: &mut Criterion) {
+    let s = surface(3, 10);
+    surface_grid_group(c, "bspline_bicubic_10x10_grid", &s, &[10, 100, 1000, 2000]);
 }
 
 fn bspline_degree_scaling(c: &mut Criterion) {
@@ -113,26 +119,7 @@ fn bspline_degree_scaling(c: &mut Criterion) {
 fn nurbs_surface_grid(c: &mut Criterion) {
     let w = DMatrix::from_fn(10, 10, |i, j| 1.0 + ((i + 2 * j) % 4) as f64 / 3.0);
     let s = NurbsSurface::new(3, 3, knots(3, 10), knots(3, 10), net(10), w).expect("valid");
-    let mut g = c.benchmark_group("nurbs_bicubic_10x10_grid");
-    for n in [100, 1000] {
-        let ts = cagd::linspace(0.0, 1.0, n);
-        let mut out = vec![0.0; n * n * 3];
-        g.throughput(Throughput::Elements((n * n) as u64));
-        g.bench_with_input(BenchmarkId::new("eval_grid_into", n), &n, |b, _| {
-            b.iter(|| s.eval_grid_into(&ts, &ts, black_box(&mut out)).unwrap())
-        });
-        if n == 100 {
-            g.bench_with_input(BenchmarkId::new("eval_per_point", n), &n, |b, _| {
-                b.iter(|| {
-                    per_point_grid(&ts, &ts, black_box(&mut out), |u, v| {
-                        let x = Surface::eval(&s, u, v);
-                        [x[0], x[1], x[2]]
-                    })
-                })
-            });
-        }
-    }
-    g.finish();
+    surface_grid_group(c, "nurbs_bicubic_10x10_grid", &s, &[100, 1000]);
 }
 
 fn interpolating_spline_points(c: &mut Criterion) {
