@@ -65,9 +65,10 @@ pub trait Scalar:
         })
     }
     /// Runs `f`, for `f64` in code compiled for the widest vector instructions the processor
-    /// offers (AVX2, AVX-512), chosen at run time with the feature `simd` (crate `pulp`, a safe
-    /// dispatch: the crate itself stays free of `unsafe`). The grid kernels run inside it, so
-    /// their loops are vectorised four or eight doubles wide instead of SSE2's two.
+    /// offers (on x86-64: AVX2, when present), chosen at run time with the feature `simd`
+    /// (crate `pulp`, a safe dispatch: the crate itself stays free of `unsafe`). The grid
+    /// kernels run inside it, so their loops are vectorised four doubles wide instead of
+    /// SSE2's two. Only code inlined into `f` benefits: the kernels are `#[inline(always)]`.
     ///
     /// The results do not change: Rust never fuses a multiply and an add into an FMA on its
     /// own, and vector adds and multiplies round exactly like scalar ones. The default (and
