@@ -12,7 +12,7 @@
 //! blocks are evaluated with rayon; each block allocates its scratch once. Smaller grids run on
 //! the calling thread and never touch the thread pool.
 //!
-//! **Vectors.** The row kernels ([`contract_row`], [`blend_row`], and the curve kernels that
+//! **Vectors.** The row kernels (`contract_row`, `blend_row`, and the curve kernels that
 //! call [`Scalar::vectorized`] themselves) run inside `Scalar::vectorized`: for `f64` with the
 //! default feature `simd`, in code compiled for the processor's widest vector instructions,
 //! chosen at run time; the results are the same as without it. The dispatch is made per row,
