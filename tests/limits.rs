@@ -221,11 +221,27 @@ fn a_higher_max_work_lets_the_same_command_run() {
     let e = refused_by_work(cagd().args(args).args(["--max-work", "2000000"]), "EXPR");
     assert!(e.contains(": 2008000 exceeds the limit of 2000000 "), "{e}");
     refused_by_work(cagd().env("CAGD_MAX_WORK", "2007999").args(args), "EXPR");
+    // Past the node count, one evaluation is measured: 2005 element results (1000 loads of
+    // u, 999 sums, the matrix and its elements) at each of the 2000 samples.
+    let measured = |limit: &str| {
+        let out = cagd()
+            .args(args)
+            .args(["--max-work", limit])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2));
+        stderr(&out)
+    };
+    let e = measured("2008000");
+    assert!(
+        e.starts_with("cagd: error: EXPR: estimated operations (samples × work of one sample): 4010000 exceeds the limit of 2008000 "),
+        "{e}"
+    );
     let text = succeeds(
         cagd()
             .env("CAGD_MAX_WORK", "2000000")
             .args(args)
-            .args(["--max-work", "2008000"]),
+            .args(["--max-work", "4010000"]),
     );
     // The last point is (1, 0, 1000): a thousand times u = 1.
     let last: Vec<f64> = text
@@ -252,8 +268,8 @@ fn typical_thesis_commands_stay_far_below_the_work_limit() {
         vec!["surface", "[u; v; u-u^2+v]", "--n", "100"],
     ];
     for args in &commands {
-        // With the default limits, and with a limit a thousand times lower.
-        for limit in [None, Some("2000000")] {
+        // With the default limits, and with a limit five hundred times lower.
+        for limit in [None, Some("4000000")] {
             let mut c = cagd();
             c.current_dir(env!("CARGO_MANIFEST_DIR")).args(args);
             if let Some(l) = limit {
@@ -261,5 +277,161 @@ fn typical_thesis_commands_stay_far_below_the_work_limit() {
             }
             assert!(!succeeds(&mut c).is_empty(), "{args:?}");
         }
+    }
+}
+
+/// Random digits `0..=9` as a 1×n row literal (a fixed sequence).
+fn digits(n: usize) -> String {
+    let mut lcg = common::lcg::Lcg(7);
+    let values: Vec<String> = (0..n).map(|_| lcg.below(10).to_string()).collect();
+    format!("[{}]", values.join(" "))
+}
+
+/// Exact arithmetic is weighed by the size its numbers reach (`cagd::limits::exact_op_cost`):
+/// each of these commands runs in about 2–10 s in a release build with `--exact` (measured by
+/// bench/exact_work.sh), and is refused up front at the default limits, naming its
+/// argument; the same command in doubles, where shown, still runs.
+#[test]
+fn exact_work_is_weighed_by_the_size_of_the_numbers() {
+    let row60 = digits(60);
+    let row1000 = digits(1000);
+    let weights: String = format!(
+        "[{}]",
+        (0..60)
+            .map(|i| (1 + i % 3).to_string())
+            .collect::<Vec<_>>()
+            .join(" ")
+    );
+    let net80: String = {
+        let mut lcg = common::lcg::Lcg(11);
+        let rows: Vec<String> = (0..80)
+            .map(|i| {
+                (0..80)
+                    .map(|j| format!("{i} {j} {}", lcg.below(10)))
+                    .collect::<Vec<_>>()
+                    .join(" ")
+            })
+            .collect();
+        format!("[{}]", rows.join("; "))
+    };
+    let coons = with(&["coons"], &PRIMER_4_3);
+    let gordon = with(&["gordon"], &GORDON_D);
+    let bicubic = [&["coons-bicubic"][..], &FLAT_SQUARE, &FLAT_SQUARE_CROSS].concat();
+    // (arguments, the argument named, whether the command also runs in doubles here)
+    let cases: Vec<(Vec<&str>, &str, bool)> = vec![
+        (vec!["bernstein", "--degree", "200"], "--t", true),
+        (
+            vec![
+                "decasteljau",
+                common::thesis_args::PRIMER_2_4,
+                "--n",
+                "100000",
+            ],
+            "--t",
+            false,
+        ),
+        (vec!["derivative", &row60, "--t", "0:0.005:1"], "--t", true),
+        (
+            vec!["bezier-patch", common::thesis_args::NET_3X3, "--n", "300"],
+            "--u/--v",
+            true,
+        ),
+        (
+            vec!["lagrange", "--nodes", "0:0.01:1", "--n", "1001"],
+            "--t",
+            true,
+        ),
+        (
+            vec![
+                "hermite", "--p0", "[0;0]", "--p1", "[1;0]", "--t0", "[1;1]", "--t1", "[1;-1]",
+                "--n", "100000",
+            ],
+            "--t",
+            false,
+        ),
+        (vec!["spline", &row1000], "POINTS", true),
+        (
+            vec!["bspline", &row60, "--degree", "10", "--n", "10001"],
+            "--t",
+            true,
+        ),
+        (
+            vec![
+                "nurbs",
+                &row60,
+                "--weights",
+                &weights,
+                "--degree",
+                "10",
+                "--n",
+                "10001",
+            ],
+            "--t",
+            true,
+        ),
+        (
+            vec!["curve", "[u^20; u^19]", "--n", "1000000"],
+            "EXPR",
+            false,
+        ),
+        (
+            vec!["surface", "[u; v; u.*v]", "--n", "1000"],
+            "EXPR",
+            false,
+        ),
+        (with(&coons, &["--n", "300"]), "--u/--v", true),
+        (with(&bicubic, &["--n", "200"]), "--u/--v", true),
+        (with(&gordon, &["--n", "200"]), "--u/--v", true),
+        (
+            vec!["discrete-coons", &net80, "--mask=-0.25,0.5"],
+            "NET",
+            true,
+        ),
+    ];
+    for (args, argument, in_doubles) in &cases {
+        let out = cagd().args(args).arg("--exact").output().unwrap();
+        let e = stderr(&out);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {e}");
+        assert!(out.stdout.is_empty(), "{args:?}");
+        assert_eq!(e.lines().count(), 1, "{e}");
+        assert!(
+            e.starts_with(&format!("cagd: error: {argument}: estimated operations"))
+                && e.contains("exceeds the limit of 2000000000 (raise it with --max-work"),
+            "{args:?}: {e}"
+        );
+        if *in_doubles {
+            succeeds(cagd().args(args).args(["--format", "csv"]));
+        }
+    }
+}
+
+/// Small exact problems, as students give them, stay well within the default limit: each
+/// runs at a quarter of it.
+#[test]
+fn small_exact_problems_run() {
+    let coons = with(&["coons"], &PRIMER_4_3);
+    let gordon = with(&["gordon"], &GORDON_D);
+    let commands: Vec<Vec<&str>> = vec![
+        vec!["bernstein", "--degree", "20", "--n", "101"],
+        vec![
+            "decasteljau",
+            common::thesis_args::PRIMER_2_4,
+            "--n",
+            "101",
+            "--steps",
+        ],
+        vec!["bezier-patch", common::thesis_args::NET_3X3, "--n", "21"],
+        vec!["lagrange", "--nodes", "0:0.1:1", "--n", "101"],
+        vec!["spline", "[0 0; 2 1; 4 4; 6 0]'", "--end", "closed"],
+        vec!["curve", "[u; u^2; u^3]", "--n", "1001"],
+        with(&coons, &["--n", "21", "--steps"]),
+        with(&gordon, &["--n", "21", "--steps"]),
+    ];
+    for args in &commands {
+        succeeds(
+            cagd()
+                .args(args)
+                .args(["--exact", "--max-work", "500000000"]),
+        );
     }
 }

@@ -385,3 +385,98 @@ fn fuzz_script_stack_overflow_long_transpose_run() {
         .unwrap();
     handle.join().expect("no stack overflow");
 }
+
+/// The command line as the `cli` fuzz target runs it: its smaller limits (fuzz/fuzz_targets/
+/// cli.rs) in the environment, the others removed.
+fn fuzz_cli(args: &[&str]) -> std::process::Output {
+    let mut c = assert_cmd::Command::cargo_bin("cagd").unwrap();
+    for (_, var, _) in cagd::limits::SETTINGS {
+        c.env_remove(var);
+    }
+    for (var, value) in [
+        ("CAGD_MAX_ELEMENTS", "10000"),
+        ("CAGD_MAX_ITERATIONS", "10000"),
+        ("CAGD_MAX_SAMPLES", "1000"),
+        ("CAGD_MAX_GRID_POINTS", "10000"),
+        ("CAGD_MAX_WORK", "5000000"),
+        ("CAGD_MAX_SYSTEM_ENTRIES", "100000"),
+    ] {
+        c.env(var, value);
+    }
+    c.args(args).output().unwrap()
+}
+
+fn refused_by_work(out: &std::process::Output, argument: &str, limit: &str) {
+    let e = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{e}");
+    assert!(out.stdout.is_empty());
+    assert!(
+        e.starts_with(&format!("cagd: error: {argument}: estimated operations: "))
+            && e.contains(&format!("exceeds the limit of {limit} ")),
+        "{e}"
+    );
+}
+
+/// `cli` fuzz target, timeout after 708 882 runs: an exact interpolating spline through the
+/// 2 223 points of `0:2222` (the first number is `0222222222222-222222222222`, zero). The
+/// spline command had no work estimate; its tridiagonal solve builds continuants of about
+/// 4 bits per point: 1.8 s in a release build, over 10 s instrumented, and 6 s through 1 000
+/// random digits. Now refused before the solve, at the fuzz target's limits and at the
+/// defaults; fewer points in doubles, and a short exact spline, still run.
+#[test]
+fn fuzz_cli_timeout_exact_spline_through_many_points() {
+    let points = "[ ; 0222222222222-222222222222:2222]";
+    refused_by_work(
+        &fuzz_cli(&["spline", points, "--exact"]),
+        "POINTS",
+        "5000000",
+    );
+    let mut c = assert_cmd::Command::cargo_bin("cagd").unwrap();
+    for (_, var, _) in cagd::limits::SETTINGS {
+        c.env_remove(var);
+    }
+    let out = c.args(["spline", points, "--exact"]).output().unwrap();
+    refused_by_work(&out, "POINTS", "2000000000");
+    let out = fuzz_cli(&["spline", "[ ; 0:50]", "--format", "csv"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // A short exact spline still runs: the natural spline through 0, 1, 0 has tangents
+    // 3/2, 0, −3/2.
+    let out = fuzz_cli(&["spline", "[0 1 0]", "--exact"]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("3/2") && text.contains("-3/2"), "{text}");
+}
+
+/// `cli` fuzz target, slow unit (11 s instrumented) before that timeout: Bernstein values of
+/// degree 95 at 11 parameters, exactly (0.6 s in a release build; degree 200 takes 5 s,
+/// degree 1000 — within the degree limit — minutes). The estimate counted (n+1)² operations
+/// per parameter as if each cost one `f64` operation; each now weighs
+/// `exact_op_cost(n · (bits(t) + 1))`.
+#[test]
+fn fuzz_cli_slow_exact_bernstein_of_high_degree() {
+    refused_by_work(
+        &fuzz_cli(&["bernstein", "--degree", "95", "--exact"]),
+        "--t",
+        "5000000",
+    );
+    refused_by_work(
+        &fuzz_cli(&[
+            "bernstein",
+            "--degree",
+            "1000",
+            "--exact",
+            "--max-work",
+            "2000000000",
+        ]),
+        "--t",
+        "2000000000",
+    );
+    // In doubles, and exactly at a low degree, the same command runs: B_1^3(1/2) = 3/8.
+    assert!(fuzz_cli(&["bernstein", "--degree", "95"]).status.success());
+    let out = fuzz_cli(&["bernstein", "--degree", "3", "--t", "0.5", "--exact"]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("3/8"), "{text}");
+}

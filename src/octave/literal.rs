@@ -390,6 +390,13 @@ pub trait LiteralScalar: Scalar {
         1
     }
 
+    /// The length of the number in bits, numerator and denominator together (exact numbers;
+    /// 0 for `f64`, whose cost does not depend on the value). Estimates of exact work weigh
+    /// each operation by the size its numbers reach ([`crate::limits::exact_op_cost`]).
+    fn bits(&self) -> u128 {
+        0
+    }
+
     /// The value of a decimal literal (`text` as lexed; `nearest` its nearest double).
     /// `None` if it is not finite in this type.
     fn from_literal(text: &str, nearest: f64) -> Option<Self>;
@@ -500,7 +507,11 @@ impl LiteralScalar for BigRational {
     }
 
     fn words(&self) -> u128 {
-        u128::from((self.numer().bits() + self.denom().bits()).div_ceil(64)).max(1)
+        self.bits().div_ceil(64).max(1)
+    }
+
+    fn bits(&self) -> u128 {
+        u128::from(self.numer().bits() + self.denom().bits())
     }
 
     fn from_literal(text: &str, _nearest: f64) -> Option<Self> {
@@ -965,6 +976,44 @@ impl ParamExpr {
     ) -> Result<DMatrix<T>, LiteralError> {
         let mut local = env.clone();
         self.eval_in(&mut local, bindings)
+    }
+
+    /// The value with the parameters bound as given, and the work its evaluation did: element
+    /// results and matrix-product terms, an exact operation on numbers of `a` and `b` words
+    /// counting `32 (a + b)²` (the measure of an evaluation's own limit). The command line
+    /// evaluates an expression once at its largest parameter this way to estimate what
+    /// sampling it will cost before it starts.
+    ///
+    /// ```
+    /// use cagd::octave::literal::{Env, ParamExpr};
+    /// use num_rational::BigRational;
+    /// let e = ParamExpr::parse("[u; u^2]").unwrap();
+    /// let (_, cheap) = e.eval_metered(&Env::<f64>::new(), &[("u", 0.5)]).unwrap();
+    /// let half = BigRational::new(1.into(), 2.into());
+    /// let (p, exact) = e.eval_metered(&Env::<BigRational>::new(), &[("u", half)]).unwrap();
+    /// assert_eq!(p[(1, 0)], BigRational::new(1.into(), 4.into()));
+    /// assert!(cheap < exact);
+    /// ```
+    ///
+    /// # Errors
+    /// As [`ParamExpr::eval_at`].
+    pub fn eval_metered<T: LiteralScalar>(
+        &self,
+        env: &Env<T>,
+        bindings: &[(&str, T)],
+    ) -> Result<(DMatrix<T>, u128), LiteralError> {
+        let mut local = env.clone();
+        for (name, value) in bindings {
+            local.bind_scalar(name, value.clone());
+        }
+        let mut work: u128 = 0;
+        for (name, e) in &self.prelude {
+            let value = e.eval(&mut local)?;
+            work = work.saturating_add(local.meter.work());
+            local.bind(name, value);
+        }
+        let value = self.expr.eval(&mut local)?;
+        Ok((value, work.saturating_add(local.meter.work())))
     }
 
     fn eval_in<T: LiteralScalar>(

@@ -13,6 +13,7 @@ use crate::octave::literal::{Env, LiteralScalar};
 use crate::plot::{Colour, Figure};
 
 use super::common::*;
+use super::work::{bits, check_work, polynomial_bits, work};
 use super::{prepare_script, Outcome};
 
 #[derive(Debug, Args)]
@@ -45,10 +46,11 @@ pub fn decasteljau<T: LiteralScalar>(cmd: &DeCasteljauCommand) -> Result<Outcome
         "control points b_0..b_n, one per column (or per row with --rows)",
     ))?;
     let ts: Vec<T> = params_or_samples("--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
-    // de Casteljau: (n+1)² operations per coordinate and parameter.
+    // The picture always shows the whole curve over [0, 1], as the thesis's plot3.
+    let dense: Vec<T> = T::linspace(&T::zero(), &T::one(), 101);
     check_work(
         "--t",
-        ts.len() as u128 * curve.dim() as u128 * (curve.degree() as u128 + 1).pow(2),
+        curve_work(&curve, &ts, cmd.steps.steps, plotted(&cmd.plot, &dense)),
     )?;
     let values = curve
         .eval_many(&ts)
@@ -68,8 +70,6 @@ pub fn decasteljau<T: LiteralScalar>(cmd: &DeCasteljauCommand) -> Result<Outcome
     report.push("result", Value::Matrix(values.clone()));
     let mut files = PendingWrites::new();
     if let Some(path) = &cmd.plot.plot {
-        // The picture always shows the whole curve over [0, 1], as the thesis's plot3.
-        let dense: Vec<T> = T::linspace(&T::zero(), &T::one(), 101);
         let line = curve.eval_many(&dense).map_err(lib("--plot", "a curve"))?;
         let mut figure = Figure::new("Bézier curve (de Casteljau)")
             .curve(to_f64(&line), Colour::Blue, "curve")
@@ -85,6 +85,33 @@ pub fn decasteljau<T: LiteralScalar>(cmd: &DeCasteljauCommand) -> Result<Outcome
         files,
         warnings(&cmd.script.script, script.as_ref(), &mut Env::new()),
     )
+}
+
+/// The parameters of a picture, if one is asked for (else none).
+fn plotted<'a, T>(plot: &PlotArgs, params: &'a [T]) -> &'a [T] {
+    if plot.plot.is_some() {
+        params
+    } else {
+        &[]
+    }
+}
+
+/// The work of evaluating `curve` by de Casteljau at `ts` (twice with `steps`: the points and
+/// the schemes) and at `dense` (a picture): `(n+1)²` operations per coordinate and parameter,
+/// on numbers of [`polynomial_bits`] of the degree.
+fn curve_work<T: LiteralScalar>(
+    curve: &BezierCurve<T>,
+    ts: &[T],
+    steps: bool,
+    dense: &[T],
+) -> u128 {
+    let per_t = curve.dim() as u128 * (curve.degree() as u128 + 1).pow(2);
+    let coefficients = bits(curve.control().iter());
+    let at = |params: &[T], times: u128| {
+        let size = polynomial_bits(curve.degree(), bits(params), coefficients);
+        work::<T>(params.len() as u128 * times * per_t, size)
+    };
+    at(ts, if steps { 2 } else { 1 }).saturating_add(at(dense, 1))
 }
 
 #[derive(Debug, Args)]
@@ -130,16 +157,33 @@ pub fn bezier_patch<T: LiteralScalar>(cmd: &BezierPatchCommand) -> Result<Outcom
     let us: Vec<T> = params_or_samples("--u", &cmd.params.u, cmd.params.n, DEFAULT_SAMPLES)?;
     let vs: Vec<T> = params_or_samples("--v", &cmd.params.v, cmd.params.n, DEFAULT_SAMPLES)?;
     check_grid(us.len(), vs.len())?;
-    // Tensor de Casteljau (also --steps): about (m+1)(n+1)·(m+n+2) per coordinate and point.
+    let single = point_mode(&cmd.params);
+    let picture: Vec<T> = T::linspace(&T::zero(), &T::one(), 21);
+    // Tensor de Casteljau: about (m+1)(n+1)·(m+n+2) operations per coordinate and point, on
+    // numbers that grow by the bits of u at m levels and of v at n; again for --steps, and
+    // for the 21 × 21 picture of a single point.
+    let per_point = 3 * (m1 as u128 * n1 as u128) * (m1 + n1) as u128;
+    let coefficients = bits(net.iter());
+    let grid_work = |us: &[T], vs: &[T], times: u128| {
+        let size = polynomial_bits(m1 - 1, bits(us), 0).saturating_add(polynomial_bits(
+            n1 - 1,
+            bits(vs),
+            coefficients,
+        ));
+        let points = us.len() as u128 * vs.len() as u128;
+        work::<T>(points * times * per_point, size)
+    };
+    let pictures = single && (cmd.plot.plot.is_some() || cmd.mesh.mesh.is_some());
+    let picture = if pictures { picture } else { Vec::new() };
     check_work(
         "--u/--v",
-        us.len() as u128 * vs.len() as u128 * 3 * (m1 as u128 * n1 as u128) * (m1 + n1) as u128,
+        grid_work(&us, &vs, if cmd.steps.steps { 2 } else { 1 })
+            .saturating_add(grid_work(&picture, &picture, 1)),
     )?;
     let grid = patch
         .try_eval_grid(&us, &vs)
         .map_err(lib("--u/--v", "finite parameter values"))?;
     let mut report = Report::new();
-    let single = point_mode(&cmd.params);
     if cmd.steps.steps {
         let mut k = 0;
         for u in &us {
@@ -168,10 +212,9 @@ pub fn bezier_patch<T: LiteralScalar>(cmd: &BezierPatchCommand) -> Result<Outcom
         report.push("result", Value::Grid(grid.clone()));
     }
     let mut files = PendingWrites::new();
-    let picture_grid = if single {
-        let t: Vec<T> = T::linspace(&T::zero(), &T::one(), 21);
+    let picture_grid = if pictures {
         patch
-            .try_eval_grid(&t, &t)
+            .try_eval_grid(&picture, &picture)
             .map_err(lib("--plot", "a patch"))?
     } else {
         grid
@@ -211,7 +254,15 @@ pub struct BernsteinCommand {
 pub fn bernstein<T: LiteralScalar>(cmd: &BernsteinCommand) -> Result<Outcome, CliError> {
     check_degree("--degree", cmd.degree)?;
     let ts: Vec<T> = params_or_samples("--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
-    check_work("--t", ts.len() as u128 * (cmd.degree as u128 + 1).pow(2))?;
+    // The triangular recurrence: (n+1)² operations per parameter, on numbers of
+    // polynomial_bits of the degree.
+    check_work(
+        "--t",
+        work::<T>(
+            ts.len() as u128 * (cmd.degree as u128 + 1).pow(2),
+            polynomial_bits(cmd.degree, bits(&ts), 0),
+        ),
+    )?;
     let all = crate::bernstein::basis_matrix(cmd.degree, &ts);
     let result = match cmd.i {
         Some(i) if i > cmd.degree => {
@@ -266,12 +317,16 @@ pub fn derivative<T: LiteralScalar>(cmd: &DerivativeCommand) -> Result<Outcome, 
         .map_err(lib("--order", "an order r ≤ the degree n"))?;
     let mut report = Report::new();
     report.push("control", Value::Matrix(d.control().clone()));
-    if let Some(t) = &cmd.t {
-        let ts: Vec<T> = crate::cli::load_params("--t", t)?;
-        check_work(
-            "--t",
-            ts.len() as u128 * d.dim() as u128 * (d.degree() as u128 + 1).pow(2),
-        )?;
+    let ts: Vec<T> = match &cmd.t {
+        Some(t) => crate::cli::load_params("--t", t)?,
+        None => Vec::new(),
+    };
+    let dense: Vec<T> = T::linspace(&T::zero(), &T::one(), 101);
+    check_work(
+        "--t",
+        curve_work(&d, &ts, false, plotted(&cmd.plot, &dense)),
+    )?;
+    if cmd.t.is_some() {
         let values = d
             .eval_many(&ts)
             .map_err(lib("--t", "finite parameter values"))?;
@@ -280,7 +335,6 @@ pub fn derivative<T: LiteralScalar>(cmd: &DerivativeCommand) -> Result<Outcome, 
     }
     let mut files = PendingWrites::new();
     if let Some(path) = &cmd.plot.plot {
-        let dense: Vec<T> = T::linspace(&T::zero(), &T::one(), 101);
         let line = d.eval_many(&dense).map_err(lib("--plot", "a curve"))?;
         let figure = Figure::new(format!("derivative of order {}", cmd.order))
             .curve(to_f64(&line), Colour::Blue, "derivative curve")

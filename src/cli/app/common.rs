@@ -17,6 +17,7 @@ use crate::octave::script::{Binding, Script};
 use crate::plot::{Figure, ImageKind};
 use crate::{Curve, SampledCurve};
 
+use super::work::{check_expression_work, Sampling};
 use super::Outcome;
 
 /// Samples taken when neither `--t`/`--u`/`--v` nor `--n` is given: 0:0.1:1.
@@ -84,34 +85,6 @@ pub fn check_degree(argument: &str, degree: usize) -> Result<(), CliError> {
         ))
 }
 
-/// Refuses a computation of about `operations` arithmetic operations above
-/// [`crate::limits::Limits::max_work`].
-pub fn check_work(argument: &str, operations: u128) -> Result<(), CliError> {
-    crate::limits::Limits::current()
-        .check_work("estimated operations", operations)
-        .map_err(lib(
-            argument,
-            "fewer points or a lower degree, or a higher --max-work",
-        ))
-}
-
-/// Refuses evaluating user expressions whose estimated cost is above
-/// [`crate::limits::Limits::max_work`]: each of `parts` is (argument, expression, number of
-/// samples), and costs samples × expression size ([`ParamExpr::node_count`]). The error names
-/// the argument with the largest share.
-pub fn check_expression_work(parts: &[(&str, &ParamExpr, usize)]) -> Result<(), CliError> {
-    let cost =
-        |(_, e, samples): &(&str, &ParamExpr, usize)| *samples as u128 * e.node_count() as u128;
-    let total: u128 = parts.iter().map(cost).sum();
-    let argument = parts.iter().max_by_key(|p| cost(p)).map_or("EXPR", |p| p.0);
-    crate::limits::Limits::current()
-        .check_work("estimated operations (samples × expression nodes)", total)
-        .map_err(lib(
-            argument,
-            "fewer samples (a smaller --n, --t, --u, --v) or a shorter expression, or a higher --max-work",
-        ))
-}
-
 /// Builds curves, each exact at its parameters, after refusing the lot if sampling their
 /// expressions would cost more than `--max-work` ([`check_expression_work`]): each of
 /// `parts` is (argument, source, parameters).
@@ -119,11 +92,18 @@ pub fn build_curves<T: LiteralScalar>(
     parts: &[(&str, &CurveSource<T>, &[T])],
     env: &mut Env<T>,
 ) -> Result<Vec<CliCurve<T>>, CliError> {
-    let expressions: Vec<(&str, &ParamExpr, usize)> = parts
+    let expressions: Vec<Sampling<'_, T>> = parts
         .iter()
-        .filter_map(|(arg, s, at)| s.expression().map(|e| (*arg, e, at.len())))
+        .filter_map(|(argument, s, at)| match s {
+            CurveSource::Expr(expr, p) => Some(Sampling {
+                argument,
+                expr,
+                params: vec![(*p, *at)],
+            }),
+            _ => None,
+        })
         .collect();
-    check_expression_work(&expressions)?;
+    check_expression_work(&expressions, env)?;
     parts
         .iter()
         .map(|(arg, s, at)| s.build(arg, at, env))
@@ -306,14 +286,6 @@ impl<T: LiteralScalar> CurveSource<T> {
             CurveSource::Samples(params, m) => SampledCurve::new(params.clone(), m.clone())
                 .map(CliCurve::Sampled)
                 .map_err(lib(argument, "a curve sampled at increasing parameters")),
-        }
-    }
-
-    /// The expression, if this is one.
-    pub fn expression(&self) -> Option<&ParamExpr> {
-        match self {
-            CurveSource::Expr(e, _) => Some(e),
-            _ => None,
         }
     }
 

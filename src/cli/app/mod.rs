@@ -19,6 +19,8 @@ mod patches;
 
 mod thesis;
 
+mod work;
+
 use crate::cli::args::{
     CurveParamArgs, LimitArgs, MeshArgs, OutputArgs, PlotArgs, ScriptArgs, SurfaceParamArgs,
 };
@@ -384,7 +386,14 @@ fn curve<T: LiteralScalar>(cmd: &CurveCommand) -> Result<Outcome, CliError> {
         (Some(t), _) => load_params("--t", t)?,
         (None, n) => samples(n.unwrap_or(DEFAULT_SAMPLES), 2)?,
     };
-    common::check_expression_work(&[("EXPR", &expr, values.len())])?;
+    work::check_expression_work(
+        &[work::Sampling {
+            argument: "EXPR",
+            expr: &expr,
+            params: vec![(param, &values)],
+        }],
+        &env,
+    )?;
     let points = expr
         .sample_curve(&mut env, param, &values)
         .map_err(|e| CliError::literal("EXPR", e, CURVE_FORM))?;
@@ -421,7 +430,14 @@ fn surface<T: LiteralScalar>(cmd: &SurfaceCommand) -> Result<Outcome, CliError> 
     let us = grid_samples(&cmd.params.u, "--u")?;
     let vs = grid_samples(&cmd.params.v, "--v")?;
     common::check_grid(us.len(), vs.len())?;
-    common::check_expression_work(&[("EXPR", &expr, us.len() * vs.len())])?;
+    work::check_expression_work(
+        &[work::Sampling {
+            argument: "EXPR",
+            expr: &expr,
+            params: vec![("u", &us), ("v", &vs)],
+        }],
+        &env,
+    )?;
     let grid = expr.sample_surface(&mut env, &us, &vs).map_err(|e| {
         CliError::literal(
             "EXPR",

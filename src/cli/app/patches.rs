@@ -20,6 +20,7 @@ use crate::{CoonsPatch, Curve, GordonSurface, Surface, Tolerance};
 
 use super::bezier::point_mode;
 use super::common::*;
+use super::work::{bits, blend_work, check_work, polynomial_bits, work};
 use super::{prepare_script, Outcome};
 
 /// The boundary curve arguments shared by `coons` and `coons-bicubic`.
@@ -115,6 +116,16 @@ fn picture_params<T: LiteralScalar>(
     }
 }
 
+/// The points at which a patch is evaluated: the result's, and again the pictures' if any.
+fn evaluated_points<T>((us, vs): (&[T], &[T]), pictures: bool, (pus, pvs): (&[T], &[T])) -> u128 {
+    let result = us.len() as u128 * vs.len() as u128;
+    if pictures {
+        result + pus.len() as u128 * pvs.len() as u128
+    } else {
+        result
+    }
+}
+
 /// The four boundary curves as parts for [`build_curves`]: c1, c2 sampled at `at_u`, d1, d2
 /// at `at_v`.
 fn boundary_parts<'a, T: LiteralScalar>(
@@ -165,7 +176,7 @@ pub fn coons<T: LiteralScalar>(cmd: &CoonsCommand) -> Result<Outcome, CliError> 
         &cmd.params,
         (sources[0].sample_params(), sources[2].sample_params()),
     )?;
-    let (_, pus, pvs) = picture_params((&us, &vs), single, &cmd.plot, &cmd.mesh);
+    let (pictures, pus, pvs) = picture_params((&us, &vs), single, &cmd.plot, &cmd.mesh);
     let at_u = needed(&[&us, &pus]);
     let at_v = needed(&[&vs, &pvs]);
     let [c1, c2, d1, d2] = four(build_curves(
@@ -185,6 +196,17 @@ pub fn coons<T: LiteralScalar>(cmd: &CoonsCommand) -> Result<Outcome, CliError> 
         _ => CoonsPatch::new(c1.clone(), c2.clone(), d1.clone(), d2.clone()),
     }
     .map_err(lib("--c1/--c2/--d1/--d2", expected))?;
+    // x = rc + rd − rcd at every point: the four curves and about 16 operations per
+    // coordinate, on numbers grown by the bits of u and v.
+    check_work(
+        "--u/--v",
+        blend_work(
+            evaluated_points((&us, &vs), pictures, (&pus, &pvs)),
+            &[(&c1, &at_u), (&c2, &at_u), (&d1, &at_v), (&d2, &at_v)],
+            16 * c1.dim() as u128,
+            bits(&at_u) + bits(&at_v) + 2,
+        ),
+    )?;
     let mut report = Report::new();
     report.push("u", Value::Matrix(row(&us)));
     report.push("v", Value::Matrix(row(&vs)));
@@ -352,7 +374,7 @@ pub fn coons_bicubic<T: LiteralScalar>(cmd: &CoonsBicubicCommand) -> Result<Outc
     let sources = boundary_sources(&cmd.boundary, script.as_ref(), cmd.rows.rows, &env)?;
     let single = point_mode(&cmd.params);
     let (us, vs) = surface_params(&cmd.params, (None, None))?;
-    let (_, pus, pvs) = picture_params((&us, &vs), single, &cmd.plot, &cmd.mesh);
+    let (pictures, pus, pvs) = picture_params((&us, &vs), single, &cmd.plot, &cmd.mesh);
     let at_u = needed(&[&us, &pus]);
     let at_v = needed(&[&vs, &pvs]);
     let mut cross = Vec::with_capacity(4);
@@ -376,6 +398,32 @@ pub fn coons_bicubic<T: LiteralScalar>(cmd: &CoonsBicubicCommand) -> Result<Outc
     let mut parts = boundary_parts(&sources, &at_u, &at_v);
     parts.extend(cross.iter().map(|(arg, s, at)| (*arg, s, *at)));
     let mut curves = build_curves(&parts, &mut env)?;
+    // Cubic Hermite blending of eight curves and four twists: about 64 operations per
+    // coordinate and point, with blending functions cubic in u and v.
+    let uv_curves: Vec<(&CliCurve<T>, &[T])> = curves
+        .iter()
+        .enumerate()
+        .map(|(k, c)| {
+            (
+                c,
+                if matches!(k, 0 | 1 | 6 | 7) {
+                    &at_u[..]
+                } else {
+                    &at_v[..]
+                },
+            )
+        })
+        .collect();
+    check_work(
+        "--u/--v",
+        blend_work(
+            evaluated_points((&us, &vs), pictures, (&pus, &pvs)),
+            &uv_curves,
+            64 * curves[0].dim() as u128,
+            polynomial_bits(3, bits(&at_u), 0) + polynomial_bits(3, bits(&at_v), 0),
+        ),
+    )?;
+    drop(uv_curves);
     let [du0, du1, dv0, dv1] = four(curves.split_off(4));
     let [c1, c2, d1, d2] = four(curves);
     let twist = match cmd.twist {
@@ -458,6 +506,20 @@ pub struct DiscreteCoonsCommand {
     pub plot: PlotArgs,
 }
 
+/// The work of the exact band solve of a mask on `net`. The library refuses its
+/// `size · (w+1)²` operations per coordinate above `--max-work` counting each as one; in
+/// exact arithmetic they took 60–160 ns each (N × N nets of random digits, N = 40…120, 0.4 s
+/// to 12 s: the band starts mostly zero and the mask's weights are small), so each is charged
+/// a sixteenth of [`crate::limits::exact_op_cost`] of the net's and the mask's numbers.
+fn exact_mask_work<T: LiteralScalar>(net: &Array3<T>, mask: &Mask<T>) -> u128 {
+    let (m1, n1, d) = net.dim();
+    let inner = m1.min(n1).saturating_sub(2) as u128;
+    let outer = m1.max(n1).saturating_sub(2) as u128;
+    let size_bits = bits(net.iter()).max(bits(&[mask.alpha(), mask.beta()]));
+    let ops = inner * outer * (inner + 2).pow(2) * d as u128;
+    ops.saturating_mul(crate::limits::exact_op_cost(size_bits)) / 16
+}
+
 /// The interior control points from the boundary of a net.
 pub fn discrete<T: LiteralScalar>(cmd: &DiscreteCoonsCommand) -> Result<Outcome, CliError> {
     let script = prepare_script::<T>(&cmd.script, None)?;
@@ -477,6 +539,9 @@ pub fn discrete<T: LiteralScalar>(cmd: &DiscreteCoonsCommand) -> Result<Outcome,
                 .try_into()
                 .map_err(|v: Vec<T>| shape("--mask", format!("{} value(s)", v.len()), form))?;
             let mask = Mask::new(alpha, beta).map_err(lib("--mask", form))?;
+            if T::EXACT {
+                check_work("NET", exact_mask_work(&net, &mask))?;
+            }
             solve_mask(&coords, &mask).map_err(lib("NET", expected))?
         }
     };
@@ -673,14 +738,19 @@ pub fn gordon<T: LiteralScalar>(cmd: &GordonCommand) -> Result<Outcome, CliError
         "a compatible network: g(u_i, ·) at v_j equals g(·, v_j) at u_i, one curve per node";
     let surface = match points {
         Some(p) => GordonSurface::with_points(
-            u_nodes,
-            v_nodes,
+            u_nodes.clone(),
+            v_nodes.clone(),
             curves_u.clone(),
             curves_v.clone(),
             p,
             Tolerance::default(),
         ),
-        None => GordonSurface::new(u_nodes, v_nodes, curves_u.clone(), curves_v.clone()),
+        None => GordonSurface::new(
+            u_nodes.clone(),
+            v_nodes.clone(),
+            curves_u.clone(),
+            curves_v.clone(),
+        ),
     }
     .map_err(|e| {
         let form = match e {
@@ -689,6 +759,27 @@ pub fn gordon<T: LiteralScalar>(cmd: &GordonCommand) -> Result<Outcome, CliError
         };
         CliError::library("--u-curve/--v-curve", e, form)
     })?;
+    // g = g1 + g2 − g12 at every point: every curve of the network, the ku·kv points of g12
+    // and the Lagrange bases in u and v (products of k − 1 factors (u − u_j)/(u_i − u_j)).
+    let (ku, kv) = (curves_u.len(), curves_v.len());
+    let network: Vec<(&CliCurve<T>, &[T])> = curves_u
+        .iter()
+        .map(|c| (c, &need_v[..]))
+        .chain(curves_v.iter().map(|c| (c, &need_u[..])))
+        .collect();
+    let basis_bits = |k: usize, at: &[T], nodes: &[T]| {
+        polynomial_bits(k.saturating_sub(1), bits(at) + 2 * bits(nodes), 0)
+    };
+    check_work(
+        "--u/--v",
+        blend_work(
+            evaluated_points((&us, &vs), pictures, (&pus, &pvs)),
+            &network,
+            (4 * (ku + kv) as u128 + 2 * (ku * kv) as u128) * (1 + curves_u[0].dim() as u128),
+            basis_bits(ku, &need_u, &u_nodes) + basis_bits(kv, &need_v, &v_nodes),
+        ),
+    )?;
+    drop(network);
     let mut report = Report::new();
     report.push("u", Value::Matrix(row(&us)));
     report.push("v", Value::Matrix(row(&vs)));
@@ -769,17 +860,40 @@ pub fn lagrange<T: LiteralScalar>(cmd: &LagrangeCommand) -> Result<Outcome, CliE
     let basis = Lagrange::new(nodes.clone())
         .map_err(lib("--nodes", "distinct finite nodes, at least one"))?;
     let ts: Vec<T> = params_or_samples("--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
-    check_work("--t", ts.len() as u128 * (nodes.len() as u128 + 1).pow(2))?;
+    // The weights: (m+1)² operations; then per parameter the barycentric basis, 4(m+1)
+    // operations, and its combination with d rows of values, 2d(m+1), or without values the
+    // m+1 basis values written out (about 100 operations each to format); on numbers of m
+    // factors (t − x_j) of at most bits(t) + bits(x) + 1 bits (polynomial_bits adds the 1).
+    let values = match &cmd.points {
+        Some(text) => Some(points::<T>("--points", text, None, cmd.rows.rows)?),
+        None => None,
+    };
+    let m1 = nodes.len() as u128;
+    let per_node = values.as_ref().map_or(100, |v| 4 + 2 * v.nrows() as u128);
+    let node_bits = bits(&nodes);
+    check_work(
+        "--t",
+        work::<T>(m1 * m1, polynomial_bits(nodes.len() - 1, node_bits, 0)).saturating_add(
+            work::<T>(
+                ts.len() as u128 * m1 * per_node,
+                polynomial_bits(
+                    nodes.len() - 1,
+                    bits(&ts) + node_bits,
+                    values.as_ref().map_or(0, |v| bits(v.iter())),
+                ),
+            ),
+        ),
+    )?;
     let mut report = Report::new();
     report.push("t", Value::Matrix(row(&ts)));
     let mut files = PendingWrites::new();
-    match &cmd.points {
+    match values {
         None => {
-            let m = DMatrix::from_fn(ts.len(), nodes.len(), |i, j| basis.basis(&ts[i])[j].clone());
+            let rows: Vec<Vec<T>> = ts.iter().map(|t| basis.basis(t)).collect();
+            let m = DMatrix::from_fn(ts.len(), nodes.len(), |i, j| rows[i][j].clone());
             report.push("result", Value::Matrix(m));
         }
-        Some(text) => {
-            let values = points("--points", text, None, cmd.rows.rows)?;
+        Some(values) => {
             let mut cols = Vec::with_capacity(ts.len());
             for t in &ts {
                 cols.push(

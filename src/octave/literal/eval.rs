@@ -184,6 +184,13 @@ pub(crate) struct Meter {
     work: u128,
 }
 
+impl Meter {
+    /// The work of the last (or current) outermost evaluation.
+    pub(crate) fn work(&self) -> u128 {
+        self.work
+    }
+}
+
 /// Meters never make two environments different.
 impl PartialEq for Meter {
     fn eq(&self, _: &Self) -> bool {
