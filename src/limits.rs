@@ -304,8 +304,9 @@ impl Limits {
 /// words — the gcd that keeps every result reduced grows about linearly in the length here and
 /// faster beyond. Numbers with small prime factors only (powers of `1/100`, continuants) and
 /// the zeros, ones and integers of typical data are several times cheaper. Checked against
-/// whole commands (see docs/ERRORS.md): the estimate lies between about 0.7 and 10 times the
-/// run time in nanoseconds, so an allowed command runs for seconds, not minutes.
+/// whole commands (`bench/exact_work.sh`, table in docs/PERFORMANCE.md): the estimates lie
+/// between about 0.6 and 10 times the run time in nanoseconds (70 times for a spline through
+/// collinear integers), so an allowed command runs for seconds, not minutes.
 ///
 /// ```
 /// use cagd::limits::exact_op_cost;

@@ -435,3 +435,34 @@ fn small_exact_problems_run() {
         );
     }
 }
+
+/// `--steps` writes a de Casteljau scheme per point, about as many numbers as operations: a
+/// grid whose schemes would fill gigabytes (666 bytes of text per point for a 3×3 net) is
+/// refused up front, though the same grid without schemes runs.
+#[test]
+fn schemes_that_would_fill_memory_are_refused() {
+    let net = common::thesis_args::NET_3X3;
+    let args = ["bezier-patch", net, "--n", "700"];
+    let out = cagd().args(args).arg("--steps").output().unwrap();
+    let e = stderr(&out);
+    assert_eq!(out.status.code(), Some(2), "{e}");
+    assert!(
+        e.starts_with("cagd: error: --u/--v: estimated operations: ")
+            && e.contains("exceeds the limit of 2000000000"),
+        "{e}"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("grid.txt");
+    succeeds(cagd().args(args).arg("-o").arg(&file));
+    assert!(std::fs::metadata(&file).unwrap().len() > 1_000_000);
+    // The curve's schemes likewise: 10⁶ parameters of the cubic of Primer 2.4.
+    let curve = [
+        "decasteljau",
+        common::thesis_args::PRIMER_2_4,
+        "--n",
+        "1000000",
+    ];
+    let out = cagd().args(curve).arg("--steps").output().unwrap();
+    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+    assert!(stderr(&out).starts_with("cagd: error: --t: estimated operations: "));
+}

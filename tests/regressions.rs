@@ -443,6 +443,16 @@ fn fuzz_cli_timeout_exact_spline_through_many_points() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
+    // 10 samples per segment: 200 segments are 2001 samples, above the target's 1000, and
+    // the error names the points (spline has no --n).
+    let out = fuzz_cli(&["spline", "[ ; 0:200]"]);
+    let e = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        e.starts_with(
+            "cagd: error: POINTS: samples (10 per segment): 2001 exceeds the limit of 1000 "
+        ),
+        "{e}"
+    );
     // A short exact spline still runs: the natural spline through 0, 1, 0 has tangents
     // 3/2, 0, −3/2.
     let out = fuzz_cli(&["spline", "[0 1 0]", "--exact"]);

@@ -87,6 +87,13 @@ pub fn decasteljau<T: LiteralScalar>(cmd: &DeCasteljauCommand) -> Result<Outcome
     )
 }
 
+/// How much more `--steps` costs than the points alone: each scheme is computed again and
+/// written out, about as many numbers as operations (`(n+1)(n+2)/2` points of a curve's
+/// scheme), each number some 50 operations to format and about 16 bytes of text. So a
+/// command whose schemes would fill gigabytes of memory (a 10⁷-point grid of 3×3-net schemes
+/// is 6.6 GB of text) is refused up front like any other large work.
+const STEPS_FACTOR: u128 = 50;
+
 /// The parameters of a picture, if one is asked for (else none).
 fn plotted<'a, T>(plot: &PlotArgs, params: &'a [T]) -> &'a [T] {
     if plot.plot.is_some() {
@@ -96,9 +103,9 @@ fn plotted<'a, T>(plot: &PlotArgs, params: &'a [T]) -> &'a [T] {
     }
 }
 
-/// The work of evaluating `curve` by de Casteljau at `ts` (twice with `steps`: the points and
-/// the schemes) and at `dense` (a picture): `(n+1)²` operations per coordinate and parameter,
-/// on numbers of [`polynomial_bits`] of the degree.
+/// The work of evaluating `curve` by de Casteljau at `ts` and at `dense` (a picture): `(n+1)²`
+/// operations per coordinate and parameter, on numbers of [`polynomial_bits`] of the degree;
+/// with `steps` [`STEPS_FACTOR`] times that at `ts`.
 fn curve_work<T: LiteralScalar>(
     curve: &BezierCurve<T>,
     ts: &[T],
@@ -111,7 +118,7 @@ fn curve_work<T: LiteralScalar>(
         let size = polynomial_bits(curve.degree(), bits(params), coefficients);
         work::<T>(params.len() as u128 * times * per_t, size)
     };
-    at(ts, if steps { 2 } else { 1 }).saturating_add(at(dense, 1))
+    at(ts, if steps { STEPS_FACTOR } else { 1 }).saturating_add(at(dense, 1))
 }
 
 #[derive(Debug, Args)]
@@ -160,8 +167,8 @@ pub fn bezier_patch<T: LiteralScalar>(cmd: &BezierPatchCommand) -> Result<Outcom
     let single = point_mode(&cmd.params);
     let picture: Vec<T> = T::linspace(&T::zero(), &T::one(), 21);
     // Tensor de Casteljau: about (m+1)(n+1)·(m+n+2) operations per coordinate and point, on
-    // numbers that grow by the bits of u at m levels and of v at n; again for --steps, and
-    // for the 21 × 21 picture of a single point.
+    // numbers that grow by the bits of u at m levels and of v at n; STEPS_FACTOR times that
+    // with --steps, and the 21 × 21 picture of a single point.
     let per_point = 3 * (m1 as u128 * n1 as u128) * (m1 + n1) as u128;
     let coefficients = bits(net.iter());
     let grid_work = |us: &[T], vs: &[T], times: u128| {
@@ -177,7 +184,7 @@ pub fn bezier_patch<T: LiteralScalar>(cmd: &BezierPatchCommand) -> Result<Outcom
     let picture = if pictures { picture } else { Vec::new() };
     check_work(
         "--u/--v",
-        grid_work(&us, &vs, if cmd.steps.steps { 2 } else { 1 })
+        grid_work(&us, &vs, if cmd.steps.steps { STEPS_FACTOR } else { 1 })
             .saturating_add(grid_work(&picture, &picture, 1)),
     )?;
     let grid = patch

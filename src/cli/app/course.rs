@@ -93,7 +93,15 @@ pub fn spline<T: LiteralScalar>(cmd: &SplineCommand) -> Result<Outcome, CliError
     let ts: Vec<T> = match given {
         Some(t) => t,
         None => {
-            let unit: Vec<T> = samples(10 * segments + 1, 2)?;
+            // Ten samples per segment: too many points is about POINTS (spline has no --n).
+            let count = 10 * segments + 1;
+            crate::limits::Limits::current()
+                .check_samples("samples (10 per segment)", count)
+                .map_err(lib(
+                    "POINTS",
+                    "fewer points (10 samples per segment), parameters --t, or a higher --max-samples",
+                ))?;
+            let unit: Vec<T> = samples(count, 2)?;
             let k = T::from_usize(segments);
             unit.into_iter().map(|x| x * k.clone()).collect()
         }
