@@ -166,26 +166,25 @@ pub fn bezier_patch<T: LiteralScalar>(cmd: &BezierPatchCommand) -> Result<Outcom
     check_grid(us.len(), vs.len())?;
     let single = point_mode(&cmd.params);
     let picture: Vec<T> = T::linspace(&T::zero(), &T::one(), 21);
-    // Tensor de Casteljau: about (m+1)(n+1)·(m+n+2) operations per coordinate and point, on
-    // numbers that grow by the bits of u at m levels and of v at n; STEPS_FACTOR times that
-    // with --steps, and the 21 × 21 picture of a single point.
-    let per_point = 3 * (m1 as u128 * n1 as u128) * (m1 + n1) as u128;
+    // The grid: basis rows per u and v, then about 2(m+1)(n+1) operations per coordinate and
+    // point, on numbers that grow by the bits of u at m levels and of v at n. --steps adds a
+    // tensor de Casteljau scheme per point, (m+1)(n+1)(m+n+2) operations per coordinate,
+    // STEPS_FACTOR times for writing it out; the 21 × 21 picture of a single point is a grid.
+    let per_point = 6 * (m1 as u128 * n1 as u128);
+    let per_scheme = 3 * (m1 as u128 * n1 as u128) * (m1 + n1) as u128;
     let coefficients = bits(net.iter());
-    let grid_work = |us: &[T], vs: &[T], times: u128| {
-        let size = polynomial_bits(m1 - 1, bits(us), 0).saturating_add(polynomial_bits(
-            n1 - 1,
-            bits(vs),
-            coefficients,
-        ));
+    let grid_work = |us: &[T], vs: &[T], steps: bool| {
+        let size = polynomial_bits(m1.saturating_sub(1), bits(us), 0)
+            .saturating_add(polynomial_bits(n1 - 1, bits(vs), coefficients));
         let points = us.len() as u128 * vs.len() as u128;
-        work::<T>(points * times * per_point, size)
+        let per = per_point + if steps { STEPS_FACTOR * per_scheme } else { 0 };
+        work::<T>(points * per, size)
     };
     let pictures = single && (cmd.plot.plot.is_some() || cmd.mesh.mesh.is_some());
     let picture = if pictures { picture } else { Vec::new() };
     check_work(
         "--u/--v",
-        grid_work(&us, &vs, if cmd.steps.steps { STEPS_FACTOR } else { 1 })
-            .saturating_add(grid_work(&picture, &picture, 1)),
+        grid_work(&us, &vs, cmd.steps.steps).saturating_add(grid_work(&picture, &picture, false)),
     )?;
     let grid = patch
         .try_eval_grid(&us, &vs)

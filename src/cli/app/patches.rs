@@ -861,28 +861,28 @@ pub fn lagrange<T: LiteralScalar>(cmd: &LagrangeCommand) -> Result<Outcome, CliE
         .map_err(lib("--nodes", "distinct finite nodes, at least one"))?;
     let ts: Vec<T> = params_or_samples("--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
     // The weights: (m+1)² operations; then per parameter the barycentric basis, 4(m+1)
-    // operations, and its combination with d rows of values, 2d(m+1), or without values the
-    // m+1 basis values written out (about 100 operations each to format); on numbers of m
-    // factors (t − x_j) of at most bits(t) + bits(x) + 1 bits (polynomial_bits adds the 1).
+    // operations, and its combination with d rows of values, 2d(m+1); on numbers of m factors
+    // (t − x_j) of at most bits(t) + bits(x) + 1 bits (polynomial_bits adds the 1). Without
+    // values the m+1 basis values of every parameter are written out: about 100 operations
+    // each to format.
     let values = match &cmd.points {
         Some(text) => Some(points::<T>("--points", text, None, cmd.rows.rows)?),
         None => None,
     };
     let m1 = nodes.len() as u128;
-    let per_node = values.as_ref().map_or(100, |v| 4 + 2 * v.nrows() as u128);
+    let k = ts.len() as u128;
     let node_bits = bits(&nodes);
+    let (per_node, written) = match &values {
+        Some(v) => (4 + 2 * v.nrows() as u128, 0),
+        None => (4, 100 * k * m1),
+    };
+    let value_bits = values.as_ref().map_or(0, |v| bits(v.iter()));
+    let size = polynomial_bits(nodes.len() - 1, bits(&ts) + node_bits, value_bits);
     check_work(
         "--t",
-        work::<T>(m1 * m1, polynomial_bits(nodes.len() - 1, node_bits, 0)).saturating_add(
-            work::<T>(
-                ts.len() as u128 * m1 * per_node,
-                polynomial_bits(
-                    nodes.len() - 1,
-                    bits(&ts) + node_bits,
-                    values.as_ref().map_or(0, |v| bits(v.iter())),
-                ),
-            ),
-        ),
+        work::<T>(m1 * m1, polynomial_bits(nodes.len() - 1, node_bits, 0))
+            .saturating_add(work::<T>(k * m1 * per_node, size))
+            .saturating_add(written),
     )?;
     let mut report = Report::new();
     report.push("t", Value::Matrix(row(&ts)));
