@@ -4,6 +4,13 @@
 
 use cagd::octave::literal::{parse_matrix, Env, Expr, LiteralError, ParamExpr};
 
+/// The stack of the threads that check recursion bounds: 4 MiB. An unoptimised test build
+/// uses about 10 KB per nesting level of the parser, so the 64 levels the depth limit allows
+/// fit, while the 20 000 levels below would need hundreds of megabytes at any optimisation
+/// level (an optimised build needs a few hundred bytes per level: 20 000 of them overflowed
+/// 512 KiB before the fix of the transpose run).
+const SMALL_STACK: usize = 4 << 20;
+
 /// Nestings through every recursive rule of the grammar, far past the limit: each must be a
 /// `TooDeep` error (no stack overflow), in a thread with a small stack.
 #[test]
@@ -39,7 +46,7 @@ fn every_recursive_path_is_bounded_by_the_depth_limit() {
         ),
     ];
     let handle = std::thread::Builder::new()
-        .stack_size(512 * 1024)
+        .stack_size(SMALL_STACK)
         .spawn(move || {
             for (what, text) in &cases {
                 let err = Expr::parse(text).expect_err(what);
@@ -366,7 +373,7 @@ fn fuzz_literal_timeout_large_exact_operands() {
 #[test]
 fn fuzz_script_stack_overflow_long_transpose_run() {
     let handle = std::thread::Builder::new()
-        .stack_size(512 * 1024)
+        .stack_size(SMALL_STACK)
         .spawn(|| {
             let artifact = format!(".5555{}#", "'".repeat(1300));
             let r = cagd::octave::script::run::<f64>(&artifact, Env::new());
@@ -489,4 +496,39 @@ fn fuzz_cli_slow_exact_bernstein_of_high_degree() {
     let out = fuzz_cli(&["bernstein", "--degree", "3", "--t", "0.5", "--exact"]);
     let text = String::from_utf8(out.stdout).unwrap();
     assert!(text.contains("3/8"), "{text}");
+}
+
+/// `script` fuzz target, timeout (after 5.4·10⁵ runs, on a machine busy compiling): a mutated
+/// appendix C script whose unclosed `for` made two loops of N element assignments run N
+/// times, in exact arithmetic. At N = 86 it took 1.2 s instrumented; at N = 860 (740 000
+/// iterations, within the iteration limit) 20 s in a release build, because indexing `v(i)`
+/// copied all of `v` and the script's total budget counted only the values assigned. Now
+/// indexing reads in place and every evaluation's work counts against the script's budget,
+/// so N = 860 stops with `TooLarge` (about 1 s in a release build) while N = 86 still runs.
+/// Here with a tenth of the default elements (a budget of 10⁷), N = 300 stops.
+#[test]
+fn fuzz_script_timeout_nested_exact_element_loops() {
+    let limits = cagd::octave::literal::Limits {
+        max_elements: 400_000,
+        ..Default::default()
+    };
+    let script = |n: usize| {
+        format!(
+            "N = {n};\nv = linspace(0,1,N);\nfor j = 1:N\n  c = zeros(1,N);\n  for i = 1:N\n    c(i) = v(i)-(v(i))^2;\n  end;\n  d = [v; c];\nend;\n"
+        )
+    };
+    use num_rational::BigRational;
+    let s =
+        cagd::octave::script::run::<BigRational>(&script(86), Env::with_limits(limits)).unwrap();
+    let c = s.value("c").unwrap();
+    // c(i) = t − t² at t = (i−1)/85: at i = 2, 1/85 − 1/7225 = 84/7225.
+    assert_eq!(c[(0, 1)], BigRational::new(84.into(), 7225.into()));
+    let err = cagd::octave::script::run::<BigRational>(&script(300), Env::with_limits(limits))
+        .unwrap_err();
+    assert!(
+        matches!(err, LiteralError::TooLarge { ref what, .. } if what.contains("work of the script")),
+        "{err}"
+    );
+    // In doubles the same loops stay well within the budget.
+    assert!(cagd::octave::script::run::<f64>(&script(300), Env::with_limits(limits)).is_ok());
 }

@@ -104,13 +104,18 @@ pub struct Script<T: LiteralScalar = f64> {
     functions: BTreeMap<String, usize>,
     order: Vec<String>,
     iterations: usize,
-    /// Elements of all values assigned so far (see [`WORK_PER_ELEMENT_LIMIT`]).
+    /// Elements of all values assigned so far, and the work of every evaluation (see
+    /// [`WORK_PER_ELEMENT_LIMIT`]).
     work: u128,
 }
 
 /// A script may assign at most this many times [`Limits::max_elements`] elements in total
 /// (10⁸ by default), so that a loop that rebuilds a large matrix at every iteration
-/// (`x = [x i]` a million times) stops with an error instead of running for hours.
+/// (`x = [x i]` a million times) stops with an error instead of running for hours. The work
+/// of every evaluation counts too (element operations; an exact operation on operands of `a`
+/// and `b` words `32 (a + b)²`, as within one evaluation): a loop of a million iterations,
+/// each cheap, cannot add up to minutes either (found by fuzzing: 740 000 iterations of exact
+/// element arithmetic inside nested loops took 20 s).
 ///
 /// [`Limits::max_elements`]: crate::octave::literal::Limits::max_elements
 pub const WORK_PER_ELEMENT_LIMIT: u128 = 25;
@@ -238,12 +243,19 @@ impl<T: LiteralScalar> Script<T> {
 
     /// Counts `elements` assigned against the script's work limit.
     fn charge(&mut self, elements: usize, at: Position) -> Result<(), LiteralError> {
-        self.work += elements as u128 + 1;
+        self.charge_work(elements as u128 + 1, at)
+    }
+
+    /// Counts `work` (elements assigned, or an evaluation's work) against the script's limit.
+    fn charge_work(&mut self, work: u128, at: Position) -> Result<(), LiteralError> {
+        self.work = self.work.saturating_add(work);
         let limit = self.env.limits().max_elements;
         if self.work > WORK_PER_ELEMENT_LIMIT * limit as u128 {
             return Err(LiteralError::TooLarge {
                 at,
-                what: "the values assigned by the script, all together,".into(),
+                what:
+                    "the work of the script (values assigned and element operations), all together,"
+                        .into(),
                 count: self.work,
                 limit: limit.saturating_mul(WORK_PER_ELEMENT_LIMIT as usize),
             });
@@ -322,7 +334,9 @@ impl<T: LiteralScalar> Script<T> {
                 });
             }
         }
-        e.eval(&mut self.env)
+        let value = e.eval(&mut self.env)?;
+        self.charge_work(self.env.meter.work(), e.position())?;
+        Ok(value)
     }
 
     fn assign(
