@@ -33,7 +33,8 @@
 //! Two budgets derive from `max_elements`: one evaluation of an expression may do at most
 //! 64 × `max_elements` element operations (results of every operation and matrix-product
 //! terms; in exact arithmetic an operation on numbers of `a` and `b` 64-bit words counts as
-//! `32 (a + b)²`, the cost of the gcd behind it), and a data script may assign at most 25 × `max_elements` elements in all; so a
+//! `32 (a + b)²`, the cost of the gcd behind it), and a data script may assign elements and do
+//! element operations at most 25 × `max_elements` in all, every evaluation counting; so a
 //! short text (`A*A*A*…`, a loop rebuilding a large matrix) stops with an error instead of
 //! running for minutes.
 //!
