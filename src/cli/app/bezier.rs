@@ -13,7 +13,7 @@ use crate::octave::literal::{Env, LiteralScalar};
 use crate::plot::{Colour, Figure};
 
 use super::common::*;
-use super::work::{bits, check_work, polynomial_bits, work};
+use super::work::{bits, check_work, plotted, polynomial_bits, work};
 use super::{prepare_script, Outcome};
 
 #[derive(Debug, Args)]
@@ -93,15 +93,6 @@ pub fn decasteljau<T: LiteralScalar>(cmd: &DeCasteljauCommand) -> Result<Outcome
 /// command whose schemes would fill gigabytes of memory (a 10⁷-point grid of 3×3-net schemes
 /// is 6.6 GB of text) is refused up front like any other large work.
 const STEPS_FACTOR: u128 = 50;
-
-/// The parameters of a picture, if one is asked for (else none).
-fn plotted<'a, T>(plot: &PlotArgs, params: &'a [T]) -> &'a [T] {
-    if plot.plot.is_some() {
-        params
-    } else {
-        &[]
-    }
-}
 
 /// The work of evaluating `curve` by de Casteljau at `ts` and at `dense` (a picture): `(n+1)²`
 /// operations per coordinate and parameter, on numbers of [`polynomial_bits`] of the degree;

@@ -10,7 +10,7 @@ use crate::plot::{Colour, Figure};
 use crate::{BSplineCurve, CubicSpline, EndCondition, HermiteCubic, NurbsCurve};
 
 use super::common::*;
-use super::work::{bits, check_work, polynomial_bits, work};
+use super::work::{bits, check_work, plotted, polynomial_bits, work};
 use super::Outcome;
 
 fn vector<T: LiteralScalar>(arg: &str, text: &str) -> Result<DVector<T>, CliError> {
@@ -197,11 +197,11 @@ pub fn hermite<T: LiteralScalar>(cmd: &HermiteCommand) -> Result<Outcome, CliErr
             polynomial_bits(3, bits(params), coefficient_bits),
         )
     };
-    let plotted: &[T] = if cmd.plot.plot.is_some() { &dense } else { &[] };
+    let picture = plotted(&cmd.plot, &dense);
     let steps = if cmd.steps.steps { 16 } else { 0 };
     check_work(
         "--t",
-        at(&ts, 16 + 8 * d + steps).saturating_add(at(plotted, 16 + 8 * d)),
+        at(&ts, 16 + 8 * d + steps).saturating_add(at(picture, 16 + 8 * d)),
     )?;
     let mut report = Report::new();
     if cmd.steps.steps {
@@ -291,7 +291,7 @@ pub fn bspline<T: LiteralScalar>(cmd: &BSplineCommand) -> Result<Outcome, CliErr
             bits(curve.control().iter()),
             &ts,
             cmd.steps.steps,
-            if cmd.plot.plot.is_some() { &dense } else { &[] },
+            plotted(&cmd.plot, &dense),
         ),
     )?;
     let values = curve
@@ -412,7 +412,7 @@ pub fn nurbs<T: LiteralScalar>(cmd: &NurbsCommand) -> Result<Outcome, CliError> 
             bits(curve.points().iter()) + bits(&curve.weights()),
             &ts,
             cmd.steps.steps,
-            if cmd.plot.plot.is_some() { &dense } else { &[] },
+            plotted(&cmd.plot, &dense),
         ),
     )?;
     let mut cols = Vec::with_capacity(ts.len());

@@ -10,6 +10,7 @@
 //! A user expression is measured instead of estimated: it is evaluated once at its largest
 //! parameter values ([`check_expression_work`]).
 
+use crate::cli::args::PlotArgs;
 use crate::cli::CliError;
 use crate::limits::{exact_op_cost, Limits};
 use crate::octave::literal::{Env, LiteralScalar, ParamExpr};
@@ -46,6 +47,16 @@ pub fn polynomial_bits(degree: usize, param_bits: u128, coefficient_bits: u128) 
     (degree as u128)
         .saturating_mul(param_bits.saturating_add(1))
         .saturating_add(coefficient_bits)
+}
+
+/// The parameters of a picture, if `--plot` asks for one (else none): what an estimate
+/// counts for it.
+pub fn plotted<'a, T>(plot: &PlotArgs, params: &'a [T]) -> &'a [T] {
+    if plot.plot.is_some() {
+        params
+    } else {
+        &[]
+    }
 }
 
 /// Refuses an estimated `work` above [`Limits::max_work`], naming `argument`.
