@@ -393,21 +393,17 @@ fn fuzz_script_stack_overflow_long_transpose_run() {
     handle.join().expect("no stack overflow");
 }
 
-/// The command line as the `cli` fuzz target runs it: its smaller limits (fuzz/fuzz_targets/
-/// cli.rs) in the environment, the others removed.
+/// The command line as the `cli` fuzz target runs it: its smaller limits (fuzz/cli_limits.env,
+/// which the target reads too) in the environment, the others removed.
 fn fuzz_cli(args: &[&str]) -> std::process::Output {
     let mut c = assert_cmd::Command::cargo_bin("cagd").unwrap();
     for (_, var, _) in cagd::limits::SETTINGS {
         c.env_remove(var);
     }
-    for (var, value) in [
-        ("CAGD_MAX_ELEMENTS", "10000"),
-        ("CAGD_MAX_ITERATIONS", "10000"),
-        ("CAGD_MAX_SAMPLES", "1000"),
-        ("CAGD_MAX_GRID_POINTS", "10000"),
-        ("CAGD_MAX_WORK", "5000000"),
-        ("CAGD_MAX_SYSTEM_ENTRIES", "100000"),
-    ] {
+    for (var, value) in include_str!("../fuzz/cli_limits.env")
+        .lines()
+        .filter_map(|l| l.split_once('='))
+    {
         c.env(var, value);
     }
     c.args(args).output().unwrap()

@@ -65,16 +65,13 @@ fn init() {
         let dir = std::env::temp_dir().join(format!("cagd-fuzz-cli-{}", std::process::id()));
         std::fs::create_dir_all(&dir).expect("scratch folder");
         std::env::set_current_dir(&dir).expect("enter scratch folder");
-        // Smaller limits than the defaults (see the other targets): `run` reads them from
-        // the environment, and `--max-…` arguments are dropped below.
-        for (var, value) in [
-            ("CAGD_MAX_ELEMENTS", "10000"),
-            ("CAGD_MAX_ITERATIONS", "10000"),
-            ("CAGD_MAX_SAMPLES", "1000"),
-            ("CAGD_MAX_GRID_POINTS", "10000"),
-            ("CAGD_MAX_WORK", "5000000"),
-            ("CAGD_MAX_SYSTEM_ENTRIES", "100000"),
-        ] {
+        // Smaller limits than the defaults (see the other targets), from cli_limits.env, which
+        // tests/regressions.rs replays: `run` reads them from the environment, and `--max-…`
+        // arguments are dropped below.
+        for (var, value) in include_str!("../cli_limits.env")
+            .lines()
+            .filter_map(|l| l.split_once('='))
+        {
             std::env::set_var(var, value);
         }
     });

@@ -423,7 +423,6 @@ pub fn coons_bicubic<T: LiteralScalar>(cmd: &CoonsBicubicCommand) -> Result<Outc
             polynomial_bits(3, bits(&at_u), 0) + polynomial_bits(3, bits(&at_v), 0),
         ),
     )?;
-    drop(uv_curves);
     let [du0, du1, dv0, dv1] = four(curves.split_off(4));
     let [c1, c2, d1, d2] = four(curves);
     let twist = match cmd.twist {
@@ -779,7 +778,6 @@ pub fn gordon<T: LiteralScalar>(cmd: &GordonCommand) -> Result<Outcome, CliError
             basis_bits(ku, &need_u, &u_nodes) + basis_bits(kv, &need_v, &v_nodes),
         ),
     )?;
-    drop(network);
     let mut report = Report::new();
     report.push("u", Value::Matrix(row(&us)));
     report.push("v", Value::Matrix(row(&vs)));
