@@ -1,5 +1,5 @@
 % differential(infile, outfile) -- the Octave side of the live differential test
-% (tests/differential.rs): runs every case of infile through the FIXED thesis functions
+% (crates/cagd-octave/tests/it/differential.rs): runs every case of infile through the FIXED thesis functions
 % (octave_ref/fixed/ must be on the path) and saves every output into outfile.
 %
 % infile (written by the crate's text-format writer, read here with load):

@@ -277,12 +277,10 @@ pub enum Error {
         /// The smallest eigenvalue in absolute value (0 for an exactly singular system).
         eigenvalue: f64,
     },
-    /// A size that would need more memory or time than the [`crate::limits::Limits`] in force
+    /// A size that would need more memory or time than the [`crate::limits::Limits`] passed
     /// allow (a grid, a degree, a linear system, an input): refused before anything is
     /// allocated.
-    #[error(
-        "{what}: {requested} exceeds the limit of {limit} (raise it with {setting} or {variable})"
-    )]
+    #[error("{what}: {requested} exceeds the limit of {limit} ({which})")]
     TooLarge {
         /// Which argument.
         what: &'static str,
@@ -290,10 +288,8 @@ pub enum Error {
         requested: u128,
         /// The limit in force.
         limit: u128,
-        /// The command-line flag that sets the limit, e.g. `--max-grid-points`.
-        setting: &'static str,
-        /// The environment variable that sets the limit, e.g. `CAGD_MAX_GRID_POINTS`.
-        variable: &'static str,
+        /// Which limit: the command line names its flag and environment variable.
+        which: crate::limits::Limit,
     },
 }
 
@@ -306,7 +302,17 @@ fn format_corner_gaps(gaps: &[crate::coons::CornerGap]) -> String {
 }
 
 /// Checks that every value is finite; reports the first one that is not.
-pub(crate) fn check_finite<'a, T: Scalar>(
+///
+/// # Errors
+/// [`Error::NonFinite`] naming `what`, the index and the value of the first non-finite value.
+///
+/// ```
+/// use cagd::error::{check_finite, Error};
+/// assert!(check_finite("points", &[1.0, 2.0]).is_ok());
+/// let err = check_finite("points", &[1.0, f64::NAN]).unwrap_err();
+/// assert!(matches!(err, Error::NonFinite { what: "points", index: 1, .. }));
+/// ```
+pub fn check_finite<'a, T: Scalar>(
     what: &'static str,
     values: impl IntoIterator<Item = &'a T>,
 ) -> Result<()> {

@@ -592,7 +592,7 @@ impl<T: Scalar, C: Curve<T>> Surface<T> for GordonSurface<C, T> {
         GordonSurface::eval_grid_into(self, us, vs, out)
     }
 
-    fn eval_grid(&self, us: &[T], vs: &[T]) -> ndarray::Array3<T> {
+    fn eval_grid(&self, us: &[T], vs: &[T]) -> crate::grid::PointGrid<T> {
         let lu: Vec<_> = us.iter().map(|u| self.u_basis.basis(u)).collect();
         let lv: Vec<_> = vs.iter().map(|v| self.v_basis.basis(v)).collect();
         // at_u[j][i] = g(u_i, vs[j]); at_v[i][j] = g(us[i], v_j).
@@ -605,7 +605,7 @@ impl<T: Scalar, C: Curve<T>> Surface<T> for GordonSurface<C, T> {
             .map(|u| self.curves_at_v.iter().map(|c| c.eval(u.clone())).collect())
             .collect();
         let dim = self.dim();
-        let mut grid = ndarray::Array3::from_elem((us.len(), vs.len(), dim), T::zero());
+        let mut grid = crate::grid::PointGrid::from_elem((us.len(), vs.len(), dim), T::zero());
         for i in 0..us.len() {
             for j in 0..vs.len() {
                 let p = self.combine(&lu[i], &lv[j], &at_u[j], &at_v[i]);

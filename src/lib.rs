@@ -4,21 +4,22 @@
 //! *Bézierove in Gordon-Coons krpe* (I. Čavdek, Koper 2014), proven number by number against
 //! GNU Octave, and grown into a small CAGD toolkit.
 //!
-//! The crate has two layers:
-//! - the **native API**: [`bernstein`], [`bezier::BezierCurve`], [`bezier::BezierPatch`], the
-//!   Coons and Gordon constructions, and the course material of the notes: [`interpolation`]
-//!   (Lagrange, piecewise linear, parametric), [`hermite`] (Ferguson cubics), [`spline`]
-//!   (interpolating cubic splines), [`continuity`], [`conversion`] (matrix forms), [`bspline`],
-//!   [`nurbs`] and the [`surfaces`] of the notes, all built on the [`param::Curve`] / [`param::Surface`]
-//!   traits and generic over the [`scalar::Scalar`] (`f64` or exact `BigRational`);
-//! - the **Octave-compatible layer** [`octave`]: the thesis functions under their own names
-//!   (`de_casteljau`, `ploskev_b`, …) with the thesis array layouts, Octave's text file
-//!   format, and the Octave syntax users type ([`octave::literal`]: matrix literals, ranges,
-//!   curve expressions; [`octave::script`]: the thesis's data scripts).
+//! This crate is the mathematics only: [`bernstein`], [`bezier::BezierCurve`],
+//! [`bezier::BezierPatch`], the Coons and Gordon constructions, and the course material of the
+//! notes: [`interpolation`] (Lagrange, piecewise linear, parametric), [`hermite`] (Ferguson
+//! cubics), [`spline`] (interpolating cubic splines), [`continuity`], [`conversion`] (matrix
+//! forms), [`bspline`], [`nurbs`] and the [`surfaces`] of the notes, all built on the
+//! [`param::Curve`] / [`param::Surface`] traits and generic over the [`scalar::Scalar`] (`f64`
+//! or exact `BigRational`). Its dependencies are mathematical (nalgebra, num, thiserror; rayon
+//! and pulp behind the default features `parallel` and `simd`).
 //!
-//! Around them: [`plot`] (pictures as the thesis's Octave code draws them), [`mesh`]
-//! (triangulated surfaces as STL, OBJ, PLY) and [`cli`] (the command line as a library:
-//! inputs, output formats, atomic files, one-line errors).
+//! Two crates sit on top of it, and nothing here depends on them:
+//! - `cagd-octave`, the Octave layer: the thesis functions under their own names
+//!   (`de_casteljau`, `ploskev_b`, …) with the thesis array layouts, Octave's text file format,
+//!   and the Octave syntax users type (matrix literals, ranges, curve expressions, the thesis's
+//!   data scripts);
+//! - `cagd-cli`, the `cagd` command line: inputs, output formats, pictures, meshes, atomic
+//!   files, one-line errors.
 //!
 //! Whole grids are evaluated into caller-given buffers ([`Surface::eval_grid_into`],
 //! [`Curve::eval_many_into`], layouts in [`grid`]) with `O(m + n)` work per point, no allocation
@@ -27,25 +28,24 @@
 //! **NaN and infinity** are rejected, once and for all: every entry point (constructors,
 //! evaluations taking parameters, tolerances, the parsers of literals, expressions and data
 //! scripts, every command-line input) answers a non-finite number with a typed error
-//! ([`Error::NonFinite`], [`octave::literal::LiteralError::NonFinite`]) instead of propagating
-//! it. Only [`octave::text_format`] keeps the `Inf`, `NaN` and `NA` that Octave wrote, as data.
+//! ([`Error::NonFinite`]; in the Octave layer `LiteralError::NonFinite`) instead of propagating
+//! it. Only the Octave layer's text-format reader keeps the `Inf`, `NaN` and `NA` that Octave
+//! wrote, as data.
 //!
-//! **Resource limits** ([`limits`]) refuse sizes that would not fit in memory with
-//! [`Error::TooLarge`]; every error variant, with an example triggering it, is listed in the
-//! [`error_catalogue`].
+//! **Resource limits** ([`limits`], a plain value passed to what needs it) refuse sizes that
+//! would not fit in memory with [`Error::TooLarge`]; every error variant of the workspace, with
+//! an example triggering it, is listed in `docs/ERRORS.md` (the `cagd-cli` crate's
+//! `error_catalogue`).
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
 pub mod bernstein;
 pub mod bezier;
 pub mod bspline;
-pub mod cli;
 pub mod continuity;
 pub mod conversion;
 pub mod coons;
 pub mod error;
-#[doc = include_str!("../docs/ERRORS.md")]
-pub mod error_catalogue {}
 pub mod gordon;
 pub mod grid;
 pub mod hermite;
@@ -53,11 +53,8 @@ pub mod interpolation;
 pub mod lagrange;
 pub mod limits;
 pub mod linspace;
-pub mod mesh;
 pub mod nurbs;
-pub mod octave;
 pub mod param;
-pub mod plot;
 pub mod scalar;
 pub mod spline;
 pub mod surfaces;

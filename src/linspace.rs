@@ -6,7 +6,7 @@
 //! symmetrically from both ends (`a + i*δ` from the left, `b - i*δ` from the right, with
 //! `δ = (b-a)/(n-1)`), and sets the middle element of an odd-length vector to `(a+b)/2` (or to
 //! exactly `0` when `a == -b`). `linspace(a, b, 1)` is `[b]`, and `n < 1` gives an empty vector.
-//! The test `tests/octave_reference.rs` checks this against Octave's own output for n = 1…200.
+//! The test `tests/it/octave_reference.rs` checks this against Octave's own output for n = 1…200.
 
 /// `n` points from `a` to `b`, bit for bit as Octave 7's `linspace(a, b, n)`.
 ///

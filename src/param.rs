@@ -78,9 +78,9 @@ pub trait Surface<T: Scalar = f64> {
     /// The surface on the grid `us × vs`, as an array of shape `(us.len(), vs.len(), d)`:
     /// `grid[[i, j, k]]` is coordinate `k` of `x(us[i], vs[j])`, the layout of `P(i,j,:)` in the
     /// thesis function `ploskevB`. Constructions override this with faster grid algorithms.
-    fn eval_grid(&self, us: &[T], vs: &[T]) -> ndarray::Array3<T> {
+    fn eval_grid(&self, us: &[T], vs: &[T]) -> crate::grid::PointGrid<T> {
         let d = self.dim();
-        let mut grid = ndarray::Array3::from_elem((us.len(), vs.len(), d), T::zero());
+        let mut grid = crate::grid::PointGrid::from_elem((us.len(), vs.len(), d), T::zero());
         for (i, u) in us.iter().enumerate() {
             for (j, v) in vs.iter().enumerate() {
                 let p = self.eval(u.clone(), v.clone());

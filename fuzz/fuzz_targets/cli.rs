@@ -2,7 +2,7 @@
 //! split from the rest of the input at NUL bytes. Options come from a vocabulary (so that the
 //! fuzzer reaches the constructions rather than clap's parser) or are taken verbatim.
 //!
-//! `cagd::cli::run` stages files in memory and never writes; the target runs in an empty
+//! `cagd_cli::run` stages files in memory and never writes; the target runs in an empty
 //! folder and drops arguments that would read standard input or absolute/parent paths, so
 //! nothing outside the folder is read either.
 #![no_main]
@@ -29,11 +29,47 @@ const SUBCOMMANDS: &[&str] = &[
 ];
 
 const OPTIONS: &[&str] = &[
-    "--t", "--u", "--v", "--n", "--steps", "--exact", "--rows", "--format", "--c1", "--c2",
-    "--d1", "--d2", "--c1v", "--c2v", "--d1u", "--d2u", "--twist", "--twists", "--mask",
-    "--u-curve", "--v-curve", "--u-nodes", "--v-nodes", "--nodes", "--points", "--degree",
-    "--i", "--order", "--end", "--start-tangent", "--end-tangent", "--p0", "--p1", "--t0",
-    "--t1", "--knots", "--weights", "-o", "--plot", "--mesh", "--script",
+    "--t",
+    "--u",
+    "--v",
+    "--n",
+    "--steps",
+    "--exact",
+    "--rows",
+    "--format",
+    "--c1",
+    "--c2",
+    "--d1",
+    "--d2",
+    "--c1v",
+    "--c2v",
+    "--d1u",
+    "--d2u",
+    "--twist",
+    "--twists",
+    "--mask",
+    "--u-curve",
+    "--v-curve",
+    "--u-nodes",
+    "--v-nodes",
+    "--nodes",
+    "--points",
+    "--degree",
+    "--i",
+    "--order",
+    "--end",
+    "--start-tangent",
+    "--end-tangent",
+    "--p0",
+    "--p1",
+    "--t0",
+    "--t1",
+    "--knots",
+    "--weights",
+    "-o",
+    "--plot",
+    "--mesh",
+    "--script",
 ];
 
 const VALUES: &[&str] = &[
@@ -66,7 +102,7 @@ fn init() {
         std::fs::create_dir_all(&dir).expect("scratch folder");
         std::env::set_current_dir(&dir).expect("enter scratch folder");
         // Smaller limits than the defaults (see the other targets), from cli_limits.env, which
-        // tests/regressions.rs replays: `run` reads them from the environment, and `--max-…`
+        // crates/cagd-cli/tests/it/regressions.rs replays: `run` reads them from the environment, and `--max-…`
         // arguments are dropped below.
         for (var, value) in include_str!("../cli_limits.env")
             .lines()
@@ -108,5 +144,5 @@ fuzz_target!(|data: &[u8]| {
         }
         args.push(arg);
     }
-    let _ = cagd::cli::run(&args);
+    let _ = cagd_cli::run(&args);
 });

@@ -5,18 +5,18 @@
 mod common;
 use common::small_limits;
 
-use cagd::octave::literal::Env;
-use cagd::octave::script::{run, Binding};
+use cagd_octave::literal::Env;
+use cagd_octave::script::{run, Binding};
 use libfuzzer_sys::fuzz_target;
 
 use num_rational::BigRational;
 
 fuzz_target!(|data: &[u8]| {
-    small_limits();
+    let limits = small_limits();
     let Ok(text) = std::str::from_utf8(data) else {
         return;
     };
-    let mut env = Env::<f64>::new();
+    let mut env = Env::<f64>::with_limits(limits);
     env.bind_scalar("N", 4.0);
     if let Ok(script) = run::<f64>(text, env) {
         for name in script.names() {
@@ -28,7 +28,7 @@ fuzz_target!(|data: &[u8]| {
         }
         let _ = script.resolve("c1");
     }
-    let mut exact = Env::<BigRational>::new();
+    let mut exact = Env::<BigRational>::with_limits(limits);
     exact.bind_scalar("N", BigRational::from_integer(4.into()));
     let _ = run::<BigRational>(text, exact);
 });

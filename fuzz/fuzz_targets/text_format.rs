@@ -5,18 +5,18 @@
 mod common;
 use common::small_limits;
 
-use cagd::octave::text_format::{read_numeric_text, read_text, write_text};
+use cagd_octave::text_format::{read_numeric_text, read_text_with, write_text};
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
-    small_limits();
+    let limits = small_limits();
     let Ok(text) = std::str::from_utf8(data) else {
         return;
     };
-    if let Ok(ws) = read_text(text) {
+    if let Ok(ws) = read_text_with(text, &limits) {
         // Whatever was read is loadable again (the writer may refuse odd names, never panic).
         if let Ok(written) = write_text(&ws) {
-            let again = read_text(&written).expect("written text reads back");
+            let again = read_text_with(&written, &limits).expect("written text reads back");
             assert_eq!(again.len(), ws.len());
         }
         for (name, _) in ws.iter() {

@@ -1,5 +1,5 @@
 % Case "compat_snapshots": exactly the inputs and outputs shown by the snapshot tests of the
-% Octave-compatible layer (tests/octave_compat.rs, tests/snapshots/octave_compat__*.snap), so
+% Octave-compatible layer (crates/cagd-octave/tests/it/octave_compat.rs, tests/snapshots/octave_compat__*.snap), so
 % that every number of a snapshot can be checked against Octave.  (Primer 4.3 and the Lagrange
 % basis of appendix D's nodes are taken from the cases coons_thesis and lagrange_basis.)
 % Every name starts with snap_ so that no case variable is shadowed.

@@ -1,7 +1,7 @@
 //! Tensor-product Bézier patches of degree `(m, n)` (thesis chapter 3).
 
+use crate::grid::PointGrid;
 use nalgebra::{DMatrix, DVector};
-use ndarray::Array3;
 
 use super::curve::BezierCurve;
 use super::scheme::{patch_step_in_place, patch_steps, PatchScheme};
@@ -202,7 +202,7 @@ impl<T: Scalar> BezierPatch<T> {
         Self::new(coords)
     }
 
-    /// The patch from an array of shape `(m + 1, n + 1, d)`, `net[[i, j, k]]` being coordinate
+    /// The patch from a net of shape `(m + 1, n + 1, d)`, `net[[i, j, k]]` being coordinate
     /// `k` of `b_{i,j}` — the layout the thesis's `tenzor` produces.
     ///
     /// # Errors
@@ -210,13 +210,13 @@ impl<T: Scalar> BezierPatch<T> {
     ///
     /// ```
     /// use cagd::bezier::BezierPatch;
-    /// let net = ndarray::Array3::from_shape_fn((2, 2, 1), |(i, j, _)| (i + 2 * j) as f64);
-    /// let p = BezierPatch::from_array3(&net)?;
+    /// let net = cagd::grid::PointGrid::from_shape_fn((2, 2, 1), |(i, j, _)| (i + 2 * j) as f64);
+    /// let p = BezierPatch::from_grid(&net)?;
     /// assert_eq!(p.eval(0.5, 0.5)[0], 1.5);
-    /// assert_eq!(p.to_array3(), net);
+    /// assert_eq!(p.to_grid(), net);
     /// # Ok::<(), cagd::Error>(())
     /// ```
-    pub fn from_array3(net: &Array3<T>) -> Result<Self> {
+    pub fn from_grid(net: &PointGrid<T>) -> Result<Self> {
         let (rows, cols, d) = net.dim();
         if d == 0 {
             return Err(Error::ShapeMismatch {
@@ -236,10 +236,10 @@ impl<T: Scalar> BezierPatch<T> {
         BezierPatch { coords }
     }
 
-    /// The control net as an array of shape `(m + 1, n + 1, d)` (the layout of `tenzor`).
-    pub fn to_array3(&self) -> Array3<T> {
+    /// The control net as a grid of shape `(m + 1, n + 1, d)` (the layout of `tenzor`).
+    pub fn to_grid(&self) -> PointGrid<T> {
         let (rows, cols) = self.coords[0].shape();
-        Array3::from_shape_fn((rows, cols, self.dim()), |(i, j, k)| {
+        PointGrid::from_shape_fn((rows, cols, self.dim()), |(i, j, k)| {
             self.coords[k][(i, j)].clone()
         })
     }
@@ -475,17 +475,15 @@ impl<T: Scalar> BezierPatch<T> {
     /// assert!(p.try_eval_grid(&[], &[0.0]).is_err());
     /// # Ok::<(), cagd::Error>(())
     /// ```
-    pub fn try_eval_grid(&self, us: &[T], vs: &[T]) -> Result<Array3<T>> {
+    pub fn try_eval_grid(&self, us: &[T], vs: &[T]) -> Result<PointGrid<T>> {
         check_params("Bézier patch u grid", us)?;
         check_params("Bézier patch v grid", vs)?;
         Ok(self.grid(us, vs))
     }
 
-    fn grid(&self, us: &[T], vs: &[T]) -> Array3<T> {
-        let mut grid = Array3::from_elem((us.len(), vs.len(), self.dim()), T::zero());
-        let out = grid
-            .as_slice_mut()
-            .expect("a new array is contiguous in standard order");
+    fn grid(&self, us: &[T], vs: &[T]) -> PointGrid<T> {
+        let mut grid = PointGrid::from_elem((us.len(), vs.len(), self.dim()), T::zero());
+        let out = grid.as_mut_slice();
         self.fill_grid(us, vs, out);
         grid
     }
@@ -566,7 +564,7 @@ impl<T: Scalar> Surface<T> for BezierPatch<T> {
 
     /// Grid evaluation through basis matrices (see [`BezierPatch::try_eval_grid`]); empty
     /// parameter lists give an empty array.
-    fn eval_grid(&self, us: &[T], vs: &[T]) -> Array3<T> {
+    fn eval_grid(&self, us: &[T], vs: &[T]) -> PointGrid<T> {
         self.grid(us, vs)
     }
 

@@ -1,7 +1,7 @@
 //! Tensor-product B-spline surfaces (seed 004 "B-spline plocha", seed 001).
 
+use crate::grid::PointGrid;
 use nalgebra::{DMatrix, DVector};
-use ndarray::Array3;
 
 use super::basis::{basis_functions, find_span};
 use super::curve::clamp;
@@ -214,11 +214,9 @@ impl<T: Scalar> BSplineSurface<T> {
 
     /// The grid `us × vs` as an array of shape `(us.len(), vs.len(), d)` by
     /// [`eval_grid_into`](Self::eval_grid_into)'s algorithm (see [`Surface::eval_grid`]).
-    pub(crate) fn grid_array(&self, us: &[T], vs: &[T], d: usize, project: bool) -> Array3<T> {
-        let mut grid = Array3::from_elem((us.len(), vs.len(), d), T::zero());
-        let out = grid
-            .as_slice_mut()
-            .expect("a new array is contiguous in standard order");
+    pub(crate) fn grid_array(&self, us: &[T], vs: &[T], d: usize, project: bool) -> PointGrid<T> {
+        let mut grid = PointGrid::from_elem((us.len(), vs.len(), d), T::zero());
+        let out = grid.as_mut_slice();
         self.fill_grid(us, vs, out, project);
         grid
     }
@@ -246,7 +244,7 @@ impl<T: Scalar> Surface<T> for BSplineSurface<T> {
     }
 
     /// The grid by [`BSplineSurface::eval_grid_into`]'s algorithm (`O(p + q)` per point).
-    fn eval_grid(&self, us: &[T], vs: &[T]) -> Array3<T> {
+    fn eval_grid(&self, us: &[T], vs: &[T]) -> PointGrid<T> {
         self.grid_array(us, vs, self.coords.len(), false)
     }
 

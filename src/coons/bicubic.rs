@@ -522,11 +522,11 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> Surface<T> for BicubicCoonsPatch<C, D,
 
     /// The patch on the grid `us × vs`, shape `(us.len(), vs.len(), d)`; each of the eight
     /// curves is evaluated once per grid line.
-    fn eval_grid(&self, us: &[T], vs: &[T]) -> ndarray::Array3<T> {
+    fn eval_grid(&self, us: &[T], vs: &[T]) -> crate::grid::PointGrid<T> {
         let at_u: Vec<_> = us.iter().map(|u| self.values_at_u(u)).collect();
         let at_v: Vec<_> = vs.iter().map(|v| self.values_at_v(v)).collect();
         let dim = self.boundary.dim();
-        let mut grid = ndarray::Array3::from_elem((us.len(), vs.len(), dim), T::zero());
+        let mut grid = crate::grid::PointGrid::from_elem((us.len(), vs.len(), dim), T::zero());
         for (i, u) in us.iter().enumerate() {
             for (j, v) in vs.iter().enumerate() {
                 let x = self.combine(u, v, &at_u[i], &at_v[j]);

@@ -229,7 +229,7 @@ impl<T: Scalar, C: Curve<T>> Surface<T> for CoonsPatch<C, T> {
         CoonsPatch::eval_grid_into(self, us, vs, out)
     }
 
-    fn eval_grid(&self, us: &[T], vs: &[T]) -> ndarray::Array3<T> {
+    fn eval_grid(&self, us: &[T], vs: &[T]) -> crate::grid::PointGrid<T> {
         let f: Vec<_> = us
             .iter()
             .map(|u| (T::one() - u.clone(), u.clone()))

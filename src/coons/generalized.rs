@@ -267,7 +267,7 @@ impl<T: Scalar, C: Curve<T>> Surface<T> for GeneralizedCoonsPatch<C, T> {
 
     /// The patch on the grid `us × vs`, shape `(us.len(), vs.len(), d)`; curves and blending
     /// functions are evaluated once per grid line.
-    fn eval_grid(&self, us: &[T], vs: &[T]) -> ndarray::Array3<T> {
+    fn eval_grid(&self, us: &[T], vs: &[T]) -> crate::grid::PointGrid<T> {
         let f: Vec<_> = us.iter().map(|u| self.f.eval(u.clone())).collect();
         let g: Vec<_> = vs.iter().map(|v| self.g.eval(v.clone())).collect();
         self.boundary.blend_grid(us, vs, &f, &g)

@@ -4,6 +4,7 @@ use nalgebra::DMatrix;
 
 use super::discrete::net_degree;
 use crate::error::{Error, Result};
+use crate::limits::Limits;
 use crate::scalar::Scalar;
 
 /// A symmetric 3×3 mask (notes (9)): every interior control point is the weighted sum of its
@@ -178,19 +179,24 @@ const SINGULAR_EIGENVALUE: f64 = 1e-12;
 /// [`Error::SingularMask`] when the system is singular: some eigenvalue `λ_pq` is below
 /// `1e-12 · (1 + 4|α| + 4|β|)` in modulus, or elimination meets an exactly zero pivot;
 /// [`Error::TooLarge`] when the band would hold more than
-/// [`crate::limits::Limits::max_system_entries`] numbers or the elimination would take more
-/// than [`crate::limits::Limits::max_work`] operations.
+/// `limits.max_system_entries` numbers or the elimination would take more than
+/// `limits.max_work` operations ([`Limits`]).
 ///
 /// ```
 /// use cagd::coons::{discrete_coons, solve_mask, Mask};
+/// use cagd::Limits;
 /// use nalgebra::DMatrix;
 /// // A 5×4 net whose boundary is z = sin(i) + cos(j) + i·j.
 /// let z = DMatrix::from_fn(5, 4, |i, j| (i as f64).sin() + (j as f64).cos() + (i * j) as f64);
-/// let by_mask = solve_mask(&[z.clone()], &Mask::coons()).unwrap();
+/// let by_mask = solve_mask(&[z.clone()], &Mask::coons(), &Limits::default()).unwrap();
 /// let by_formula = discrete_coons(&[z]).unwrap();
 /// assert!((&by_mask[0] - &by_formula[0]).amax() < 1e-14);
 /// ```
-pub fn solve_mask<T: Scalar>(net: &[DMatrix<T>], mask: &Mask<T>) -> Result<Vec<DMatrix<T>>> {
+pub fn solve_mask<T: Scalar>(
+    net: &[DMatrix<T>],
+    mask: &Mask<T>,
+    limits: &Limits,
+) -> Result<Vec<DMatrix<T>>> {
     let (m, n) = net_degree("mask net", net)?;
     let mut out = net.to_vec();
     if m < 2 || n < 2 {
@@ -221,7 +227,6 @@ pub fn solve_mask<T: Scalar>(net: &[DMatrix<T>], mask: &Mask<T>) -> Result<Vec<D
         }
     };
     // The band stores size × (3w + 1) entries: refuse what would not fit in memory.
-    let limits = crate::limits::Limits::current();
     limits.check_system("mask net", size as u128 * (3 * w as u128 + 1))?;
     // Banded elimination: about size · w² operations per coordinate.
     limits.check_work("mask net", size as u128 * (w as u128 + 1).pow(2))?;

@@ -447,13 +447,13 @@ impl<T: Scalar, C: Curve<T>> CoonsBoundary<C, T> {
         vs: &[T],
         f: &[(T, T)],
         g: &[(T, T)],
-    ) -> ndarray::Array3<T> {
+    ) -> crate::grid::PointGrid<T> {
         let dim = self.dim();
         let c1: Vec<_> = us.iter().map(|u| self.c1.eval(u.clone())).collect();
         let c2: Vec<_> = us.iter().map(|u| self.c2.eval(u.clone())).collect();
         let d1: Vec<_> = vs.iter().map(|v| self.d1.eval(v.clone())).collect();
         let d2: Vec<_> = vs.iter().map(|v| self.d2.eval(v.clone())).collect();
-        let mut grid = ndarray::Array3::from_elem((us.len(), vs.len(), dim), T::zero());
+        let mut grid = crate::grid::PointGrid::from_elem((us.len(), vs.len(), dim), T::zero());
         for i in 0..us.len() {
             for j in 0..vs.len() {
                 let w = corner_weights(&f[i], &g[j]);

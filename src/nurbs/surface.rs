@@ -209,7 +209,7 @@ impl<T: Scalar> Surface<T> for NurbsSurface<T> {
     }
 
     /// The grid by [`NurbsSurface::eval_grid_into`]'s algorithm (`O(p + q)` per point).
-    fn eval_grid(&self, us: &[T], vs: &[T]) -> ndarray::Array3<T> {
+    fn eval_grid(&self, us: &[T], vs: &[T]) -> crate::grid::PointGrid<T> {
         self.homogeneous.grid_array(us, vs, self.dim(), true)
     }
 

@@ -1,0 +1,392 @@
+//! `decasteljau`, `bezier-patch`, `bernstein`, `derivative`.
+
+use cagd::limits::Limits;
+use clap::Args;
+use nalgebra::DMatrix;
+
+use crate::args::{
+    CurveParamArgs, MeshArgs, OutputArgs, PlotArgs, RowsArgs, ScriptArgs, StepsArgs,
+    SurfaceParamArgs,
+};
+use crate::plot::{Colour, Figure};
+use crate::{load_net, CliError, PendingWrites, Report, Value};
+use cagd::bezier::{BezierCurve, BezierPatch};
+use cagd_octave::literal::{Env, LiteralScalar};
+
+use super::common::*;
+use super::work::{bits, check_work, plotted, polynomial_bits, work};
+use super::{prepare_script, Outcome};
+
+#[derive(Debug, Args)]
+pub struct DeCasteljauCommand {
+    /// Control points b_0..b_n: a matrix literal, a data file (FILE or FILE.txt:NAME for an
+    /// Octave save -text file) or - for standard input; one point per column.
+    #[arg(value_name = "CONTROL", allow_hyphen_values = true)]
+    pub control: String,
+    #[command(flatten)]
+    pub params: CurveParamArgs,
+    #[command(flatten)]
+    pub rows: RowsArgs,
+    #[command(flatten)]
+    pub steps: StepsArgs,
+    #[command(flatten)]
+    pub script: ScriptArgs,
+    #[command(flatten)]
+    pub output: OutputArgs,
+    #[command(flatten)]
+    pub plot: PlotArgs,
+}
+
+/// Curve points by de Casteljau's algorithm (thesis algorithm 1, `deCasteljau`).
+pub fn decasteljau<T: LiteralScalar>(
+    limits: &Limits,
+    cmd: &DeCasteljauCommand,
+) -> Result<Outcome, CliError> {
+    let script = prepare_script::<T>(limits, &cmd.script, None)?;
+    let control = points(
+        limits,
+        "CONTROL",
+        &cmd.control,
+        script.as_ref(),
+        cmd.rows.rows,
+    )?;
+    check_degree(limits, "CONTROL", control.ncols().saturating_sub(1))?;
+    let curve = BezierCurve::new(control).map_err(lib(
+        "CONTROL",
+        "control points b_0..b_n, one per column (or per row with --rows)",
+    ))?;
+    let ts: Vec<T> =
+        params_or_samples(limits, "--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
+    // The picture always shows the whole curve over [0, 1], as the thesis's plot3.
+    let dense: Vec<T> = T::linspace(&T::zero(), &T::one(), 101);
+    check_work(
+        limits,
+        "--t",
+        curve_work(&curve, &ts, cmd.steps.steps, plotted(&cmd.plot, &dense)),
+    )?;
+    let values = curve
+        .eval_many(&ts)
+        .map_err(lib("--t", "finite parameter values"))?;
+    let mut report = Report::new();
+    if cmd.steps.steps {
+        for (k, t) in ts.iter().enumerate() {
+            let name = if ts.len() == 1 {
+                "scheme".to_string()
+            } else {
+                format!("scheme_{}", k + 1)
+            };
+            report.push(name, Value::Text(curve.scheme(t.clone()).to_string()));
+        }
+    }
+    report.push("t", Value::Matrix(row(&ts)));
+    report.push("result", Value::Matrix(values.clone()));
+    let mut files = PendingWrites::new();
+    if let Some(path) = &cmd.plot.plot {
+        let line = curve.eval_many(&dense).map_err(lib("--plot", "a curve"))?;
+        let mut figure = Figure::new("Bézier curve (de Casteljau)")
+            .curve(to_f64(&line), Colour::Blue, "curve")
+            .control_polygon(to_f64(curve.control()), "control polygon");
+        if cmd.params.t.is_some() {
+            figure = figure.boundary(to_f64(&values), Colour::Black, "points at t");
+        }
+        add_plot(&mut files, "--plot", path, &figure)?;
+    }
+    finish(
+        &report,
+        &cmd.output,
+        files,
+        warnings(
+            &cmd.script.script,
+            script.as_ref(),
+            &mut Env::with_limits(*limits),
+        ),
+    )
+}
+
+/// How much more `--steps` costs than the points alone: each scheme is computed again and
+/// written out, about as many numbers as operations (`(n+1)(n+2)/2` points of a curve's
+/// scheme), each number some 50 operations to format and about 16 bytes of text. So a
+/// command whose schemes would fill gigabytes of memory (a 10⁷-point grid of 3×3-net schemes
+/// is 6.6 GB of text) is refused up front like any other large work.
+const STEPS_FACTOR: u128 = 50;
+
+/// The work of evaluating `curve` by de Casteljau at `ts` and at `dense` (a picture): `(n+1)²`
+/// operations per coordinate and parameter, on numbers of [`polynomial_bits`] of the degree;
+/// with `steps` [`STEPS_FACTOR`] times that at `ts`.
+fn curve_work<T: LiteralScalar>(
+    curve: &BezierCurve<T>,
+    ts: &[T],
+    steps: bool,
+    dense: &[T],
+) -> u128 {
+    let per_t = curve.dim() as u128 * (curve.degree() as u128 + 1).pow(2);
+    let coefficients = bits(curve.control().iter());
+    let at = |params: &[T], times: u128| {
+        let size = polynomial_bits(curve.degree(), bits(params), coefficients);
+        work::<T>(params.len() as u128 * times * per_t, size)
+    };
+    at(ts, if steps { STEPS_FACTOR } else { 1 }).saturating_add(at(dense, 1))
+}
+
+#[derive(Debug, Args)]
+pub struct BezierPatchCommand {
+    /// The control net: packed (m+1)×3(n+1) like ploskevB's input (row i = [b_i0 b_i1 …
+    /// b_in], each point's x y z side by side), or an Octave save -text file holding an
+    /// (m+1)×(n+1)×3 array (FILE or FILE.txt:NAME).
+    #[arg(value_name = "NET", allow_hyphen_values = true)]
+    pub net: String,
+    #[command(flatten)]
+    pub params: SurfaceParamArgs,
+    #[command(flatten)]
+    pub steps: StepsArgs,
+    #[command(flatten)]
+    pub script: ScriptArgs,
+    #[command(flatten)]
+    pub output: OutputArgs,
+    #[command(flatten)]
+    pub plot: PlotArgs,
+    #[command(flatten)]
+    pub mesh: MeshArgs,
+}
+
+/// Whether `--u` and `--v` ask for one point.
+pub fn point_mode(limits: &Limits, params: &SurfaceParamArgs) -> bool {
+    let single = |s: &Option<String>| {
+        s.as_ref()
+            .is_some_and(|t| crate::load_params::<f64>(limits, "", t).is_ok_and(|v| v.len() == 1))
+    };
+    params.n.is_none() && single(&params.u) && single(&params.v)
+}
+
+/// Points of a Bézier patch (thesis algorithms 2–4, `ploskevB`, `bilinearna`, `tenzor`).
+pub fn bezier_patch<T: LiteralScalar>(
+    limits: &Limits,
+    cmd: &BezierPatchCommand,
+) -> Result<Outcome, CliError> {
+    let script = prepare_script::<T>(limits, &cmd.script, cmd.params.n)?;
+    let net = load_net::<T>(limits, "NET", &cmd.net, script.as_ref())?;
+    let (m1, n1, _) = net.dim();
+    check_degree(limits, "NET", m1.max(n1).saturating_sub(1))?;
+    let patch = BezierPatch::from_grid(&net).map_err(lib(
+        "NET",
+        "a packed (m+1)×3(n+1) control net as ploskevB takes it",
+    ))?;
+    let us: Vec<T> =
+        params_or_samples(limits, "--u", &cmd.params.u, cmd.params.n, DEFAULT_SAMPLES)?;
+    let vs: Vec<T> =
+        params_or_samples(limits, "--v", &cmd.params.v, cmd.params.n, DEFAULT_SAMPLES)?;
+    check_grid(limits, us.len(), vs.len())?;
+    let single = point_mode(limits, &cmd.params);
+    let picture: Vec<T> = T::linspace(&T::zero(), &T::one(), 21);
+    // The grid: basis rows per u and v, then about 2(m+1)(n+1) operations per coordinate and
+    // point, on numbers that grow by the bits of u at m levels and of v at n. --steps adds a
+    // tensor de Casteljau scheme per point, (m+1)(n+1)(m+n+2) operations per coordinate,
+    // STEPS_FACTOR times for writing it out; the 21 × 21 picture of a single point is a grid.
+    let per_point = 6 * (m1 as u128 * n1 as u128);
+    let per_scheme = 3 * (m1 as u128 * n1 as u128) * (m1 + n1) as u128;
+    let coefficients = bits(net.iter());
+    let grid_work = |us: &[T], vs: &[T], steps: bool| {
+        let size = polynomial_bits(m1.saturating_sub(1), bits(us), 0)
+            .saturating_add(polynomial_bits(n1 - 1, bits(vs), coefficients));
+        let points = us.len() as u128 * vs.len() as u128;
+        let per = per_point + if steps { STEPS_FACTOR * per_scheme } else { 0 };
+        work::<T>(points * per, size)
+    };
+    let pictures = single && (cmd.plot.plot.is_some() || cmd.mesh.mesh.is_some());
+    let picture = if pictures { picture } else { Vec::new() };
+    check_work(
+        limits,
+        "--u/--v",
+        grid_work(&us, &vs, cmd.steps.steps).saturating_add(grid_work(&picture, &picture, false)),
+    )?;
+    let grid = patch
+        .try_eval_grid(&us, &vs)
+        .map_err(lib("--u/--v", "finite parameter values"))?;
+    let mut report = Report::new();
+    if cmd.steps.steps {
+        let mut k = 0;
+        for u in &us {
+            for v in &vs {
+                k += 1;
+                let name = if single {
+                    "scheme".to_string()
+                } else {
+                    format!("scheme_{k}")
+                };
+                report.push(
+                    name,
+                    Value::Text(patch.scheme(u.clone(), v.clone()).to_string()),
+                );
+            }
+        }
+    }
+    report.push("u", Value::Matrix(row(&us)));
+    report.push("v", Value::Matrix(row(&vs)));
+    if single {
+        report.push(
+            "result",
+            Value::Matrix(column(&patch.eval(us[0].clone(), vs[0].clone()))),
+        );
+    } else {
+        report.push("result", Value::Grid(grid.clone()));
+    }
+    let mut files = PendingWrites::new();
+    let picture_grid = if pictures {
+        patch
+            .try_eval_grid(&picture, &picture)
+            .map_err(lib("--plot", "a patch"))?
+    } else {
+        grid
+    };
+    if let Some(path) = &cmd.plot.plot {
+        let figure = Figure::new("Bézier patch")
+            .surface(grid_f64(&picture_grid), "patch")
+            .net(grid_f64(&net), Colour::Red, "control net");
+        add_plot(&mut files, "--plot", path, &figure)?;
+    }
+    if let Some(path) = &cmd.mesh.mesh {
+        add_mesh(&mut files, "--mesh", path, &grid_f64(&picture_grid))?;
+    }
+    finish(
+        &report,
+        &cmd.output,
+        files,
+        warnings(
+            &cmd.script.script,
+            script.as_ref(),
+            &mut Env::with_limits(*limits),
+        ),
+    )
+}
+
+#[derive(Debug, Args)]
+pub struct BernsteinCommand {
+    /// The degree n.
+    #[arg(long, value_name = "N")]
+    pub degree: usize,
+    /// Only B_i^n (default: all of B_0^n..B_n^n).
+    #[arg(long, value_name = "I")]
+    pub i: Option<usize>,
+    #[command(flatten)]
+    pub params: CurveParamArgs,
+    #[command(flatten)]
+    pub output: OutputArgs,
+}
+
+/// Bernstein polynomial values.
+pub fn bernstein<T: LiteralScalar>(
+    limits: &Limits,
+    cmd: &BernsteinCommand,
+) -> Result<Outcome, CliError> {
+    check_degree(limits, "--degree", cmd.degree)?;
+    let ts: Vec<T> =
+        params_or_samples(limits, "--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
+    // The triangular recurrence: (n+1)² operations per parameter, on numbers of
+    // polynomial_bits of the degree.
+    check_work(
+        limits,
+        "--t",
+        work::<T>(
+            ts.len() as u128 * (cmd.degree as u128 + 1).pow(2),
+            polynomial_bits(cmd.degree, bits(&ts), 0),
+        ),
+    )?;
+    let all = cagd::bernstein::basis_matrix(cmd.degree, &ts);
+    let result = match cmd.i {
+        Some(i) if i > cmd.degree => {
+            return Err(shape(
+                "--i",
+                format!("i = {i} exceeds the degree {}", cmd.degree),
+                "an index 0 ≤ i ≤ n",
+            ))
+        }
+        Some(i) => all.columns(i, 1).into_owned(),
+        None => all,
+    };
+    let mut report = Report::new();
+    report.push(
+        "t",
+        Value::Matrix(DMatrix::from_column_slice(ts.len(), 1, &ts)),
+    );
+    report.push("result", Value::Matrix(result));
+    finish(&report, &cmd.output, PendingWrites::new(), Vec::new())
+}
+
+#[derive(Debug, Args)]
+pub struct DerivativeCommand {
+    /// Control points of the curve (columns), as for decasteljau.
+    #[arg(value_name = "CONTROL", allow_hyphen_values = true)]
+    pub control: String,
+    /// The order r of the derivative.
+    #[arg(long, short = 'r', value_name = "R", default_value_t = 1)]
+    pub order: usize,
+    /// Also the values of the derivative at these parameters.
+    #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
+    pub t: Option<String>,
+    #[command(flatten)]
+    pub rows: RowsArgs,
+    #[command(flatten)]
+    pub script: ScriptArgs,
+    #[command(flatten)]
+    pub output: OutputArgs,
+    #[command(flatten)]
+    pub plot: PlotArgs,
+}
+
+/// The r-th derivative of a Bézier curve.
+pub fn derivative<T: LiteralScalar>(
+    limits: &Limits,
+    cmd: &DerivativeCommand,
+) -> Result<Outcome, CliError> {
+    let script = prepare_script::<T>(limits, &cmd.script, None)?;
+    let control = points(
+        limits,
+        "CONTROL",
+        &cmd.control,
+        script.as_ref(),
+        cmd.rows.rows,
+    )?;
+    check_degree(limits, "CONTROL", control.ncols().saturating_sub(1))?;
+    let curve =
+        BezierCurve::new(control).map_err(lib("CONTROL", "control points, one per column"))?;
+    let d = curve
+        .derivative(cmd.order)
+        .map_err(lib("--order", "an order r ≤ the degree n"))?;
+    let mut report = Report::new();
+    report.push("control", Value::Matrix(d.control().clone()));
+    let ts: Vec<T> = match &cmd.t {
+        Some(t) => crate::load_params(limits, "--t", t)?,
+        None => Vec::new(),
+    };
+    let dense: Vec<T> = T::linspace(&T::zero(), &T::one(), 101);
+    check_work(
+        limits,
+        "--t",
+        curve_work(&d, &ts, false, plotted(&cmd.plot, &dense)),
+    )?;
+    if cmd.t.is_some() {
+        let values = d
+            .eval_many(&ts)
+            .map_err(lib("--t", "finite parameter values"))?;
+        report.push("t", Value::Matrix(row(&ts)));
+        report.push("result", Value::Matrix(values));
+    }
+    let mut files = PendingWrites::new();
+    if let Some(path) = &cmd.plot.plot {
+        let line = d.eval_many(&dense).map_err(lib("--plot", "a curve"))?;
+        let figure = Figure::new(format!("derivative of order {}", cmd.order))
+            .curve(to_f64(&line), Colour::Blue, "derivative curve")
+            .control_polygon(to_f64(d.control()), "its control polygon");
+        add_plot(&mut files, "--plot", path, &figure)?;
+    }
+    finish(
+        &report,
+        &cmd.output,
+        files,
+        warnings(
+            &cmd.script.script,
+            script.as_ref(),
+            &mut Env::with_limits(*limits),
+        ),
+    )
+}

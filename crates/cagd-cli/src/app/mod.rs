@@ -1,0 +1,603 @@
+//! The `cagd` command line in-process: parse the arguments, call the library, and return what
+//! would be printed and written (see [`crate::run`]).
+
+use cagd::limits::Limits;
+use std::ffi::OsString;
+
+use cagd::grid::PointGrid;
+use clap::error::{ContextKind, ErrorKind as ClapKind};
+use clap::{Args, CommandFactory, Parser, Subcommand};
+use nalgebra::DMatrix;
+use num_rational::BigRational;
+
+mod bezier;
+
+mod common;
+
+mod course;
+
+mod patches;
+
+mod thesis;
+
+mod work;
+
+use crate::args::{
+    CurveParamArgs, LimitArgs, MeshArgs, OutputArgs, PlotArgs, ScriptArgs, SurfaceParamArgs,
+};
+use crate::plot::{Colour, Figure};
+use crate::{
+    load_expression, load_params, load_script, samples, CliError, ErrorKind, PendingWrites, Report,
+    Value, CURVE_FORM,
+};
+use cagd_octave::literal::{Env, LiteralScalar, Warning};
+use cagd_octave::script::{Binding, Script};
+
+/// Curves and surfaces of computer-aided geometric design, checked against GNU Octave.
+#[derive(Debug, Parser)]
+#[command(name = "cagd", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+    #[command(flatten)]
+    limits: LimitArgs,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Reproduce every worked example and appendix run of the thesis, with steps and pictures.
+    #[command(after_help = "\
+Needs no input. Prints Primer 2.4 (de Casteljau scheme at t = 1/2 and the curve), a Bézier
+patch example in place of Primer 3.2 (whose net is garbled in the source and whose printed
+z-values are inconsistent), Primer 4.3 (r_c, r_d, r_cd and x at (0.2, 0.5), exactly), the
+appendix C Coons patch (data script with its N and P4 bugs fixed) and the appendix D Gordon
+surface (g1, g2, g12 at a point, the grid, the conditioning). Pictures (SVG and PNG) and
+meshes (STL, OBJ, PLY) go to --out, written atomically.
+
+Example:
+  cagd thesis --out cagd-out")]
+    Thesis(thesis::ThesisCommand),
+    /// Points of a Bézier curve by de Casteljau's algorithm (thesis algorithm 1).
+    #[command(after_help = "\
+Input: control points b_0..b_n as the columns of a d×(n+1) matrix (rows with --rows): a
+literal, a numeric text/CSV file, an Octave save -text file (FILE or FILE:NAME; else its first
+numeric variable), or - for standard input.
+Layout: result is d×k, one point per column (like T in deCasteljau); t is 1×k.
+--steps prints the whole scheme b_i^r(t) for each t, columns r = 0..n, as in Primer 2.4.
+
+Examples:
+  cagd decasteljau \"[0 0 0; 0 2 2; 8 2 0; 4 0 0]'\" --t 0.5 --steps --exact
+  cagd decasteljau \"[0 0 0; 0 2 2; 8 2 0; 4 0 0]\" --rows --n 50 --plot curve.svg")]
+    Decasteljau(bezier::DeCasteljauCommand),
+    /// Points of a Bézier patch (thesis algorithms 2-4, ploskevB/bilinearna/tenzor).
+    #[command(after_help = "\
+Input: the net packed (m+1)×3(n+1) as ploskevB takes it (row i = [b_i0 b_i1 ... b_in], x y z
+side by side), or an Octave save -text file with an (m+1)×(n+1)×3 array.
+Layout: with single --u and --v, result is the 3×1 point; otherwise result is the grid
+nu×nv×3 (result(i,j,:) at (u(i), v(j)), like P in ploskevB).
+--steps prints the tensor de Casteljau scheme for each (u, v).
+
+Examples:
+  cagd bezier-patch \"[0 0 0 0 2 1 0 4 0; 2 0 1 2 2 4 2 4 1; 4 0 0 4 2 1 4 4 0]\" --u 0.5 --v 0.5 --steps
+  cagd bezier-patch net.txt --n 20 --plot patch.png --mesh patch.stl")]
+    BezierPatch(bezier::BezierPatchCommand),
+    /// A bilinearly blended Coons patch x = r_c + r_d - r_cd (thesis 4.1, algorithms 5, 6).
+    #[command(after_help = "\
+Input: --c1 x(u,0), --c2 x(u,1) (expressions in u), --d1 x(0,v), --d2 x(1,v) (in v), as the
+thesis writes them, e.g. \"[u;0;u-u^2]\"; a constant matrix or data file instead gives the
+control points (columns) of a Bézier curve. Or --script FILE: the appendix C data script
+(sampled c1, c2, d1, d2 and corners P1..P4); --n binds its N.
+Layout: single --u and --v give the 3×1 point; otherwise the grid nu×nv×3 (like P).
+--steps also prints rc, rd, rcd (same layout). --plot draws the surface with c1, c2 in red and
+d1, d2 in green, as appendix C does.
+
+Examples:
+  cagd coons --c1 \"[u;0;u-u^2]\" --c2 \"[u;1;u]\" --d1 \"[0;v^2;v-v^2]\" --d2 \"[1;v;v]\" --u 0.2 --v 0.5 --steps --exact
+  cagd coons --script appendix_c.m --n 10 --plot coons.png --mesh coons.obj")]
+    Coons(patches::CoonsCommand),
+    /// A bicubically blended Coons patch with cross-boundary derivatives (thesis 4.3).
+    #[command(after_help = "\
+Input: the boundaries as for coons, and the cross-boundary derivative curves --c1v x_v(u,0),
+--c2v x_v(u,1) (in u), --d1u x_u(0,v), --d2u x_u(1,v) (in v). --twist zero|gregory|given
+chooses the corner twists x_uv (given: --twists, a d×4 matrix for P1..P4; gregory needs
+Bézier cross-boundary curves, whose derivatives it uses).
+Layout: as for coons.
+
+Example:
+  cagd coons-bicubic --c1 \"[u;0;0]\" --c2 \"[u;1;0]\" --d1 \"[0;v;0]\" --d2 \"[1;v;0]\" --c1v \"[0;1;0]\" --c2v \"[0;1;0]\" --d1u \"[1;0;0]\" --d2u \"[1;0;0]\" --n 5")]
+    CoonsBicubic(patches::CoonsBicubicCommand),
+    /// The discrete Coons patch: interior control points from the boundary of a net.
+    #[command(after_help = "\
+Input: a net as for bezier-patch; only its boundary rows and columns are used.
+Layout: result is the full net (m+1)×(n+1)×3.
+--mask=ALPHA,BETA solves the affine mask instead (alpha + beta = 1/4).
+
+Examples:
+  cagd discrete-coons \"[0 0 0 0 1 0 0 2 0; 1 0 0 0 0 0 1 2 1; 2 0 0 2 1 1 2 2 0]\"
+  cagd discrete-coons net.txt --mask=0,0.25")]
+    DiscreteCoons(patches::DiscreteCoonsCommand),
+    /// A Gordon surface g = g1 + g2 - g12 of a curve network (thesis 4.4, algorithm 7).
+    #[command(after_help = "\
+Input: repeated --u-curve g(u_i, v) (expressions in v) and --v-curve g(u, v_j) (in u), in node
+order, with --u-nodes and --v-nodes (default equally spaced); or --script FILE with appendix
+D's packed g_u (3×kN), g_v, g_uv (k×3k) and nodes x.
+Layout: single --u and --v give the 3×1 point; otherwise the grid nu×nv×3. --steps also prints
+g1, g2, g12. The conditioning line gives the Lebesgue constants of the node vectors.
+
+Examples:
+  cagd gordon --v-curve \"[u;0;u-u^2]\" --v-curve \"[u;0.5;0.5+u-u^2]\" --v-curve \"[u;1;1+u-u^2]\" \\
+              --u-curve \"[0;v;v]\" --u-curve \"[0.5;v;0.25+v]\" --u-curve \"[1;v;v]\" --u 0.25 --v 0.75 --steps --exact
+  cagd gordon --script appendix_d.m --n 10 --plot gordon.png")]
+    Gordon(patches::GordonCommand),
+    /// Lagrange basis polynomials, or the polynomial interpolating values at nodes.
+    #[command(after_help = "\
+Layout: without --points, result is k×(m+1): row = parameter, column = L_0..L_m. With --points
+(d×(m+1), one column per node), result is d×k, the interpolant at each t.
+
+Examples:
+  cagd lagrange --nodes \"[0 0.5 1]\" --t 0.25 --exact
+  cagd lagrange --nodes 1:5 --points \"[1 2 3 2 1]\" --t 1:0.5:5")]
+    Lagrange(patches::LagrangeCommand),
+    /// Bernstein polynomial values B_i^n(t).
+    #[command(after_help = "\
+Layout: t is k×1, result k×(n+1) (row = parameter, column = B_0^n..B_n^n), or k×1 with --i.
+
+Examples:
+  cagd bernstein --degree 3 --t 0.5 --exact
+  cagd bernstein --degree 3 --i 1 --n 5")]
+    Bernstein(bezier::BernsteinCommand),
+    /// Control points (and values) of the r-th derivative of a Bézier curve.
+    #[command(after_help = "\
+Layout: control is d×(n-r+1), the points n!/(n-r)! Δ^r b_i as columns; with --t, result is d×k.
+
+Example:
+  cagd derivative \"[0 0 0; 0 2 2; 8 2 0; 4 0 0]'\" --order 1 --t 0.5 --exact")]
+    Derivative(bezier::DerivativeCommand),
+    /// An interpolating cubic spline (seed 004): tangents at the points and curve samples.
+    #[command(after_help = "\
+Input: points as columns (rows with --rows); --end clamped (with --start-tangent and
+--end-tangent), natural or closed. Segment k runs over [k, k+1].
+Layout: tangents is d×m (one per point); result d×k at --t (default: 10 samples per segment).
+
+Example:
+  cagd spline \"[0 0; 2 1; 4 4; 6 0]'\" --end clamped --start-tangent \"[1;1]\" --end-tangent \"[-1;1]\" --exact")]
+    Spline(course::SplineCommand),
+    /// A Hermite (Ferguson) cubic from end points and end tangents (seed 004).
+    #[command(after_help = "\
+Layout: result d×k at the parameters; --steps prints the Hermite basis values and the Bézier
+control points of the same cubic.
+
+Example:
+  cagd hermite --p0 \"[0;0]\" --p1 \"[1;0]\" --t0 \"[1;1]\" --t1 \"[1;-1]\" --t 0.5 --exact")]
+    Hermite(course::HermiteCommand),
+    /// A B-spline curve by de Boor's algorithm (seeds 001, 004).
+    #[command(after_help = "\
+Input: control points as columns, --degree p, --knots (n+p+2 values; default clamped uniform).
+Layout: result d×k at the parameters; --steps prints the basis functions N_i,p(t) (k×(n+1)).
+
+Example:
+  cagd bspline \"[0 0; 1 2; 3 2; 4 0]'\" --degree 2 --knots \"[0 0 0 0.5 1 1 1]\" --t 0.25 --steps --exact")]
+    Bspline(course::BSplineCommand),
+    /// A NURBS curve (seed 001): rational B-spline with weights.
+    #[command(after_help = "\
+Input: control points as columns, --weights (one per point, positive), --degree, --knots.
+Layout: result d×k; --steps prints the rational basis functions R_i,p(t).
+
+Example (a quarter circle):
+  cagd nurbs \"[1 0; 1 1; 0 1]'\" --weights \"[1 0.7071067811865476 1]\" --degree 2 --n 5")]
+    Nurbs(course::NurbsCommand),
+    /// Sample a curve given as an expression in its parameter, as the thesis writes curves.
+    #[command(after_help = "\
+Layout: the result is d × k, one point per column (like T in the thesis's deCasteljau).
+
+Examples:
+  cagd curve \"[u; 0; u-u^2]\" --n 5
+  cagd curve \"[u; 0.5; 0.5+u-u^2]\" --t \"[0 0.25 0.5]\" --exact
+  cagd curve \"[cos(2*pi*t); sin(2*pi*t)]\" --n 50 --plot circle.svg")]
+    Curve(CurveCommand),
+    /// Sample a surface given as an expression in u and v on a grid.
+    #[command(after_help = "\
+Layout: the result is a grid of shape (nu, nv, d): result(i,j,:) is the point at (u(i), v(j)),
+like P in the thesis's ploskevB.
+
+Examples:
+  cagd surface \"[u; v; u.*v]\" --n 3
+  cagd surface \"[u; v; u-u^2+v]\" --n 20 --plot patch.png --mesh patch.stl")]
+    Surface(SurfaceCommand),
+    /// Run a thesis-style Octave data script and print the variables it defines.
+    #[command(after_help = "\
+Scripts may contain assignments, indexed assignments x(i) = ..., for loops, comments and
+continuations. Right-hand sides that use u, v or t without defining them are kept as curves
+in that parameter (appendix C: c1 = [u;0;u-u^2]).
+
+Examples:
+  cagd script data.m --n 10
+  cagd script data.m --format json")]
+    Script(ScriptCommand),
+}
+
+#[derive(Debug, Args)]
+struct CurveCommand {
+    /// The curve: an expression in one parameter t, u or v, e.g. "[u; 0; u-u^2]".
+    #[arg(value_name = "EXPR", allow_hyphen_values = true)]
+    expr: String,
+    #[command(flatten)]
+    params: CurveParamArgs,
+    #[command(flatten)]
+    script: ScriptArgs,
+    #[command(flatten)]
+    output: OutputArgs,
+    #[command(flatten)]
+    plot: PlotArgs,
+}
+
+#[derive(Debug, Args)]
+struct SurfaceCommand {
+    /// The surface: an expression in u and v, e.g. "[u; v; u.*v]".
+    #[arg(value_name = "EXPR", allow_hyphen_values = true)]
+    expr: String,
+    #[command(flatten)]
+    params: SurfaceParamArgs,
+    #[command(flatten)]
+    script: ScriptArgs,
+    #[command(flatten)]
+    output: OutputArgs,
+    #[command(flatten)]
+    plot: PlotArgs,
+    #[command(flatten)]
+    mesh: MeshArgs,
+}
+
+#[derive(Debug, Args)]
+struct ScriptCommand {
+    /// The Octave data script, or - for standard input.
+    #[arg(value_name = "FILE")]
+    file: String,
+    /// Bind N (used by the thesis scripts, e.g. u = linspace(0,1,N)) before running.
+    #[arg(long, value_name = "N", allow_negative_numbers = true)]
+    n: Option<usize>,
+    #[command(flatten)]
+    output: OutputArgs,
+}
+
+use common::DEFAULT_SAMPLES;
+
+/// What a command produced: text for standard output, files, warnings.
+#[derive(Debug)]
+pub struct Outcome {
+    /// The text for standard output.
+    pub stdout: String,
+    /// The files to write (staged, not yet written).
+    pub files: PendingWrites,
+    /// Warnings, each with the argument it is about.
+    pub warnings: Vec<(String, Warning)>,
+}
+
+/// Parses `args` (the program name first, as `std::env::args_os` gives them) and runs the
+/// subcommand. Nothing is written: the files are returned staged in the [`Outcome`].
+pub fn run<I, A>(args: I) -> Result<Outcome, CliError>
+where
+    I: IntoIterator<Item = A>,
+    A: Into<OsString> + Clone,
+{
+    let cli = match Cli::try_parse_from(args) {
+        Ok(cli) => cli,
+        Err(e) => return usage_error(e),
+    };
+    let limits = &cli.limits.resolve()?;
+    match &cli.command {
+        Command::Curve(c) if c.output.exact => curve::<BigRational>(limits, c),
+        Command::Curve(c) => curve::<f64>(limits, c),
+        Command::Surface(c) if c.output.exact => surface::<BigRational>(limits, c),
+        Command::Surface(c) => surface::<f64>(limits, c),
+        Command::Script(c) if c.output.exact => script::<BigRational>(limits, c),
+        Command::Script(c) => script::<f64>(limits, c),
+        Command::Thesis(c) => thesis::thesis(limits, c),
+        Command::Decasteljau(c) if c.output.exact => bezier::decasteljau::<BigRational>(limits, c),
+        Command::Decasteljau(c) => bezier::decasteljau::<f64>(limits, c),
+        Command::BezierPatch(c) if c.output.exact => bezier::bezier_patch::<BigRational>(limits, c),
+        Command::BezierPatch(c) => bezier::bezier_patch::<f64>(limits, c),
+        Command::Coons(c) if c.output.exact => patches::coons::<BigRational>(limits, c),
+        Command::Coons(c) => patches::coons::<f64>(limits, c),
+        Command::CoonsBicubic(c) if c.output.exact => {
+            patches::coons_bicubic::<BigRational>(limits, c)
+        }
+        Command::CoonsBicubic(c) => patches::coons_bicubic::<f64>(limits, c),
+        Command::DiscreteCoons(c) if c.output.exact => patches::discrete::<BigRational>(limits, c),
+        Command::DiscreteCoons(c) => patches::discrete::<f64>(limits, c),
+        Command::Gordon(c) if c.output.exact => patches::gordon::<BigRational>(limits, c),
+        Command::Gordon(c) => patches::gordon::<f64>(limits, c),
+        Command::Lagrange(c) if c.output.exact => patches::lagrange::<BigRational>(limits, c),
+        Command::Lagrange(c) => patches::lagrange::<f64>(limits, c),
+        Command::Bernstein(c) if c.output.exact => bezier::bernstein::<BigRational>(limits, c),
+        Command::Bernstein(c) => bezier::bernstein::<f64>(limits, c),
+        Command::Derivative(c) if c.output.exact => bezier::derivative::<BigRational>(limits, c),
+        Command::Derivative(c) => bezier::derivative::<f64>(limits, c),
+        Command::Spline(c) if c.output.exact => course::spline::<BigRational>(limits, c),
+        Command::Spline(c) => course::spline::<f64>(limits, c),
+        Command::Hermite(c) if c.output.exact => course::hermite::<BigRational>(limits, c),
+        Command::Hermite(c) => course::hermite::<f64>(limits, c),
+        Command::Bspline(c) if c.output.exact => course::bspline::<BigRational>(limits, c),
+        Command::Bspline(c) => course::bspline::<f64>(limits, c),
+        Command::Nurbs(c) if c.output.exact => course::nurbs::<BigRational>(limits, c),
+        Command::Nurbs(c) => course::nurbs::<f64>(limits, c),
+    }
+}
+
+/// Runs `--script` if given, binding `N` first.
+pub fn prepare_script<T: LiteralScalar>(
+    limits: &Limits,
+    script: &ScriptArgs,
+    n: Option<usize>,
+) -> Result<Option<Script<T>>, CliError> {
+    let Some(path) = &script.script else {
+        return Ok(None);
+    };
+    let mut env = Env::with_limits(*limits);
+    if let Some(n) = n {
+        env.bind_scalar("N", T::from_usize(n));
+    }
+    load_script(limits, "--script", path, env).map(Some)
+}
+
+fn script_warnings<T: LiteralScalar>(
+    script: &ScriptArgs,
+    loaded: Option<&Script<T>>,
+) -> Vec<(String, Warning)> {
+    match (&script.script, loaded) {
+        (Some(path), Some(s)) => s
+            .warnings()
+            .into_iter()
+            .map(|w| (format!("--script {path}"), w))
+            .collect(),
+        _ => Vec::new(),
+    }
+}
+
+fn to_f64_matrix<T: LiteralScalar>(m: &DMatrix<T>) -> DMatrix<f64> {
+    m.map(|x| x.to_f64())
+}
+
+fn curve<T: LiteralScalar>(limits: &Limits, cmd: &CurveCommand) -> Result<Outcome, CliError> {
+    let loaded = prepare_script::<T>(limits, &cmd.script, cmd.params.n)?;
+    let expr = load_expression(limits, "EXPR", &cmd.expr, loaded.as_ref())?;
+    let mut env = loaded.as_ref().map(|s| s.env().clone()).unwrap_or_default();
+    let params = expr.parameters(&env);
+    let param = match params.as_slice() {
+        [] => "t",
+        [p] => p,
+        _ => {
+            return Err(CliError::new(
+                "EXPR",
+                format!(
+                    "`{}` uses the parameters {}",
+                    cmd.expr.trim(),
+                    params.join(" and ")
+                ),
+                "a curve in one parameter (t, u or v); use `cagd surface` for u and v",
+                ErrorKind::Shape,
+            ))
+        }
+    };
+    let values: Vec<T> = match (&cmd.params.t, cmd.params.n) {
+        (Some(t), _) => load_params(limits, "--t", t)?,
+        (None, n) => samples(limits, n.unwrap_or(DEFAULT_SAMPLES), 2)?,
+    };
+    work::check_expression_work(
+        limits,
+        &[work::Sampling {
+            argument: "EXPR",
+            expr: &expr,
+            params: vec![(param, &values)],
+        }],
+        &env,
+    )?;
+    let points = expr
+        .sample_curve(&mut env, param, &values)
+        .map_err(|e| CliError::literal("EXPR", e, CURVE_FORM))?;
+    let mut report = Report::new();
+    report.push(
+        param,
+        Value::Matrix(DMatrix::from_row_slice(1, values.len(), &values)),
+    );
+    report.push("result", Value::Matrix(points.clone()));
+    let mut files = PendingWrites::new();
+    if let Some(path) = &cmd.plot.plot {
+        let figure = Figure::new(format!("curve {}", cmd.expr.trim())).curve(
+            to_f64_matrix(&points),
+            Colour::Blue,
+            format!("{param} ↦ {}", cmd.expr.trim()),
+        );
+        common::add_plot(&mut files, "--plot", path, &figure)?;
+    }
+    let mut warnings = script_warnings(&cmd.script, loaded.as_ref());
+    warnings.extend(env.take_warnings().into_iter().map(|w| ("EXPR".into(), w)));
+    common::finish(&report, &cmd.output, files, warnings)
+}
+
+fn surface<T: LiteralScalar>(limits: &Limits, cmd: &SurfaceCommand) -> Result<Outcome, CliError> {
+    let loaded = prepare_script::<T>(limits, &cmd.script, cmd.params.n)?;
+    let expr = load_expression(limits, "EXPR", &cmd.expr, loaded.as_ref())?;
+    let mut env = loaded.as_ref().map(|s| s.env().clone()).unwrap_or_default();
+    let grid_samples = |given: &Option<String>, name: &str| -> Result<Vec<T>, CliError> {
+        match given {
+            Some(text) => load_params(limits, name, text),
+            None => samples(limits, cmd.params.n.unwrap_or(DEFAULT_SAMPLES), 2),
+        }
+    };
+    let us = grid_samples(&cmd.params.u, "--u")?;
+    let vs = grid_samples(&cmd.params.v, "--v")?;
+    common::check_grid(limits, us.len(), vs.len())?;
+    work::check_expression_work(
+        limits,
+        &[work::Sampling {
+            argument: "EXPR",
+            expr: &expr,
+            params: vec![("u", &us), ("v", &vs)],
+        }],
+        &env,
+    )?;
+    let grid = expr.sample_surface(&mut env, &us, &vs).map_err(|e| {
+        CliError::literal(
+            "EXPR",
+            e,
+            "an expression in u and v such as \"[u; v; u.*v]\"",
+        )
+    })?;
+    let mut report = Report::new();
+    report.push(
+        "u",
+        Value::Matrix(DMatrix::from_row_slice(1, us.len(), &us)),
+    );
+    report.push(
+        "v",
+        Value::Matrix(DMatrix::from_row_slice(1, vs.len(), &vs)),
+    );
+    let grid_f64: PointGrid<f64> = grid.map(|x| x.to_f64());
+    report.push("result", Value::Grid(grid));
+    let mut files = PendingWrites::new();
+    if let Some(path) = &cmd.plot.plot {
+        let figure = Figure::new(format!("surface {}", cmd.expr.trim()))
+            .surface(grid_f64.clone(), "surface");
+        common::add_plot(&mut files, "--plot", path, &figure)?;
+    }
+    if let Some(path) = &cmd.mesh.mesh {
+        common::add_mesh(&mut files, "--mesh", path, &grid_f64)?;
+    }
+    let mut warnings = script_warnings(&cmd.script, loaded.as_ref());
+    warnings.extend(env.take_warnings().into_iter().map(|w| ("EXPR".into(), w)));
+    common::finish(&report, &cmd.output, files, warnings)
+}
+
+fn script<T: LiteralScalar>(limits: &Limits, cmd: &ScriptCommand) -> Result<Outcome, CliError> {
+    let args = ScriptArgs {
+        script: Some(cmd.file.clone()),
+    };
+    let loaded = prepare_script::<T>(limits, &args, cmd.n)?
+        .ok_or_else(|| CliError::new("FILE", "no script", "a script file", ErrorKind::Internal))?;
+    let mut report = Report::new();
+    for name in loaded.names() {
+        match loaded.get(name) {
+            Some(Binding::Value(m)) => {
+                report.push(name, Value::Matrix(m.clone()));
+            }
+            Some(Binding::Function(f)) => {
+                let params = f.parameters(loaded.env());
+                report.push(
+                    name,
+                    Value::Text(format!(
+                        "{}    (expression in {})",
+                        f.source(),
+                        params.join(", ")
+                    )),
+                );
+            }
+            None => {}
+        }
+    }
+    let warnings = loaded
+        .warnings()
+        .into_iter()
+        .map(|w| (cmd.file.clone(), w))
+        .collect();
+    common::finish(&report, &cmd.output, PendingWrites::new(), warnings)
+}
+
+/// Turns a clap error into the one-line form (help and version are printed as a result).
+fn usage_error(e: clap::Error) -> Result<Outcome, CliError> {
+    if matches!(e.kind(), ClapKind::DisplayHelp | ClapKind::DisplayVersion) {
+        return Ok(Outcome {
+            stdout: e.render().to_string(),
+            files: PendingWrites::new(),
+            warnings: Vec::new(),
+        });
+    }
+    let context = |k: ContextKind| e.get(k).map(|v| v.to_string());
+    // Clap names an option with its value placeholder (`--format <FORMAT>`); keep the name.
+    let strip = |s: String| -> String {
+        s.split(", ")
+            .map(|a| a.split_whitespace().next().unwrap_or(a))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let arg = context(ContextKind::InvalidArg)
+        .map(strip)
+        .unwrap_or_else(|| "cagd".into());
+    let value = context(ContextKind::InvalidValue).unwrap_or_default();
+    let subcommands = Cli::command()
+        .get_subcommands()
+        .map(|s| s.get_name().to_string())
+        .collect::<Vec<_>>()
+        .join(", ");
+    let (argument, problem, expected) = match e.kind() {
+        ClapKind::InvalidValue => (
+            arg,
+            format!("invalid value '{value}'"),
+            context(ContextKind::ValidValue)
+                .map(|v| format!("one of {v}"))
+                .unwrap_or_else(|| "a value".into()),
+        ),
+        ClapKind::ValueValidation => {
+            let reason = std::error::Error::source(&e)
+                .map(|s| s.to_string())
+                .unwrap_or_default();
+            let expected = if reason.contains("digit") || reason.contains("empty string") {
+                "a whole number such as 10".to_string()
+            } else {
+                "a value of the form shown by --help".to_string()
+            };
+            let reason = if reason.is_empty() {
+                reason
+            } else {
+                format!(" ({reason})")
+            };
+            (arg, format!("invalid value '{value}'{reason}"), expected)
+        }
+        ClapKind::UnknownArgument => (
+            arg,
+            "unknown option".into(),
+            context(ContextKind::SuggestedArg)
+                .map(|s| format!("{s} perhaps, or an option listed by --help"))
+                .unwrap_or_else(|| "an option listed by --help".into()),
+        ),
+        ClapKind::InvalidSubcommand => (
+            context(ContextKind::InvalidSubcommand).unwrap_or(value),
+            "unknown subcommand".into(),
+            format!("one of {subcommands}"),
+        ),
+        ClapKind::MissingSubcommand | ClapKind::DisplayHelpOnMissingArgumentOrSubcommand => (
+            "cagd".into(),
+            "no subcommand given".into(),
+            format!("one of {subcommands} (see cagd --help)"),
+        ),
+        ClapKind::MissingRequiredArgument => {
+            (arg, "missing".into(), "the argument (see --help)".into())
+        }
+        ClapKind::ArgumentConflict
+            if context(ContextKind::PriorArg).map(strip).as_deref() == Some(arg.as_str()) =>
+        {
+            (arg, "given more than once".into(), "the option once".into())
+        }
+        ClapKind::ArgumentConflict => (
+            arg,
+            format!(
+                "cannot be used together with {}",
+                context(ContextKind::PriorArg)
+                    .map(strip)
+                    .unwrap_or_else(|| "another option".into())
+            ),
+            "only one of them".into(),
+        ),
+        _ => {
+            let rendered = e.render().to_string();
+            let first = rendered
+                .lines()
+                .next()
+                .unwrap_or("invalid arguments")
+                .trim_start_matches("error: ")
+                .to_string();
+            ("cagd".into(), first, "arguments as listed by --help".into())
+        }
+    };
+    Err(CliError::new(argument, problem, expected, ErrorKind::Usage))
+}

@@ -1,0 +1,202 @@
+//! Estimates of a command's work, made before it starts and refused above
+//! [`cagd::limits::Limits::max_work`] (`--max-work`, `CAGD_MAX_WORK`).
+//!
+//! An estimate is a number of arithmetic operations, each weighing 1 in `f64` and, with
+//! `--exact`, [`cagd::limits::exact_op_cost`] of the size its numbers reach, so that an
+//! allowed command finishes in seconds in either arithmetic. The sizes are the inputs'
+//! ([`bits`]) and the growth of the construction: a de Casteljau scheme of degree `n` at
+//! `t = p/q` multiplies denominators by `q` at each of its `n` levels ([`polynomial_bits`]),
+//! an interpolating spline's tridiagonal solve builds continuants of about 4 bits per point.
+//! A user expression is measured instead of estimated: it is evaluated once at its largest
+//! parameter values ([`check_expression_work`]).
+
+use crate::args::PlotArgs;
+use crate::CliError;
+use cagd::limits::{exact_op_cost, Limits};
+use cagd::Curve;
+use cagd_octave::literal::{Env, LiteralScalar, ParamExpr};
+
+use super::common::{lib, CliCurve};
+
+/// The work of `ops` operations on numbers of about `bits` bits: `ops` in `f64`,
+/// `ops · exact_op_cost(bits)` in exact arithmetic.
+pub fn work<T: LiteralScalar>(ops: u128, bits: u128) -> u128 {
+    if T::EXACT {
+        ops.saturating_mul(exact_op_cost(bits))
+    } else {
+        ops
+    }
+}
+
+/// The most bits of any of `xs` (numerator and denominator together; 0 for `f64` and for
+/// none).
+pub fn bits<'a, T: LiteralScalar + 'a>(xs: impl IntoIterator<Item = &'a T>) -> u128 {
+    if T::EXACT {
+        xs.into_iter().map(T::bits).max().unwrap_or(0)
+    } else {
+        0
+    }
+}
+
+/// The size a polynomial of degree `degree` in a parameter of `param_bits` bits, with
+/// coefficients of `coefficient_bits` bits, reaches: `coefficient_bits + degree ·
+/// (param_bits + 1)` (each level of a de Casteljau scheme or Bernstein recurrence multiplies
+/// by `t = p/q` or `1 − t`, adding the bits of `p` and `q`; the `+ 1` covers binomials and
+/// carries).
+pub fn polynomial_bits(degree: usize, param_bits: u128, coefficient_bits: u128) -> u128 {
+    (degree as u128)
+        .saturating_mul(param_bits.saturating_add(1))
+        .saturating_add(coefficient_bits)
+}
+
+/// The parameters of a picture, if `--plot` asks for one (else none): what an estimate
+/// counts for it.
+pub fn plotted<'a, T>(plot: &PlotArgs, params: &'a [T]) -> &'a [T] {
+    if plot.plot.is_some() {
+        params
+    } else {
+        &[]
+    }
+}
+
+/// Refuses an estimated `work` above [`Limits::max_work`], naming `argument`.
+pub fn check_work(limits: &Limits, argument: &str, work: u128) -> Result<(), CliError> {
+    limits.check_work("estimated operations", work).map_err(lib(
+        argument,
+        "fewer points or a lower degree, or a higher --max-work",
+    ))
+}
+
+/// A user expression to be sampled: the argument that gave it, the expression, and the values
+/// of each of its free parameters (one list for a curve; `u` and `v` for a surface, sampled
+/// at every pair).
+pub struct Sampling<'a, T: LiteralScalar> {
+    /// The argument (`EXPR`, `--c1`, `--u-curve`, …).
+    pub argument: &'a str,
+    /// The expression.
+    pub expr: &'a ParamExpr,
+    /// Each free parameter and its values.
+    pub params: Vec<(&'a str, &'a [T])>,
+}
+
+impl<T: LiteralScalar> Sampling<'_, T> {
+    fn samples(&self) -> u128 {
+        self.params
+            .iter()
+            .map(|(_, values)| values.len() as u128)
+            .fold(1, u128::saturating_mul)
+    }
+
+    /// The estimated work of one sample: the larger of `node_count` operations on numbers the
+    /// size of the parameters, and the work of one evaluation at the largest value of each
+    /// parameter, measured by the evaluator ([`ParamExpr::eval_metered`]: element
+    /// operations; an exact operation on operands of `a` and `b` words counts `32 (a + b)²`,
+    /// an eighth of [`exact_op_cost`] at one word and more beyond 16 words, so in exact
+    /// arithmetic 8 times that). If that evaluation fails, the node count stands and
+    /// sampling reports the error.
+    fn per_sample(&self, env: &Env<T>) -> u128 {
+        let nodes = self.expr.node_count() as u128;
+        let largest = |values: &[T]| values.iter().max_by_key(|x| x.bits()).cloned();
+        let Some(bindings) = self
+            .params
+            .iter()
+            .map(|(name, values)| largest(values).map(|x| (*name, x)))
+            .collect::<Option<Vec<(&str, T)>>>()
+        else {
+            return nodes;
+        };
+        let param_bits: u128 = bindings.iter().map(|(_, x)| x.bits()).sum();
+        let by_nodes = work::<T>(nodes, param_bits);
+        match self.expr.eval_metered(env, &bindings) {
+            Ok((_, measured)) => {
+                let scale = if T::EXACT { 8 } else { 1 };
+                by_nodes.max(measured.saturating_mul(scale))
+            }
+            Err(_) => by_nodes,
+        }
+    }
+}
+
+/// Refuses sampling user expressions whose estimated work is above
+/// [`Limits::max_work`]: first samples × expression size ([`ParamExpr::node_count`]), which
+/// needs no evaluation, then samples × the measured work of one sample
+/// ([`Sampling::per_sample`]). The error names the argument with the largest share.
+pub fn check_expression_work<T: LiteralScalar>(
+    limits: &Limits,
+    parts: &[Sampling<'_, T>],
+    env: &Env<T>,
+) -> Result<(), CliError> {
+    let by_size: Vec<(&str, u128)> = parts
+        .iter()
+        .map(|p| {
+            let cost = p.samples().saturating_mul(p.expr.node_count() as u128);
+            (p.argument, cost)
+        })
+        .collect();
+    refuse_above(
+        limits,
+        "estimated operations (samples × expression nodes)",
+        &by_size,
+    )?;
+    let measured: Vec<(&str, u128)> = parts
+        .iter()
+        .map(|p| (p.argument, p.samples().saturating_mul(p.per_sample(env))))
+        .collect();
+    refuse_above(
+        limits,
+        "estimated operations (samples × work of one sample)",
+        &measured,
+    )
+}
+
+/// Refuses the sum of `costs` above [`Limits::max_work`], naming the argument of the largest.
+fn refuse_above(
+    limits: &Limits,
+    what: &'static str,
+    costs: &[(&str, u128)],
+) -> Result<(), CliError> {
+    let total = costs.iter().map(|c| c.1).fold(0u128, u128::saturating_add);
+    let argument = costs.iter().max_by_key(|c| c.1).map_or("EXPR", |c| c.0);
+    limits
+        .check_work(what, total)
+        .map_err(lib(
+            argument,
+            "fewer samples (a smaller --n, --t, --u, --v) or a shorter expression, or a higher --max-work",
+        ))
+}
+
+/// What evaluating `curve` at one of `params` costs: (operations, bits its values reach).
+/// A Bézier curve is a de Casteljau scheme (`d (n+1)²` operations on numbers of
+/// [`polynomial_bits`]); a sampled curve is looked up (a binary search, then a copy of the
+/// sample where the construction needs it).
+pub fn curve_cost<T: LiteralScalar>(curve: &CliCurve<T>, params: &[T]) -> (u128, u128) {
+    match curve {
+        CliCurve::Bezier(b) => (
+            b.dim() as u128 * (b.degree() as u128 + 1).pow(2),
+            polynomial_bits(b.degree(), bits(params), bits(b.control().iter())),
+        ),
+        CliCurve::Sampled(s) => (
+            s.dim() as u128 + (s.params().len() as u128).ilog2() as u128,
+            bits(s.samples().iter()).saturating_add(bits(params)),
+        ),
+    }
+}
+
+/// The work of a blended patch (Coons, Gordon) at `points` grid points: each point evaluates
+/// every curve of `curves` at its parameter (a `(curve, parameters)` pair) and blends them in
+/// `blend` operations, on numbers as large as the curves' values grown by `extra_bits` (the
+/// bits of the blending functions).
+pub fn blend_work<T: LiteralScalar>(
+    points: u128,
+    curves: &[(&CliCurve<T>, &[T])],
+    blend: u128,
+    extra_bits: u128,
+) -> u128 {
+    let (ops, size) = curves
+        .iter()
+        .map(|(c, params)| curve_cost(c, params))
+        .fold((blend, 0u128), |(ops, size), (o, b)| {
+            (ops.saturating_add(o), size.max(b))
+        });
+    work::<T>(points.saturating_mul(ops), size.saturating_add(extra_bits))
+}

@@ -1,0 +1,204 @@
+//! The one error type of the command line, and how each error reads and exits.
+
+use cagd_octave::literal::LiteralError;
+
+/// What kind of thing went wrong, with the typed error underneath where there is one.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum ErrorKind {
+    /// A literal, expression or data script did not parse or evaluate.
+    Literal(Box<LiteralError>),
+    /// A file could not be read or written (the I/O error kind).
+    Io(std::io::ErrorKind),
+    /// A numeric text file is malformed (ragged rows, a token that is not a number).
+    Data,
+    /// Inputs of the wrong shape or size for the command (e.g. `--n 1` for a grid).
+    Shape,
+    /// A construction of the library refused its input.
+    Library(Box<cagd::Error>),
+    /// Command-line usage: an unknown option, a missing or conflicting argument.
+    Usage,
+    /// A valid request this build cannot serve yet.
+    Unsupported,
+    /// A picture could not be drawn.
+    Plot,
+    /// A fault of the program itself (exit code 1).
+    Internal,
+}
+
+/// A command-line error: which argument, what was wrong, and the form that was expected.
+///
+/// It reads as one line, `<argument>: <problem>; expected <form>`, which the binary prints as
+/// `cagd: error: …` on standard error before exiting with [`CliError::exit_code`] (2 for
+/// every input error, 1 for internal faults).
+///
+/// ```
+/// use cagd_cli::{CliError, ErrorKind};
+/// let e = CliError::new("--n", "N = 1 is too small", "an integer N ≥ 2", ErrorKind::Shape);
+/// assert_eq!(e.to_string(), "--n: N = 1 is too small; expected an integer N ≥ 2");
+/// assert_eq!(e.exit_code(), 2);
+/// ```
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{argument}: {problem}; expected {expected}")]
+pub struct CliError {
+    /// The argument (option name, positional name, or file) the error is about.
+    pub argument: String,
+    /// What was wrong.
+    pub problem: String,
+    /// The form that would have been accepted.
+    pub expected: String,
+    /// The kind, with the underlying typed error.
+    pub kind: ErrorKind,
+}
+
+impl CliError {
+    /// An error about `argument`.
+    pub fn new(
+        argument: impl Into<String>,
+        problem: impl Into<String>,
+        expected: impl Into<String>,
+        kind: ErrorKind,
+    ) -> Self {
+        CliError {
+            argument: argument.into(),
+            problem: one_line(&problem.into()),
+            expected: one_line(&expected.into()),
+            kind,
+        }
+    }
+
+    /// A literal or script error about `argument`.
+    pub fn literal(argument: impl Into<String>, error: LiteralError, expected: &str) -> Self {
+        Self::new(
+            argument,
+            error.to_string(),
+            expected,
+            ErrorKind::Literal(Box::new(error)),
+        )
+    }
+
+    /// An I/O error about `argument` (usually a file name).
+    pub fn io(argument: impl Into<String>, error: &std::io::Error, expected: &str) -> Self {
+        let problem = match error.kind() {
+            std::io::ErrorKind::NotFound => "no such file or directory".to_string(),
+            std::io::ErrorKind::PermissionDenied => "permission denied".to_string(),
+            _ => error.to_string(),
+        };
+        Self::new(argument, problem, expected, ErrorKind::Io(error.kind()))
+    }
+
+    /// A library error about `argument`. A limit the library names ([`cagd::Error::TooLarge`])
+    /// is named by its flag and environment variable.
+    pub fn library(argument: impl Into<String>, error: cagd::Error, expected: &str) -> Self {
+        let problem = match &error {
+            cagd::Error::TooLarge {
+                what,
+                requested,
+                limit,
+                which,
+            } => format!(
+                "{what}: {requested} exceeds the limit of {limit} (raise it with {} or {})",
+                crate::limits::flag(*which),
+                crate::limits::variable(*which)
+            ),
+            other => other.to_string(),
+        };
+        Self::new(
+            argument,
+            problem,
+            expected,
+            ErrorKind::Library(Box::new(error)),
+        )
+    }
+
+    /// The process exit code: 1 for [`ErrorKind::Internal`], 2 for everything else.
+    pub fn exit_code(&self) -> i32 {
+        match self.kind {
+            ErrorKind::Internal => 1,
+            _ => 2,
+        }
+    }
+}
+
+/// Collapses line breaks so that every message stays on one line.
+fn one_line(s: &str) -> String {
+    s.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+impl CliError {
+    /// A mesh export error about `argument` (usually `--mesh FILE`).
+    pub fn mesh(argument: impl Into<String>, error: &crate::mesh::MeshError) -> Self {
+        use crate::mesh::MeshError as M;
+        let (problem, expected, kind) = match error {
+            M::UnknownExtension { .. } => (
+                "unknown mesh format".to_string(),
+                "a file name ending in .stl, .obj or .ply".to_string(),
+                ErrorKind::Usage,
+            ),
+            M::Shape { nu, nv, dim } => (
+                format!("the surface grid has shape ({nu}, {nv}, {dim})"),
+                "a grid of 3-D points, at least 2 × 2 (e.g. --n 2 or more)".to_string(),
+                ErrorKind::Shape,
+            ),
+            M::NonFinite { index } => (
+                format!("grid value {index} is not finite"),
+                "finite coordinates".to_string(),
+                ErrorKind::Shape,
+            ),
+            M::TooLarge { points, limit } => (
+                format!("the grid has {points} points"),
+                format!("at most {limit} grid points"),
+                ErrorKind::Shape,
+            ),
+            M::Io { message, .. } => (
+                message.clone(),
+                "a writable path in an existing directory".to_string(),
+                ErrorKind::Io(std::io::ErrorKind::Other),
+            ),
+        };
+        Self::new(argument, problem, expected, kind)
+    }
+
+    /// A picture error about `argument` (usually `--plot FILE`).
+    pub fn plot(argument: impl Into<String>, error: &crate::plot::PlotError) -> Self {
+        use crate::plot::PlotError as P;
+        let (problem, expected, kind) = match error {
+            P::UnknownExtension { .. } => (
+                "unknown picture format".to_string(),
+                "a file name ending in .svg or .png".to_string(),
+                ErrorKind::Usage,
+            ),
+            P::Empty => (
+                "nothing to draw".to_string(),
+                "a result with points".to_string(),
+                ErrorKind::Plot,
+            ),
+            P::Shape { label, message } => (
+                format!("`{label}`: {message}"),
+                "curves and surfaces of 2-D or 3-D points".to_string(),
+                ErrorKind::Plot,
+            ),
+            P::NonFinite { label, index } => (
+                format!("`{label}`: coordinate {index} is not finite"),
+                "finite coordinates".to_string(),
+                ErrorKind::Plot,
+            ),
+            P::Size { width, height } => (
+                format!("picture size {width}×{height}"),
+                "100 to 10000 pixels per side".to_string(),
+                ErrorKind::Plot,
+            ),
+            P::Io { message, .. } => (
+                message.clone(),
+                "a writable path in an existing directory".to_string(),
+                ErrorKind::Io(std::io::ErrorKind::Other),
+            ),
+            _ => (
+                error.to_string(),
+                "a picture the drawing library can render".to_string(),
+                ErrorKind::Internal,
+            ),
+        };
+        Self::new(argument, problem, expected, kind)
+    }
+}

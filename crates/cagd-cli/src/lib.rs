@@ -1,0 +1,37 @@
+//! The command line as a library: reading inputs, printing results, writing files.
+//!
+//! The `cagd` binary is a thin layer over this module: it parses arguments with the shared
+//! argument groups of [`args`], loads inputs with [`load_matrix`], [`load_params`],
+//! [`samples`], [`load_expression`] and [`load_script`], calls the library, renders the
+//! [`Report`] with [`render`] and writes files with [`PendingWrites`] (atomically: a file is
+//! complete or absent).
+//!
+//! The whole command line runs in-process with [`run`]: it parses the arguments, computes, and
+//! returns an [`Outcome`] holding the text for standard output and the files to write, staged
+//! in memory; nothing touches the file system until the caller commits the files (the binary
+//! does, fuzzing and tests need not).
+//!
+//! Every failure is a [`CliError`]: one line `<argument>: <problem>; expected <form>`, exit
+//! code 2 (1 only for internal faults).
+
+mod app;
+pub mod args;
+mod atomic;
+mod error;
+#[doc = include_str!("../../../docs/ERRORS.md")]
+pub mod error_catalogue {}
+mod input;
+pub mod limits;
+pub mod mesh;
+mod output;
+pub mod plot;
+
+pub use app::{run, Outcome};
+pub use atomic::{write_atomic, PendingWrites};
+pub use error::{CliError, ErrorKind};
+pub use input::{
+    load_expression, load_matrix, load_net, load_params, load_script, parse_data_text,
+    parse_data_text_variable, parse_numeric_text, read_octave_array, read_text, samples,
+    scalar_from_double, unpack_net, CURVE_FORM, MATRIX_FORM, MAX_INPUT_BYTES, PARAMS_FORM,
+};
+pub use output::{number_text, render, Format, Item, Report, Value};

@@ -1,0 +1,344 @@
+//! Formatting results: readable text, CSV, JSON (and Octave's text format, see [`Format`]).
+//!
+//! A command's result is a [`Report`]: named items, each a matrix (points as columns, like `T`
+//! in the thesis function `deCasteljau`), a grid of shape (nu, nv, d) (like `P` in
+//! `ploskevB`), or a line of text (a curve expression, a step's description).
+//!
+//! Numbers print as the shortest decimal that reads back to the same double (`0.1`, `3`,
+//! `1e-20`), or, with `--exact`, as reduced fractions (`7/2`, `31/15`, integers without `/1`).
+
+use std::fmt::Write as _;
+
+use cagd::grid::PointGrid;
+use nalgebra::DMatrix;
+
+use super::{CliError, ErrorKind};
+use cagd_octave::literal::LiteralScalar;
+
+/// How results are printed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum Format {
+    /// Readable text: each item as `name =` followed by aligned columns, grids one coordinate
+    /// slice `name(:,:,k)` at a time (as Octave displays them).
+    #[default]
+    Text,
+    /// Octave's `save -text` format, loadable with `load`: every item is a variable (the
+    /// answer is `result`; curve points d×k with points as columns, like `T` in
+    /// `deCasteljau`; surface grids nu×nv×d, like `P` in `ploskevB`; steps such as `rc`,
+    /// `rd`, `rcd` as further variables; text as strings). Octave has no rationals, so with
+    /// `--exact` the nearest doubles are written.
+    Octave,
+    /// Comma-separated values: a matrix row per line; a grid one point per line as
+    /// `i,j,x1,…,xd` (1-based indices). With several items, each is preceded by a `# name`
+    /// line and followed by an empty line.
+    Csv,
+    /// One JSON object mapping item names to values: matrices as arrays of rows, grids as
+    /// `[i][j][k]` nested arrays (as Octave's `jsonencode`), text as strings; with
+    /// `--exact`, numbers are strings such as `"7/2"`.
+    Json,
+}
+
+/// The value of a report item.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Value<T: LiteralScalar> {
+    /// A matrix (a scalar is 1×1).
+    Matrix(DMatrix<T>),
+    /// A grid of points, shape (nu, nv, d).
+    Grid(PointGrid<T>),
+    /// A line of text.
+    Text(String),
+}
+
+/// One named item of a report.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Item<T: LiteralScalar> {
+    /// The name (`result`, `t`, a step's name).
+    pub name: String,
+    /// The value.
+    pub value: Value<T>,
+}
+
+/// What a command prints: named items in order.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Report<T: LiteralScalar> {
+    /// The items, in the order printed.
+    pub items: Vec<Item<T>>,
+}
+
+impl<T: LiteralScalar> Default for Report<T> {
+    fn default() -> Self {
+        Report { items: Vec::new() }
+    }
+}
+
+impl<T: LiteralScalar> Report<T> {
+    /// An empty report.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Appends an item.
+    pub fn push(&mut self, name: impl Into<String>, value: Value<T>) -> &mut Self {
+        self.items.push(Item {
+            name: name.into(),
+            value,
+        });
+        self
+    }
+}
+
+/// The printed form of one number: shortest round-trip decimal for doubles (exponent form
+/// below 1e-5 and from 1e15 on), reduced fraction in exact arithmetic.
+///
+/// ```
+/// use num_rational::BigRational;
+/// use cagd_cli::number_text;
+/// assert_eq!(number_text(&0.1f64), "0.1");
+/// assert_eq!(number_text(&3.0f64), "3");
+/// assert_eq!(number_text(&1e-20f64), "1e-20");
+/// assert_eq!(number_text(&BigRational::new(31.into(), 15.into())), "31/15");
+/// assert_eq!(number_text(&BigRational::new(14.into(), 4.into())), "7/2");
+/// assert_eq!(number_text(&BigRational::new(6.into(), 3.into())), "2");
+/// ```
+pub fn number_text<T: LiteralScalar>(x: &T) -> String {
+    if T::EXACT {
+        return x.to_string();
+    }
+    let v = x.to_f64();
+    if v == 0.0 {
+        return "0".into();
+    }
+    let a = v.abs();
+    if (1e-5..1e15).contains(&a) {
+        format!("{v}")
+    } else {
+        format!("{v:e}")
+    }
+}
+
+/// Renders a report in the given format (the output ends with a newline).
+///
+/// ```
+/// use cagd_cli::{render, Format, Report, Value};
+/// use nalgebra::DMatrix;
+/// let mut r = Report::<f64>::new();
+/// r.push("result", Value::Matrix(DMatrix::from_row_slice(2, 2, &[1.0, 0.25, -3.0, 10.0])));
+/// assert_eq!(render(&r, Format::Text).unwrap(), "result =\n\n     1  0.25\n    -3    10\n\n");
+/// assert_eq!(render(&r, Format::Csv).unwrap(), "1,0.25\n-3,10\n");
+/// assert_eq!(render(&r, Format::Json).unwrap(), "{\"result\":[[1.0,0.25],[-3.0,10.0]]}\n");
+/// ```
+pub fn render<T: LiteralScalar>(report: &Report<T>, format: Format) -> Result<String, CliError> {
+    match format {
+        Format::Text => Ok(render_text(report)),
+        Format::Csv => Ok(render_csv(report)),
+        Format::Json => render_json(report),
+        Format::Octave => render_octave(report),
+    }
+}
+
+/// An Octave identifier made from an item name (`r_c` stays, `b^1` becomes `b_1`).
+fn octave_name(name: &str) -> String {
+    let mut out: String = name
+        .chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+        .collect();
+    if !out.starts_with(|c: char| c.is_ascii_alphabetic()) {
+        out.insert(0, 'x');
+    }
+    out
+}
+
+fn render_octave<T: LiteralScalar>(report: &Report<T>) -> Result<String, CliError> {
+    use cagd_octave::text_format::{self, CharMatrix, Value as OValue, Workspace};
+    let mut ws = Workspace::new();
+    for item in &report.items {
+        let value = match &item.value {
+            Value::Matrix(m) => {
+                let a = ndarray::Array2::from_shape_fn(m.shape(), |(i, j)| m[(i, j)].to_f64());
+                OValue::from(a)
+            }
+            Value::Grid(g) => {
+                OValue::Matrix(cagd_octave::arrays::to_array3(g.map(|x| x.to_f64())).into_dyn())
+            }
+            Value::Text(t) => {
+                // A char matrix needs rows of one length: pad with spaces, as Octave's char().
+                let lines: Vec<&str> = t.lines().collect();
+                let width = lines.iter().map(|l| l.len()).max().unwrap_or(0);
+                let mut c = CharMatrix::new("");
+                c.rows = lines.iter().map(|l| format!("{l:<width$}")).collect();
+                OValue::Str(c)
+            }
+        };
+        ws.insert(octave_name(&item.name), value);
+    }
+    text_format::write_text(&ws).map_err(|e| {
+        CliError::new(
+            "--format octave",
+            e.to_string(),
+            "results Octave can store",
+            ErrorKind::Internal,
+        )
+    })
+}
+
+/// Right-aligned columns with two spaces before each, indented by two more.
+fn aligned(m: &DMatrix<String>) -> String {
+    let widths: Vec<usize> = m
+        .column_iter()
+        .map(|c| c.iter().map(|s| s.chars().count()).max().unwrap_or(0))
+        .collect();
+    let mut out = String::new();
+    for i in 0..m.nrows() {
+        out.push_str("  ");
+        for (j, w) in widths.iter().enumerate() {
+            let _ = write!(out, "  {:>w$}", m[(i, j)], w = w);
+        }
+        out.push('\n');
+    }
+    out
+}
+
+fn text_matrix<T: LiteralScalar>(name: &str, m: &DMatrix<T>, out: &mut String) {
+    if m.is_empty() {
+        let _ = writeln!(out, "{name} = []({}x{})\n", m.nrows(), m.ncols());
+    } else if m.len() == 1 {
+        let _ = writeln!(out, "{name} = {}\n", number_text(&m[(0, 0)]));
+    } else {
+        let _ = writeln!(out, "{name} =\n");
+        out.push_str(&aligned(&m.map(|x| number_text(&x))));
+        out.push('\n');
+    }
+}
+
+fn render_text<T: LiteralScalar>(report: &Report<T>) -> String {
+    let mut out = String::new();
+    for item in &report.items {
+        match &item.value {
+            Value::Matrix(m) => text_matrix(&item.name, m, &mut out),
+            Value::Grid(g) => {
+                let (nu, nv, d) = g.dim();
+                if nu * nv * d == 0 {
+                    let _ = writeln!(out, "{} = []({nu}x{nv}x{d})\n", item.name);
+                }
+                for k in 0..d {
+                    let slice = DMatrix::from_fn(nu, nv, |i, j| g[[i, j, k]].clone());
+                    text_matrix(&format!("{}(:,:,{})", item.name, k + 1), &slice, &mut out);
+                }
+            }
+            Value::Text(t) if t.contains('\n') => {
+                let _ = writeln!(out, "{}:\n{}\n", item.name, t.trim_end());
+            }
+            Value::Text(t) => {
+                let _ = writeln!(out, "{} = {t}\n", item.name);
+            }
+        }
+    }
+    out
+}
+
+fn csv_item<T: LiteralScalar>(value: &Value<T>, out: &mut String) {
+    match value {
+        Value::Matrix(m) => {
+            for i in 0..m.nrows() {
+                let row: Vec<String> = m.row(i).iter().map(number_text).collect();
+                let _ = writeln!(out, "{}", row.join(","));
+            }
+        }
+        Value::Grid(g) => {
+            let (nu, nv, d) = g.dim();
+            for i in 0..nu {
+                for j in 0..nv {
+                    let mut fields = vec![(i + 1).to_string(), (j + 1).to_string()];
+                    fields.extend((0..d).map(|k| number_text(&g[[i, j, k]])));
+                    let _ = writeln!(out, "{}", fields.join(","));
+                }
+            }
+        }
+        Value::Text(t) => {
+            for line in t.lines() {
+                let _ = writeln!(out, "# {line}");
+            }
+        }
+    }
+}
+
+fn render_csv<T: LiteralScalar>(report: &Report<T>) -> String {
+    let mut out = String::new();
+    if let [only] = report.items.as_slice() {
+        csv_item(&only.value, &mut out);
+        return out;
+    }
+    for item in &report.items {
+        let _ = writeln!(out, "# {}", item.name);
+        csv_item(&item.value, &mut out);
+        out.push('\n');
+    }
+    out
+}
+
+fn json_number<T: LiteralScalar>(x: &T) -> Result<serde_json::Value, CliError> {
+    if T::EXACT {
+        return Ok(serde_json::Value::String(x.to_string()));
+    }
+    serde_json::Number::from_f64(x.to_f64())
+        .map(serde_json::Value::Number)
+        .ok_or_else(|| {
+            CliError::new(
+                "--format json",
+                format!("the value {x} is not finite"),
+                "finite results",
+                ErrorKind::Internal,
+            )
+        })
+}
+
+fn render_json<T: LiteralScalar>(report: &Report<T>) -> Result<String, CliError> {
+    use serde_json::Value as J;
+    // Built by hand so that the items keep the report's order.
+    let mut entries = Vec::with_capacity(report.items.len());
+    for item in &report.items {
+        let v = match &item.value {
+            Value::Matrix(m) => J::Array(
+                (0..m.nrows())
+                    .map(|i| {
+                        m.row(i)
+                            .iter()
+                            .map(json_number)
+                            .collect::<Result<Vec<_>, _>>()
+                            .map(J::Array)
+                    })
+                    .collect::<Result<Vec<_>, _>>()?,
+            ),
+            Value::Grid(g) => {
+                let (nu, nv, d) = g.dim();
+                let mut rows = Vec::with_capacity(nu);
+                for i in 0..nu {
+                    let mut cols = Vec::with_capacity(nv);
+                    for j in 0..nv {
+                        let p = (0..d)
+                            .map(|k| json_number(&g[[i, j, k]]))
+                            .collect::<Result<Vec<_>, _>>()?;
+                        cols.push(J::Array(p));
+                    }
+                    rows.push(J::Array(cols));
+                }
+                J::Array(rows)
+            }
+            Value::Text(t) => J::String(t.clone()),
+        };
+        let json_error = |e: serde_json::Error| {
+            CliError::new(
+                "--format json",
+                e.to_string(),
+                "serialisable results",
+                ErrorKind::Internal,
+            )
+        };
+        entries.push(format!(
+            "{}:{}",
+            serde_json::to_string(&item.name).map_err(json_error)?,
+            serde_json::to_string(&v).map_err(json_error)?
+        ));
+    }
+    Ok(format!("{{{}}}\n", entries.join(",")))
+}

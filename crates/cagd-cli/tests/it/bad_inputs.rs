@@ -1,0 +1,534 @@
+//! Bad input across every subcommand: each case names the exact error (the argument and the
+//! kind, down to the typed error underneath), and the `cagd` binary exits with code 2, prints
+//! one line on standard error, nothing on standard output, and leaves no file behind.
+
+use std::path::Path;
+
+use assert_cmd::Command;
+use cagd_cli::{run, ErrorKind};
+
+use cagd_test_support as common;
+
+use common::bad_input::{check_all, refused};
+use common::thesis_args::{NET_3X3 as NET, PRIMER_2_4 as CUBIC, PRIMER_4_3 as COONS};
+
+/// The kind of an error as `Kind` or `Kind::Variant` (the typed error underneath).
+fn label(kind: &ErrorKind) -> String {
+    let variant = |debug: String| {
+        debug
+            .split(|c: char| !c.is_alphanumeric())
+            .next()
+            .unwrap()
+            .to_string()
+    };
+    match kind {
+        ErrorKind::Literal(e) => format!("Literal::{}", variant(format!("{e:?}"))),
+        ErrorKind::Library(e) => format!("Library::{}", variant(format!("{e:?}"))),
+        ErrorKind::Io(k) => format!("Io::{k:?}"),
+        other => variant(format!("{other:?}")),
+    }
+}
+
+/// (arguments after `cagd`, the argument the error names, the kind).
+fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
+    let file = |name: &str, text: &str| {
+        let p = dir.join(name);
+        std::fs::write(&p, text).unwrap();
+        p.to_str().unwrap().to_string()
+    };
+    let ragged = file("ragged.txt", "1 2\n3\n");
+    let words = file("words.txt", "1 two\n");
+    let binary = {
+        let p = dir.join("binary.dat");
+        std::fs::write(&p, [0xff, 0xfe, 0x00, 0x41]).unwrap();
+        p.to_str().unwrap().to_string()
+    };
+    let octave_bad = file(
+        "bad_octave.txt",
+        "# name: A\n# type: matrix\n# rows: 3\n# columns: 2\n 1 2\n",
+    );
+    let cell = file(
+        "cell.txt",
+        "# name: s\n# type: string\n# elements: 1\n# length: 2\nab\n",
+    );
+    let script_syntax = file("syntax.m", "x = [1 2;\n");
+    let script_loop = file("loop.m", "for i = 1:2000000\n  x = i;\nend\n");
+    let script_chain = file("chain.m", "a = b = 0;\n");
+    let missing = dir.join("missing.txt").to_str().unwrap().to_string();
+    let no_dir = dir
+        .join("no/such/dir/out.svg")
+        .to_str()
+        .unwrap()
+        .to_string();
+    let deep = format!("{}u{}", "(".repeat(200), ")".repeat(200));
+    let s = |v: &[&str]| v.iter().map(|x| x.to_string()).collect::<Vec<_>>();
+    let with = |head: &[&str], tail: &[&str]| {
+        let mut v = s(&["coons"]);
+        v.extend(s(head));
+        v.extend(s(tail));
+        v
+    };
+    vec![
+        // usage
+        (s(&[]), "cagd", "Usage"),
+        (s(&["frobnicate"]), "frobnicate", "Usage"),
+        (s(&["decasteljau"]), "<CONTROL>", "Usage"),
+        (s(&["decasteljau", CUBIC, "--bogus"]), "--bogus", "Usage"),
+        (
+            s(&["decasteljau", CUBIC, "--format", "xml"]),
+            "--format",
+            "Usage",
+        ),
+        (s(&["bernstein", "--degree", "-1"]), "-1", "Usage"),
+        (s(&["bernstein", "--degree", "three"]), "--degree", "Usage"),
+        (s(&["thesis", "--bogus"]), "--bogus", "Usage"),
+        (
+            s(&["curve", "[u;u]", "--t", "0.5", "--n", "3"]),
+            "--t",
+            "Usage",
+        ),
+        (
+            s(&["decasteljau", CUBIC, "--max-degree", "x"]),
+            "--max-degree",
+            "Usage",
+        ),
+        // literals and expressions
+        (
+            s(&["decasteljau", "[1 2; 3]"]),
+            "CONTROL",
+            "Literal::RaggedRows",
+        ),
+        (s(&["decasteljau", "[1 2"]), "CONTROL", "Literal::Syntax"),
+        (
+            s(&["decasteljau", "[1 w]"]),
+            "CONTROL",
+            "Literal::UnknownVariable",
+        ),
+        (
+            s(&["decasteljau", "[1 2] + [1 2 3]"]),
+            "CONTROL",
+            "Literal::Shape",
+        ),
+        (s(&["decasteljau", CUBIC, "--t", "1:0"]), "--t", "Shape"),
+        (
+            s(&["decasteljau", CUBIC, "--t", "[0 1; 2 3]"]),
+            "--t",
+            "Literal::Shape",
+        ),
+        (
+            s(&["decasteljau", CUBIC, "--t", "0:1e-9:1"]),
+            "--t",
+            "Literal::TooLarge",
+        ),
+        (
+            s(&["decasteljau", "1e999"]),
+            "CONTROL",
+            "Literal::NumberOutOfRange",
+        ),
+        (
+            s(&["decasteljau", "[0 sqrt(2)]", "--exact"]),
+            "CONTROL",
+            "Literal::NotRational",
+        ),
+        (
+            s(&["curve", "[u; frob(u)]"]),
+            "EXPR",
+            "Literal::UnknownFunction",
+        ),
+        (
+            s(&["curve", "[u; sqrt(u, 2)]"]),
+            "EXPR",
+            "Literal::Argument",
+        ),
+        (s(&["curve", &deep]), "EXPR", "Literal::TooDeep"),
+        (
+            s(&["curve", "[u; 1/(u-u)]", "--exact", "--t", "0.5"]),
+            "EXPR",
+            "Literal::DivisionByZero",
+        ),
+        (s(&["curve", "[u; q]"]), "EXPR", "Literal::UnknownVariable"),
+        (s(&["curve", "[u; 'text']"]), "EXPR", "Literal::Unsupported"),
+        (s(&["curve", "[u; Inf]"]), "EXPR", "Literal::NonFinite"),
+        (s(&["curve", "[u; v]"]), "EXPR", "Shape"),
+        (
+            s(&["surface", "[u; v; u.*v]", "--u", "[0 NaN]"]),
+            "--u",
+            "Literal::NonFinite",
+        ),
+        // files
+        (s(&["decasteljau", &missing]), "CONTROL", "Io::NotFound"),
+        (s(&["decasteljau", &ragged]), "CONTROL", "Data"),
+        (s(&["decasteljau", &words]), "CONTROL", "Data"),
+        (s(&["decasteljau", &binary]), "CONTROL", "Data"),
+        (s(&["bezier-patch", &octave_bad]), "NET", "Data"),
+        (s(&["bezier-patch", &cell]), "NET", "Data"),
+        (s(&["script", &missing]), "--script", "Io::NotFound"),
+        (
+            s(&["script", &script_syntax]),
+            "--script",
+            "Literal::Syntax",
+        ),
+        (
+            s(&["script", &script_loop]),
+            "--script",
+            "Literal::TooLarge",
+        ),
+        (
+            s(&["script", &script_chain]),
+            "--script",
+            "Literal::ChainedAssignment",
+        ),
+        (
+            s(&["coons", "--script", &missing]),
+            "--script",
+            "Io::NotFound",
+        ),
+        // shapes, limits and constructions
+        (s(&["decasteljau", CUBIC, "--n", "1"]), "--n", "Shape"),
+        (
+            s(&["decasteljau", CUBIC, "--n", "2000000"]),
+            "--n",
+            "Library::TooLarge",
+        ),
+        (
+            s(&["decasteljau", "zeros(2, 1002)"]),
+            "CONTROL",
+            "Library::TooLarge",
+        ),
+        (
+            s(&["decasteljau", CUBIC, "--max-degree", "2"]),
+            "CONTROL",
+            "Library::TooLarge",
+        ),
+        (
+            s(&["bezier-patch", NET, "--n", "4000"]),
+            "--u/--v",
+            "Library::TooLarge",
+        ),
+        (
+            s(&["decasteljau", "zeros(3, 1000)", "--n", "100000"]),
+            "--t",
+            "Library::TooLarge",
+        ),
+        (
+            s(&["bernstein", "--degree", "1000", "--n", "100000"]),
+            "--t",
+            "Library::TooLarge",
+        ),
+        (
+            s(&["lagrange", "--nodes", "0:0.001:0.999", "--n", "100000"]),
+            "--t",
+            "Library::TooLarge",
+        ),
+        (
+            s(&["derivative", "zeros(3, 1000)", "--t", "0:1e-5:1"]),
+            "--t",
+            "Library::TooLarge",
+        ),
+        (s(&["bezier-patch", "[1 2]"]), "NET", "Shape"),
+        (
+            s(&["surface", "[u; v; u.*v]", "--n", "5000"]),
+            "--u/--v",
+            "Library::TooLarge",
+        ),
+        (s(&["surface", "[u; v; u.*v]", "--n", "1"]), "--n", "Shape"),
+        (
+            s(&["bernstein", "--degree", "5000"]),
+            "--degree",
+            "Library::TooLarge",
+        ),
+        (
+            s(&["bernstein", "--degree", "3", "--i", "4"]),
+            "--i",
+            "Shape",
+        ),
+        (
+            s(&["derivative", CUBIC, "--order", "4"]),
+            "--order",
+            "Library::DerivativeOrder",
+        ),
+        (
+            s(&["lagrange", "--nodes", "[0 0.5 0.5]"]),
+            "--nodes",
+            "Library::DuplicateNodes",
+        ),
+        (
+            s(&["lagrange", "--nodes", "[0 1]", "--points", "[1 2 3]"]),
+            "--points",
+            "Library::ShapeMismatch",
+        ),
+        (
+            s(&[
+                "coons", "--c1", "[u;0;0]", "--c2", "[u;1;0]", "--d1", "[0;v;0]", "--d2", "[2;v;0]",
+            ]),
+            "--c1/--c2/--d1/--d2",
+            "Library::CornerMismatch",
+        ),
+        (with(&COONS, &["--n", "1"]), "--n", "Shape"),
+        (with(&COONS[..6], &[]), "--d2", "Usage"),
+        (
+            with(&COONS, &["--n", "4000"]),
+            "--u/--v",
+            "Library::TooLarge",
+        ),
+        (
+            s(&[
+                "coons",
+                "--c1",
+                "[sin(u);0;0]",
+                "--c2",
+                "[u;1;0]",
+                "--d1",
+                "[0;v;0]",
+                "--d2",
+                "[1;v;0]",
+                "--exact",
+            ]),
+            "--c1",
+            "Literal::NotRational",
+        ),
+        (with(&COONS, &["--c1", "[u;0;0]"]), "--c1", "Usage"),
+        (
+            s(&[
+                "coons-bicubic",
+                "--c1",
+                "[u;0;0]",
+                "--c2",
+                "[u;1;0]",
+                "--d1",
+                "[0;v;0]",
+                "--d2",
+                "[1;v;0]",
+            ]),
+            "--d1u",
+            "Usage",
+        ),
+        (
+            s(&[
+                "coons-bicubic",
+                "--c1",
+                "[u;0;0]",
+                "--c2",
+                "[u;1;0]",
+                "--d1",
+                "[0;v;0]",
+                "--d2",
+                "[1;v;0]",
+                "--c1v",
+                "[0;1;0]",
+                "--c2v",
+                "[0;1;0]",
+                "--d1u",
+                "[1;0;0]",
+                "--d2u",
+                "[1;0;0]",
+                "--twist",
+                "given",
+            ]),
+            "--twists",
+            "Usage",
+        ),
+        (s(&["discrete-coons", "[1 2]"]), "NET", "Shape"),
+        (
+            s(&["discrete-coons", NET, "--mask=0.1,0.2"]),
+            "--mask",
+            "Library::MaskNotAffine",
+        ),
+        (s(&["discrete-coons", NET, "--mask=1"]), "--mask", "Shape"),
+        (
+            s(&["gordon", "--v-curve", "[u;0;0]", "--u-curve", "[0;v;0]"]),
+            "--u-curve",
+            "Shape",
+        ),
+        (
+            s(&[
+                "gordon",
+                "--v-curve",
+                "[u;0;0]",
+                "--v-curve",
+                "[u;1;0]",
+                "--u-curve",
+                "[0;v;0]",
+                "--u-curve",
+                "[1;v;1]",
+            ]),
+            "--u-curve/--v-curve",
+            "Library::NetworkMismatch",
+        ),
+        (
+            s(&[
+                "gordon",
+                "--v-curve",
+                "[u;0;0]",
+                "--v-curve",
+                "[u;1;0]",
+                "--u-curve",
+                "[0;v;0]",
+                "--u-curve",
+                "[1;v;0]",
+                "--u-nodes",
+                "[1 0]",
+            ]),
+            "--u-curve/--v-curve",
+            "Library::UnsortedNodes",
+        ),
+        (
+            s(&["spline", "[0 0; 1 1; 2 0]'", "--end", "clamped"]),
+            "--start-tangent",
+            "Usage",
+        ),
+        (s(&["spline", "[0 0]'"]), "POINTS", "Library::TooFewPoints"),
+        (
+            s(&[
+                "hermite", "--p0", "[0;0]", "--p1", "[1;0;0]", "--t0", "[1;1]", "--t1", "[1;1]",
+            ]),
+            "--p0/--p1/--t0/--t1",
+            "Library::ShapeMismatch",
+        ),
+        (
+            s(&["bspline", "[0 0; 1 2]'", "--degree", "3"]),
+            "CONTROL/--degree/--knots",
+            "Library::TooFewControlPoints",
+        ),
+        (
+            s(&[
+                "bspline",
+                "[0 0; 1 2; 3 2]'",
+                "--degree",
+                "1",
+                "--knots",
+                "[0 1 0.5 1 1]",
+            ]),
+            "CONTROL/--degree/--knots",
+            "Library::DecreasingKnots",
+        ),
+        (
+            s(&[
+                "bspline",
+                "[0 0; 1 2; 3 2]'",
+                "--degree",
+                "1",
+                "--knots",
+                "[0 0 1 1]",
+            ]),
+            "CONTROL/--degree/--knots",
+            "Library::KnotCount",
+        ),
+        (
+            s(&[
+                "nurbs",
+                "[1 0; 1 1; 0 1]'",
+                "--weights",
+                "[1 0 1]",
+                "--degree",
+                "2",
+            ]),
+            "CONTROL/--weights/--knots",
+            "Library::NonPositiveWeight",
+        ),
+        (
+            s(&[
+                "nurbs",
+                "[1 0; 1 1; 0 1]'",
+                "--weights",
+                "[1 1 1]",
+                "--degree",
+                "2",
+                "--t",
+                "2",
+            ]),
+            "--t",
+            "Library::ParameterOutOfRange",
+        ),
+        // outputs
+        (
+            s(&["curve", "[u;u]", "--plot", "picture.bmp"]),
+            "--plot picture.bmp",
+            "Usage",
+        ),
+        (
+            s(&["curve", "[u;u;u;u]", "--plot", "four.svg"]),
+            "--plot four.svg",
+            "Plot",
+        ),
+        (
+            s(&["surface", "[u;v;u]", "--mesh", "mesh.3ds"]),
+            "--mesh mesh.3ds",
+            "Usage",
+        ),
+        (
+            s(&["curve", "[u;u]", "--plot", &no_dir]),
+            "--plot",
+            "Io::NotFound",
+        ),
+        (
+            s(&["thesis", "--out", "/proc/cagd-cannot-be-here"]),
+            "--out /proc/cagd-cannot-be-here",
+            "Io::NotFound",
+        ),
+    ]
+}
+
+#[test]
+fn every_bad_input_names_its_argument_and_kind_exits_2_and_writes_nothing() {
+    let inputs = tempfile::tempdir().unwrap();
+    let table = cases(inputs.path());
+    assert!(table.len() >= 83, "{} cases", table.len());
+    let subcommands: std::collections::BTreeSet<&str> = table
+        .iter()
+        .filter_map(|(a, _, _)| a.first().map(String::as_str))
+        .collect();
+    for sub in [
+        "thesis",
+        "decasteljau",
+        "bezier-patch",
+        "coons",
+        "coons-bicubic",
+        "discrete-coons",
+        "gordon",
+        "lagrange",
+        "bernstein",
+        "derivative",
+        "spline",
+        "hermite",
+        "bspline",
+        "nurbs",
+        "curve",
+        "surface",
+        "script",
+    ] {
+        assert!(subcommands.contains(sub), "no bad input for {sub}");
+    }
+    check_all(&table, |(args, argument, kind)| {
+        // In-process: the exact argument and kind.
+        let mut full = vec!["cagd".to_string()];
+        full.extend(args.iter().cloned());
+        // Output errors surface when the staged files are committed.
+        match run(&full).and_then(|out| out.files.commit()) {
+            Ok(()) => return Err("succeeded".into()),
+            Err(e) => {
+                let got = label(&e.kind);
+                // A file argument is named with its path: `CONTROL data.txt`.
+                let named =
+                    e.argument == *argument || e.argument.starts_with(&format!("{argument} "));
+                if got != *kind || !named || e.exit_code() != 2 {
+                    return Err(format!(
+                        "got ({}, {got}, exit {}), expected ({argument}, {kind}): {e}",
+                        e.argument,
+                        e.exit_code()
+                    ));
+                }
+            }
+        }
+        // The binary, in an empty folder, asked to write its result to a file.
+        let work = tempfile::tempdir().unwrap();
+        let mut cmd = Command::cargo_bin("cagd").unwrap();
+        cmd.current_dir(work.path()).args(args);
+        if args.first().is_some_and(|a| a != "thesis") && !args.iter().any(|a| a == "-o") {
+            cmd.args(["-o", "result.txt"]);
+        }
+        refused(&mut cmd, Some(work.path()))
+            .map(drop)
+            .map_err(|e| format!("binary: {e}"))
+    });
+}

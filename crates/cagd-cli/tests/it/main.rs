@@ -1,0 +1,11 @@
+//! The integration tests of the command line, one module per subject: snapshots of every
+//! subcommand, bad inputs, limits, atomic output, meshes, fuzzing regressions.
+
+mod atomic_output;
+mod bad_inputs;
+mod cli;
+mod error_catalogue;
+mod limits;
+mod mesh;
+mod non_finite;
+mod regressions;

@@ -1,0 +1,19 @@
+//! The integration tests of the core crate `cagd`, one module per subject: the Octave
+//! references, properties, worked examples of the sources, bad input of the library.
+//! (`tests/allocations.rs` is a separate binary: its counting allocator is process-wide.)
+
+mod bezier_errors;
+mod coons;
+mod course_errors;
+mod course_examples;
+mod course_octave;
+mod gordon;
+mod grid_eval;
+mod mixed_boundaries;
+mod octave_reference;
+mod properties;
+mod properties_coons;
+mod properties_course;
+mod seed_examples;
+mod spline_grid;
+mod support;

@@ -1,0 +1,535 @@
+//! Batch evaluation of B-spline, NURBS and interpolating-spline curves and surfaces
+//! (`eval_many_into`, `eval_grid_into`, `eval_grid`) against their per-point `eval`.
+//!
+//! Curves do the same operations as `eval` and must agree bit for bit; surfaces sum along `u`
+//! first where `eval` sums along `v` first, so they agree to a few `(p + q) ε` times the size
+//! of the control net in `f64`. In rationals everything agrees exactly. The data are random:
+//! degrees 0…5, non-uniform knots with repeated interior knots (up to a discontinuity),
+//! clamped and unclamped knot vectors, parameters at every knot, at and beyond both ends of
+//! the domain, NaN and ±∞, sorted and shuffled.
+
+use cagd::bspline::{BSplineCurve, BSplineSurface};
+use cagd::nurbs::{NurbsCurve, NurbsSurface};
+use cagd::spline::{CubicSpline, EndCondition};
+use cagd::{Curve, Error, Scalar, Surface};
+use nalgebra::{DMatrix, DVector};
+use num_rational::BigRational as Q;
+
+use cagd_test_support as common;
+use common::lcg::Lcg;
+
+/// A random knot vector for `n` control points of degree `p`: clamped or not, non-uniform,
+/// interior knots repeated up to `p + 1` times, domain `[u_p, u_n]` of positive length.
+fn random_knots(rng: &mut Lcg, p: usize, n: usize, clamped: bool) -> Vec<f64> {
+    let total = n + p + 1;
+    let (a, b) = (rng.signed() * 2.0, 0.0);
+    let b = a + 0.5 + 3.0 * rng.next() + b;
+    loop {
+        let mut k: Vec<f64> = Vec::with_capacity(total);
+        let inner = if clamped { total - 2 * (p + 1) } else { total };
+        let mut run = 0;
+        for _ in 0..inner {
+            // Repeat the previous knot now and then (multiplicity at most p + 1).
+            if !k.is_empty() && run < p + 1 && rng.next() < 0.3 {
+                k.push(*k.last().unwrap());
+                run += 1;
+            } else {
+                let lo = if clamped { a } else { a - 1.0 };
+                let hi = if clamped { b } else { b + 1.0 };
+                k.push(lo + (hi - lo) * rng.next());
+                run = 1;
+            }
+        }
+        k.sort_by(|x, y| x.partial_cmp(y).unwrap());
+        if clamped {
+            let mut full = vec![a; p + 1];
+            full.extend(k);
+            full.extend(std::iter::repeat_n(b, p + 1));
+            k = full;
+        }
+        // Interior multiplicity may have grown by sorting; cap it by skipping such vectors.
+        let too_many = k
+            .windows(p + 2)
+            .enumerate()
+            .any(|(i, w)| w[0] == w[p + 1] && i > 0 && i + p + 2 < k.len());
+        if k[p] < k[n] && !too_many {
+            return k;
+        }
+    }
+}
+
+/// Parameters for a spline over `[lo, hi]` with knots `knots`: every knot, both ends, points
+/// beyond both ends, random ones, NaN and ±∞ (with `specials`); sorted, then (with `shuffle`)
+/// in random order.
+fn params_for(rng: &mut Lcg, knots: &[f64], lo: f64, hi: f64, specials: bool) -> Vec<f64> {
+    let w = hi - lo;
+    let mut ts: Vec<f64> = knots.to_vec();
+    ts.extend([
+        lo,
+        hi,
+        lo - 0.25 * w,
+        hi + 0.25 * w,
+        lo - 1e-300,
+        hi + 1e-12,
+    ]);
+    ts.extend((0..40).map(|_| lo - 0.1 * w + 1.2 * w * rng.next()));
+    ts.sort_by(|x, y| x.partial_cmp(y).unwrap());
+    if specials {
+        ts.extend([f64::NAN, f64::INFINITY, f64::NEG_INFINITY, lo]);
+    }
+    ts
+}
+
+/// Bit-for-bit equality, NaN equal to NaN (and `-0.0` to `0.0`).
+fn same(a: f64, b: f64) -> bool {
+    a == b || (a.is_nan() && b.is_nan())
+}
+
+/// Checks a batch of curve points against `eval` at each parameter, bit for bit.
+fn check_curve_bits<C: Curve>(what: &str, c: &C, ts: &[f64]) {
+    let d = c.dim();
+    let mut out = vec![f64::NAN; ts.len() * d];
+    c.eval_many_into(ts, &mut out).unwrap();
+    for (t, x) in ts.iter().zip(out.chunks_exact(d)) {
+        let e = c.eval(*t);
+        assert!(
+            x.iter().zip(e.iter()).all(|(a, b)| same(*a, *b)),
+            "{what} at t = {t:e}: batch {x:?}, eval {:?}",
+            e.as_slice()
+        );
+    }
+}
+
+/// The largest difference between a grid and `eval`, in units of `ε · scale`; NaN must match.
+fn grid_error<S: Surface>(
+    what: &str,
+    s: &S,
+    us: &[f64],
+    vs: &[f64],
+    out: &[f64],
+    scale: f64,
+) -> f64 {
+    let d = s.dim();
+    let mut worst: f64 = 0.0;
+    for (a, u) in us.iter().enumerate() {
+        for (b, v) in vs.iter().enumerate() {
+            let e = s.eval(*u, *v);
+            let x = &out[(a * vs.len() + b) * d..][..d];
+            for k in 0..d {
+                if e[k].is_nan() || x[k].is_nan() {
+                    assert!(
+                        e[k].is_nan() && x[k].is_nan(),
+                        "{what} at ({u:e}, {v:e}): grid {x:?}, eval {:?}",
+                        e.as_slice()
+                    );
+                    continue;
+                }
+                worst = worst.max((x[k] - e[k]).abs() / (f64::EPSILON * scale));
+            }
+        }
+    }
+    worst
+}
+
+fn random_control(rng: &mut Lcg, d: usize, n: usize) -> DMatrix<f64> {
+    DMatrix::from_fn(d, n, |_, _| 10.0 * rng.signed())
+}
+
+#[test]
+fn bspline_and_nurbs_curve_batches_equal_eval_bit_for_bit() {
+    let mut rng = Lcg(11);
+    let mut cases = 0;
+    for p in 0..=5 {
+        for extra in [0, 1, 3, 7] {
+            for clamped in [true, false] {
+                for d in [1, 2, 3, 4, 6] {
+                    let n = p + 1 + extra;
+                    let knots = random_knots(&mut rng, p, n, clamped);
+                    let c = BSplineCurve::new(p, knots.clone(), random_control(&mut rng, d, n))
+                        .unwrap();
+                    let (lo, hi) = c.domain();
+                    let mut ts = params_for(&mut rng, &knots, lo, hi, true);
+                    check_curve_bits(&format!("B-spline p={p} n={n} d={d}"), &c, &ts);
+                    let weights: Vec<f64> = (0..n).map(|_| 0.25 + 2.0 * rng.next()).collect();
+                    let r = NurbsCurve::new(p, knots, c.control().clone(), weights).unwrap();
+                    check_curve_bits(&format!("NURBS p={p} n={n} d={d}"), &r, &ts);
+                    rng.shuffle(&mut ts);
+                    check_curve_bits(&format!("B-spline p={p} n={n} d={d} shuffled"), &c, &ts);
+                    check_curve_bits(&format!("NURBS p={p} n={n} d={d} shuffled"), &r, &ts);
+                    cases += 1;
+                }
+            }
+        }
+    }
+    assert_eq!(cases, 6 * 4 * 2 * 5);
+}
+
+#[test]
+fn inherent_eval_many_is_try_eval_and_refuses_parameters_outside_the_domain() {
+    let mut rng = Lcg(5);
+    let knots = vec![0.0, 0.0, 0.0, 0.25, 0.25, 0.7, 1.0, 1.0, 1.0];
+    let c = BSplineCurve::new(2, knots.clone(), random_control(&mut rng, 3, 6)).unwrap();
+    let ts = params_for(&mut rng, &knots, 0.0, 1.0, false);
+    let inside: Vec<f64> = ts
+        .iter()
+        .copied()
+        .filter(|t| (0.0..=1.0).contains(t))
+        .collect();
+    let m = c.eval_many(&inside).unwrap();
+    for (k, t) in inside.iter().enumerate() {
+        assert_eq!(m.column(k), c.try_eval(*t).unwrap(), "t = {t}");
+    }
+    let r = NurbsCurve::from_bspline(&c);
+    let mut out = vec![7.0; 3 * 3];
+    for bad in [1.5, -1e-300, f64::NAN, f64::INFINITY] {
+        let us = [0.5, bad, 0.25];
+        for err in [
+            c.eval_many(&us).unwrap_err(),
+            c.try_eval_many_into(&us, &mut out).unwrap_err(),
+            r.try_eval_many_into(&us, &mut out).unwrap_err(),
+        ] {
+            assert!(
+                matches!(
+                    err,
+                    Error::ParameterOutOfRange {
+                        min: 0.0,
+                        max: 1.0,
+                        ..
+                    }
+                ),
+                "{bad}: {err:?}"
+            );
+        }
+        assert_eq!(out, vec![7.0; 9], "nothing is written on error");
+    }
+    r.try_eval_many_into(&[0.0, 0.3, 1.0], &mut out).unwrap();
+    for (k, t) in [0.0, 0.3, 1.0].iter().enumerate() {
+        assert_eq!(&out[3 * k..3 * k + 3], r.try_eval(*t).unwrap().as_slice());
+    }
+}
+
+#[test]
+fn bspline_and_nurbs_surface_grids_agree_with_eval() {
+    let mut rng = Lcg(23);
+    let mut worst_b: f64 = 0.0;
+    let mut worst_n: f64 = 0.0;
+    for (p, q) in [
+        (0, 0),
+        (0, 3),
+        (1, 1),
+        (2, 1),
+        (1, 4),
+        (3, 3),
+        (2, 5),
+        (5, 2),
+        (4, 4),
+        (5, 5),
+    ] {
+        for (clamped, d) in [(true, 1), (false, 3), (true, 3), (false, 5)] {
+            let (nu, nv) = (p + 1 + rng.below(6), q + 1 + rng.below(6));
+            let ku = random_knots(&mut rng, p, nu, clamped);
+            let kv = random_knots(&mut rng, q, nv, !clamped);
+            let coords: Vec<DMatrix<f64>> = (0..d)
+                .map(|_| DMatrix::from_fn(nu, nv, |_, _| 10.0 * rng.signed()))
+                .collect();
+            let scale = coords.iter().map(|c| c.amax()).fold(0.0, f64::max);
+            let s = BSplineSurface::new(p, q, ku.clone(), kv.clone(), coords.clone()).unwrap();
+            let ((a, b), (c, e)) = s.domain();
+            let mut us = params_for(&mut rng, &ku, a, b, true);
+            let mut vs = params_for(&mut rng, &kv, c, e, true);
+            if rng.next() < 0.5 {
+                rng.shuffle(&mut us);
+                rng.shuffle(&mut vs);
+            }
+            let mut out = vec![f64::NAN; us.len() * vs.len() * d];
+            s.eval_grid_into(&us, &vs, &mut out).unwrap();
+            let what = format!("B-spline ({p},{q}) d={d}");
+            let err = grid_error(&what, &s, &us, &vs, &out, scale);
+            // Non-negative weights summing to one in both directions.
+            assert!(err <= 2.0 * (p + q + 2) as f64, "{what}: {err} ε·scale");
+            worst_b = worst_b.max(err);
+            // The Array3 path and the trait's eval_grid_into are the same computation.
+            let g = Surface::eval_grid(&s, &us, &vs);
+            assert!(g.iter().zip(&out).all(|(x, y)| same(*x, *y)), "{what}");
+            let mut again = vec![0.0; out.len()];
+            Surface::eval_grid_into(&s, &us, &vs, &mut again).unwrap();
+            assert!(again.iter().zip(&out).all(|(x, y)| same(*x, *y)), "{what}");
+
+            // NURBS: weights in [0.5, 2]; the homogeneous error ~ ε·max|w P| is divided by a
+            // weight ≥ 0.5.
+            let w = DMatrix::from_fn(nu, nv, |_, _| 0.5 + 1.5 * rng.next());
+            let r = NurbsSurface::new(p, q, ku, kv, coords, w).unwrap();
+            let mut out = vec![f64::NAN; us.len() * vs.len() * d];
+            r.eval_grid_into(&us, &vs, &mut out).unwrap();
+            let what = format!("NURBS ({p},{q}) d={d}");
+            let err = grid_error(&what, &r, &us, &vs, &out, scale);
+            assert!(err <= 16.0 * (p + q + 2) as f64, "{what}: {err} ε·scale");
+            worst_n = worst_n.max(err);
+            let g = Surface::eval_grid(&r, &us, &vs);
+            assert!(g.iter().zip(&out).all(|(x, y)| same(*x, *y)), "{what}");
+        }
+    }
+    println!("worst: B-spline {worst_b:.2} ε·scale, NURBS {worst_n:.2} ε·scale");
+}
+
+#[test]
+fn a_nan_parameter_gives_nan_points_in_both_paths() {
+    let k = vec![0.0, 0.0, 0.5, 1.0, 1.0];
+    let coords = vec![DMatrix::from_fn(3, 3, |i, j| (i + 2 * j) as f64 + 1.0)];
+    let s = BSplineSurface::new(1, 1, k.clone(), k, coords).unwrap();
+    for (u, v) in [(f64::NAN, 0.5), (0.5, f64::NAN), (0.25, 0.75)] {
+        let e = s.eval(u, v);
+        let mut out = [0.0];
+        s.eval_grid_into(&[u], &[v], &mut out).unwrap();
+        assert_eq!(u.is_nan() || v.is_nan(), e[0].is_nan(), "({u}, {v})");
+        assert!(same(out[0], e[0]), "({u}, {v}): {} vs {}", out[0], e[0]);
+    }
+}
+
+#[test]
+fn large_batches_on_threads_agree_with_eval() {
+    // Above the parallel threshold of the grid driver: several blocks on several threads.
+    let mut rng = Lcg(99);
+    let knots = random_knots(&mut rng, 3, 12, true);
+    let c = BSplineCurve::new(3, knots.clone(), random_control(&mut rng, 3, 12)).unwrap();
+    let ts: Vec<f64> = (0..40_000)
+        .map(|_| rng.signed() * 0.1 + rng.next())
+        .collect();
+    check_curve_bits("B-spline 40 000 points", &c, &ts);
+    let weights: Vec<f64> = (0..12).map(|_| 0.5 + rng.next()).collect();
+    let r = NurbsCurve::new(3, knots.clone(), c.control().clone(), weights).unwrap();
+    check_curve_bits("NURBS 40 000 points", &r, &ts);
+
+    let coords: Vec<DMatrix<f64>> = (0..3)
+        .map(|_| DMatrix::from_fn(12, 9, |_, _| rng.signed()))
+        .collect();
+    let kv = random_knots(&mut rng, 2, 9, false);
+    let s = BSplineSurface::new(3, 2, knots, kv, coords).unwrap();
+    let ((a, b), (c0, c1)) = s.domain();
+    let us: Vec<f64> = (0..150).map(|i| a + (b - a) * i as f64 / 149.0).collect();
+    let vs: Vec<f64> = (0..1000)
+        .map(|i| c0 + (c1 - c0) * i as f64 / 999.0)
+        .collect();
+    let mut out = vec![f64::NAN; us.len() * vs.len() * 3];
+    s.eval_grid_into(&us, &vs, &mut out).unwrap();
+    // Rows of a large grid are the rows of one-row grids (the same arithmetic per row).
+    for a in [0, 1, 77, 149] {
+        let mut row = vec![f64::NAN; vs.len() * 3];
+        s.eval_grid_into(&us[a..a + 1], &vs, &mut row).unwrap();
+        assert_eq!(&out[a * vs.len() * 3..(a + 1) * vs.len() * 3], &row[..]);
+    }
+    let err = grid_error("large surface", &s, &us[..20], &vs, &out[..20 * 3000], 1.0);
+    assert!(err <= 20.0, "{err}");
+}
+
+fn random_spline(rng: &mut Lcg, m: usize, d: usize, end: usize) -> CubicSpline {
+    let closed = end == 2;
+    let np = m + usize::from(closed);
+    let mut t = 0.0;
+    let params: Vec<f64> = (0..np)
+        .map(|_| {
+            t += 0.1 + 2.0 * rng.next();
+            t - 1.0
+        })
+        .collect();
+    let points = random_control(rng, d, m);
+    let end = match end {
+        0 => EndCondition::Clamped {
+            start: DVector::from_fn(d, |_, _| rng.signed()),
+            end: DVector::from_fn(d, |_, _| rng.signed()),
+        },
+        1 => EndCondition::Natural,
+        _ => EndCondition::Closed,
+    };
+    CubicSpline::interpolate_with_params(points, params, end).unwrap()
+}
+
+#[test]
+fn spline_batches_equal_eval_bit_for_bit() {
+    let mut rng = Lcg(3);
+    for m in [2, 3, 4, 7, 20] {
+        for d in [1, 2, 3, 5] {
+            for end in 0..3 {
+                if end == 2 && m < 3 {
+                    continue;
+                }
+                let s = random_spline(&mut rng, m, d, end);
+                let t = s.params();
+                let (lo, hi) = (t[0], t[t.len() - 1]);
+                let mut ts = params_for(&mut rng, t, lo, hi, true);
+                let what = format!("spline m={m} d={d} end={end}");
+                check_curve_bits(&what, &s, &ts);
+                rng.shuffle(&mut ts);
+                check_curve_bits(&format!("{what} shuffled"), &s, &ts);
+                let mat = s.eval_many(&ts);
+                for (k, t) in ts.iter().enumerate() {
+                    let e = s.eval(*t);
+                    assert!(mat
+                        .column(k)
+                        .iter()
+                        .zip(e.iter())
+                        .all(|(a, b)| same(*a, *b)));
+                }
+            }
+        }
+    }
+    // Many points: threads.
+    let s = random_spline(&mut rng, 30, 3, 1);
+    let ts: Vec<f64> = (0..50_000).map(|_| 70.0 * rng.next() - 5.0).collect();
+    check_curve_bits("spline 50 000 points", &s, &ts);
+}
+
+fn q(n: i64, d: i64) -> Q {
+    <Q as Scalar>::from_ratio(n, d)
+}
+
+#[test]
+fn batches_are_exact_in_rationals() {
+    // Knots with a double interior knot, non-uniform; parameters at knots, ends, beyond.
+    let ku = vec![
+        q(0, 1),
+        q(0, 1),
+        q(0, 1),
+        q(1, 3),
+        q(1, 3),
+        q(3, 4),
+        q(1, 1),
+        q(1, 1),
+        q(1, 1),
+    ];
+    let kv = vec![
+        q(-1, 1),
+        q(-1, 2),
+        q(0, 1),
+        q(1, 5),
+        q(1, 2),
+        q(2, 1),
+        q(3, 1),
+    ];
+    let ts = [
+        q(-1, 2),
+        q(0, 1),
+        q(1, 7),
+        q(1, 3),
+        q(1, 2),
+        q(3, 4),
+        q(9, 10),
+        q(1, 1),
+        q(2, 1),
+    ];
+    let vs = [
+        q(-3, 1),
+        q(0, 1),
+        q(1, 10),
+        q(1, 5),
+        q(1, 3),
+        q(1, 2),
+        q(7, 5),
+        q(9, 2),
+    ];
+    let val =
+        |i: usize, j: usize, k: usize| q(((i * 7 + j * 3 + k * 5) % 11) as i64 - 5, 1 + k as i64);
+    let control = DMatrix::from_fn(3, 6, |k, i| val(i, 0, k));
+    let c = BSplineCurve::new(2, ku.clone(), control.clone()).unwrap();
+    let weights: Vec<Q> = (0..6).map(|i| q(1 + (i as i64 % 3), 2)).collect();
+    let r = NurbsCurve::new(2, ku.clone(), control, weights).unwrap();
+    let mut out = vec![q(0, 1); ts.len() * 3];
+    for curve in [&c as &dyn Curve<Q>, &r as &dyn Curve<Q>] {
+        curve.eval_many_into(&ts, &mut out).unwrap();
+        for (t, x) in ts.iter().zip(out.chunks_exact(3)) {
+            assert_eq!(x, curve.eval(t.clone()).as_slice(), "t = {t}");
+        }
+    }
+    // Surfaces: B-spline of degrees (2, 2) with unclamped v knots (domain [0, 1/2]); NURBS of
+    // degrees (2, 3), clamped single-span v knots.
+    let coords: Vec<DMatrix<Q>> = (0..2)
+        .map(|k| DMatrix::from_fn(6, 4, |i, j| val(i, j, k)))
+        .collect();
+    let s = BSplineSurface::new(2, 2, ku.clone(), kv, coords.clone()).unwrap();
+    let kv2 = vec![
+        q(0, 1),
+        q(0, 1),
+        q(0, 1),
+        q(0, 1),
+        q(1, 1),
+        q(1, 1),
+        q(1, 1),
+        q(1, 1),
+    ];
+    let w = DMatrix::from_fn(6, 4, |i, j| q(1 + ((i + j) as i64 % 4), 3));
+    let n = NurbsSurface::new(2, 3, ku, kv2, coords, w).unwrap();
+    let mut out = vec![q(0, 1); ts.len() * vs.len() * 2];
+    for surf in [&s as &dyn Surface<Q>, &n as &dyn Surface<Q>] {
+        surf.eval_grid_into(&ts, &vs, &mut out).unwrap();
+        for (a, u) in ts.iter().enumerate() {
+            for (b, v) in vs.iter().enumerate() {
+                let x = &out[(a * vs.len() + b) * 2..][..2];
+                assert_eq!(x, surf.eval(u.clone(), v.clone()).as_slice(), "({u}, {v})");
+            }
+        }
+    }
+    // Interpolating spline, clamped, exact.
+    let pts = DMatrix::from_fn(2, 4, |k, i| val(i, 1, k));
+    let end = EndCondition::Clamped {
+        start: DVector::from_vec(vec![q(1, 1), q(1, 1)]),
+        end: DVector::from_vec(vec![q(-1, 1), q(1, 2)]),
+    };
+    let sp = CubicSpline::interpolate(pts, end).unwrap();
+    let ts = [
+        q(-1, 2),
+        q(0, 1),
+        q(1, 3),
+        q(1, 1),
+        q(5, 2),
+        q(3, 1),
+        q(4, 1),
+    ];
+    let mut out = vec![q(0, 1); ts.len() * 2];
+    sp.eval_many_into(&ts, &mut out).unwrap();
+    for (t, x) in ts.iter().zip(out.chunks_exact(2)) {
+        assert_eq!(x, sp.eval(t.clone()).as_slice(), "t = {t}");
+    }
+}
+
+#[test]
+fn buffers_of_the_wrong_length_are_shape_errors() {
+    let mut rng = Lcg(1);
+    let k = vec![0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0];
+    let c = BSplineCurve::new(2, k.clone(), random_control(&mut rng, 3, 4)).unwrap();
+    let r = NurbsCurve::from_bspline(&c);
+    let coords = vec![DMatrix::from_fn(4, 4, |i, j| (i * j) as f64); 3];
+    let s = BSplineSurface::new(2, 2, k.clone(), k.clone(), coords.clone()).unwrap();
+    let n =
+        NurbsSurface::new(2, 2, k.clone(), k, coords, DMatrix::from_element(4, 4, 1.0)).unwrap();
+    let sp =
+        CubicSpline::interpolate(random_control(&mut rng, 3, 5), EndCondition::Natural).unwrap();
+    let ts = [0.0, 0.5];
+    for len in [0, 5, 7, 100] {
+        let mut out = vec![0.0; len];
+        let errors = [
+            c.eval_many_into(&ts, &mut out),
+            c.try_eval_many_into(&ts, &mut out),
+            Curve::eval_many_into(&c, &ts, &mut out),
+            r.eval_many_into(&ts, &mut out),
+            r.try_eval_many_into(&ts, &mut out),
+            Curve::eval_many_into(&r, &ts, &mut out),
+            sp.eval_many_into(&ts, &mut out),
+            Curve::eval_many_into(&sp, &ts, &mut out),
+            s.eval_grid_into(&ts, &ts, &mut out),
+            Surface::eval_grid_into(&s, &ts, &ts, &mut out),
+            n.eval_grid_into(&ts, &ts, &mut out),
+            Surface::eval_grid_into(&n, &ts, &ts, &mut out),
+        ];
+        for (i, e) in errors.into_iter().enumerate() {
+            assert!(
+                matches!(e, Err(Error::ShapeMismatch { .. })),
+                "case {i}, length {len}: {e:?}"
+            );
+        }
+    }
+    // Empty parameter lists: nothing to write, no error.
+    c.eval_many_into(&[], &mut []).unwrap();
+    s.eval_grid_into(&[], &ts, &mut []).unwrap();
+    n.eval_grid_into(&ts, &[], &mut []).unwrap();
+    sp.eval_many_into(&[], &mut []).unwrap();
+}
