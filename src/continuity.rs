@@ -1,4 +1,4 @@
-//! Continuity of joined segments (seed 004, "napojování"): `C0`, `C1` and `G1` (the notes'
+//! Continuity of joined segments (the lecture notes, "napojování"): `C0`, `C1` and `G1` (the notes'
 //! `GC¹`) at the joint of a segment `x(u)` ending at `u = 1` and a segment `¹x(v)` starting at
 //! `v = 0`.
 //!
@@ -7,7 +7,7 @@
 //! - `G1`: `C0`, and the tangents are parallel (`x'(1) × ¹x'(0) = 0`, in any dimension: every
 //!   2×2 minor vanishes) with the same orientation (`¹x'(0)ᵀ x'(1) > 0`).
 //!
-//! Seed 004 states its smoothness condition as `x'(1) = k · ¹x'(0)` with `k > 0` and calls it
+//! The lecture notes state their smoothness condition as `x'(1) = k · ¹x'(0)` with `k > 0` and call it
 //! `C1`; that is `G1` — `C1` of the parametrisation needs `k = 1`. The worked example of the
 //! notes (two cubic Bézier segments) is [`c1_free_point`].
 
@@ -115,7 +115,7 @@ pub fn curve_joint<T: Scalar>(
     joint((&first.eval(t1), &d1), (&second.eval(t0), &d0), tol)
 }
 
-/// Seed 004's example: two cubic Bézier segments `x_A x_B x_C x_D` and `x_D x_E x_F x_G`
+/// The lecture notes' example: two cubic Bézier segments `x_A x_B x_C x_D` and `x_D x_E x_F x_G`
 /// share `x_D`; the free point `x_C` makes the joint smooth when
 /// `x'(1) = 3(x_D − x_C) = k · 3(x_E − x_D) = k · ¹x'(0)`, i.e.
 /// `x_C(k) = x_D + k (x_D − x_E)`. Returns `(x_D, x_D − x_E)`: the point and direction of that

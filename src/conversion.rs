@@ -1,7 +1,7 @@
-//! Matrix forms of cubics and the conversions between them (seed 004 "Konverze mezi
-//! reprezentacemi", seed 003 §1.2).
+//! Matrix forms of cubics and the conversions between them (the lecture notes "Konverze mezi
+//! reprezentacemi", the matrix-form notes §1.2).
 //!
-//! Seed 004 writes every cubic as `x(u) = X M u` with `u = [u³, u², u, 1]ᵀ` (powers
+//! The lecture notes write every cubic as `x(u) = X M u` with `u = [u³, u², u, 1]ᵀ` (powers
 //! **descending**), `X` the `d × 4` geometry matrix (one vector per column) and `M` the
 //! `4 × 4` basis matrix whose row `i` holds the coefficients of the `i`-th basis function:
 //!
@@ -11,7 +11,7 @@
 //! | Bézier | `[b_0 b_1 b_2 b_3]` | [`bezier_matrix`] `M_B` |
 //! | uniform cubic B-spline ("Coons cubic") | `[x_{i−1} x_i x_{i+1} x_{i+2}]` | [`bspline_matrix`] `M_C` |
 //!
-//! Seed 003 writes the Bézier matrix for ascending powers `[1, t, t², t³]ᵀ`
+//! The matrix-form notes write the Bézier matrix for ascending powers `[1, t, t², t³]ᵀ`
 //! ([`cubic_bezier_matrix`](crate::bezier::cubic_bezier_matrix)); `M_B` here is that matrix
 //! with its columns reversed.
 //!
@@ -29,7 +29,7 @@ use crate::bezier::mat_mul;
 use crate::error::{Error, Result};
 use crate::scalar::Scalar;
 
-/// The three cubic forms of seed 004.
+/// The three cubic forms of the lecture notes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum CubicForm {
     /// Hermite / Ferguson: end points and end tangents.
@@ -44,7 +44,7 @@ fn int_matrix<T: Scalar>(rows: [[i64; 4]; 4], den: i64) -> DMatrix<T> {
     DMatrix::from_fn(4, 4, |i, j| T::from_ratio(rows[i][j], den))
 }
 
-/// `M_H` (seed 004): rows are `f_1 … f_4`, columns multiply `u³, u², u, 1`.
+/// `M_H` (the lecture notes): rows are `f_1 … f_4`, columns multiply `u³, u², u, 1`.
 ///
 /// ```
 /// let m: nalgebra::DMatrix<f64> = cagd::conversion::hermite_matrix();
@@ -58,22 +58,22 @@ pub fn hermite_matrix<T: Scalar>() -> DMatrix<T> {
 }
 
 /// `M_H⁻¹`, computed by [`invert`]. Row `k` holds the Hermite data `[x(0), x(1), x'(0),
-/// x'(1)]` of `u^{3−k}`: `[0 1 0 3; 0 1 0 2; 0 1 1 1; 1 1 0 0]`, as seed 004 prints it.
+/// x'(1)]` of `u^{3−k}`: `[0 1 0 3; 0 1 0 2; 0 1 1 1; 1 1 0 0]`, as the lecture notes print it.
 pub fn hermite_matrix_inverse<T: Scalar>() -> DMatrix<T> {
     invert(&hermite_matrix::<T>()).expect("M_H is invertible")
 }
 
-/// `M_B` of seed 004: `[−1 3 −3 1; 3 −6 3 0; −3 3 0 0; 1 0 0 0]` (rows `B_0^3 … B_3^3`,
+/// `M_B` of the lecture notes: `[−1 3 −3 1; 3 −6 3 0; −3 3 0 0; 1 0 0 0]` (rows `B_0^3 … B_3^3`,
 /// columns `u³, u², u, 1`).
 pub fn bezier_matrix<T: Scalar>() -> DMatrix<T> {
     let m = crate::bezier::cubic_bezier_matrix::<T>();
     DMatrix::from_fn(4, 4, |i, j| m[(i, 3 - j)].clone())
 }
 
-/// `M_C` of seed 004, the uniform cubic B-spline ("Coons cubic"):
+/// `M_C` of the lecture notes, the uniform cubic B-spline ("Coons cubic"):
 /// `1/6 · [−1 3 −3 1; 3 −6 0 4; −3 3 3 1; 1 0 0 0]`. Its rows are the four uniform B-spline
 /// pieces `(1 − u)³/6`, `(3u³ − 6u² + 4)/6`, `(−3u³ + 3u² + 3u + 1)/6`, `u³/6`, which sum to 1.
-/// This is also the right `M_S` for the "Coons B-spline surface" `vᵀ M_Sᵀ X_S M_S u`; seed 004
+/// This is also the right `M_S` for the "Coons B-spline surface" `vᵀ M_Sᵀ X_S M_S u`; the lecture notes
 /// prints `M_B` there by mistake.
 pub fn bspline_matrix<T: Scalar>() -> DMatrix<T> {
     int_matrix(

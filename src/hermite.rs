@@ -1,4 +1,4 @@
-//! Hermite (Ferguson) cubics (seed 004, "Hermitovská forma").
+//! Hermite (Ferguson) cubics (the lecture notes, "Hermitovská forma").
 //!
 //! A Ferguson cubic is given by its end points `x_1 = x(0)`, `x_2 = x(1)` and end tangents
 //! `x'_1 = x'(0)`, `x'_2 = x'(1)`:
@@ -23,7 +23,7 @@ use crate::error::{check_finite, Error, Result};
 use crate::param::Curve;
 use crate::scalar::Scalar;
 
-/// The Hermite basis `[f_1, f_2, f_3, f_4](u)` of seed 004 (see the module documentation),
+/// The Hermite basis `[f_1, f_2, f_3, f_4](u)` of the lecture notes (see the module documentation),
 /// each by Horner's rule from its row of `M_H`.
 ///
 /// ```
@@ -127,7 +127,7 @@ impl<T: Scalar> HermiteCubic<T> {
     }
 
     /// `x''(u) = 6a u + 2b` with `a = 2x_1 − 2x_2 + x'_1 + x'_2`,
-    /// `b = −3x_1 + 3x_2 − 2x'_1 − x'_2` (seed 004's algebraic form).
+    /// `b = −3x_1 + 3x_2 − 2x'_1 − x'_2` (the lecture notes' algebraic form).
     pub fn eval_second_derivative(&self, u: T) -> DVector<T> {
         let c = |k: i64| T::from_ratio(k, 1);
         let w = [
@@ -139,7 +139,7 @@ impl<T: Scalar> HermiteCubic<T> {
         combine4(&self.geometry, &w)
     }
 
-    /// The same end points with both tangents multiplied by `q` (seed 004: `q ≠ 0`; the
+    /// The same end points with both tangents multiplied by `q` (the lecture notes: `q ≠ 0`; the
     /// directions are kept for `q > 0`).
     pub fn scaled_tangents(&self, q: T) -> Self {
         let mut g = self.geometry.clone();
@@ -152,7 +152,7 @@ impl<T: Scalar> HermiteCubic<T> {
     }
 
     /// The same cubic in Bézier form: `b_0 = x_1`, `b_1 = x_1 + x'_1/3`, `b_2 = x_2 − x'_2/3`,
-    /// `b_3 = x_2` (seed 004's table, "to Bézier from Hermite").
+    /// `b_3 = x_2` (the lecture notes' table, "to Bézier from Hermite").
     pub fn to_bezier(&self) -> BezierCurve<T> {
         let g = crate::conversion::convert(
             &self.geometry,

@@ -1,10 +1,10 @@
-//! Interpolation of points (seed 004, start of §3.11): the Lagrange polynomial through
+//! Interpolation of points (the lecture notes, start of §3.11): the Lagrange polynomial through
 //! `(x_i, y_i)`, piecewise-linear interpolation, and parametric polynomial curves through
 //! `k` points at chosen parameter values (the notes' "geometric form" `x(u) = X G u` with the
 //! blending matrix `G`).
 //!
 //! Everything is written on the plain product formula
-//! `L_{i,n}(x) = Π_{j≠i} (x − x_j)/(x_i − x_j)` (seed 004), generic over the scalar, so the
+//! `L_{i,n}(x) = Π_{j≠i} (x − x_j)/(x_i − x_j)` (the lecture notes), generic over the scalar, so the
 //! coefficients are exact in rationals.
 
 use nalgebra::{DMatrix, DVector};
@@ -36,7 +36,7 @@ fn check_nodes<T: Scalar>(what: &'static str, xs: &[T]) -> Result<()> {
     Ok(())
 }
 
-/// `L_{i,n}(x) = Π_{j≠i} (x − x_j)/(x_i − x_j)` over the nodes `xs` (seed 004).
+/// `L_{i,n}(x) = Π_{j≠i} (x − x_j)/(x_i − x_j)` over the nodes `xs` (the lecture notes).
 ///
 /// ```
 /// use cagd::interpolation::lagrange_basis;
@@ -75,14 +75,14 @@ pub fn lagrange_basis_coefficients<T: Scalar>(xs: &[T], i: usize) -> Vec<T> {
 }
 
 /// The Lagrange interpolation polynomial `f_n(x) = Σ y_i L_{i,n}(x)` through `(x_i, y_i)`
-/// (seed 004). The notes warn that the polynomial oscillates more as the degree grows; see
+/// (the lecture notes). The notes warn that the polynomial oscillates more as the degree grows; see
 /// [`PiecewiseLinear`] for the other interpolant of their example.
 ///
 /// ```
 /// use cagd::interpolation::LagrangePolynomial;
 /// use num_rational::BigRational;
 /// use cagd::Scalar;
-/// // Seed 004: through (1,1), (2,2), (3,3), (4,2), (5,1) — exactly
+/// // The lecture notes: through (1,1), (2,2), (3,3), (4,2), (5,1) — exactly
 /// // f(x) = 3 − 7/6 (x − 3)² + 1/6 (x − 3)⁴.
 /// let q = |n: i64| BigRational::from_ratio(n, 1);
 /// let f = LagrangePolynomial::new(
@@ -140,7 +140,7 @@ impl<T: Scalar> LagrangePolynomial<T> {
     }
 }
 
-/// Piecewise-linear interpolation through `(x_i, y_i)`, `x_i` increasing (seed 004:
+/// Piecewise-linear interpolation through `(x_i, y_i)`, `x_i` increasing (the lecture notes:
 /// `f(x) = f(x_i) + (f(x_{i+1}) − f(x_i))/(x_{i+1} − x_i) · (x − x_i)` on `⟨x_i, x_{i+1}⟩`;
 /// the notes print the last factor as `(x_{i+1} − x_i)`, which would give the constant
 /// `f(x_{i+1})`). Outside `[x_0, x_n]` the end pieces are extended.
@@ -206,7 +206,7 @@ impl<T: Scalar> PiecewiseLinear<T> {
     }
 }
 
-/// The blending matrix `G` of seed 004's geometric form `x(u) = X G u`,
+/// The blending matrix `G` of the lecture notes' geometric form `x(u) = X G u`,
 /// `u = [u^{k−1}, …, u, 1]ᵀ`, for `k` points interpolated at the parameters `params`: row `i`
 /// holds the coefficients of `L_{i,k−1}(u)`, highest power first.
 ///
@@ -227,7 +227,7 @@ pub fn blending_matrix<T: Scalar>(params: &[T]) -> Result<DMatrix<T>> {
 }
 
 /// The parametric polynomial curve of degree `k − 1` through `k` points at chosen parameter
-/// values: `x(u_i) = x_i` (seed 004: the quadratic through 3 points, the cubic through 4, and
+/// values: `x(u_i) = x_i` (the lecture notes: the quadratic through 3 points, the cubic through 4, and
 /// "Příklad 1" with other parameter choices).
 ///
 /// The parameters need not increase: with `(0, ½, ¼, 1)` ("what happens if the sequence is not

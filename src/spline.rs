@@ -1,6 +1,6 @@
-//! Interpolating cubic splines (seed 004, "Kubické spline křivky").
+//! Interpolating cubic splines (the lecture notes, "Kubické spline křivky").
 //!
-//! Through points `x_0, …, x_{m−1}` at parameters `t_0 < … < t_{m−1}` (seed 004: every
+//! Through points `x_0, …, x_{m−1}` at parameters `t_0 < … < t_{m−1}` (the lecture notes: every
 //! segment over `⟨0, 1⟩`, i.e. `t_k = k`) the spline is a Hermite cubic on each segment
 //! whose tangents `x'_k` make the second derivative continuous at every joint:
 //!
@@ -9,7 +9,7 @@
 //! h_k = t_{k+1} − t_k,  δ_k = (x_{k+1} − x_k)/h_k,
 //! ```
 //!
-//! which for unit steps is seed 004's `x'_{k−1} + 4x'_k + x'_{k+1} = 3(x_{k+1} − x_{k−1})`
+//! which for unit steps is the lecture notes' `x'_{k−1} + 4x'_k + x'_{k+1} = 3(x_{k+1} − x_{k−1})`
 //! (the notes print the right-hand side as `3(x'_1 − x_0)`, a typo for `3(x_2 − x_0)`). The end
 //! conditions ([`EndCondition`]) close the system:
 //! - **clamped** (case a): `x'_0`, `x'_{m−1}` given — a tridiagonal system;
@@ -21,7 +21,7 @@
 //!   the notes' right-hand side, `3(x_1 − x_0)`, must be `3(x_1 − x_{m−1})`).
 //!
 //! The solves ([`solve_tridiagonal`], [`solve_cyclic_tridiagonal`]) are generic, so the spline
-//! is exact in rationals. Seed 004's worked example (points (0,0), (2,1), (4,4), (6,0), end
+//! is exact in rationals. The lecture notes' worked example (points (0,0), (2,1), (4,4), (6,0), end
 //! tangents (1,1), (−1,1)) gives x-tangents 1, 31/15, 41/15, −1 and y-tangents 1, 48/15,
 //! −27/15, 1: the notes print the third y-tangent as +27/15, but
 //! `y'_1 + 4y'_2 = 3(0 − 1) − 1 = −4` with `4y'_1 + y'_2 = 12 − 1 = 11` gives
@@ -34,7 +34,7 @@ use crate::hermite::HermiteCubic;
 use crate::param::Curve;
 use crate::scalar::Scalar;
 
-/// How the spline is closed at its ends (seed 004 cases a, b, c).
+/// How the spline is closed at its ends (the lecture notes cases a, b, c).
 #[derive(Debug, Clone, PartialEq)]
 pub enum EndCondition<T: Scalar = f64> {
     /// Given end tangents `x'(t_0) = start`, `x'(t_{m−1}) = end`.
@@ -201,7 +201,7 @@ pub struct CubicSpline<T: Scalar = f64> {
 }
 
 impl<T: Scalar> CubicSpline<T> {
-    /// The spline through the columns of `points` at the parameters `0, 1, …` (seed 004:
+    /// The spline through the columns of `points` at the parameters `0, 1, …` (the lecture notes:
     /// every segment over `⟨0, 1⟩`; a closed spline returns to `x_0` at `t = m`).
     ///
     /// # Errors

@@ -1,7 +1,7 @@
 % Case "hermite": Ferguson (Hermite) cubics.  The complete spline through two points,
 % spline([0 1], [x1' x1 x2 x2']), is exactly the Hermite cubic with those end tangents, so
 % Octave's spline/ppval is an independent reference.  Per key k:
-%   G_<k> = [x1 x2 x1' x2'] (d x 4, seed 004's X_H);  u = linspace(0,1,21);
+%   G_<k> = [x1 x2 x1' x2'] (d x 4, the lecture notes' X_H);  u = linspace(0,1,21);
 %   V_<k> = ppval(spline([0 1], [G(:,3) G(:,1) G(:,2) G(:,4)]), u) (d x 21).
 outdir = getenv('CAGD_REF_OUT');
 if isempty(outdir), error('CAGD_REF_OUT is not set'); end;

@@ -2,7 +2,7 @@
 % interp1.  Per key:
 %   x_<key>, y_<key> data (1 x n);  c_<key> = polyfit(x, y, n-1) (descending powers);
 %   e_<key> evaluation points;  L_<key> = polyval(c, e);  PL_<key> = interp1(x, y, e, 'linear').
-% The seed 004 example is key "seed": (1,1),(2,2),(3,3),(4,2),(5,1).
+% The lecture notes' example is key "seed": (1,1),(2,2),(3,3),(4,2),(5,1).
 outdir = getenv('CAGD_REF_OUT');
 if isempty(outdir), error('CAGD_REF_OUT is not set'); end;
 save_precision(17);

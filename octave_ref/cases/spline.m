@@ -10,7 +10,7 @@ pkg load splines;
 save_precision(17);
 rand('state', 4007);
 names = {};
-% The seed 004 example, clamped, unit parameters.
+% The lecture notes' example, clamped, unit parameters.
 t_seed = 0:3; Y_seed = [0 2 4 6; 0 1 4 0]; s0_seed = [1; 1]; sn_seed = [-1; 1];
 e_seed = linspace(0, 3, 31);
 V_seed = ppval(spline(t_seed, [s0_seed Y_seed sn_seed]), e_seed);

@@ -35,7 +35,7 @@ use crate::scalar::Scalar;
 ///
 /// ```
 /// use cagd::bezier::BezierCurve;
-/// // Seed 003: p0 = (0,0), p1 = (1,1), p2 = (2,0), p3 = (3,1).
+/// // The matrix-form notes: p0 = (0,0), p1 = (1,1), p2 = (2,0), p3 = (3,1).
 /// let p = BezierCurve::from_points(&[[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]])?;
 /// assert_eq!((p.degree(), p.dim()), (3, 2));
 /// let x = p.eval(0.5);

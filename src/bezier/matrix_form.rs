@@ -1,4 +1,4 @@
-//! The matrix (monomial) form of a Bézier curve (course notes, seed 003, §1.2).
+//! The matrix (monomial) form of a Bézier curve (course notes, the matrix-form notes, §1.2).
 //!
 //! A cubic is written there as
 //!
@@ -49,7 +49,7 @@ pub fn bezier_to_monomial_matrix<T: Scalar>(n: usize) -> DMatrix<T> {
     })
 }
 
-/// The cubic Bézier matrix `M_B` of the course notes (seed 003, §1.2):
+/// The cubic Bézier matrix `M_B` of the course notes (the matrix-form notes, §1.2):
 ///
 /// ```text
 /// [1 −3  3 −1]
@@ -73,7 +73,7 @@ pub fn cubic_bezier_matrix<T: Scalar>() -> DMatrix<T> {
 /// A polynomial curve in monomial form, `p(u) = Σ_j a_j t^j` with `t = (u − a)/(b − a)`.
 ///
 /// **Layout:** the coefficients are the columns of a `d × (n + 1)` matrix, column `j` being
-/// `a_j`; for a Bézier curve this is `P · M` (seed 003's intermediate product, e.g.
+/// `a_j`; for a Bézier curve this is `P · M` (the matrix-form notes' intermediate product, e.g.
 /// `[0 3 0 0; 0 3 −6 4]` for its example).
 ///
 /// # Why de Casteljau is the stable one at high degree
@@ -196,7 +196,7 @@ impl<T: Scalar> MatrixForm<T> {
 }
 
 impl<T: Scalar> BezierCurve<T> {
-    /// The matrix (monomial) form `P · M` of this curve, over the same interval (seed 003;
+    /// The matrix (monomial) form `P · M` of this curve, over the same interval (the matrix-form notes;
     /// [`cubic_bezier_matrix`] for cubics, [`bezier_to_monomial_matrix`] in general).
     pub fn matrix_form(&self) -> MatrixForm<T> {
         let m = bezier_to_monomial_matrix::<T>(self.degree());

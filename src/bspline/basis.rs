@@ -1,4 +1,4 @@
-//! B-spline basis functions: the Cox–de Boor recursion (seeds 001 and 004) and the
+//! B-spline basis functions: the Cox–de Boor recursion (the CAD notes and the lecture notes) and the
 //! triangular scheme that evaluates the `p + 1` non-zero ones at once.
 
 use crate::error::{Error, Result};
@@ -116,7 +116,7 @@ pub(crate) fn basis_functions_into<T: Scalar>(
 /// taken as closed, so the basis still sums to one there. Slow (exponential in `p`); for
 /// teaching and testing — [`basis_functions`] is the algorithm to use.
 ///
-/// Seed 004 prints the recursion with `N_{i+1,k}` in the second term; it must be
+/// The lecture notes print the recursion with `N_{i+1,k}` in the second term; it must be
 /// `N_{i+1,k−1}` (order `k` = degree + 1 in its notation). It also writes `N_{i,1} = 1` for
 /// `u_i ≤ u ≤ u_{i+1}`, a closed interval, which would count an interior knot twice; the
 /// spans are half-open. Its explicit `N_{i,3}` (uniform knots) misses the factor ½ on the second

@@ -1,4 +1,4 @@
-//! B-spline curves (seed 001 eq. (3), seed 004 "B-spline křivky").
+//! B-spline curves (the CAD notes eq. (3), the lecture notes "B-spline křivky").
 
 use nalgebra::{DMatrix, DVector};
 
@@ -11,7 +11,7 @@ use crate::param::Curve;
 use crate::scalar::Scalar;
 
 /// A B-spline curve `C(u) = Σ_{i=0}^{n−1} P_i N_{i,p}(u)`, `u ∈ [u_p, u_n]`
-/// (seed 001 eq. (3); seed 004 numbers the order `k = p + 1`).
+/// (the CAD notes eq. (3); the lecture notes number the order `k = p + 1`).
 ///
 /// **Layout:** the control points `P_0, …, P_{n−1}` are the columns of a `d × n` matrix (as
 /// for [`BezierCurve`] and octave-nurbs `coefs`), the knots `u_0 ≤ … ≤ u_{n+p}` a
@@ -79,7 +79,7 @@ impl<T: Scalar> BSplineCurve<T> {
         Self::new(degree, knots.as_slice().to_vec(), control)
     }
 
-    /// The uniform cubic B-spline of seed 004 ("Coons cubic", `x(u) = X_C M_C u` on each
+    /// The uniform cubic B-spline of the lecture notes ("Coons cubic", `x(u) = X_C M_C u` on each
     /// segment, see [`crate::conversion::bspline_matrix`]) over the points `x_0, …, x_n`
     /// (columns). With `replicate_ends` the end points are repeated as the notes do to "start"
     /// and "finish" the curve — the segments use `[x_0 x_0 x_0 x_1]`, `[x_0 x_0 x_1 x_2]`, …,

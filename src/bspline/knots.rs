@@ -1,4 +1,4 @@
-//! Knot vectors (seed 001 §1.2: `Ξ = (ξ_1, …, ξ_{n+p+1})`, non-decreasing, values may repeat).
+//! Knot vectors (the CAD notes §1.2: `Ξ = (ξ_1, …, ξ_{n+p+1})`, non-decreasing, values may repeat).
 
 use crate::error::{check_finite, Error, Result};
 use crate::scalar::Scalar;
@@ -6,7 +6,7 @@ use crate::scalar::Scalar;
 /// A non-decreasing sequence of knots `u_0 ≤ u_1 ≤ … ≤ u_{m}`.
 ///
 /// A knot repeated `k` times lowers the smoothness of a degree-`p` spline across it to
-/// `C^{p−k}` (seed 001). An *open* or *clamped* knot vector repeats its first and last knots
+/// `C^{p−k}` (the CAD notes). An *open* or *clamped* knot vector repeats its first and last knots
 /// `p + 1` times, so that the curve interpolates its end control points.
 ///
 /// ```
@@ -74,7 +74,7 @@ impl<T: Scalar> KnotVector<T> {
 
     /// The uniform (unclamped) knot vector `−p, −p + 1, …, n_control` for `n_control`
     /// control points of degree `p`: its domain `[u_p, u_{n}] = [0, n_control − p]` has one
-    /// unit span per segment, as the uniform ("Coons") B-spline of seed 004 where every
+    /// unit span per segment, as the uniform ("Coons") B-spline of the lecture notes where every
     /// segment runs over `u ∈ ⟨0, 1⟩`.
     ///
     /// # Errors

@@ -1,9 +1,9 @@
-//! B-splines (seeds 001 §1.2 and 004 "B-spline křivky"): knot vectors with multiplicities,
+//! B-splines (the CAD notes §1.2 and the lecture notes, "B-spline křivky"): knot vectors with multiplicities,
 //! the Cox–de Boor basis, curves (de Boor evaluation, derivatives, knot insertion, the uniform
-//! cubic "Coons" B-spline of seed 004) and tensor-product surfaces.
+//! cubic "Coons" B-spline of the lecture notes) and tensor-product surfaces.
 //!
 //! Conventions follow octave-nurbs, the reference these are tested against: degree `p`
-//! (seed 004's order `k = p + 1`), `n` control points, `n + p + 1` knots, domain
+//! (the lecture notes' order `k = p + 1`), `n` control points, `n + p + 1` knots, domain
 //! `[u_p, u_n]`, spans numbered from 0. Everything is generic over [`Scalar`](crate::Scalar):
 //! evaluation, derivatives and knot insertion are rational, so they run exactly in
 //! `BigRational` too.

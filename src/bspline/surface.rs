@@ -1,4 +1,4 @@
-//! Tensor-product B-spline surfaces (seed 004 "B-spline plocha", seed 001).
+//! Tensor-product B-spline surfaces (the lecture notes "B-spline plocha", the CAD notes).
 
 use crate::grid::PointGrid;
 use nalgebra::{DMatrix, DVector};
@@ -19,7 +19,7 @@ use crate::scalar::Scalar;
 /// `coefs(k, i, j)`).
 ///
 /// Evaluation sums along `v` first, then along `u`, each in `bspeval`'s order (as octave-nurbs
-/// `nrbeval`). The uniform bicubic case on one span is seed 004's "Coons B-spline surface"
+/// `nrbeval`). The uniform bicubic case on one span is the lecture notes' "Coons B-spline surface"
 /// `vᵀ M_Sᵀ X_S M_S u` with `M_S = M_C` (the notes print the Bézier matrix for `M_S`; see
 /// [`crate::conversion::bspline_matrix`]).
 ///

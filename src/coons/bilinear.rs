@@ -25,10 +25,10 @@ use crate::scalar::Scalar;
 /// thesis functions `krpaCoons` / `vrednostCoons`, so in `f64` the patch agrees with the
 /// (fixed) Octave code to the last bit on the same curve values.
 ///
-/// Checked against the seed: Primer 4.3's data are compatible (`c2(0) = d1(1) = (0,1,0)`,
+/// Checked against the thesis: Primer 4.3's data are compatible (`c2(0) = d1(1) = (0,1,0)`,
 /// `c1(1) = d2(0) = (1,0,0)`, `c1(0) = d1(0) = 0`, `c2(1) = d2(1) = (1,1,1)`, which are the
 /// `P1..P4` of appendix C) and its printed `r_c`, `r_d`, `r_cd` and `x(0.2, 0.5)` are exactly
-/// right (example below). Where the seed is wrong: the proof of Izrek 4.2 ends with
+/// right (example below). Where the thesis is wrong: the proof of Izrek 4.2 ends with
 /// "`x(v,1) = d2(v)`", meaning `x(1,v) = d2(v)`; appendix C's data script for `krpaCoons`
 /// assigns `P3` twice (`P3 = [1;1;1]` is meant as `P4`, which is never set) and relies on an
 /// undefined `N`; `krpaCoons` itself uses `N` without defining it, and `vrednostCoons` returns

@@ -1,4 +1,4 @@
-//! Conic sections as rational quadratic curves (seed 001 §1.3: NURBS express conics exactly).
+//! Conic sections as rational quadratic curves (the CAD notes §1.3: NURBS express conics exactly).
 
 use nalgebra::DMatrix;
 

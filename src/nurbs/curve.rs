@@ -8,7 +8,7 @@ use crate::error::{Error, Result};
 use crate::param::Curve;
 use crate::scalar::Scalar;
 
-/// A NURBS curve `C(u) = Σ_k R_{k,p}(u) P_k` in `ℝ^d` (seed 001 eq. (4)), stored as the
+/// A NURBS curve `C(u) = Σ_k R_{k,p}(u) P_k` in `ℝ^d` (the CAD notes eq. (4)), stored as the
 /// homogeneous B-spline curve in `ℝ^{d+1}` with control points `(w_k P_k, w_k)`.
 ///
 /// **Layout:** as octave-nurbs `nrbmak(coefs, knots)`: [`homogeneous`](Self::homogeneous) is a
@@ -193,7 +193,7 @@ impl<T: Scalar> NurbsCurve<T> {
         self.eval_many_into(us, out)
     }
 
-    /// The rational basis `R_{0,p}(u), …, R_{n−1,p}(u)` (seed 001 eq. (4)).
+    /// The rational basis `R_{0,p}(u), …, R_{n−1,p}(u)` (the CAD notes eq. (4)).
     ///
     /// # Errors
     /// [`Error::ParameterOutOfRange`] outside the domain.

@@ -1,9 +1,9 @@
-//! NURBS — non-uniform rational B-splines (seed 001 §1.3, seed 004's closing remark).
+//! NURBS — non-uniform rational B-splines (the CAD notes §1.3, the lecture notes' closing remark).
 //!
 //! With weights `w_k > 0` the rational basis is
-//! `R_{k,p}(u) = w_k N_{k,p}(u) / Σ_j w_j N_{j,p}(u)` (seed 001 eq. (4)) and a NURBS curve in
+//! `R_{k,p}(u) = w_k N_{k,p}(u) / Σ_j w_j N_{j,p}(u)` (the CAD notes eq. (4)) and a NURBS curve in
 //! `ℝ^d` is the central projection onto `x_{d+1} = 1` of the B-spline curve in `ℝ^{d+1}` whose
-//! control points are the homogeneous points `(w_k P_k, w_k)` (seed 001, last paragraph of
+//! control points are the homogeneous points `(w_k P_k, w_k)` (the CAD notes, last paragraph of
 //! §1.3). That is how [`NurbsCurve`] and [`NurbsSurface`] are stored and evaluated, as in
 //! octave-nurbs (`nrbmak` takes exactly these homogeneous `coefs`). B-splines (all weights 1)
 //! and Bézier curves are special cases; conic sections are exact ([`conic_arc`]).

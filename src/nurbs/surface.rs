@@ -89,7 +89,7 @@ impl<T: Scalar> NurbsSurface<T> {
     /// The ruled surface between two NURBS curves in homogeneous space, as octave-nurbs
     /// `nrbruled`: `u` runs along the curves, `v ∈ [0, 1]` from `c1` to `c2` (degree 1). The
     /// knot vectors are merged first (each curve gets the knots of the other it lacks, by
-    /// knot insertion). With equal weights this is seed 004's `(1 − v) c1(u) + v c2(u)`.
+    /// knot insertion). With equal weights this is the lecture notes' `(1 − v) c1(u) + v c2(u)`.
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] for curves of different degree, dimension or domain (degree

@@ -11,7 +11,7 @@ use crate::scalar::Scalar;
 /// Corner data indexed `[i][j]` for the corner `(u, v) = (i, j)`.
 pub type Corners<T> = [[DVector<T>; 2]; 2];
 
-/// The Hermite bicubic (Ferguson) patch of seed 004 ("Hermitova plocha"): given at the four
+/// The Hermite bicubic (Ferguson) patch of the lecture notes ("Hermitova plocha"): given at the four
 /// corners `(i, j) ∈ {0, 1}²` the points `x_{ij}`, the tangents `∂x/∂u`, `∂x/∂v` and the twist
 /// vectors `∂²x/∂u∂v`, it is
 /// `x(u, v) = Σ_a Σ_b f_a(u) f_b(v) G[a, b]` with the Hermite basis `f` and
@@ -23,7 +23,7 @@ pub type Corners<T> = [[DVector<T>; 2]; 2];
 ///     [ x_u10   x_u11   x_uv10   x_uv11 ]
 /// ```
 ///
-/// Seed 004 writes `x(u, v) = vᵀ M_Hᵀ X_H M_H u` with `X_H = [A B; C D]`, `A` the corner
+/// The lecture notes write `x(u, v) = vᵀ M_Hᵀ X_H M_H u` with `X_H = [A B; C D]`, `A` the corner
 /// points, `B` the `u`-tangents, `C` the `v`-tangents, `D` the twists. Its `X_H` is `Gᵀ`; but
 /// inside the blocks it writes `A = [x_00 x_01; x_10 x_11]` although, with its own definition
 /// `x_10 = x(1, 0)`, the entry `(0, 1)` of `Gᵀ` is `x_10` — the labels inside the blocks are

@@ -23,11 +23,11 @@ pub(crate) fn form_basis<T: Scalar>(form: CubicForm, u: &T) -> [T; 4] {
     })
 }
 
-/// A bicubic patch in the matrix form of seed 004 (and seed 003 §2.2):
+/// A bicubic patch in the matrix form of the lecture notes (and the matrix-form notes §2.2):
 /// `x(u, v) = Σ_a Σ_b f_a(u) f_b(v) X[a, b]` with `f = M [u³, u², u, 1]ᵀ`, one `4 × 4`
 /// geometry matrix `X` per coordinate, `a` along `u`, `b` along `v`.
 ///
-/// Seed 004 writes it `x(u, v) = vᵀ Mᵀ X M u` with the rows of its `X` running along `v`;
+/// The lecture notes write it `x(u, v) = vᵀ Mᵀ X M u` with the rows of its `X` running along `v`;
 /// that is the same number as `uᵀ Mᵀ X M v` with `X` transposed, which is the layout here (the
 /// one of [`BezierPatch`](crate::BezierPatch): `i` along `u`). With
 /// [`CubicForm::Bezier`] it is the bicubic Bézier patch, with [`CubicForm::BSpline`] one span

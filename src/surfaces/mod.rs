@@ -1,4 +1,4 @@
-//! The classic surfaces of seed 004 ("Parametrické plochy"): the ruled (cylindrical) surface
+//! The classic surfaces of the lecture notes ("Parametrické plochy"): the ruled (cylindrical) surface
 //! between two curves, the Hermite bicubic (Ferguson) patch with twist vectors, and cubic
 //! patches in matrix form `vᵀ Mᵀ X M u` (Hermite, Bézier, uniform B-spline). B-spline and
 //! NURBS surfaces are [`crate::bspline::BSplineSurface`] and [`crate::nurbs::NurbsSurface`].

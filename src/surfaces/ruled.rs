@@ -6,7 +6,7 @@ use crate::error::{Error, Result};
 use crate::param::{Curve, Surface};
 use crate::scalar::Scalar;
 
-/// The ruled surface `x(u, v) = (1 − v) ¹x(u) + v ²x(u)`, `u, v ∈ ⟨0, 1⟩` (seed 004: the
+/// The ruled surface `x(u, v) = (1 − v) ¹x(u) + v ²x(u)`, `u, v ∈ ⟨0, 1⟩` (the lecture notes: the
 /// vector `r = ²x(u) − ¹x(u)` slides along `¹x`; with a constant `r` it is a cylinder). Any
 /// [`Curve`]s — Hermite, Bézier, B-spline, NURBS, sampled. Its shape depends on how the two
 /// curves are parametrised, start points included (as the notes warn).

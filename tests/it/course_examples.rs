@@ -1,4 +1,4 @@
-//! The worked examples of the course notes (seed 004, with seeds 001 and 003), in exact
+//! The worked examples of the course notes (the lecture notes, with the CAD notes and the matrix-form notes), in exact
 //! rational arithmetic where the maths is rational.
 
 use cagd::bspline::BSplineCurve;
@@ -39,10 +39,10 @@ fn qv(entries: &[i64]) -> DVector<Q> {
     DVector::from_iterator(entries.len(), entries.iter().map(|&e| qi(e)))
 }
 
-/// Seed 004, case a: points (0,0), (2,1), (4,4), (6,0), tangents (1,1) and (−1,1): x-tangents
+/// The lecture notes, case a: points (0,0), (2,1), (4,4), (6,0), tangents (1,1) and (−1,1): x-tangents
 /// 1, 31/15, 41/15, −1; y-tangents 1, 48/15, −27/15, 1 (the notes print +27/15).
 #[test]
-fn seed_004_clamped_spline_tangents_exactly() {
+fn lecture_notes_clamped_spline_tangents_exactly() {
     let x = qm(2, 4, &[0, 2, 4, 6, 0, 1, 4, 0], 1);
     let end = EndCondition::Clamped {
         start: qv(&[1, 1]),
@@ -89,11 +89,11 @@ fn natural_and_closed_splines_satisfy_their_end_conditions_exactly() {
     assert_eq!((p0, d0, s0), (p4, d4, s4));
 }
 
-/// Seed 004: Lagrange polynomial through (1,1), (2,2), (3,3), (4,2), (5,1), exactly
+/// The lecture notes: Lagrange polynomial through (1,1), (2,2), (3,3), (4,2), (5,1), exactly
 /// `3 − 7/6 (x−3)² + 1/6 (x−3)⁴ = x⁴/6 − 2x³ + 47x²/6 − 11x + 6`; and the piecewise-linear
 /// interpolant of the same points.
 #[test]
-fn seed_004_lagrange_example() {
+fn lecture_notes_lagrange_example() {
     let xs: Vec<Q> = (1..=5).map(qi).collect();
     let ys = vec![qi(1), qi(2), qi(3), qi(2), qi(1)];
     let f = LagrangePolynomial::new(xs.clone(), ys.clone()).unwrap();
@@ -114,9 +114,9 @@ fn seed_004_lagrange_example() {
     assert_eq!(l.eval(q(7, 2)), q(5, 2));
 }
 
-/// Seed 004's blending matrices for 3 points at (0, ½, 1) and 4 points at (0, ⅓, ⅔, 1).
+/// The lecture notes' blending matrices for 3 points at (0, ½, 1) and 4 points at (0, ⅓, ⅔, 1).
 #[test]
-fn seed_004_blending_matrices() {
+fn lecture_notes_blending_matrices() {
     let g3 = blending_matrix(&[qi(0), q(1, 2), qi(1)]).unwrap();
     assert_eq!(g3, qm(3, 3, &[2, -3, 1, -4, 4, 0, 2, -1, 0], 1));
     let g4 = blending_matrix(&[qi(0), q(1, 3), q(2, 3), qi(1)]).unwrap();
@@ -150,9 +150,9 @@ fn seed_004_blending_matrices() {
     assert_eq!(c.eval(qi(1))[0], qi(3));
 }
 
-/// Seed 004's matrices and the conversion table, every entry, exactly.
+/// The lecture notes' matrices and the conversion table, every entry, exactly.
 #[test]
-fn seed_004_matrices_and_conversion_table() {
+fn lecture_notes_matrices_and_conversion_table() {
     assert_eq!(
         hermite_matrix::<Q>(),
         qm(
@@ -243,9 +243,9 @@ fn seed_004_matrices_and_conversion_table() {
     assert_ne!(bezier_matrix::<Q>(), bspline_matrix::<Q>());
 }
 
-/// Seed 004's C1 example: x_C = (x, y, z) with x = 3 + k, y = 4 − 2k, z = 3 + 3k.
+/// The lecture notes' C1 example: x_C = (x, y, z) with x = 3 + k, y = 4 − 2k, z = 3 + 3k.
 #[test]
-fn seed_004_c1_free_point() {
+fn lecture_notes_c1_free_point() {
     let (xa, xb, xd) = (qv(&[2, 3, 4]), qv(&[3, 1, 5]), qv(&[3, 4, 3]));
     let (xe, xf, xg) = (qv(&[2, 6, 0]), qv(&[5, 7, 5]), qv(&[5, 2, 3]));
     let (p, dir) = c1_free_point(&xd, &xe).unwrap();
@@ -278,10 +278,10 @@ fn seed_004_c1_free_point() {
     assert!(!far.c0 && !far.g1);
 }
 
-/// Seed 004's Bézier example x0 = (2,3), x1 = (3,5), x2 = (4,7) or (4,1), x3 = (5,3), and
+/// The lecture notes' Bézier example x0 = (2,3), x1 = (3,5), x2 = (4,7) or (4,1), x3 = (5,3), and
 /// the Hermite form with x'_1 = 3(x1 − x0), x'_2 = 3(x3 − x2).
 #[test]
-fn seed_004_bezier_hermite_equivalence() {
+fn lecture_notes_bezier_hermite_equivalence() {
     for x2 in [[4, 7], [4, 1]] {
         let b = BezierCurve::new(qm(2, 4, &[2, 3, x2[0], 5, 3, 5, x2[1], 3], 1)).unwrap();
         let h = HermiteCubic::from_bezier(&b).unwrap();
@@ -304,7 +304,7 @@ fn seed_004_bezier_hermite_equivalence() {
     assert_ne!(h3.eval(q(1, 2)), h.eval(q(1, 2)));
 }
 
-/// The uniform cubic B-spline of seed 004 with replicated end points equals its segment-wise
+/// The uniform cubic B-spline of the lecture notes with replicated end points equals its segment-wise
 /// matrix form `X_C M_C u`, and starts and ends at the end points.
 #[test]
 fn uniform_cubic_bspline_is_the_coons_cubic() {
@@ -340,7 +340,7 @@ fn uniform_cubic_bspline_is_the_coons_cubic() {
     }
 }
 
-/// Bicubic patches in matrix form: Bézier (seed 003 §2.2, 004) equals `BezierPatch`; the
+/// Bicubic patches in matrix form: Bézier (the matrix-form notes §2.2, 004) equals `BezierPatch`; the
 /// uniform B-spline form (the right `M_S = M_C`) equals `BSplineSurface` on one span; the
 /// Ferguson patch with corner data from a Bézier patch reproduces it.
 #[test]
@@ -383,7 +383,7 @@ fn matrix_form_patches() {
     }
 }
 
-/// Seed 004's ruled surface between two curves of different kinds (B-spline and NURBS), and a
+/// The lecture notes' ruled surface between two curves of different kinds (B-spline and NURBS), and a
 /// cylinder (constant ruling vector).
 #[test]
 fn ruled_surfaces_take_any_curves() {

@@ -1,4 +1,4 @@
-//! The course material (seed 004, 001) against GNU Octave: B-splines and NURBS against
+//! The course material (the lecture notes, the CAD notes) against GNU Octave: B-splines and NURBS against
 //! octave-nurbs, interpolating splines against Octave's `spline` and the splines package's
 //! `csape`, Hermite cubics against the two-point complete spline, Lagrange interpolation
 //! against `polyfit`/`polyval` and `interp1`. The files are written by

@@ -14,6 +14,6 @@ mod octave_reference;
 mod properties;
 mod properties_coons;
 mod properties_course;
-mod seed_examples;
+mod source_examples;
 mod spline_grid;
 mod support;

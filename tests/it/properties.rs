@@ -258,7 +258,7 @@ proptest! {
     }
 
     /// Izrek 2.9: de Casteljau = Bernstein form, and for cubics also = the matrix form of
-    /// seed 003.
+    /// the matrix-form notes.
     #[test]
     fn de_casteljau_equals_bernstein_and_matrix_form(
         c in curve(1..=4, 10),

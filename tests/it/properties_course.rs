@@ -1,4 +1,4 @@
-//! Property tests for the course material: the invariants seeds 001 and 004 state.
+//! Property tests for the course material: the invariants the CAD notes and the lecture notes state.
 
 use cagd::bspline::{basis_all, BSplineCurve};
 use cagd::conversion::{convert, CubicForm};
@@ -51,7 +51,7 @@ fn curve_strategy() -> impl Strategy<Value = BSplineCurve> {
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(96))]
 
-    /// Seed 001: Σ N_{k,p} = 1 and N_{k,p} ≥ 0; seed 001: supp N_{k,p} ⊂ [ξ_k, ξ_{k+p+1}].
+    /// The CAD notes: Σ N_{k,p} = 1 and N_{k,p} ≥ 0; the CAD notes: supp N_{k,p} ⊂ [ξ_k, ξ_{k+p+1}].
     #[test]
     fn partition_of_unity_and_local_support(c in curve_strategy(), t in 0.0f64..=1.0) {
         let p = c.degree();

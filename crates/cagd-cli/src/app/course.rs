@@ -1,4 +1,4 @@
-//! The course material of seeds 001 and 004: `spline`, `hermite`, `bspline`, `nurbs`.
+//! The course material of the CAD notes and the lecture notes: `spline`, `hermite`, `bspline`, `nurbs`.
 
 use cagd::limits::Limits;
 use clap::{Args, ValueEnum};

@@ -153,7 +153,7 @@ Layout: control is d×(n-r+1), the points n!/(n-r)! Δ^r b_i as columns; with --
 Example:
   cagd derivative \"[0 0 0; 0 2 2; 8 2 0; 4 0 0]'\" --order 1 --t 0.5 --exact")]
     Derivative(bezier::DerivativeCommand),
-    /// An interpolating cubic spline (seed 004): tangents at the points and curve samples.
+    /// An interpolating cubic spline (the lecture notes): tangents at the points and curve samples.
     #[command(after_help = "\
 Input: points as columns (rows with --rows); --end clamped (with --start-tangent and
 --end-tangent), natural or closed. Segment k runs over [k, k+1].
@@ -162,7 +162,7 @@ Layout: tangents is d×m (one per point); result d×k at --t (default: 10 sample
 Example:
   cagd spline \"[0 0; 2 1; 4 4; 6 0]'\" --end clamped --start-tangent \"[1;1]\" --end-tangent \"[-1;1]\" --exact")]
     Spline(course::SplineCommand),
-    /// A Hermite (Ferguson) cubic from end points and end tangents (seed 004).
+    /// A Hermite (Ferguson) cubic from end points and end tangents (the lecture notes).
     #[command(after_help = "\
 Layout: result d×k at the parameters; --steps prints the Hermite basis values and the Bézier
 control points of the same cubic.
@@ -170,7 +170,7 @@ control points of the same cubic.
 Example:
   cagd hermite --p0 \"[0;0]\" --p1 \"[1;0]\" --t0 \"[1;1]\" --t1 \"[1;-1]\" --t 0.5 --exact")]
     Hermite(course::HermiteCommand),
-    /// A B-spline curve by de Boor's algorithm (seeds 001, 004).
+    /// A B-spline curve by de Boor's algorithm (the CAD notes and the lecture notes).
     #[command(after_help = "\
 Input: control points as columns, --degree p, --knots (n+p+2 values; default clamped uniform).
 Layout: result d×k at the parameters; --steps prints the basis functions N_i,p(t) (k×(n+1)).
@@ -178,7 +178,7 @@ Layout: result d×k at the parameters; --steps prints the basis functions N_i,p(
 Example:
   cagd bspline \"[0 0; 1 2; 3 2; 4 0]'\" --degree 2 --knots \"[0 0 0 0.5 1 1 1]\" --t 0.25 --steps --exact")]
     Bspline(course::BSplineCommand),
-    /// A NURBS curve (seed 001): rational B-spline with weights.
+    /// A NURBS curve (the CAD notes): rational B-spline with weights.
     #[command(after_help = "\
 Input: control points as columns, --weights (one per point, positive), --degree, --knots.
 Layout: result d×k; --steps prints the rational basis functions R_i,p(t).

@@ -739,7 +739,7 @@ fn lagrange_bernstein_derivative() {
             "--exact"
         ])
     );
-    // Seed 004: the polynomial through (1,1),(2,2),(3,3),(4,2),(5,1).
+    // The lecture notes: the polynomial through (1,1),(2,2),(3,3),(4,2),(5,1).
     insta::assert_snapshot!(
         "lagrange_points",
         ok(&[
@@ -786,7 +786,7 @@ fn course_subcommands() {
         "[0 1.5 3]",
         "--exact",
     ]);
-    // Seed 004: x-tangents 1, 31/15, 41/15, -1; y-tangents 1, 48/15, -27/15, 1.
+    // The lecture notes: x-tangents 1, 31/15, 41/15, -1; y-tangents 1, 48/15, -27/15, 1.
     assert!(
         out.contains("1  31/15  41/15  -1\n    1   16/5   -9/5   1\n"),
         "{out}"

@@ -1,11 +1,11 @@
-//! Worked examples from the seeds, checked in `f64` and exactly in rationals.
+//! Worked examples from the sources (docs/SOURCES.md), checked in `f64` and exactly in rationals.
 //!
-//! - Thesis Primer 2.4 (seed 000): the de Casteljau scheme of a cubic at t = 0.5.
-//! - Course notes seed 003, §1.3: a planar cubic sampled at t = 0, 0.2, …, 1 through the matrix
+//! - Thesis Primer 2.4 (the thesis): the de Casteljau scheme of a cubic at t = 0.5.
+//! - Course notes the matrix-form notes, §1.3: a planar cubic sampled at t = 0, 0.2, …, 1 through the matrix
 //!   form, with the intermediate product `P · M_B`.
 //!
 //! Thesis Primer 3.2 (a patch) is not used: its control net is garbled beyond recovery in the
-//! seed text (the net is printed as dozens of repeated vectors), so it cannot serve as an
+//! source text (the net is printed as dozens of repeated vectors), so it cannot serve as an
 //! oracle.
 
 use cagd::bernstein::basis_matrix;
@@ -63,7 +63,7 @@ fn primer_2_4() -> BezierCurve<f64> {
 /// r = 3:      (3.5,1.5,0.75)
 /// ```
 ///
-/// The scheme printed in the thesis is damaged in the seed text (OCR): it shows eight column
+/// The scheme printed in the thesis is damaged in the source text (OCR): it shows eight column
 /// vectors, in this order, of which only the last is right:
 /// - `[0;0;0;0]` — b0 with a stray fourth entry;
 /// - `[0;2;2;1]` — b1 = (0,2,2) with a stray `1`;
@@ -183,15 +183,15 @@ fn primer_2_4_subdivision_halves_come_from_the_scheme_edges() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Seed 003: matrix form of a cubic
+// The matrix-form notes: matrix form of a cubic
 // ---------------------------------------------------------------------------------------------
 
-fn seed_003() -> BezierCurve<f64> {
+fn matrix_form_notes_curve() -> BezierCurve<f64> {
     BezierCurve::from_points(&[[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]]).unwrap()
 }
 
-/// The table of seed 003, §1.3: `t` and `p(t)` as printed (decimal commas read as points).
-const SEED_003_TABLE: [(&str, [&str; 2]); 6] = [
+/// The table of the matrix-form notes, §1.3: `t` and `p(t)` as printed (decimal commas read as points).
+const MATRIX_FORM_NOTES_TABLE: [(&str, [&str; 2]); 6] = [
     ("0", ["0", "0"]),
     ("0.2", ["0.6", "0.392"]),
     ("0.4", ["1.2", "0.496"]),
@@ -201,7 +201,7 @@ const SEED_003_TABLE: [(&str, [&str; 2]); 6] = [
 ];
 
 #[test]
-fn seed_003_matrix_and_intermediate_product() {
+fn matrix_form_notes_matrix_and_intermediate_product() {
     let m: DMatrix<f64> = cubic_bezier_matrix();
     #[rustfmt::skip]
     let printed = DMatrix::from_row_slice(4, 4, &[
@@ -213,7 +213,7 @@ fn seed_003_matrix_and_intermediate_product() {
     assert_eq!(m, printed);
     assert_eq!(bezier_to_monomial_matrix::<f64>(3), printed);
     // "Najprej lahko izračunamo produkt prvih dveh matrik": [0 3 0 0; 0 3 -6 4].
-    let product = seed_003().matrix_form().coefficients().clone();
+    let product = matrix_form_notes_curve().matrix_form().coefficients().clone();
     #[rustfmt::skip]
     let expected = DMatrix::from_row_slice(2, 4, &[
         0.0, 3.0,  0.0, 0.0,
@@ -221,7 +221,7 @@ fn seed_003_matrix_and_intermediate_product() {
     ]);
     assert_eq!(product, expected);
     // Same in rationals.
-    let exact = BezierCurve::new(seed_003().control().map(|x| q(x as i64, 1))).unwrap();
+    let exact = BezierCurve::new(matrix_form_notes_curve().control().map(|x| q(x as i64, 1))).unwrap();
     assert_eq!(
         exact.matrix_form().coefficients(),
         &expected.map(|x| q(x as i64, 1))
@@ -229,10 +229,10 @@ fn seed_003_matrix_and_intermediate_product() {
 }
 
 #[test]
-fn seed_003_table_in_f64_by_all_three_forms() {
-    let curve = seed_003();
+fn matrix_form_notes_table_in_f64_by_all_three_forms() {
+    let curve = matrix_form_notes_curve();
     let form = curve.matrix_form();
-    for (t, p) in SEED_003_TABLE {
+    for (t, p) in MATRIX_FORM_NOTES_TABLE {
         let t: f64 = t.parse().unwrap();
         let expected: Vec<f64> = p.iter().map(|x| x.parse().unwrap()).collect();
         for (how, got) in [
@@ -256,10 +256,10 @@ fn seed_003_table_in_f64_by_all_three_forms() {
 }
 
 #[test]
-fn seed_003_table_exact_in_rationals() {
-    let curve = BezierCurve::new(seed_003().control().map(|x| q(x as i64, 1))).unwrap();
+fn matrix_form_notes_table_exact_in_rationals() {
+    let curve = BezierCurve::new(matrix_form_notes_curve().control().map(|x| q(x as i64, 1))).unwrap();
     let form = curve.matrix_form();
-    for (t, p) in SEED_003_TABLE {
+    for (t, p) in MATRIX_FORM_NOTES_TABLE {
         let t = dec(t);
         let expected = [dec(p[0]), dec(p[1])];
         assert_eq!(curve.eval(t.clone()).as_slice(), &expected, "t = {t}");
@@ -271,13 +271,13 @@ fn seed_003_table_exact_in_rationals() {
 }
 
 #[test]
-fn seed_003_table_through_the_basis_matrix() {
+fn matrix_form_notes_table_through_the_basis_matrix() {
     // All six rows at once: B (6 × 4) times the control coordinates.
-    let ts: Vec<BigRational> = SEED_003_TABLE.iter().map(|(t, _)| dec(t)).collect();
+    let ts: Vec<BigRational> = MATRIX_FORM_NOTES_TABLE.iter().map(|(t, _)| dec(t)).collect();
     let b = basis_matrix(3, &ts);
     let ys = nalgebra::DVector::from_vec(vec![q(0, 1), q(1, 1), q(0, 1), q(1, 1)]);
     let got = &b * &ys;
-    for (k, (_, p)) in SEED_003_TABLE.iter().enumerate() {
+    for (k, (_, p)) in MATRIX_FORM_NOTES_TABLE.iter().enumerate() {
         assert_eq!(got[k], dec(p[1]));
     }
 }
