@@ -264,7 +264,7 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
             }
             check_nodes(what, nodes, 2)?;
         }
-        tolerance.validate()?;
+        crate::error::check_tolerance(tolerance)?;
         let dim = curves_at_u[0].dim();
         for c in curves_at_u.iter().chain(curves_at_v.iter()) {
             if c.dim() != dim {

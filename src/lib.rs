@@ -58,6 +58,7 @@ pub mod param;
 pub mod scalar;
 pub mod spline;
 pub mod surfaces;
+pub mod tolerance;
 
 pub use bezier::{BezierCurve, BezierPatch, Edge};
 pub use bspline::{BSplineCurve, BSplineSurface, KnotVector};

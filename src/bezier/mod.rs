@@ -23,6 +23,7 @@
 //! in `BigRational`.
 
 mod bilinear;
+mod bilinear_patch;
 mod curve;
 mod matrix_form;
 mod patch;

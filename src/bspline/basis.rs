@@ -171,6 +171,17 @@ pub fn basis_all<T: Scalar>(p: usize, n_control: usize, knots: &[T], u: &T) -> R
     Ok(all)
 }
 
+/// Clamps `u` to `[lo, hi]` (NaN stays NaN).
+pub(crate) fn clamp<T: Scalar>(u: T, lo: &T, hi: &T) -> T {
+    if &u < lo {
+        lo.clone()
+    } else if &u > hi {
+        hi.clone()
+    } else {
+        u
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -2,7 +2,7 @@
 
 use nalgebra::{DMatrix, DVector};
 
-use super::basis::{basis_all, basis_functions, check_in_domain, find_span};
+use super::basis::{basis_all, basis_functions, check_in_domain, clamp, find_span};
 use super::grid::curve_points_into;
 use super::knots::{check_knots, KnotVector};
 use crate::bezier::BezierCurve;
@@ -441,17 +441,6 @@ pub(crate) fn eval_clamped<T: Scalar>(
 ) -> DVector<T> {
     let u = clamp(t, &lo, &hi);
     try_eval(u.clone()).unwrap_or_else(|_| DVector::from_element(dim, u))
-}
-
-/// Clamps `u` to `[lo, hi]` (NaN stays NaN).
-pub(crate) fn clamp<T: Scalar>(u: T, lo: &T, hi: &T) -> T {
-    if &u < lo {
-        lo.clone()
-    } else if &u > hi {
-        hi.clone()
-    } else {
-        u
-    }
 }
 
 impl<T: Scalar> Curve<T> for BSplineCurve<T> {

@@ -7,8 +7,7 @@
 //! and [`Surface::eval`](crate::Surface::eval) of these types do, a parameter outside the
 //! domain is clamped to it and a NaN parameter gives a point of NaNs.
 
-use super::basis::{basis_functions_into, last_span};
-use super::curve::clamp;
+use super::basis::{basis_functions_into, clamp, last_span};
 use crate::grid::{contract_row, for_each_row, weighted_sum_into};
 use crate::scalar::Scalar;
 

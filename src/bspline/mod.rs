@@ -20,5 +20,6 @@ pub use knots::KnotVector;
 pub use surface::BSplineSurface;
 
 pub(crate) use basis::check_in_domain;
-pub(crate) use curve::{clamp, eval_clamped};
+pub(crate) use basis::clamp;
+pub(crate) use curve::eval_clamped;
 pub(crate) use grid::curve_points_into;

@@ -3,8 +3,8 @@
 use crate::grid::PointGrid;
 use nalgebra::{DMatrix, DVector};
 
+use super::basis::clamp;
 use super::basis::{basis_functions, find_span};
-use super::curve::clamp;
 use super::grid::{surface_grid_into, Net, SpanFinder};
 use super::knots::{check_knots, KnotVector};
 use crate::error::{check_finite, Error, Result};

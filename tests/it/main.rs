@@ -9,6 +9,7 @@ mod course_examples;
 mod course_octave;
 mod gordon;
 mod grid_eval;
+mod layers;
 mod mixed_boundaries;
 mod octave_reference;
 mod properties;

@@ -202,3 +202,21 @@ impl CliError {
         Self::new(argument, problem, expected, kind)
     }
 }
+
+/// A library error about `argument`.
+pub(crate) fn lib<'a>(
+    argument: &'a str,
+    expected: &'a str,
+) -> impl Fn(cagd::Error) -> CliError + 'a {
+    move |e| CliError::library(argument, e, expected)
+}
+
+/// A usage error: a required argument is missing or arguments do not fit together.
+pub(crate) fn usage(argument: &str, problem: &str, expected: &str) -> CliError {
+    CliError::new(argument, problem, expected, ErrorKind::Usage)
+}
+
+/// A shape error.
+pub(crate) fn shape(argument: &str, problem: String, expected: &str) -> CliError {
+    CliError::new(argument, problem, expected, ErrorKind::Shape)
+}

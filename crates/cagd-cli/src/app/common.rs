@@ -10,37 +10,24 @@ use nalgebra::{DMatrix, DVector};
 use crate::args::OutputArgs;
 use crate::plot::{Figure, ImageKind};
 use crate::{
-    load_expression, load_matrix, load_params, render, samples, CliError, ErrorKind, PendingWrites,
-    Report, CURVE_FORM,
+    load_expression, load_matrix, load_params, render, samples, CliError, PendingWrites, Report,
+    CURVE_FORM,
 };
 use cagd::bezier::BezierCurve;
 use cagd::{Curve, SampledCurve};
 use cagd_octave::literal::{Env, LiteralScalar, ParamExpr, Warning};
 use cagd_octave::script::{Binding, Script};
 
+pub(crate) use super::curve::CliCurve;
+use super::outcome::Outcome;
 use super::work::{check_expression_work, Sampling};
-use super::Outcome;
+pub(crate) use crate::error::{lib, shape, usage};
 
 /// Samples taken when neither `--t`/`--u`/`--v` nor `--n` is given: 0:0.1:1.
 pub const DEFAULT_SAMPLES: usize = 11;
 
 /// The form of a boundary or network curve argument.
 pub const CURVE_ARG_FORM: &str = "an expression in the curve parameter such as \"[u; 0; u-u^2]\", or control points (columns) of a Bézier curve such as \"[0 0 0; 1 0 1]'\"";
-
-/// A library error about `argument`.
-pub fn lib<'a>(argument: &'a str, expected: &'a str) -> impl Fn(cagd::Error) -> CliError + 'a {
-    move |e| CliError::library(argument, e, expected)
-}
-
-/// A usage error: a required argument is missing or arguments do not fit together.
-pub fn usage(argument: &str, problem: &str, expected: &str) -> CliError {
-    CliError::new(argument, problem, expected, ErrorKind::Usage)
-}
-
-/// A shape error.
-pub fn shape(argument: &str, problem: String, expected: &str) -> CliError {
-    CliError::new(argument, problem, expected, ErrorKind::Shape)
-}
 
 /// A matrix argument with points as columns (or rows with `--rows`).
 pub fn points<T: LiteralScalar>(
@@ -140,39 +127,6 @@ pub fn needed<T: LiteralScalar>(lists: &[&[T]]) -> Vec<T> {
     all.sort_by(|a, b| a.partial_cmp(b).unwrap_or(std::cmp::Ordering::Equal));
     all.dedup();
     all
-}
-
-/// A curve as the command line takes it.
-#[derive(Debug, Clone)]
-pub enum CliCurve<T: LiteralScalar> {
-    /// A Bézier curve from control points.
-    Bezier(BezierCurve<T>),
-    /// Samples: an expression evaluated at every parameter the construction needs, or a
-    /// thesis-style sampled curve (a polyline between samples).
-    Sampled(SampledCurve<T>),
-}
-
-impl<T: LiteralScalar> Curve<T> for CliCurve<T> {
-    fn dim(&self) -> usize {
-        match self {
-            CliCurve::Bezier(b) => b.dim(),
-            CliCurve::Sampled(s) => s.dim(),
-        }
-    }
-
-    fn eval(&self, t: T) -> DVector<T> {
-        match self {
-            CliCurve::Bezier(b) => b.eval(t),
-            CliCurve::Sampled(s) => s.eval(t),
-        }
-    }
-
-    fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
-        match self {
-            CliCurve::Bezier(b) => Some(b.eval_derivative(t)),
-            CliCurve::Sampled(_) => None,
-        }
-    }
 }
 
 /// A curve argument before it is sampled.

@@ -16,6 +16,10 @@ mod common;
 
 mod course;
 
+mod curve;
+
+mod outcome;
+
 mod patches;
 
 mod thesis;
@@ -261,17 +265,7 @@ struct ScriptCommand {
 }
 
 use common::DEFAULT_SAMPLES;
-
-/// What a command produced: text for standard output, files, warnings.
-#[derive(Debug)]
-pub struct Outcome {
-    /// The text for standard output.
-    pub stdout: String,
-    /// The files to write (staged, not yet written).
-    pub files: PendingWrites,
-    /// Warnings, each with the argument it is about.
-    pub warnings: Vec<(String, Warning)>,
-}
+pub use outcome::Outcome;
 
 /// Parses `args` (the program name first, as `std::env::args_os` gives them) and runs the
 /// subcommand. Nothing is written: the files are returned staged in the [`Outcome`].

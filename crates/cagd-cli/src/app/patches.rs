@@ -21,6 +21,7 @@ use cagd_octave::script::Script;
 
 use super::bezier::point_mode;
 use super::common::*;
+use super::curve::curve_costs;
 use super::work::{bits, blend_work, check_work, polynomial_bits, work};
 use super::{prepare_script, Outcome};
 
@@ -206,9 +207,9 @@ pub fn coons<T: LiteralScalar>(limits: &Limits, cmd: &CoonsCommand) -> Result<Ou
     check_work(
         limits,
         "--u/--v",
-        blend_work(
+        blend_work::<T>(
             evaluated_points((&us, &vs), pictures, (&pus, &pvs)),
-            &[(&c1, &at_u), (&c2, &at_u), (&d1, &at_v), (&d2, &at_v)],
+            &curve_costs(&[(&c1, &at_u), (&c2, &at_u), (&d1, &at_v), (&d2, &at_v)]),
             16 * c1.dim() as u128,
             bits(&at_u) + bits(&at_v) + 2,
         ),
@@ -427,9 +428,9 @@ pub fn coons_bicubic<T: LiteralScalar>(
     check_work(
         limits,
         "--u/--v",
-        blend_work(
+        blend_work::<T>(
             evaluated_points((&us, &vs), pictures, (&pus, &pvs)),
-            &uv_curves,
+            &curve_costs(&uv_curves),
             64 * curves[0].dim() as u128,
             polynomial_bits(3, bits(&at_u), 0) + polynomial_bits(3, bits(&at_v), 0),
         ),
@@ -797,9 +798,9 @@ pub fn gordon<T: LiteralScalar>(limits: &Limits, cmd: &GordonCommand) -> Result<
     check_work(
         limits,
         "--u/--v",
-        blend_work(
+        blend_work::<T>(
             evaluated_points((&us, &vs), pictures, (&pus, &pvs)),
-            &network,
+            &curve_costs(&network),
             (4 * (ku + kv) as u128 + 2 * (ku * kv) as u128) * (1 + curves_u[0].dim() as u128),
             basis_bits(ku, &need_u, &u_nodes) + basis_bits(kv, &need_v, &v_nodes),
         ),

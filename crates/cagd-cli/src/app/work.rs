@@ -13,10 +13,9 @@
 use crate::args::PlotArgs;
 use crate::CliError;
 use cagd::limits::{exact_op_cost, Limits};
-use cagd::Curve;
 use cagd_octave::literal::{Env, LiteralScalar, ParamExpr};
 
-use super::common::{lib, CliCurve};
+use crate::error::lib;
 
 /// The work of `ops` operations on numbers of about `bits` bits: `ops` in `f64`,
 /// `ops · exact_op_cost(bits)` in exact arithmetic.
@@ -165,36 +164,19 @@ fn refuse_above(
         ))
 }
 
-/// What evaluating `curve` at one of `params` costs: (operations, bits its values reach).
-/// A Bézier curve is a de Casteljau scheme (`d (n+1)²` operations on numbers of
-/// [`polynomial_bits`]); a sampled curve is looked up (a binary search, then a copy of the
-/// sample where the construction needs it).
-pub fn curve_cost<T: LiteralScalar>(curve: &CliCurve<T>, params: &[T]) -> (u128, u128) {
-    match curve {
-        CliCurve::Bezier(b) => (
-            b.dim() as u128 * (b.degree() as u128 + 1).pow(2),
-            polynomial_bits(b.degree(), bits(params), bits(b.control().iter())),
-        ),
-        CliCurve::Sampled(s) => (
-            s.dim() as u128 + (s.params().len() as u128).ilog2() as u128,
-            bits(s.samples().iter()).saturating_add(bits(params)),
-        ),
-    }
-}
-
 /// The work of a blended patch (Coons, Gordon) at `points` grid points: each point evaluates
-/// every curve of `curves` at its parameter (a `(curve, parameters)` pair) and blends them in
+/// every curve at its parameter (`curves` holds the [`curve_cost`](super::curve::curve_cost) of each) and blends them in
 /// `blend` operations, on numbers as large as the curves' values grown by `extra_bits` (the
 /// bits of the blending functions).
 pub fn blend_work<T: LiteralScalar>(
     points: u128,
-    curves: &[(&CliCurve<T>, &[T])],
+    curves: &[(u128, u128)],
     blend: u128,
     extra_bits: u128,
 ) -> u128 {
     let (ops, size) = curves
         .iter()
-        .map(|(c, params)| curve_cost(c, params))
+        .copied()
         .fold((blend, 0u128), |(ops, size), (o, b)| {
             (ops.saturating_add(o), size.max(b))
         });
