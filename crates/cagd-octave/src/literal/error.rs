@@ -151,7 +151,7 @@ pub enum LiteralError {
         /// Where the second `=` is.
         at: Position,
     },
-    /// Parentheses, brackets or unary operators nested deeper than [`Limits::max_depth`].
+    /// Parentheses, brackets or unary operators nested deeper than [`Limits::max_depth`](cagd::limits::Limits::max_depth).
     #[error("{at}: nested more than {limit} levels deep")]
     TooDeep {
         /// Where the limit was exceeded.
@@ -159,7 +159,7 @@ pub enum LiteralError {
         /// The limit.
         limit: usize,
     },
-    /// Input longer than [`Limits::max_expression_bytes`].
+    /// Input longer than [`Limits::max_expression_bytes`](cagd::limits::Limits::max_expression_bytes).
     #[error("input is {length} bytes long, more than the limit of {limit}")]
     TooLong {
         /// The length of the input in bytes.
@@ -167,8 +167,8 @@ pub enum LiteralError {
         /// The limit.
         limit: usize,
     },
-    /// A matrix or range with more elements than [`Limits::max_elements`], or a loop running
-    /// more than [`Limits::max_iterations`] times.
+    /// A matrix or range with more elements than [`Limits::max_elements`](cagd::limits::Limits::max_elements), or a loop running
+    /// more than [`Limits::max_iterations`](cagd::limits::Limits::max_iterations) times.
     #[error("{at}: {what} would have {count} elements or steps, more than the limit of {limit}")]
     TooLarge {
         /// Where.

@@ -19,13 +19,13 @@
 //!   power.
 //!
 //! Evaluation is generic over [`LiteralScalar`]: in `f64`, or in exact rationals
-//! ([`BigRational`]), where the decimal `0.2` is exactly 1/5 (via
+//! ([`BigRational`](num_rational::BigRational)), where the decimal `0.2` is exactly 1/5 (via
 //! [`cagd::scalar::rational_from_decimal`]) and anything not rational (`sin`, `sqrt`, `pi`,
 //! non-integer powers) is the error [`LiteralError::NotRational`].
 //!
 //! **Policies.** `Inf` and `NaN` are rejected (every value must be finite; an operation whose
 //! result is not finite, such as `1/0`, is an error). Input length, nesting depth, element
-//! counts and loop iterations are limited ([`Limits`]), so no input overflows the stack or
+//! counts and loop iterations are limited ([`Limits`](cagd::limits::Limits)), so no input overflows the stack or
 //! exhausts memory; every failure is a typed [`LiteralError`] with its position.
 //!
 //! **Where we are more lenient than Octave**, always with a [`Warning`]: `^`, `*` and `/`

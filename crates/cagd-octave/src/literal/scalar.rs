@@ -193,7 +193,7 @@ impl LiteralScalar for f64 {
 
 /// Largest size, in bits, of an exact number's numerator plus denominator (about 1 200
 /// decimal digits): exact literals and results beyond it are refused
-/// ([`LiteralError::NumberOutOfRange`], [`LiteralError::TooLarge`]), since every operation on
+/// ([`LiteralError::NumberOutOfRange`](super::LiteralError::NumberOutOfRange), [`LiteralError::TooLarge`](super::LiteralError::TooLarge)), since every operation on
 /// them costs a gcd quadratic in their size (found by fuzzing: `24.445^46913` took minutes,
 /// a range stepping by `1e-5828 - 2` took seconds per thousand elements).
 pub const MAX_EXACT_BITS: u64 = 1 << 12;
