@@ -19,7 +19,9 @@ pub struct OutputArgs {
     /// are read exactly: 0.2 is 1/5). Only for rational constructions and expressions.
     #[arg(long)]
     pub exact: bool,
-    /// Write the result to FILE (atomically) instead of standard output.
+    /// Write the result to FILE (atomically) instead of standard output (`-` is standard
+    /// output). An existing FILE must be a regular file: a FIFO, a device or a folder is
+    /// refused, never replaced.
     #[arg(short = 'o', long, value_name = "FILE")]
     pub output: Option<PathBuf>,
 }
@@ -27,7 +29,8 @@ pub struct OutputArgs {
 /// A picture of the result.
 #[derive(Debug, Clone, Args)]
 pub struct PlotArgs {
-    /// Draw the result into FILE.svg or FILE.png (format chosen by the extension).
+    /// Draw the result into FILE.svg or FILE.png (format chosen by the extension; `-` writes
+    /// SVG to standard output, with the result sent elsewhere by -o).
     #[arg(long, value_name = "FILE")]
     pub plot: Option<PathBuf>,
 }
@@ -36,7 +39,8 @@ pub struct PlotArgs {
 #[derive(Debug, Clone, Args)]
 pub struct MeshArgs {
     /// Write the surface as a triangle mesh to FILE.stl (binary), FILE.obj or FILE.ply
-    /// (ASCII), chosen by the extension.
+    /// (ASCII), chosen by the extension (`-` writes OBJ to standard output, with the result
+    /// sent elsewhere by -o).
     #[arg(long, value_name = "FILE")]
     pub mesh: Option<PathBuf>,
 }
@@ -155,6 +159,7 @@ impl LimitArgs {
         ];
         for (limit, value) in flags {
             if let Some(v) = value {
+                crate::limits::check_cap(crate::limits::flag(limit), limit, v)?;
                 limits.set(limit, v);
             }
         }

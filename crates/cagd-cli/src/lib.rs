@@ -24,6 +24,7 @@ mod input;
 pub mod limits;
 pub mod mesh;
 mod output;
+pub mod outputs;
 pub mod plot;
 
 pub use app::{run, Outcome};

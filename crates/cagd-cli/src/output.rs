@@ -85,6 +85,40 @@ impl<T: LiteralScalar> Report<T> {
         });
         self
     }
+
+    /// The first number of the report that is not finite: the item's name, the flat index
+    /// (column-major for matrices, row-major `(i, j, k)` for grids) and the value. Text items
+    /// (steps) are searched for the words `inf` and `NaN` in any case.
+    ///
+    /// ```
+    /// use cagd_cli::{Report, Value};
+    /// use nalgebra::dmatrix;
+    /// let mut r = Report::<f64>::new();
+    /// r.push("result", Value::Matrix(dmatrix![1.0, f64::INFINITY]));
+    /// assert_eq!(r.first_non_finite(), Some(("result".to_string(), 1, f64::INFINITY)));
+    /// ```
+    pub fn first_non_finite(&self) -> Option<(String, usize, f64)> {
+        for item in &self.items {
+            let found = match &item.value {
+                Value::Matrix(m) => m
+                    .iter()
+                    .position(|x| !x.is_finite_value())
+                    .map(|k| (k, m[k].to_f64())),
+                Value::Grid(g) => g
+                    .iter()
+                    .position(|x| !x.is_finite_value())
+                    .map(|k| (k, g.as_slice()[k].to_f64())),
+                Value::Text(t) => t
+                    .split(|c: char| !c.is_ascii_alphanumeric())
+                    .position(|w| w.eq_ignore_ascii_case("inf") || w.eq_ignore_ascii_case("nan"))
+                    .map(|k| (k, f64::NAN)),
+            };
+            if let Some((k, x)) = found {
+                return Some((item.name.clone(), k, x));
+            }
+        }
+        None
+    }
 }
 
 /// The printed form of one number: shortest round-trip decimal for doubles (exponent form

@@ -10,8 +10,8 @@ use nalgebra::{DMatrix, DVector};
 use crate::args::OutputArgs;
 use crate::plot::{Figure, ImageKind};
 use crate::{
-    load_expression, load_matrix, load_params, render, samples, CliError, PendingWrites, Report,
-    CURVE_FORM,
+    load_expression, load_matrix, load_params, render, samples, CliError, ErrorKind, PendingWrites,
+    Report, CURVE_FORM,
 };
 use cagd::bezier::BezierCurve;
 use cagd::{Curve, SampledCurve};
@@ -22,6 +22,9 @@ pub(crate) use super::curve::CliCurve;
 use super::outcome::Outcome;
 use super::work::{check_expression_work, Sampling};
 pub(crate) use crate::error::{lib, shape, usage};
+
+/// The argument of a non-finite result until `run` names the command's input.
+pub const RESULT: &str = "RESULT";
 
 /// Samples taken when neither `--t`/`--u`/`--v` nor `--n` is given: 0:0.1:1.
 pub const DEFAULT_SAMPLES: usize = 11;
@@ -144,9 +147,9 @@ pub enum CurveSource<T: LiteralScalar> {
 fn is_file_arg(text: &str) -> bool {
     let t = text.trim();
     t == "-"
-        || Path::new(t).is_file()
+        || crate::input::is_input_file(t)
         || t.rsplit_once(':')
-            .is_some_and(|(p, _)| !p.is_empty() && Path::new(p).is_file())
+            .is_some_and(|(p, _)| !p.is_empty() && crate::input::is_input_file(p))
 }
 
 /// Loads a curve argument: a data file or a constant matrix gives Bézier control points; an
@@ -268,7 +271,12 @@ pub fn add_plot(
 ) -> Result<(), CliError> {
     let plot_error =
         |e: crate::plot::PlotError| CliError::plot(format!("{argument} {}", path.display()), &e);
-    let kind = ImageKind::from_path(path).map_err(plot_error)?;
+    // Standard output gets SVG, the picture format that is text.
+    let kind = if path.as_os_str() == "-" {
+        ImageKind::Svg
+    } else {
+        ImageKind::from_path(path).map_err(plot_error)?
+    };
     let bytes = figure.render(kind).map_err(plot_error)?;
     files.add(argument, path, bytes);
     Ok(())
@@ -283,7 +291,12 @@ pub fn add_mesh(
 ) -> Result<(), CliError> {
     let mesh_error =
         |e: crate::mesh::MeshError| CliError::mesh(format!("{argument} {}", path.display()), &e);
-    let format = crate::mesh::MeshFormat::from_path(path).map_err(mesh_error)?;
+    // Standard output gets OBJ, a mesh format that is text.
+    let format = if path.as_os_str() == "-" {
+        crate::mesh::MeshFormat::Obj
+    } else {
+        crate::mesh::MeshFormat::from_path(path).map_err(mesh_error)?
+    };
     let bytes = crate::mesh::encode(grid, format).map_err(mesh_error)?;
     files.add(argument, path, bytes);
     Ok(())
@@ -298,6 +311,19 @@ pub fn finish<T: LiteralScalar>(
     mut files: PendingWrites,
     warnings: Vec<(String, Warning)>,
 ) -> Result<Outcome, CliError> {
+    if let Some((name, index, value)) = report.first_non_finite() {
+        // `run` names the command's input in place of RESULT (see `Command::input`).
+        return Err(CliError::new(
+            RESULT,
+            format!("the result overflows the range of doubles ({name}, element {index}: {value})"),
+            "inputs whose result stays within ±1.8e308 (smaller coordinates, parameters or orders)",
+            ErrorKind::Library(Box::new(cagd::Error::NonFinite {
+                what: "result",
+                index,
+                value,
+            })),
+        ));
+    }
     let text = render(report, output.format)?;
     let stdout = match &output.output {
         Some(path) => {

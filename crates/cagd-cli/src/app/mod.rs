@@ -6,7 +6,7 @@ use std::ffi::OsString;
 
 use cagd::grid::PointGrid;
 use clap::error::{ContextKind, ErrorKind as ClapKind};
-use clap::{Args, CommandFactory, Parser, Subcommand};
+use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
 use nalgebra::DMatrix;
 use num_rational::BigRational;
 
@@ -274,12 +274,61 @@ where
     I: IntoIterator<Item = A>,
     A: Into<OsString> + Clone,
 {
-    let cli = match Cli::try_parse_from(args) {
+    let matches = match Cli::command().try_get_matches_from(args) {
+        Ok(m) => m,
+        Err(e) => return usage_error(e),
+    };
+    // Output targets are checked before any work (and before the limits, which may fail).
+    crate::outputs::check(&matches)?;
+    let cli = match Cli::from_arg_matches(&matches) {
         Ok(cli) => cli,
         Err(e) => return usage_error(e),
     };
     let limits = &cli.limits.resolve()?;
-    match &cli.command {
+    dispatch(limits, &cli.command).map_err(|e| {
+        // A non-finite result is about the command's input (see `common::finish`).
+        if e.argument == common::RESULT {
+            let (name, input) = cli.command.input();
+            CliError {
+                argument: input.to_string(),
+                problem: e
+                    .problem
+                    .replacen("the result", &format!("the {name} result"), 1),
+                ..e
+            }
+        } else {
+            e
+        }
+    })
+}
+
+impl Command {
+    /// The subcommand's name and the input its result is computed from.
+    fn input(&self) -> (&'static str, &'static str) {
+        match self {
+            Command::Thesis(_) => ("thesis", "thesis"),
+            Command::Decasteljau(_) => ("decasteljau", "CONTROL"),
+            Command::BezierPatch(_) => ("bezier-patch", "NET"),
+            Command::Coons(_) => ("coons", "--c1/--c2/--d1/--d2"),
+            Command::CoonsBicubic(_) => ("coons-bicubic", "--c1/--c2/--d1/--d2"),
+            Command::DiscreteCoons(_) => ("discrete-coons", "NET"),
+            Command::Gordon(_) => ("gordon", "--u-curve/--v-curve"),
+            Command::Lagrange(_) => ("lagrange", "--nodes/--points"),
+            Command::Bernstein(_) => ("bernstein", "--degree"),
+            Command::Derivative(_) => ("derivative", "CONTROL"),
+            Command::Spline(_) => ("spline", "POINTS"),
+            Command::Hermite(_) => ("hermite", "--p0/--p1/--t0/--t1"),
+            Command::Bspline(_) => ("bspline", "CONTROL"),
+            Command::Nurbs(_) => ("nurbs", "CONTROL"),
+            Command::Curve(_) => ("curve", "EXPR"),
+            Command::Surface(_) => ("surface", "EXPR"),
+            Command::Script(_) => ("script", "FILE"),
+        }
+    }
+}
+
+fn dispatch(limits: &Limits, command: &Command) -> Result<Outcome, CliError> {
+    match command {
         Command::Curve(c) if c.output.exact => curve::<BigRational>(limits, c),
         Command::Curve(c) => curve::<f64>(limits, c),
         Command::Surface(c) if c.output.exact => surface::<BigRational>(limits, c),

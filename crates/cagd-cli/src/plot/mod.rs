@@ -32,6 +32,10 @@
 //! assert!(String::from_utf8(svg).unwrap().starts_with("<svg"));
 //! ```
 
+/// The largest coordinate magnitude drawn. Beyond it the padded axis ranges and their ticks
+/// could overflow the range of doubles; no geometry a picture can show needs more.
+pub const MAX_COORDINATE: f64 = 1e100;
+
 mod model;
 mod render;
 
@@ -65,6 +69,17 @@ pub enum PlotError {
         label: String,
         /// Flat index of the offending value.
         index: usize,
+    },
+    /// A coordinate too large to draw: above [`MAX_COORDINATE`] in magnitude, where the axis
+    /// ranges and ticks of the drawing would overflow.
+    #[error("layer `{label}`: coordinate {index} is {value:e}, beyond ±{MAX_COORDINATE:e}")]
+    OutOfRange {
+        /// The layer's label.
+        label: String,
+        /// Flat index of the offending value.
+        index: usize,
+        /// The value.
+        value: f64,
     },
     /// A picture larger than 10000×10000 or smaller than 100×100 pixels.
     #[error("picture size {width}×{height} is outside 100…10000 pixels per side")]

@@ -6,7 +6,7 @@ use std::path::Path;
 use cagd::grid::PointGrid;
 use nalgebra::DMatrix;
 
-use super::PlotError;
+use super::{PlotError, MAX_COORDINATE};
 
 /// Colours of lines.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -156,6 +156,13 @@ impl Layer {
         }
         if let Some(index) = values.iter().position(|x| !x.is_finite()) {
             return Err(PlotError::NonFinite { label, index });
+        }
+        if let Some(index) = values.iter().position(|x| x.abs() > MAX_COORDINATE) {
+            return Err(PlotError::OutOfRange {
+                label,
+                index,
+                value: values[index],
+            });
         }
         Ok(())
     }

@@ -9,7 +9,7 @@ use cagd::limits::Limits;
 
 use super::lexer;
 use super::parser::Parser;
-use super::{eval, Env, Expr, LiteralError, LiteralScalar, Position};
+use super::{eval, Env, Expr, LiteralError, LiteralScalar, Position, Warning};
 
 impl Expr {
     /// Parses one expression with the default [`Limits`]. A trailing `;` and surrounding
@@ -129,9 +129,27 @@ pub fn parse_params_with<T: LiteralScalar>(
     text: &str,
     limits: &Limits,
 ) -> Result<Vec<T>, LiteralError> {
+    parse_params_warning(text, limits).map(|(values, _)| values)
+}
+
+/// [`parse_params_with`], also returning the [`Warning`]s of what was read more leniently
+/// than Octave would (the command line refuses those in an argument).
+///
+/// ```
+/// use cagd::limits::Limits;
+/// use cagd_octave::literal::parse_params_warning;
+/// let (t, warnings) = parse_params_warning::<f64>("[1 2]*[3 4]", &Limits::default()).unwrap();
+/// assert_eq!(t, vec![3.0, 8.0]);
+/// assert_eq!(warnings.len(), 1);
+/// ```
+pub fn parse_params_warning<T: LiteralScalar>(
+    text: &str,
+    limits: &Limits,
+) -> Result<(Vec<T>, Vec<Warning>), LiteralError> {
     let e = Expr::parse_with(text, limits)?;
-    let m = e.eval(&mut Env::with_limits(*limits))?;
-    vector_of(m, e.at)
+    let mut env = Env::with_limits(*limits);
+    let m = e.eval(&mut env)?;
+    Ok((vector_of(m, e.at)?, env.take_warnings()))
 }
 
 /// Parses one plain decimal number (optional sign, digits with an optional point, optional

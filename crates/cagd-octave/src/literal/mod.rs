@@ -63,7 +63,10 @@ mod scalar;
 
 pub use env::Env;
 pub use error::{LiteralError, Position, Warning};
-pub use expr::{parse_matrix, parse_matrix_with, parse_number, parse_params, parse_params_with};
+pub use expr::{
+    parse_matrix, parse_matrix_with, parse_number, parse_params, parse_params_warning,
+    parse_params_with,
+};
 pub use param_expr::{ParamExpr, PARAMETERS};
 pub use parser::Expr;
 pub use scalar::{Function, LiteralScalar, PowerError, MAX_EXACT_BITS};
