@@ -87,3 +87,19 @@ fn the_writer_refuses_values_nested_beyond_what_it_can_write() {
         "{err:?}"
     );
 }
+
+/// The finding: a 1 MB data script of 170 000 distinct assignments took 187 s, because every
+/// new name was searched for in the list of all names. The bookkeeping is now a set: linear.
+#[test]
+fn scripts_of_many_distinct_assignments_run_in_linear_time() {
+    let source: String = (0..60_000)
+        .map(|i| format!("v{i} = {};\n", i % 10))
+        .collect();
+    let start = std::time::Instant::now();
+    let s = cagd_octave::script::run::<f64>(&source, cagd_octave::literal::Env::new()).unwrap();
+    assert_eq!(s.names().len(), 60_000);
+    assert_eq!(s.names()[59_999], "v59999");
+    assert_eq!(s.value("v12345").unwrap()[(0, 0)], 5.0);
+    // Quadratic bookkeeping took about 10 s for these 60 000 names in a release build.
+    assert!(start.elapsed().as_secs() < 5, "{:?}", start.elapsed());
+}
