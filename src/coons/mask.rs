@@ -87,8 +87,11 @@ impl<T: Scalar> Mask<T> {
                 scale = s;
             }
         }
-        let slack = T::from_f64(8.0 * f64::EPSILON).unwrap_or_else(T::zero) * scale;
-        if (sum.clone() - T::one()).abs() > slack {
+        let slack = T::from_f64(8.0 * f64::EPSILON).unwrap_or_else(T::zero) * scale.clone();
+        // Written so that an overflow (4α or 4β infinite, their sum NaN) fails the check
+        // instead of slipping through a comparison with NaN.
+        let affine = scale.is_finite_value() && (sum.clone() - T::one()).abs() <= slack;
+        if !affine {
             return Err(Error::MaskNotAffine {
                 alpha: alpha.to_f64(),
                 beta: beta.to_f64(),
