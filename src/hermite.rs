@@ -62,7 +62,7 @@ pub fn hermite_basis_derivative<T: Scalar>(u: T) -> [T; 4] {
 /// assert_eq!(c.eval(0.5).as_slice(), &[1.0, 0.25]);
 /// assert_eq!(c.eval_derivative(1.0).as_slice(), &[1.0, -1.0]);
 /// // Its Bézier points: x_1, x_1 + x'_1/3, x_2 − x'_2/3, x_2.
-/// let b = c.to_bezier();
+/// let b = c.to_bezier()?;
 /// assert_eq!(b.control_point(1).unwrap().as_slice(), &[1.0 / 3.0, 1.0 / 3.0]);
 /// # Ok::<(), cagd::Error>(())
 /// ```
@@ -153,13 +153,17 @@ impl<T: Scalar> HermiteCubic<T> {
 
     /// The same cubic in Bézier form: `b_0 = x_1`, `b_1 = x_1 + x'_1/3`, `b_2 = x_2 − x'_2/3`,
     /// `b_3 = x_2` (the lecture notes' table, "to Bézier from Hermite").
-    pub fn to_bezier(&self) -> BezierCurve<T> {
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] when an inner Bézier point overflows the range of doubles (end
+    /// points and tangents near ±1.8e308: `x_1 + x'_1/3` can exceed it).
+    pub fn to_bezier(&self) -> Result<BezierCurve<T>> {
         let g = crate::conversion::convert(
             &self.geometry,
             crate::conversion::CubicForm::Hermite,
             crate::conversion::CubicForm::Bezier,
         );
-        BezierCurve::new(g).expect("finite, d × 4")
+        BezierCurve::new(g)
     }
 
     /// The cubic Bézier curve in Hermite form, tangents taken with respect to its local

@@ -1304,7 +1304,10 @@ fn coons_of_bezier_curves_as_one_bezier_patch_is_exact() {
 fn mask_weights_that_overflow_are_not_affine() {
     for (alpha, beta) in [(1e308, -1e308 + 0.25), (-1e308, 1e308), (1e308, 0.25)] {
         let err = Mask::new(alpha, beta).unwrap_err();
-        assert!(matches!(err, cagd::Error::MaskNotAffine { .. }), "{alpha}, {beta}: {err:?}");
+        assert!(
+            matches!(err, cagd::Error::MaskNotAffine { .. }),
+            "{alpha}, {beta}: {err:?}"
+        );
     }
     assert!(Mask::new(-0.25, 0.5).is_ok());
 }

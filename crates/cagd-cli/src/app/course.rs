@@ -203,7 +203,13 @@ pub fn hermite<T: LiteralScalar>(
     // Per parameter the four cubic Hermite functions (about 16 operations) and their
     // combination (8 per coordinate), on cubics in t; --steps adds the basis rows.
     let d = h.dim() as u128;
-    let coefficient_bits = bits(h.to_bezier().control().iter()) + 2;
+    // The Bézier form of the cubic (drawn, and printed with --steps); its inner points are
+    // x_1 ± x'/3, which overflow for end points and tangents near ±1.8e308.
+    let bezier = h.to_bezier().map_err(lib(
+        "--p0/--p1/--t0/--t1",
+        "end points and tangents whose Bézier points x ± x'/3 stay within ±1.8e308",
+    ))?;
+    let coefficient_bits = bits(bezier.control().iter()) + 2;
     let at = |params: &[T], per: u128| {
         work::<T>(
             params.len() as u128 * per,
@@ -227,7 +233,7 @@ pub fn hermite<T: LiteralScalar>(
         report.push("hermite_basis", Value::Matrix(basis));
         report.push(
             "bezier_control",
-            Value::Matrix(h.to_bezier().control().clone()),
+            Value::Matrix(bezier.control().clone()),
         );
     }
     let values = DMatrix::from_columns(&ts.iter().map(|t| h.eval(t.clone())).collect::<Vec<_>>());
@@ -239,7 +245,7 @@ pub fn hermite<T: LiteralScalar>(
             DMatrix::from_columns(&dense.iter().map(|t| h.eval(t.clone())).collect::<Vec<_>>());
         let figure = Figure::new("Hermite cubic")
             .curve(to_f64(&line), Colour::Blue, "x(t)")
-            .control_polygon(to_f64(h.to_bezier().control()), "Bézier control polygon");
+            .control_polygon(to_f64(bezier.control()), "Bézier control polygon");
         add_plot(&mut files, "--plot", path, &figure)?;
     }
     finish(&report, &cmd.output, files, Vec::new())

@@ -5,6 +5,7 @@ mod atomic_output;
 mod bad_inputs;
 mod cli;
 mod error_catalogue;
+mod hostile;
 mod limits;
 mod mesh;
 mod non_finite;
