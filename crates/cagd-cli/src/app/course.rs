@@ -231,10 +231,7 @@ pub fn hermite<T: LiteralScalar>(
             .collect();
         let basis = DMatrix::from_fn(ts.len(), 4, |i, j| rows[i][j].clone());
         report.push("hermite_basis", Value::Matrix(basis));
-        report.push(
-            "bezier_control",
-            Value::Matrix(bezier.control().clone()),
-        );
+        report.push("bezier_control", Value::Matrix(bezier.control().clone()));
     }
     let values = DMatrix::from_columns(&ts.iter().map(|t| h.eval(t.clone())).collect::<Vec<_>>());
     report.push("t", Value::Matrix(row(&ts)));

@@ -55,6 +55,11 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
     let script_loop = file("loop.m", "for i = 1:2000000\n  x = i;\nend\n");
     let script_chain = file("chain.m", "a = b = 0;\n");
     let missing = dir.join("missing.txt").to_str().unwrap().to_string();
+    let folder = {
+        let p = dir.join("a-folder.svg");
+        std::fs::create_dir_all(&p).unwrap();
+        p.to_str().unwrap().to_string()
+    };
     let no_dir = dir
         .join("no/such/dir/out.svg")
         .to_str()
@@ -465,6 +470,91 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
             s(&["thesis", "--out", "/proc/cagd-cannot-be-here"]),
             "--out /proc/cagd-cannot-be-here",
             "Io::NotFound",
+        ),
+        // Outputs that are not regular files, or two outputs on one path: before any work.
+        (
+            s(&["curve", "[u;u]", "-o", "/dev/null"]),
+            "-o /dev/null",
+            "Io::AlreadyExists",
+        ),
+        (
+            s(&["curve", "[u;u]", "--plot", &folder]),
+            "--plot",
+            "Io::AlreadyExists",
+        ),
+        (
+            s(&["curve", "[u;u]", "--plot", "x.svg", "-o", "./x.svg"]),
+            "--plot x.svg",
+            "Usage",
+        ),
+        (s(&["curve", "[u;u]", "-o", "-", "--plot", "-"]), "--plot -", "Usage"),
+        // A depth beyond what the command thread's stack holds.
+        (
+            s(&["--max-depth", "100000000", "curve", "[u;u]"]),
+            "--max-depth",
+            "Usage",
+        ),
+        // What Octave refuses, an argument may not rely on a lenient reading of.
+        (
+            s(&["decasteljau", "[1 2]*[3 4]"]),
+            "CONTROL",
+            "Literal::Unsupported",
+        ),
+        (
+            s(&["decasteljau", CUBIC, "--t", "[0.5 1]*[1 1]"]),
+            "--t",
+            "Literal::Unsupported",
+        ),
+        // Results that overflow the range of doubles.
+        (
+            s(&["derivative", "[zeros(1,171) 1]", "--order", "171"]),
+            "CONTROL",
+            "Library::NonFinite",
+        ),
+        (
+            s(&["spline", "[1.7e308 -1.7e308 1.7e308]"]),
+            "POINTS",
+            "Library::NonFinite",
+        ),
+        (
+            s(&["lagrange", "--nodes", "[0 1e-310 1]", "--t", "0.5"]),
+            "--nodes/--points",
+            "Library::NonFinite",
+        ),
+        (
+            s(&[
+                "hermite",
+                "--p0",
+                "[1.5e308;0]",
+                "--p1",
+                "[0;0]",
+                "--t0",
+                "[1.5e308;0]",
+                "--t1",
+                "[0;0]",
+                "--t",
+                "0.5",
+            ]),
+            "--p0/--p1/--t0/--t1",
+            "Library::NonFinite",
+        ),
+        // Pictures and meshes of values too large to draw or to store.
+        (
+            s(&[
+                "decasteljau",
+                "[-1e308 1e308; 0 1]",
+                "--n",
+                "3",
+                "--plot",
+                "p.svg",
+            ]),
+            "--plot p.svg",
+            "Plot",
+        ),
+        (
+            s(&["surface", "[1e39*u; v; u]", "--n", "3", "--mesh", "m.stl"]),
+            "--mesh m.stl",
+            "Shape",
         ),
     ]
 }
