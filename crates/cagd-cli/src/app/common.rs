@@ -235,7 +235,7 @@ impl<T: LiteralScalar> CurveSource<T> {
                     .sample_curve(env, p, at)
                     .map_err(|e| CliError::literal(argument, e, CURVE_FORM))?;
                 SampledCurve::new(at.to_vec(), m)
-                    .map(CliCurve::Sampled)
+                    .map(CliCurve::Expression)
                     .map_err(lib(argument, CURVE_ARG_FORM))
             }
             CurveSource::Samples(params, m) => SampledCurve::new(params.clone(), m.clone())
