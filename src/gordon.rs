@@ -451,9 +451,15 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
     pub fn eval_parts(&self, u: T, v: T) -> GordonPoint<T> {
         let lu = self.u_basis.basis(&u);
         let lv = self.v_basis.basis(&v);
-        let (curves_u, curves_v) = self.unit_curves();
-        let at_u: Vec<_> = curves_u.iter().map(|c| c.eval(v.clone())).collect();
-        let at_v: Vec<_> = curves_v.iter().map(|c| c.eval(u.clone())).collect();
+        let unit = |(c, d): (&C, &(T, T)), t: &T| {
+            OnUnitInterval::from_checked(c, d.clone()).eval(t.clone())
+        };
+        let at_u: Vec<_> = (self.curves_at_u.iter().zip(&self.domains_at_u))
+            .map(|cd| unit(cd, &v))
+            .collect();
+        let at_v: Vec<_> = (self.curves_at_v.iter().zip(&self.domains_at_v))
+            .map(|cd| unit(cd, &u))
+            .collect();
         self.combine(&lu, &lv, &at_u, &at_v)
     }
 

@@ -17,7 +17,8 @@
 //! |---|---|
 //! | [`BezierCurve`](crate::BezierCurve), [`MatrixForm`](crate::bezier::MatrixForm) | its interval `[a, b]`, `[0, 1]` unless built on another |
 //! | [`BSplineCurve`](crate::BSplineCurve), [`NurbsCurve`](crate::NurbsCurve) | `[u_p, u_n]` of the knots (`BSplineCurve::uniform_cubic`: `[0, n − 3]`) |
-//! | [`SampledCurve`], [`CubicSpline`](crate::CubicSpline), [`LagrangeInterpolant`](crate::lagrange::LagrangeInterpolant), [`ParametricInterpolant`](crate::interpolation::ParametricInterpolant) | the smallest to the largest parameter (node) |
+//! | [`SampledCurve`] | the first to the last sample parameter, or what [`SampledCurve::with_domain`] sets |
+//! | [`CubicSpline`](crate::CubicSpline), [`LagrangeInterpolant`](crate::lagrange::LagrangeInterpolant), [`ParametricInterpolant`](crate::interpolation::ParametricInterpolant) | the smallest to the largest parameter (node) |
 //! | [`HermiteCubic`](crate::HermiteCubic) | `[0, 1]` |
 //! | [`FnCurve`] | `[0, 1]`, or what [`FnCurve::with_domain`] sets |
 //! | [`OnUnitInterval`] | `[0, 1]` |
@@ -394,11 +395,14 @@ where
 ///
 /// At a sample parameter the value is the sample itself, bit for bit, so a construction
 /// evaluated on the sampling grid reproduces the thesis code exactly. The domain is
-/// `[params[0], params[last]]`; outside it the end segments are extended linearly.
+/// `[params[0], params[last]]` unless [`with_domain`](SampledCurve::with_domain) sets another
+/// (a curve on `[0, 1]` sampled also where a construction needs it beyond); outside the sample
+/// parameters the end segments are extended linearly.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SampledCurve<T: Scalar = f64> {
     params: Vec<T>,
     samples: nalgebra::DMatrix<T>,
+    domain: (T, T),
 }
 
 impl<T: Scalar> SampledCurve<T> {
@@ -436,7 +440,46 @@ impl<T: Scalar> SampledCurve<T> {
                 ),
             });
         }
-        Ok(SampledCurve { params, samples })
+        let domain = (params[0].clone(), params[params.len() - 1].clone());
+        Ok(SampledCurve {
+            params,
+            samples,
+            domain,
+        })
+    }
+
+    /// The same samples on the domain `[start, end]`, which need not be the range of the
+    /// sample parameters: an expression on `[0, 1]` sampled also at `1.5` (because a grid asks
+    /// for it there) is still a curve on `[0, 1]`, and a construction reparametrises that.
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] for a non-finite end, [`Error::EmptyInterval`] unless
+    /// `start < end`.
+    ///
+    /// ```
+    /// use cagd::{Curve, SampledCurve};
+    /// use nalgebra::dmatrix;
+    /// let c = SampledCurve::new(vec![0.0, 1.0, 1.5], dmatrix![0.0, 2.0, 3.0])?;
+    /// assert_eq!(c.domain(), (0.0, 1.5));
+    /// let c = c.with_domain(0.0, 1.0)?;
+    /// assert_eq!(c.domain(), (0.0, 1.0));
+    /// assert_eq!(c.eval(1.5).as_slice(), &[3.0]); // the sample, outside the domain
+    /// assert!(c.try_eval(1.5).is_err());
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn with_domain(self, start: T, end: T) -> Result<Self> {
+        crate::error::check_finite("sampled curve domain", [&start, &end])?;
+        if start >= end {
+            return Err(Error::EmptyInterval {
+                what: "sampled curve domain",
+                a: start.to_f64(),
+                b: end.to_f64(),
+            });
+        }
+        Ok(SampledCurve {
+            domain: (start, end),
+            ..self
+        })
     }
 
     /// The sample parameters.
@@ -464,8 +507,7 @@ impl<T: Scalar> Curve<T> for SampledCurve<T> {
     }
 
     fn domain(&self) -> (T, T) {
-        let last = self.params.len() - 1;
-        (self.params[0].clone(), self.params[last].clone())
+        self.domain.clone()
     }
 
     fn eval(&self, t: T) -> DVector<T> {

@@ -234,8 +234,10 @@ impl<T: LiteralScalar> CurveSource<T> {
                 let m = e
                     .sample_curve(env, p, at)
                     .map_err(|e| CliError::literal(argument, e, CURVE_FORM))?;
+                // An expression is a curve on [0, 1], sampled also where the grid reaches beyond.
                 SampledCurve::new(at.to_vec(), m)
-                    .map(CliCurve::Expression)
+                    .and_then(|c| c.with_domain(T::zero(), T::one()))
+                    .map(CliCurve::Sampled)
                     .map_err(lib(argument, CURVE_ARG_FORM))
             }
             CurveSource::Samples(params, m) => SampledCurve::new(params.clone(), m.clone())

@@ -14,12 +14,10 @@ use super::work::{bits, polynomial_bits};
 pub enum CliCurve<T: LiteralScalar> {
     /// A Bézier curve from control points, on `[0, 1]`.
     Bezier(BezierCurve<T>),
-    /// An expression in its parameter on `[0, 1]`, evaluated at every parameter the
-    /// construction needs (exact there; a polyline between). The samples may reach beyond
-    /// `[0, 1]` when the grid does; the domain stays `[0, 1]`.
-    Expression(SampledCurve<T>),
-    /// A thesis-style sampled curve (a polyline between samples), on its first to last sample
-    /// parameter (`linspace(0,1,N)` unless the data script gives others).
+    /// Samples: an expression evaluated at every parameter the construction needs, on the
+    /// domain `[0, 1]` even where the samples reach beyond it (the grid asked for them there);
+    /// or a thesis-style sampled curve (a polyline between samples), on its first to last
+    /// sample parameter (`linspace(0,1,N)` unless the data script gives others).
     Sampled(SampledCurve<T>),
 }
 
@@ -27,14 +25,13 @@ impl<T: LiteralScalar> Curve<T> for CliCurve<T> {
     fn dim(&self) -> usize {
         match self {
             CliCurve::Bezier(b) => b.dim(),
-            CliCurve::Expression(s) | CliCurve::Sampled(s) => s.dim(),
+            CliCurve::Sampled(s) => s.dim(),
         }
     }
 
     fn domain(&self) -> (T, T) {
         match self {
             CliCurve::Bezier(b) => b.domain(),
-            CliCurve::Expression(_) => (T::zero(), T::one()),
             CliCurve::Sampled(s) => s.domain(),
         }
     }
@@ -42,21 +39,21 @@ impl<T: LiteralScalar> Curve<T> for CliCurve<T> {
     fn eval(&self, t: T) -> DVector<T> {
         match self {
             CliCurve::Bezier(b) => b.eval(t),
-            CliCurve::Expression(s) | CliCurve::Sampled(s) => s.eval(t),
+            CliCurve::Sampled(s) => s.eval(t),
         }
     }
 
     fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
         match self {
             CliCurve::Bezier(b) => Some(b.eval_derivative(t)),
-            CliCurve::Expression(_) | CliCurve::Sampled(_) => None,
+            CliCurve::Sampled(_) => None,
         }
     }
 }
 
 /// What evaluating `curve` at one of `params` costs: (operations, bits its values reach).
 /// A Bézier curve is a de Casteljau scheme (`d (n+1)²` operations on numbers of
-/// [`polynomial_bits`]); a sampled curve (or sampled expression) is looked up (a binary search, then a copy of the
+/// [`polynomial_bits`]); a sampled curve is looked up (a binary search, then a copy of the
 /// sample where the construction needs it).
 pub fn curve_cost<T: LiteralScalar>(curve: &CliCurve<T>, params: &[T]) -> (u128, u128) {
     match curve {
@@ -64,7 +61,7 @@ pub fn curve_cost<T: LiteralScalar>(curve: &CliCurve<T>, params: &[T]) -> (u128,
             b.dim() as u128 * (b.degree() as u128 + 1).pow(2),
             polynomial_bits(b.degree(), bits(params), bits(b.control().iter())),
         ),
-        CliCurve::Expression(s) | CliCurve::Sampled(s) => (
+        CliCurve::Sampled(s) => (
             s.dim() as u128 + (s.params().len() as u128).ilog2() as u128,
             bits(s.samples().iter()).saturating_add(bits(params)),
         ),
@@ -79,37 +76,33 @@ pub fn curve_costs<T: LiteralScalar>(curves: &[(&CliCurve<T>, &[T])]) -> Vec<(u1
         .collect()
 }
 
+/// The rule of `cagd::param` for the command line's curves: the domain, `try_eval` inside it,
+/// `eval` continuing outside.
 #[cfg(test)]
-mod tests {
-    use super::*;
+#[test]
+fn cli_curves_know_their_domain() {
     use cagd::Error;
     use nalgebra::{dmatrix, dvector};
-
-    /// The rule of `cagd::param` for the command line's curves: the domain, `try_eval` inside
-    /// it, `eval` continuing outside.
-    #[test]
-    fn cli_curves_know_their_domain() {
-        let bezier = CliCurve::Bezier(BezierCurve::new(dmatrix![0.0, 2.0]).unwrap());
-        let samples = SampledCurve::new(vec![0.0, 1.0, 1.5], dmatrix![0.0, 1.0, 2.0]).unwrap();
-        let expression = CliCurve::Expression(samples.clone());
-        let sampled = CliCurve::Sampled(samples);
-        assert_eq!(bezier.domain(), (0.0, 1.0));
-        assert_eq!(expression.domain(), (0.0, 1.0));
-        assert_eq!(sampled.domain(), (0.0, 1.5));
-        for c in [&bezier, &expression, &sampled] {
-            assert_eq!(c.try_eval(1.0).unwrap(), c.eval(1.0));
-            assert!(matches!(
-                c.try_eval(-0.5),
-                Err(Error::ParameterOutOfRange { .. })
-            ));
-            assert!(matches!(c.try_eval(f64::NAN), Err(Error::NonFinite { .. })));
-        }
-        assert_eq!(bezier.eval(1.5), dvector![3.0]);
-        assert_eq!(expression.eval(1.5), dvector![2.0]); // the sample there
+    let bezier = CliCurve::Bezier(BezierCurve::new(dmatrix![0.0, 2.0]).unwrap());
+    let samples = SampledCurve::new(vec![0.0, 1.0, 1.5], dmatrix![0.0, 1.0, 2.0]).unwrap();
+    let expression = CliCurve::Sampled(samples.clone().with_domain(0.0, 1.0).unwrap());
+    let sampled = CliCurve::Sampled(samples);
+    assert_eq!(bezier.domain(), (0.0, 1.0));
+    assert_eq!(expression.domain(), (0.0, 1.0));
+    assert_eq!(sampled.domain(), (0.0, 1.5));
+    for c in [&bezier, &expression, &sampled] {
+        assert_eq!(c.try_eval(1.0).unwrap(), c.eval(1.0));
         assert!(matches!(
-            expression.try_eval(1.5),
+            c.try_eval(-0.5),
             Err(Error::ParameterOutOfRange { .. })
         ));
-        assert_eq!(sampled.try_eval(1.5).unwrap(), dvector![2.0]);
+        assert!(matches!(c.try_eval(f64::NAN), Err(Error::NonFinite { .. })));
     }
+    assert_eq!(bezier.eval(1.5), dvector![3.0]);
+    assert_eq!(expression.eval(1.5), dvector![2.0]); // the sample there
+    assert!(matches!(
+        expression.try_eval(1.5),
+        Err(Error::ParameterOutOfRange { .. })
+    ));
+    assert_eq!(sampled.try_eval(1.5).unwrap(), dvector![2.0]);
 }
