@@ -121,7 +121,8 @@ pub enum Error {
         value: f64,
     },
     /// A parameter outside the domain `[min, max]` of a curve or surface (for a B-spline,
-    /// `[u_p, u_{n+1}]` of its knot vector).
+    /// `[u_p, u_n]` of its knot vector): what every `try_eval` answers to a finite parameter
+    /// outside the domain (see [`crate::param`]).
     #[error("{what}: parameter {value} is outside the domain [{min}, {max}]")]
     ParameterOutOfRange {
         /// Which argument.
@@ -132,6 +133,18 @@ pub enum Error {
         min: f64,
         /// End of the domain.
         max: f64,
+    },
+    /// A curve whose domain a construction cannot reparametrise onto `[0, 1]` (an infinite end,
+    /// or a start not below the end): Coons, Gordon and ruled surfaces map each curve's domain
+    /// `[a, b]` affinely onto `[0, 1]` (see [`crate::param`]).
+    #[error("{what}: its domain [{start}, {end}] cannot be mapped onto [0, 1] (expected finite ends, start below end)")]
+    UnusableDomain {
+        /// Which curve.
+        what: &'static str,
+        /// Start of its domain.
+        start: f64,
+        /// End of its domain.
+        end: f64,
     },
     /// A square system that has no unique solution (repeated interpolation parameters, a
     /// singular matrix to invert).

@@ -2,7 +2,11 @@
 //!
 //! A network consists of `m+1` curves `g(u_i, v)` (functions of `v`, one per node `u_i`) and
 //! `n+1` curves `g(u, v_j)` (functions of `u`, one per node `v_j`), all over `[0, 1]`, meeting
-//! at the `(m+1)(n+1)` points `g(u_i, v_j)`. The Gordon surface
+//! at the `(m+1)(n+1)` points `g(u_i, v_j)`. A network curve on another domain `[a, b]` is
+//! reparametrised affinely onto `[0, 1]`, `s ↦ c(a + (b − a)s)`, and the nodes are parameters
+//! of `[0, 1]` (a B-spline `g(u, v_j)` on `[0, 4]` with a node `u_i = 1/2` is met at its
+//! parameter 2); a curve whose domain is not a finite interval is refused with
+//! [`Error::UnusableDomain`] (see [`crate::param`]). The Gordon surface
 //!
 //! ```text
 //! g = g1 + g2 − g12,
@@ -41,7 +45,7 @@ use crate::bezier::{BezierCurve, BezierPatch};
 use crate::coons::Tolerance;
 use crate::error::{Error, Result};
 use crate::lagrange::{check_nodes, Lagrange, LebesgueEstimate};
-use crate::param::{Curve, Surface};
+use crate::param::{usable_domain, Curve, OnUnitInterval, Surface};
 use crate::scalar::Scalar;
 
 /// A Gordon surface (Izrek 4.4) over a compatible curve network.
@@ -74,6 +78,10 @@ pub struct GordonSurface<C, T: Scalar = f64> {
     v_basis: Lagrange<T>,
     curves_at_u: Vec<C>,
     curves_at_v: Vec<C>,
+    /// The domains of `curves_at_u`, each a finite interval `a < b`.
+    domains_at_u: Vec<(T, T)>,
+    /// The domains of `curves_at_v`.
+    domains_at_v: Vec<(T, T)>,
     /// `points[i][j] = g(u_i, v_j)`.
     points: Vec<Vec<DVector<T>>>,
     tolerance: Tolerance,
@@ -120,6 +128,7 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
     /// - [`Error::TooFewCurves`]: fewer than 2 curves in a direction;
     /// - [`Error::ShapeMismatch`]: node and curve counts differ, or curves of different
     ///   dimensions;
+    /// - [`Error::UnusableDomain`]: a curve whose domain is not a finite interval `a < b`;
     /// - [`Error::DuplicateNodes`], [`Error::UnsortedNodes`], [`Error::NonFinite`]: bad nodes;
     /// - [`Error::NetworkMismatch`]: `g(u_i, ·)` at `v_j` is not `g(·, v_j)` at `u_i`, naming
     ///   the worst pair, its gap and the tolerance.
@@ -149,17 +158,16 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
         curves_at_v: Vec<C>,
         tolerance: Tolerance,
     ) -> Result<Self> {
-        let (u_basis, v_basis) =
+        let (bases, domains) =
             Self::check(&u_nodes, &v_nodes, &curves_at_u, &curves_at_v, &tolerance)?;
-        let points: Vec<Vec<DVector<T>>> = curves_at_u
+        let points: Vec<Vec<DVector<T>>> = unit_views(&curves_at_u, &domains.0)
             .iter()
             .map(|c| v_nodes.iter().map(|v| c.eval(v.clone())).collect())
             .collect();
         Self::finish(
-            u_basis,
-            v_basis,
-            curves_at_u,
-            curves_at_v,
+            bases,
+            (curves_at_u, curves_at_v),
+            domains,
             points,
             tolerance,
         )
@@ -179,7 +187,7 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
         points: Vec<Vec<DVector<T>>>,
         tolerance: Tolerance,
     ) -> Result<Self> {
-        let (u_basis, v_basis) =
+        let (bases, domains) =
             Self::check(&u_nodes, &v_nodes, &curves_at_u, &curves_at_v, &tolerance)?;
         let dim = curves_at_u[0].dim();
         let shape_ok = points.len() == u_nodes.len()
@@ -208,12 +216,13 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
         }
         let mut worst: Option<(usize, usize, T, T)> = None;
         let mut count = 0;
+        let (at_u, at_v) = (
+            unit_views(&curves_at_u, &domains.0),
+            unit_views(&curves_at_v, &domains.1),
+        );
         for (i, u) in u_nodes.iter().enumerate() {
             for (j, v) in v_nodes.iter().enumerate() {
-                for q in [
-                    curves_at_u[i].eval(v.clone()),
-                    curves_at_v[j].eval(u.clone()),
-                ] {
+                for q in [at_u[i].eval(v.clone()), at_v[j].eval(u.clone())] {
                     let (gap, allowed) = tolerance.gap(&points[i][j], &q);
                     record(&mut worst, &mut count, i, j, gap, allowed);
                 }
@@ -223,22 +232,25 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
             return Err(e);
         }
         Self::finish(
-            u_basis,
-            v_basis,
-            curves_at_u,
-            curves_at_v,
+            bases,
+            (curves_at_u, curves_at_v),
+            domains,
             points,
             tolerance,
         )
     }
 
+    /// Checks the network: curve and node counts, nodes, tolerance, dimensions, domains
+    /// (reparametrisable onto `[0, 1]`) and the crossings; gives the Lagrange bases and the
+    /// curves' domains.
+    #[allow(clippy::type_complexity)]
     fn check(
         u_nodes: &[T],
         v_nodes: &[T],
         curves_at_u: &[C],
         curves_at_v: &[C],
         tolerance: &Tolerance,
-    ) -> Result<(Lagrange<T>, Lagrange<T>)> {
+    ) -> Result<((Lagrange<T>, Lagrange<T>), (Vec<(T, T)>, Vec<(T, T)>))> {
         for (what, curves) in [
             ("Gordon curves g(u_i, v)", curves_at_u),
             ("Gordon curves g(u, v_j)", curves_at_v),
@@ -275,13 +287,25 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
                 });
             }
         }
+        let domains_at_u = curves_at_u
+            .iter()
+            .map(|c| usable_domain("Gordon curve g(u_i, v)", c))
+            .collect::<Result<Vec<_>>>()?;
+        let domains_at_v = curves_at_v
+            .iter()
+            .map(|c| usable_domain("Gordon curve g(u, v_j)", c))
+            .collect::<Result<Vec<_>>>()?;
+        let (at_u, at_v) = (
+            unit_views(curves_at_u, &domains_at_u),
+            unit_views(curves_at_v, &domains_at_v),
+        );
         // Compatibility: g(u_i, ·)(v_j) against g(·, v_j)(u_i).
         let mut worst: Option<(usize, usize, T, T)> = None;
         let mut count = 0;
         for (i, u) in u_nodes.iter().enumerate() {
             for (j, v) in v_nodes.iter().enumerate() {
-                let p = curves_at_u[i].eval(v.clone());
-                let q = curves_at_v[j].eval(u.clone());
+                let p = at_u[i].eval(v.clone());
+                let q = at_v[j].eval(u.clone());
                 if p.len() != dim || q.len() != dim {
                     return Err(Error::ShapeMismatch {
                         what: "Gordon network curves",
@@ -298,16 +322,19 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
             return Err(e);
         }
         Ok((
-            Lagrange::new(u_nodes.to_vec())?,
-            Lagrange::new(v_nodes.to_vec())?,
+            (
+                Lagrange::new(u_nodes.to_vec())?,
+                Lagrange::new(v_nodes.to_vec())?,
+            ),
+            (domains_at_u, domains_at_v),
         ))
     }
 
+    #[allow(clippy::type_complexity)]
     fn finish(
-        u_basis: Lagrange<T>,
-        v_basis: Lagrange<T>,
-        curves_at_u: Vec<C>,
-        curves_at_v: Vec<C>,
+        (u_basis, v_basis): (Lagrange<T>, Lagrange<T>),
+        (curves_at_u, curves_at_v): (Vec<C>, Vec<C>),
+        (domains_at_u, domains_at_v): (Vec<(T, T)>, Vec<(T, T)>),
         points: Vec<Vec<DVector<T>>>,
         tolerance: Tolerance,
     ) -> Result<Self> {
@@ -316,9 +343,21 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
             v_basis,
             curves_at_u,
             curves_at_v,
+            domains_at_u,
+            domains_at_v,
             points,
             tolerance,
         })
+    }
+
+    /// The curves `g(u_i, ·)` and `g(·, v_j)` as the surface uses them: reparametrised onto
+    /// `[0, 1]` (unchanged for curves on `[0, 1]`).
+    #[allow(clippy::type_complexity)]
+    pub fn unit_curves(&self) -> (Vec<OnUnitInterval<&C, T>>, Vec<OnUnitInterval<&C, T>>) {
+        (
+            unit_views(&self.curves_at_u, &self.domains_at_u),
+            unit_views(&self.curves_at_v, &self.domains_at_v),
+        )
     }
 
     /// The surface on the grid `us × vs` written into `out`, row by row:
@@ -370,12 +409,13 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
         let lv = crate::grid::rows_of(vs, mv, |v, row| self.v_basis.fill_basis(v, row));
         // at_u = one grid row per curve: g(u_i, vs[b]) at at_u[(i·nv + b)·d ..].
         let row_len = vs.len() * d;
+        let (curves_u, curves_v) = self.unit_curves();
         let mut at_u = vec![T::zero(); mu * row_len];
-        for (curve, samples) in self.curves_at_u.iter().zip(at_u.chunks_exact_mut(row_len)) {
+        for (curve, samples) in curves_u.iter().zip(at_u.chunks_exact_mut(row_len)) {
             curve.eval_many_into(vs, samples)?;
         }
         // at_v[a] = [g(us[a], v_0), …, g(us[a], v_n)]: (n+1)·d values per row a.
-        let mut at_v = Self::samples_by_point(&self.curves_at_v, us, d)?;
+        let mut at_v = samples_by_point(&curves_v, us, d)?;
         // Turn at_v[a] into r[a]: subtract Σ_i L_i(us[a]) g(u_i, v_j).
         for (a, ra) in at_v.chunks_exact_mut(mv * d).enumerate() {
             let la = &lu[a * mu..(a + 1) * mu];
@@ -407,27 +447,19 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
         Ok(())
     }
 
-    /// The samples of every curve at every parameter, grouped by parameter:
-    /// `out[(p·curves.len() + c)·d + k]` is coordinate `k` of `curves[c](ts[p])`.
-    fn samples_by_point(curves: &[C], ts: &[T], d: usize) -> Result<Vec<T>> {
-        let count = curves.len();
-        let mut out = vec![T::zero(); ts.len() * count * d];
-        let mut samples = vec![T::zero(); ts.len() * d];
-        for (c, curve) in curves.iter().enumerate() {
-            curve.eval_many_into(ts, &mut samples)?;
-            for (x, dst) in samples.chunks_exact(d).zip(out.chunks_exact_mut(count * d)) {
-                dst[c * d..(c + 1) * d].clone_from_slice(x);
-            }
-        }
-        Ok(out)
-    }
-
     /// `g(u, v)` with its parts `g1`, `g2`, `g12`.
     pub fn eval_parts(&self, u: T, v: T) -> GordonPoint<T> {
         let lu = self.u_basis.basis(&u);
         let lv = self.v_basis.basis(&v);
-        let at_u: Vec<_> = self.curves_at_u.iter().map(|c| c.eval(v.clone())).collect();
-        let at_v: Vec<_> = self.curves_at_v.iter().map(|c| c.eval(u.clone())).collect();
+        let unit = |(c, d): (&C, &(T, T)), t: &T| {
+            OnUnitInterval::from_checked(c, d.clone()).eval(t.clone())
+        };
+        let at_u: Vec<_> = (self.curves_at_u.iter().zip(&self.domains_at_u))
+            .map(|cd| unit(cd, &v))
+            .collect();
+        let at_v: Vec<_> = (self.curves_at_v.iter().zip(&self.domains_at_v))
+            .map(|cd| unit(cd, &u))
+            .collect();
         self.combine(&lu, &lv, &at_u, &at_v)
     }
 
@@ -576,9 +608,41 @@ fn mismatch<T: Scalar>(
     })
 }
 
+/// The curves on their checked domains, reparametrised onto `[0, 1]`.
+fn unit_views<'a, T: Scalar, C>(
+    curves: &'a [C],
+    domains: &[(T, T)],
+) -> Vec<OnUnitInterval<&'a C, T>> {
+    curves
+        .iter()
+        .zip(domains)
+        .map(|(c, d)| OnUnitInterval::from_checked(c, d.clone()))
+        .collect()
+}
+
+/// The samples of every curve at every parameter, grouped by parameter:
+/// `out[(p·curves.len() + c)·d + k]` is coordinate `k` of `curves[c](ts[p])`.
+fn samples_by_point<T: Scalar, C: Curve<T>>(curves: &[C], ts: &[T], d: usize) -> Result<Vec<T>> {
+    let count = curves.len();
+    let mut out = vec![T::zero(); ts.len() * count * d];
+    let mut samples = vec![T::zero(); ts.len() * d];
+    for (c, curve) in curves.iter().enumerate() {
+        curve.eval_many_into(ts, &mut samples)?;
+        for (x, dst) in samples.chunks_exact(d).zip(out.chunks_exact_mut(count * d)) {
+            dst[c * d..(c + 1) * d].clone_from_slice(x);
+        }
+    }
+    Ok(out)
+}
+
 impl<T: Scalar, C: Curve<T>> Surface<T> for GordonSurface<C, T> {
     fn dim(&self) -> usize {
         self.points[0][0].len()
+    }
+
+    /// `[0, 1]²` (the network curves reparametrised onto `[0, 1]`).
+    fn domain(&self) -> ((T, T), (T, T)) {
+        ((T::zero(), T::one()), (T::zero(), T::one()))
     }
 
     fn eval(&self, u: T, v: T) -> DVector<T> {
@@ -596,13 +660,14 @@ impl<T: Scalar, C: Curve<T>> Surface<T> for GordonSurface<C, T> {
         let lu: Vec<_> = us.iter().map(|u| self.u_basis.basis(u)).collect();
         let lv: Vec<_> = vs.iter().map(|v| self.v_basis.basis(v)).collect();
         // at_u[j][i] = g(u_i, vs[j]); at_v[i][j] = g(us[i], v_j).
+        let (curves_u, curves_v) = self.unit_curves();
         let at_u: Vec<Vec<_>> = vs
             .iter()
-            .map(|v| self.curves_at_u.iter().map(|c| c.eval(v.clone())).collect())
+            .map(|v| curves_u.iter().map(|c| c.eval(v.clone())).collect())
             .collect();
         let at_v: Vec<Vec<_>> = us
             .iter()
-            .map(|u| self.curves_at_v.iter().map(|c| c.eval(u.clone())).collect())
+            .map(|u| curves_v.iter().map(|c| c.eval(u.clone())).collect())
             .collect();
         let dim = self.dim();
         let mut grid = crate::grid::PointGrid::from_elem((us.len(), vs.len(), dim), T::zero());
@@ -684,29 +749,17 @@ fn lagrange_in_bernstein_form<T: Scalar>(nodes: &[T], to: usize) -> Vec<Vec<T>> 
         .collect()
 }
 
-/// The control points of a Bézier curve on `[0, 1]`, elevated to degree `to`, as one vector of
-/// coefficients per coordinate.
-fn elevated_control<T: Scalar>(
-    curve: &BezierCurve<T>,
-    to: usize,
-    what: &'static str,
-) -> Result<Vec<Vec<T>>> {
-    let (a, b) = curve.interval();
-    if !(a.is_zero() && b.is_one()) {
-        return Err(Error::InvalidArgument {
-            what,
-            message: format!(
-                "the exact Bézier form needs curves over [0, 1], found one over [{a}, {b}]"
-            ),
-        });
-    }
+/// The control points of a Bézier curve elevated to degree `to`, as one vector of
+/// coefficients per coordinate. They are those of the curve reparametrised onto `[0, 1]`
+/// whatever its interval `[a, b]` (the Bernstein form is in `(u − a)/(b − a)`).
+fn elevated_control<T: Scalar>(curve: &BezierCurve<T>, to: usize) -> Vec<Vec<T>> {
     let c = curve.control();
-    Ok((0..c.nrows())
+    (0..c.nrows())
         .map(|k| {
             let row: Vec<T> = c.row(k).iter().cloned().collect();
             bernstein_elevate(&row, to)
         })
-        .collect())
+        .collect()
 }
 
 /// The tensor-product Bézier net of `g1 + g2 − g12` for Bézier network curves: see
@@ -724,14 +777,14 @@ pub(crate) fn gordon_bezier_net<T: Scalar>(
     let (deg_u, deg_v) = (m.max(p), n.max(q));
     let lu = lagrange_in_bernstein_form(u_nodes, deg_u);
     let lv = lagrange_in_bernstein_form(v_nodes, deg_v);
-    let at_u = curves_at_u
+    let at_u: Vec<_> = curves_at_u
         .iter()
-        .map(|c| elevated_control(c, deg_v, "Gordon curves g(u_i, v)"))
-        .collect::<Result<Vec<_>>>()?;
-    let at_v = curves_at_v
+        .map(|c| elevated_control(c, deg_v))
+        .collect();
+    let at_v: Vec<_> = curves_at_v
         .iter()
-        .map(|c| elevated_control(c, deg_u, "Gordon curves g(u, v_j)"))
-        .collect::<Result<Vec<_>>>()?;
+        .map(|c| elevated_control(c, deg_u))
+        .collect();
     let dim = points[0][0].len();
     let coords = (0..dim)
         .map(|d| {
@@ -758,8 +811,9 @@ pub(crate) fn gordon_bezier_net<T: Scalar>(
 }
 
 impl<T: Scalar> GordonSurface<BezierCurve<T>, T> {
-    /// The Gordon surface of a network of Bézier curves (over `[0, 1]`), exactly, as one
-    /// tensor-product Bézier patch.
+    /// The Gordon surface of a network of Bézier curves, exactly, as one tensor-product Bézier
+    /// patch (a curve on an interval `[a, b]` enters reparametrised onto `[0, 1]`, which keeps
+    /// its control points).
     ///
     /// With `p` the largest degree of the curves `g(u, v_j)` and `q` that of the curves
     /// `g(u_i, v)`, the patch has degree `(max(m, p), max(n, q))`: each Lagrange basis function
@@ -769,7 +823,7 @@ impl<T: Scalar> GordonSurface<BezierCurve<T>, T> {
     /// [`Surface::eval`] to round-off.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] if a curve is defined over an interval other than `[0, 1]`.
+    /// [`Error::NonFinite`] if a control point overflows in `f64`.
     ///
     /// ```
     /// use cagd::bezier::BezierCurve;

@@ -201,6 +201,10 @@ impl<T: Scalar> Curve<T> for HermiteCubic<T> {
     fn dim(&self) -> usize {
         HermiteCubic::dim(self)
     }
+    /// `[0, 1]` (the cubic continues outside it).
+    fn domain(&self) -> (T, T) {
+        (T::zero(), T::one())
+    }
     fn eval(&self, t: T) -> DVector<T> {
         HermiteCubic::eval(self, t)
     }

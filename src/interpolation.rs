@@ -307,6 +307,21 @@ impl<T: Scalar> Curve<T> for ParametricInterpolant<T> {
     fn dim(&self) -> usize {
         self.points.nrows()
     }
+    /// From the smallest to the largest interpolation parameter (they need not be in order;
+    /// the polynomial continues outside).
+    fn domain(&self) -> (T, T) {
+        let mut lo = self.params[0].clone();
+        let mut hi = lo.clone();
+        for p in &self.params[1..] {
+            if *p < lo {
+                lo = p.clone();
+            }
+            if *p > hi {
+                hi = p.clone();
+            }
+        }
+        (lo, hi)
+    }
     fn eval(&self, t: T) -> DVector<T> {
         ParametricInterpolant::eval(self, t)
     }

@@ -385,6 +385,12 @@ impl<T: Scalar> Curve<T> for LagrangeInterpolant<T> {
         self.values.nrows()
     }
 
+    /// From the first to the last node (the polynomial continues outside).
+    fn domain(&self) -> (T, T) {
+        let nodes = self.basis.nodes();
+        (nodes[0].clone(), nodes[nodes.len() - 1].clone())
+    }
+
     fn eval(&self, t: T) -> DVector<T> {
         self.basis.combine(&self.values, &self.basis.basis(&t))
     }

@@ -25,6 +25,12 @@
 //! [`Curve::eval_many_into`], layouts in [`grid`]) with `O(m + n)` work per point, no allocation
 //! per point, and both cores for large grids; `docs/PERFORMANCE.md` has the measurements.
 //!
+//! **Domains.** Every curve and surface knows its parameter domain ([`Curve::domain`],
+//! [`Surface::domain`]), and one rule holds for all of them: `eval` continues the curve outside
+//! the domain (nothing is clamped), `try_eval` keeps to it. Coons, Gordon and ruled surfaces
+//! reparametrise each curve's domain affinely onto `[0, 1]` (or refuse one that is not a finite
+//! interval). See [`param`].
+//!
 //! **NaN and infinity** are rejected, once and for all: every entry point (constructors,
 //! evaluations taking parameters, tolerances, the parsers of literals, expressions and data
 //! scripts, every command-line input) answers a non-finite number with a typed error
@@ -69,6 +75,6 @@ pub use hermite::HermiteCubic;
 pub use limits::Limits;
 pub use linspace::linspace;
 pub use nurbs::{NurbsCurve, NurbsSurface};
-pub use param::{Curve, FnCurve, SampledCurve, Surface};
+pub use param::{Curve, FnCurve, OnUnitInterval, SampledCurve, Surface};
 pub use scalar::Scalar;
 pub use spline::{CubicSpline, EndCondition};

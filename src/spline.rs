@@ -561,6 +561,11 @@ impl<T: Scalar> Curve<T> for CubicSpline<T> {
     fn dim(&self) -> usize {
         CubicSpline::dim(self)
     }
+    /// `[t_0, t_last]` (the end segments continue outside it).
+    fn domain(&self) -> (T, T) {
+        let last = self.params.len() - 1;
+        (self.params[0].clone(), self.params[last].clone())
+    }
     fn eval(&self, t: T) -> DVector<T> {
         CubicSpline::eval(self, t)
     }

@@ -6,6 +6,7 @@ use super::scheme::DeCasteljauScheme;
 use super::{check_param, check_params};
 use crate::bernstein::{bernstein_all, bernstein_all_into, falling_factorial, power};
 use crate::error::{check_finite, Error, Result};
+use crate::param::check_parameter;
 use crate::param::Curve;
 use crate::scalar::Scalar;
 
@@ -30,8 +31,10 @@ use crate::scalar::Scalar;
 /// computes what the algorithm of §2.1 describes.
 ///
 /// **Input policy.** Constructors reject empty or ragged input and NaN/∞ coordinates with a
-/// typed [`Error`]; nothing panics on user input. [`eval`](Self::eval) accepts any parameter
-/// (NaN in gives NaN out); [`try_eval`](Self::try_eval) rejects non-finite ones.
+/// typed [`Error`]; nothing panics on user input. The domain is `[a, b]`;
+/// [`eval`](Self::eval) accepts any parameter (outside `[a, b]` the polynomial continues; NaN
+/// in gives NaN out), [`try_eval`](Self::try_eval) only those in `[a, b]` (the rule of
+/// [`crate::param`]).
 ///
 /// ```
 /// use cagd::bezier::BezierCurve;
@@ -239,21 +242,30 @@ impl<T: Scalar> BezierCurve<T> {
         work.column(0).into_owned()
     }
 
-    /// [`eval`](Self::eval) with the parameter checked.
+    /// [`eval`](Self::eval) for a parameter in the domain `[a, b]`.
     ///
     /// # Errors
-    /// [`Error::NonFinite`] for a NaN or infinite `u`.
+    /// [`Error::NonFinite`] for a NaN or infinite `u`, [`Error::ParameterOutOfRange`] for a
+    /// finite `u` outside `[a, b]`.
     ///
     /// ```
     /// use cagd::bezier::BezierCurve;
+    /// use cagd::Error;
     /// let c = BezierCurve::from_points(&[[0.0], [2.0]])?;
     /// assert_eq!(c.try_eval(0.25)?.as_slice(), &[0.5]);
-    /// assert!(c.try_eval(f64::NAN).is_err());
+    /// assert_eq!(c.eval(1.5).as_slice(), &[3.0]); // eval continues the line
+    /// assert!(matches!(c.try_eval(1.5), Err(Error::ParameterOutOfRange { .. })));
+    /// assert!(matches!(c.try_eval(f64::NAN), Err(Error::NonFinite { .. })));
     /// # Ok::<(), cagd::Error>(())
     /// ```
     pub fn try_eval(&self, u: T) -> Result<DVector<T>> {
-        check_param("Bézier curve parameter", &u)?;
+        check_parameter("Bézier curve parameter", &u, &self.domain())?;
         Ok(self.eval(u))
+    }
+
+    /// The domain `[a, b]` (the interval the curve was built on, `[0, 1]` by default).
+    pub fn domain(&self) -> (T, T) {
+        (self.a.clone(), self.b.clone())
     }
 
     /// The whole de Casteljau scheme at `u` (every `b_i^r`, thesis §2.1). Its last point equals
@@ -293,7 +305,9 @@ impl<T: Scalar> BezierCurve<T> {
     }
 
     /// The points at all parameters `us`, by de Casteljau: a `d × k` matrix whose column `k`
-    /// is `b^n(us[k])` (the layout of the thesis's sample matrices `T(:, k)`).
+    /// is `b^n(us[k])` (the layout of the thesis's sample matrices `T(:, k)`). Like the
+    /// thesis's `deCasteljau` it takes any finite parameters, continuing the polynomial outside
+    /// the domain as [`eval`](Self::eval) does.
     ///
     /// # Errors
     /// [`Error::EmptyGrid`] for an empty list, [`Error::NonFinite`] for a NaN or infinite
@@ -598,8 +612,16 @@ impl<T: Scalar> Curve<T> for BezierCurve<T> {
         BezierCurve::dim(self)
     }
 
+    fn domain(&self) -> (T, T) {
+        BezierCurve::domain(self)
+    }
+
     fn eval(&self, t: T) -> DVector<T> {
         BezierCurve::eval(self, t)
+    }
+
+    fn try_eval(&self, t: T) -> Result<DVector<T>> {
+        BezierCurve::try_eval(self, t)
     }
 
     fn eval_derivative(&self, t: T) -> Option<DVector<T>> {

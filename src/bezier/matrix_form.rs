@@ -224,6 +224,22 @@ impl<T: Scalar> BezierCurve<T> {
     }
 }
 
+/// The monomial form as a [`Curve`](crate::Curve) over its interval `[a, b]` (the polynomial
+/// continues outside it, as for every curve; see [`crate::param`]).
+impl<T: Scalar> crate::param::Curve<T> for MatrixForm<T> {
+    fn dim(&self) -> usize {
+        MatrixForm::dim(self)
+    }
+
+    fn domain(&self) -> (T, T) {
+        (self.a.clone(), self.b.clone())
+    }
+
+    fn eval(&self, t: T) -> DVector<T> {
+        MatrixForm::eval(self, t)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -3,12 +3,12 @@
 use crate::grid::PointGrid;
 use nalgebra::{DMatrix, DVector};
 
+use super::check_params;
 use super::curve::BezierCurve;
 use super::scheme::{patch_step_in_place, patch_steps, PatchScheme};
-use super::{check_param, check_params};
 use crate::bernstein::{bernstein_all, bernstein_all_into, falling_factorial};
 use crate::error::{check_finite, Error, Result};
-use crate::param::Surface;
+use crate::param::{check_parameter, Surface};
 use crate::scalar::Scalar;
 
 /// One of the four boundary curves of a patch over `[0, 1]²`.
@@ -269,8 +269,8 @@ impl<T: Scalar> BezierPatch<T> {
     }
 
     /// The point `x(u, v)` by the tensor de Casteljau algorithm (see the type docs). Any
-    /// parameters are accepted (outside `[0, 1]²` the polynomial is extrapolated; NaN gives
-    /// NaN); [`try_eval`](Self::try_eval) rejects non-finite ones.
+    /// parameters are accepted (outside the domain `[0, 1]²` the polynomial continues; NaN
+    /// gives NaN); [`try_eval`](Self::try_eval) accepts only the domain.
     ///
     /// ```
     /// use cagd::bezier::BezierPatch;
@@ -287,21 +287,26 @@ impl<T: Scalar> BezierPatch<T> {
         DVector::from_iterator(work.len(), work.iter().map(|x| x[(0, 0)].clone()))
     }
 
-    /// [`eval`](Self::eval) with the parameters checked.
+    /// [`eval`](Self::eval) for parameters in the domain `[0, 1]²`.
     ///
     /// # Errors
-    /// [`Error::NonFinite`] for a NaN or infinite `u` or `v`.
+    /// [`Error::NonFinite`] for a NaN or infinite `u` or `v`, [`Error::ParameterOutOfRange`]
+    /// for a finite one outside `[0, 1]`.
     ///
     /// ```
     /// use cagd::bezier::BezierPatch;
+    /// use cagd::Error;
     /// let p: BezierPatch = BezierPatch::hyperbolic_paraboloid();
     /// assert_eq!(p.try_eval(1.0, 0.5)?.as_slice(), &[1.0, 0.5, 0.5]);
-    /// assert!(p.try_eval(f64::INFINITY, 0.5).is_err());
+    /// assert!(matches!(p.try_eval(f64::INFINITY, 0.5), Err(Error::NonFinite { .. })));
+    /// assert!(matches!(p.try_eval(0.5, 1.5), Err(Error::ParameterOutOfRange { .. })));
+    /// assert_eq!(p.eval(0.5, 1.5).as_slice(), &[0.5, 1.5, 0.75]); // eval continues
     /// # Ok::<(), cagd::Error>(())
     /// ```
     pub fn try_eval(&self, u: T, v: T) -> Result<DVector<T>> {
-        check_param("Bézier patch parameter u", &u)?;
-        check_param("Bézier patch parameter v", &v)?;
+        let unit = (T::zero(), T::one());
+        check_parameter("Bézier patch parameter u", &u, &unit)?;
+        check_parameter("Bézier patch parameter v", &v, &unit)?;
         Ok(self.eval(u, v))
     }
 
@@ -462,6 +467,10 @@ impl<T: Scalar> BezierPatch<T> {
     /// [`eval_grid_into`](Self::eval_grid_into) (`O(m + n)` per point). Agrees with
     /// [`eval`](Self::eval) up to rounding (exactly for rationals).
     ///
+    /// Like the thesis's `ploskevB` it takes any finite parameters: outside `[0, 1]` the
+    /// polynomial continues, as in [`eval`](Self::eval) (a grid check, not
+    /// [`try_eval`](Self::try_eval)'s domain check).
+    ///
     /// # Errors
     /// [`Error::EmptyGrid`] for an empty `us` or `vs`; [`Error::NonFinite`] for a NaN or
     /// infinite parameter.
@@ -558,8 +567,17 @@ impl<T: Scalar> Surface<T> for BezierPatch<T> {
         BezierPatch::dim(self)
     }
 
+    /// `[0, 1]²`.
+    fn domain(&self) -> ((T, T), (T, T)) {
+        ((T::zero(), T::one()), (T::zero(), T::one()))
+    }
+
     fn eval(&self, u: T, v: T) -> DVector<T> {
         BezierPatch::eval(self, u, v)
+    }
+
+    fn try_eval(&self, u: T, v: T) -> Result<DVector<T>> {
+        BezierPatch::try_eval(self, u, v)
     }
 
     /// Grid evaluation through basis matrices (see [`BezierPatch::try_eval_grid`]); empty

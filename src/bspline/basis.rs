@@ -1,7 +1,7 @@
 //! B-spline basis functions: the Cox–de Boor recursion (the CAD notes and the lecture notes) and the
 //! triangular scheme that evaluates the `p + 1` non-zero ones at once.
 
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::scalar::Scalar;
 
 /// The index `s` of the knot span `[u_s, u_{s+1})` holding `u`, for a degree-`p` spline with
@@ -10,7 +10,8 @@ use crate::scalar::Scalar;
 /// which numbers from 0 too).
 ///
 /// # Errors
-/// [`Error::ParameterOutOfRange`] unless `u_p ≤ u ≤ u_{n_control}`.
+/// [`Error::NonFinite`](crate::Error::NonFinite) for NaN or ±∞, [`Error::ParameterOutOfRange`](crate::Error::ParameterOutOfRange) unless
+/// `u_p ≤ u ≤ u_{n_control}`.
 ///
 /// ```
 /// use cagd::bspline::find_span;
@@ -42,19 +43,34 @@ pub(crate) fn last_span<T: Scalar>(p: usize, n_control: usize, knots: &[T]) -> u
     s
 }
 
-/// `Ok` if `lo ≤ u ≤ hi` (so not NaN), else the [`Error::ParameterOutOfRange`] that
-/// [`find_span`] reports.
+/// `Ok` if `lo ≤ u ≤ hi`, else the error [`find_span`] reports: [`Error::NonFinite`](crate::Error::NonFinite) for NaN
+/// or ±∞, [`Error::ParameterOutOfRange`](crate::Error::ParameterOutOfRange) for a finite `u` outside (the `try_eval` rule of
+/// [`crate::param`]).
 pub(crate) fn check_in_domain<T: Scalar>(u: &T, lo: &T, hi: &T) -> Result<()> {
-    if u.is_finite_value() && lo <= u && u <= hi {
-        Ok(())
-    } else {
-        Err(Error::ParameterOutOfRange {
-            what: "B-spline parameter",
-            value: u.to_f64(),
-            min: lo.to_f64(),
-            max: hi.to_f64(),
-        })
+    crate::param::check_parameter("B-spline parameter", u, &(lo.clone(), hi.clone()))
+}
+
+/// The span whose polynomial piece gives the curve at `u`: [`find_span`]'s inside the domain,
+/// the first non-empty span below it and the last one above it (so the end pieces continue,
+/// the `eval` rule of [`crate::param`]); `None` for NaN or ±∞.
+pub(crate) fn extended_span<T: Scalar>(
+    p: usize,
+    n_control: usize,
+    knots: &[T],
+    u: &T,
+) -> Option<usize> {
+    if !u.is_finite_value() {
+        return None;
     }
+    let (lo, hi) = (&knots[p], &knots[n_control]);
+    let at = if u < lo {
+        lo
+    } else if u > hi {
+        hi
+    } else {
+        u
+    };
+    find_span(p, n_control, knots, at).ok()
 }
 
 /// The non-zero basis functions `N_{s−p,p}(u), …, N_{s,p}(u)` on the span `s`
@@ -160,7 +176,7 @@ pub fn cox_de_boor<T: Scalar>(i: usize, p: usize, knots: &[T], u: &T) -> T {
 /// degree-`p` spline with `n_control` control points.
 ///
 /// # Errors
-/// [`Error::ParameterOutOfRange`] outside the domain `[u_p, u_n]`.
+/// [`Error::ParameterOutOfRange`](crate::Error::ParameterOutOfRange) outside the domain `[u_p, u_n]`.
 pub fn basis_all<T: Scalar>(p: usize, n_control: usize, knots: &[T], u: &T) -> Result<Vec<T>> {
     let s = find_span(p, n_control, knots, u)?;
     let local = basis_functions(p, knots, s, u);
@@ -169,17 +185,6 @@ pub fn basis_all<T: Scalar>(p: usize, n_control: usize, knots: &[T], u: &T) -> R
         all[s - p + k] = v;
     }
     Ok(all)
-}
-
-/// Clamps `u` to `[lo, hi]` (NaN stays NaN).
-pub(crate) fn clamp<T: Scalar>(u: T, lo: &T, hi: &T) -> T {
-    if &u < lo {
-        lo.clone()
-    } else if &u > hi {
-        hi.clone()
-    } else {
-        u
-    }
 }
 
 #[cfg(test)]

@@ -2,7 +2,7 @@
 
 use nalgebra::{DMatrix, DVector};
 
-use super::basis::{basis_all, basis_functions, check_in_domain, clamp, find_span};
+use super::basis::{basis_all, basis_functions, check_in_domain, extended_span, find_span};
 use super::grid::curve_points_into;
 use super::knots::{check_knots, KnotVector};
 use crate::bezier::BezierCurve;
@@ -17,11 +17,13 @@ use crate::scalar::Scalar;
 /// for [`BezierCurve`] and octave-nurbs `coefs`), the knots `u_0 ≤ … ≤ u_{n+p}` a
 /// [`KnotVector`] of length `n + p + 1`.
 ///
-/// **Evaluation** ([`try_eval`](Self::try_eval), [`Curve::eval`]) sums the `p + 1` non-zero
-/// terms `N_{s−p+i,p}(u) P_{s−p+i}` of the span `s`, `i` ascending, exactly as octave-nurbs
-/// `bspeval`; [`de_boor`](Self::de_boor) runs de Boor's algorithm (the same point). Outside the
-/// domain `try_eval` returns [`Error::ParameterOutOfRange`]; the [`Curve`] trait clamps to the
-/// domain instead (a NaN parameter gives NaN coordinates).
+/// **Evaluation** ([`try_eval`](Self::try_eval), [`eval`](Self::eval)) sums the `p + 1`
+/// non-zero terms `N_{s−p+i,p}(u) P_{s−p+i}` of the span `s`, `i` ascending, exactly as
+/// octave-nurbs `bspeval`; [`de_boor`](Self::de_boor) runs de Boor's algorithm (the same
+/// point). The domain is `[u_p, u_n]` (the rule of [`crate::param`]): outside it `try_eval`
+/// returns [`Error::ParameterOutOfRange`] (and [`Error::NonFinite`] for NaN or ±∞), while
+/// `eval` continues the first or the last polynomial piece (a NaN or infinite parameter gives
+/// a point of NaNs).
 ///
 /// ```
 /// use cagd::bspline::BSplineCurve;
@@ -166,15 +168,43 @@ impl<T: Scalar> BSplineCurve<T> {
         basis_all(self.degree, self.control.ncols(), self.knots.as_slice(), u)
     }
 
-    /// The point `C(u)` (see the type's documentation for the operation order).
+    /// The point `C(u)` for `u` in the domain (see the type's documentation for the operation
+    /// order): [`eval`](Self::eval)'s value, bit for bit.
     ///
     /// # Errors
-    /// [`Error::ParameterOutOfRange`] outside the domain (also for NaN).
+    /// [`Error::NonFinite`] for NaN or ±∞, [`Error::ParameterOutOfRange`] outside the domain.
     pub fn try_eval(&self, u: T) -> Result<DVector<T>> {
         let (p, knots) = (self.degree, self.knots.as_slice());
         let s = find_span(p, self.control.ncols(), knots, &u)?;
         let n = basis_functions(p, knots, s, &u);
         Ok(combine(&self.control, s - p, &n))
+    }
+
+    /// The point `C(u)` for any `u`: inside the domain [`try_eval`](Self::try_eval)'s value;
+    /// below (above) it the polynomial of the first (last) non-empty span continued, by the
+    /// same operations with that span; for NaN or ±∞ a point of NaNs.
+    ///
+    /// ```
+    /// use cagd::bspline::BSplineCurve;
+    /// use nalgebra::DMatrix;
+    /// // The clamped quadratic on (0,0), (1,2), (3,2), (4,0): on its last span [1/2, 1] the
+    /// // basis is 2(1−u)², 2(1−u)(3u−1), (2u−1)²; at u = 3/2 that is 1/2, −7/2, 4, so (6, −6).
+    /// let p = DMatrix::from_column_slice(2, 4, &[0.0, 0.0, 1.0, 2.0, 3.0, 2.0, 4.0, 0.0]);
+    /// let c = BSplineCurve::new(2, vec![0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0], p)?;
+    /// assert_eq!(c.eval(1.0), c.try_eval(1.0)?);
+    /// assert_eq!(c.eval(1.5).as_slice(), &[6.0, -6.0]);
+    /// assert!(c.try_eval(1.5).is_err());
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn eval(&self, u: T) -> DVector<T> {
+        let (p, knots) = (self.degree, self.knots.as_slice());
+        match extended_span(p, self.control.ncols(), knots, &u) {
+            Some(s) => {
+                let n = basis_functions(p, knots, s, &u);
+                combine(&self.control, s - p, &n)
+            }
+            None => DVector::from_element(self.dim(), u.clone() - u),
+        }
     }
 
     /// The point `C(u)` by de Boor's algorithm: the `p + 1` control points of the span are
@@ -206,7 +236,8 @@ impl<T: Scalar> BSplineCurve<T> {
     /// [`try_eval`](Self::try_eval), bit for bit).
     ///
     /// # Errors
-    /// [`Error::ParameterOutOfRange`] for a parameter outside the domain.
+    /// [`Error::NonFinite`] or [`Error::ParameterOutOfRange`] for a parameter outside the
+    /// domain.
     pub fn eval_many(&self, us: &[T]) -> Result<DMatrix<T>> {
         let mut out = DMatrix::from_element(self.dim(), us.len(), T::zero());
         self.try_eval_many_into(us, out.as_mut_slice())?;
@@ -216,8 +247,8 @@ impl<T: Scalar> BSplineCurve<T> {
     /// The points at all parameters `us` written into `out`, one after the other:
     /// `out[k·d + c]` is coordinate `c` of `C(us[k])` (`us.len() × d` row-major, which is the
     /// storage of the `d × us.len()` matrix of [`eval_many`](Self::eval_many); see
-    /// [`crate::grid`]). As [`Curve::eval`], a parameter outside the domain `[u_p, u_n]` is
-    /// clamped to it and a NaN parameter gives a point of NaNs.
+    /// [`crate::grid`]). As [`eval`](Self::eval), outside the domain `[u_p, u_n]` the end
+    /// pieces continue and a NaN or infinite parameter gives a point of NaNs.
     ///
     /// Per parameter: the knot span `s` (the previous parameter's span or the next one is tried
     /// first, so sorted parameters cost `O(1)`; otherwise a binary search), the `p + 1`
@@ -236,8 +267,8 @@ impl<T: Scalar> BSplineCurve<T> {
     /// let p = DMatrix::from_column_slice(2, 4, &[0.0, 0.0, 1.0, 2.0, 3.0, 2.0, 4.0, 0.0]);
     /// let c = BSplineCurve::new(2, vec![0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0], p)?;
     /// let mut out = [0.0; 6];
-    /// c.eval_many_into(&[0.0, 0.5, 7.0], &mut out)?; // 7 is clamped to 1
-    /// assert_eq!(out, [0.0, 0.0, 2.0, 2.0, 4.0, 0.0]);
+    /// c.eval_many_into(&[0.0, 0.5, 1.5], &mut out)?; // 1.5: the last piece continued
+    /// assert_eq!(out, [0.0, 0.0, 2.0, 2.0, 6.0, -6.0]);
     /// assert!(c.eval_many_into(&[0.5], &mut out).is_err());
     /// # Ok::<(), cagd::Error>(())
     /// ```
@@ -254,8 +285,8 @@ impl<T: Scalar> BSplineCurve<T> {
     /// as [`try_eval`](Self::try_eval): nothing is written unless all do.
     ///
     /// # Errors
-    /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · d`;
-    /// [`Error::ParameterOutOfRange`] for the first parameter outside the domain (or NaN).
+    /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · d`; for the first parameter
+    /// outside the domain, [`Error::NonFinite`] (NaN or ±∞) or [`Error::ParameterOutOfRange`].
     pub fn try_eval_many_into(&self, us: &[T], out: &mut [T]) -> Result<()> {
         let d = self.dim();
         let len = crate::grid::grid_len("B-spline curve points", &[us.len(), d])?;
@@ -430,31 +461,28 @@ pub(crate) fn blend<T: Scalar>(x: &DVector<T>, a: T, y: &DVector<T>, b: T) -> DV
     })
 }
 
-/// The point of a curve at `t` through the infallible [`Curve`] interface, shared by B-spline
-/// and NURBS curves: `t` is clamped to the domain `[lo, hi]`; the only parameter `try_eval` can
-/// then refuse is NaN, which gives a point of NaNs (NaN in, NaN out, as `f64` arithmetic does).
-pub(crate) fn eval_clamped<T: Scalar>(
-    dim: usize,
-    (lo, hi): (T, T),
-    t: T,
-    try_eval: impl FnOnce(T) -> Result<DVector<T>>,
-) -> DVector<T> {
-    let u = clamp(t, &lo, &hi);
-    try_eval(u.clone()).unwrap_or_else(|_| DVector::from_element(dim, u))
-}
-
 impl<T: Scalar> Curve<T> for BSplineCurve<T> {
     fn dim(&self) -> usize {
         BSplineCurve::dim(self)
     }
 
-    fn eval(&self, t: T) -> DVector<T> {
-        eval_clamped(self.dim(), self.domain(), t, |u| self.try_eval(u))
+    fn domain(&self) -> (T, T) {
+        BSplineCurve::domain(self)
     }
 
+    /// [`BSplineCurve::eval`]: the end pieces continue outside the domain.
+    fn eval(&self, t: T) -> DVector<T> {
+        BSplineCurve::eval(self, t)
+    }
+
+    fn try_eval(&self, t: T) -> Result<DVector<T>> {
+        BSplineCurve::try_eval(self, t)
+    }
+
+    /// The derivative curve's [`eval`](BSplineCurve::eval) (the derivative of the continued
+    /// piece outside the domain); `None` for degree 0.
     fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
-        let (lo, hi) = self.domain();
-        self.try_eval_derivative(clamp(t, &lo, &hi)).ok()
+        self.derivative().ok().map(|d| d.eval(t))
     }
 
     /// [`BSplineCurve::eval_many_into`]: span and basis per parameter, no allocation per point.

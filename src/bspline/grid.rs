@@ -4,10 +4,11 @@
 //! (surface rows) terms, with no allocation per point.
 //!
 //! Layouts are those of [`crate::grid`]. As the per-point [`Curve::eval`](crate::Curve::eval)
-//! and [`Surface::eval`](crate::Surface::eval) of these types do, a parameter outside the
-//! domain is clamped to it and a NaN parameter gives a point of NaNs.
+//! and [`Surface::eval`](crate::Surface::eval) of these types do, outside the domain the first
+//! or last polynomial piece continues and a NaN or infinite parameter gives a point of NaNs
+//! (written `t − t`, NaN for both).
 
-use super::basis::{basis_functions_into, clamp, last_span};
+use super::basis::{basis_functions_into, last_span};
 use crate::grid::{contract_row, for_each_row, weighted_sum_into};
 use crate::scalar::Scalar;
 
@@ -45,18 +46,24 @@ impl<'a, T: Scalar> SpanFinder<'a, T> {
         self.p
     }
 
-    /// The span of `t` clamped to the domain, with the clamped value; `None` for NaN.
-    /// `hint` is the span found last and is updated.
+    /// The span whose polynomial piece gives the point at `t` (the span
+    /// [`extended_span`](super::basis::extended_span) gives: outside the domain the first or
+    /// the last one), with `t`; `None` for NaN or ±∞. `hint` is the span found last and is
+    /// updated.
     #[inline]
     pub(crate) fn locate(&self, t: &T, hint: &mut usize) -> Option<(usize, T)> {
-        let u = clamp(t.clone(), &self.lo, &self.hi);
-        // After clamping (±∞ to the ends) only NaN is outside the domain.
-        if !u.is_finite_value() {
+        if !t.is_finite_value() {
             return None;
         }
-        let s = self.span(&u, *hint);
+        let s = if *t < self.lo {
+            self.span(&self.lo, *hint)
+        } else if *t > self.hi {
+            self.end_span
+        } else {
+            self.span(t, *hint)
+        };
         *hint = s;
-        Some((s, u))
+        Some((s, t.clone()))
     }
 
     /// The span of `u ∈ [u_p, u_n]`.
@@ -78,9 +85,9 @@ impl<'a, T: Scalar> SpanFinder<'a, T> {
     }
 }
 
-/// The spans and the non-zero basis values of all parameters `ts` (clamped to the domain):
+/// The spans and the non-zero basis values of all parameters `ts` (end pieces continued):
 /// `rows[a·(p+1) ..][..p+1]` holds `N_{s−p,p}(t_a), …, N_{s,p}(t_a)` and `spans[a]` its span
-/// `s` (`None`, and a row of zeros, for a NaN parameter). One allocation each, `O(len·p)`
+/// `s` (`None`, and a row of zeros, for a NaN or infinite parameter). One allocation each, `O(len·p)`
 /// memory, `O(p²)` operations per parameter.
 pub(crate) fn basis_rows<T: Scalar>(
     f: &SpanFinder<'_, T>,
@@ -109,8 +116,8 @@ struct CurveScratch<T> {
     hint: usize,
 }
 
-/// The points of a degree-`p` spline curve at all parameters `ts` (clamped to the domain; a
-/// NaN parameter gives a point of NaNs), written into `out` one after the other.
+/// The points of a degree-`p` spline curve at all parameters `ts` (end pieces continued; a
+/// NaN or infinite parameter gives a point of NaNs), written into `out` one after the other.
 ///
 /// `control` holds the `n` control points one after the other, `dh` numbers each (the
 /// column-major storage of a `dh × n` matrix). Each point is `Σ_j N_{s−p+j,p}(t) P_{s−p+j}`,
@@ -144,7 +151,7 @@ pub(crate) fn curve_points_into<T: Scalar>(
     };
     let point = |sc: &mut CurveScratch<T>, t: &T, x: &mut [T]| {
         let Some((s, u)) = finder.locate(t, &mut sc.hint) else {
-            x.iter_mut().for_each(|o| *o = t.clone());
+            x.iter_mut().for_each(|o| *o = t.clone() - t.clone());
             return;
         };
         basis_functions_into(p, knots, s, &u, &mut sc.basis, &mut sc.left, &mut sc.right);
@@ -178,7 +185,7 @@ pub(crate) fn curve_points_into<T: Scalar>(
                 |hint, block, chunk| {
                     for (t, x) in ts[block * BLOCK..].iter().zip(chunk.chunks_exact_mut(d)) {
                         let Some((s, u)) = finder.locate(t, hint) else {
-                            x.iter_mut().for_each(|o| *o = t.clone());
+                            x.iter_mut().for_each(|o| *o = t.clone() - t.clone());
                             continue;
                         };
                         let n = basis_fixed::<T, $n>(knots, s, &u);
@@ -289,7 +296,7 @@ pub(crate) struct Net<'a, T> {
     pub(crate) project: bool,
 }
 
-/// The surface on the grid `us × vs` (parameters clamped to the domain; a NaN parameter
+/// The surface on the grid `us × vs` (end pieces continued; a NaN or infinite parameter
 /// gives points of NaNs), written row by row into `out` (layout of [`crate::grid`], `dh − 1`
 /// numbers per point with `project`, else `dh`; `out.len()` must match).
 ///
@@ -330,7 +337,7 @@ pub(crate) fn surface_grid_into<T: Scalar>(s: &Net<'_, T>, us: &[T], vs: &[T], o
                 ),
                 None => {
                     for (x, v) in target[b0 * dh..b1 * dh].chunks_exact_mut(dh).zip(&vs[b0..]) {
-                        x.iter_mut().for_each(|o| *o = v.clone());
+                        x.iter_mut().for_each(|o| *o = v.clone() - v.clone());
                     }
                 }
             }
@@ -348,7 +355,8 @@ pub(crate) fn surface_grid_into<T: Scalar>(s: &Net<'_, T>, us: &[T], vs: &[T], o
     };
     for_each_row(out, vs.len() * d, work, init, |(coeffs, hrow), a, row| {
         let Some(span) = su[a] else {
-            row.iter_mut().for_each(|o| *o = us[a].clone());
+            row.iter_mut()
+                .for_each(|o| *o = us[a].clone() - us[a].clone());
             return;
         };
         let block = nv * dh;

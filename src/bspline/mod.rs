@@ -20,6 +20,5 @@ pub use knots::KnotVector;
 pub use surface::BSplineSurface;
 
 pub(crate) use basis::check_in_domain;
-pub(crate) use basis::clamp;
-pub(crate) use curve::eval_clamped;
 pub(crate) use grid::curve_points_into;
+pub(crate) use surface::nan_point;

@@ -5,7 +5,7 @@ use nalgebra::DVector;
 use super::gregory::GregoryTwist;
 use super::{push_gap, CoonsBoundary, Corner};
 use crate::error::{Error, Result};
-use crate::param::{Curve, Surface};
+use crate::param::{usable_domain, Curve, OnUnitInterval, Surface};
 use crate::scalar::Scalar;
 
 /// The cubic Hermite basis `[H0³, H1³, H2³, H3³](t)` of thesis §4.2–4.3, from the cubic
@@ -118,7 +118,17 @@ pub struct SurfacePartials<T: Scalar = f64> {
 ///     ⎣ x(1,0)    x_v(1,0)   x_v(1,1)   x(1,1)  ⎦
 /// ```
 ///
-/// with the Hermite basis of [`hermite_cubic`]. The positions in `M` are the corners of the
+/// with the Hermite basis of [`hermite_cubic`].
+///
+/// **Domains.** The patch is over `[0, 1]²`. The boundary curves are reparametrised onto
+/// `[0, 1]` as for every Coons patch ([`CoonsBoundary`]); so are the cross-boundary curves in
+/// their own parameter (`x_u(0, ·)` runs along `d1`, so it may share `d1`'s domain). Their
+/// *values* are derivatives with respect to the patch parameters `u, v ∈ [0, 1]` and are used
+/// as given; the boundary tangents they are checked against, `c1'(0)` etc., are those of the
+/// reparametrised boundary curves (`(b − a) c1'(a)` for `c1` on `[a, b]`), and Gregory's twist
+/// uses the derivatives of the reparametrised cross-boundary curves likewise.
+///
+/// The positions in `M` are the corners of the
 /// [`CoonsBoundary`]; `x_u(i, j)` is taken from the cross-boundary curve `x_u(i, ·)` at `v = j`
 /// and `x_v(i, j)` from `x_v(·, j)` at `u = i`. With that choice the patch interpolates the four
 /// boundary curves whatever the derivative data. It also interpolates the four cross-boundary
@@ -149,6 +159,8 @@ pub struct SurfacePartials<T: Scalar = f64> {
 pub struct BicubicCoonsPatch<C, D, T: Scalar = f64> {
     boundary: CoonsBoundary<C, T>,
     cross: CrossDerivatives<D>,
+    /// The domains of `du0, du1, dv0, dv1`, each a finite interval `a < b`.
+    cross_domains: [(T, T); 4],
     /// `x_u` at `P1..P4`.
     xu: [DVector<T>; 4],
     /// `x_v` at `P1..P4`.
@@ -162,6 +174,8 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
     ///
     /// # Errors
     /// - [`Error::ShapeMismatch`]: a cross-boundary curve or given twist of the wrong dimension;
+    /// - [`Error::UnusableDomain`]: a cross-boundary curve whose domain is not a finite
+    ///   interval `a < b` (it is reparametrised onto `[0, 1]` as the boundary curves are);
     /// - [`Error::NonFinite`]: non-finite derivative data at a corner;
     /// - [`Error::CornerMismatch`]: where a boundary curve provides its derivative, its tangent
     ///   at a corner disagrees with the cross-boundary curve there (e.g. `c1'(0)` against
@@ -198,25 +212,32 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
                 });
             }
         }
+        let cross_domains = [
+            usable_domain("cross-boundary curve x_u(0,v)", &cross.du0)?,
+            usable_domain("cross-boundary curve x_u(1,v)", &cross.du1)?,
+            usable_domain("cross-boundary curve x_v(u,0)", &cross.dv0)?,
+            usable_domain("cross-boundary curve x_v(u,1)", &cross.dv1)?,
+        ];
+        let [du0, du1, dv0, dv1] = unit_cross(&cross, &cross_domains);
         let (zero, one) = (T::zero(), T::one());
         let xu = [
-            cross.du0.eval(zero.clone()),
-            cross.du1.eval(zero.clone()),
-            cross.du0.eval(one.clone()),
-            cross.du1.eval(one.clone()),
+            du0.eval(zero.clone()),
+            du1.eval(zero.clone()),
+            du0.eval(one.clone()),
+            du1.eval(one.clone()),
         ];
         let xv = [
-            cross.dv0.eval(zero.clone()),
-            cross.dv0.eval(one.clone()),
-            cross.dv1.eval(zero.clone()),
-            cross.dv1.eval(one.clone()),
+            dv0.eval(zero.clone()),
+            dv0.eval(one.clone()),
+            dv1.eval(zero.clone()),
+            dv1.eval(one.clone()),
         ];
         for p in xu.iter().chain(xv.iter()) {
             check("cross-boundary derivative at a corner", p)?;
         }
 
         // Boundary tangents against the cross-boundary curves, where the tangents are known.
-        let (c1, c2, d1, d2) = boundary.curves();
+        let [c1, c2, d1, d2] = boundary.unit_curves();
         let tolerance = boundary.tolerance();
         type Pair<'a, T> = (
             Corner,
@@ -313,25 +334,26 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
                 TwistData::Constant(t)
             }
             Twist::Gregory => {
-                let deriv = |c: &D, what: &'static str, t: T| -> Result<DVector<T>> {
-                    let d = c
-                        .eval_derivative(t)
-                        .ok_or(Error::MissingDerivative { what })?;
-                    check(what, &d)?;
-                    Ok(d)
-                };
+                let deriv =
+                    |c: &OnUnitInterval<&D, T>, what: &'static str, t: T| -> Result<DVector<T>> {
+                        let d = c
+                            .eval_derivative(t)
+                            .ok_or(Error::MissingDerivative { what })?;
+                        check(what, &d)?;
+                        Ok(d)
+                    };
                 // a = ∂/∂v x_u(i, v) at v = j; b = ∂/∂u x_v(u, j) at u = i.
                 let along_v = [
-                    deriv(&cross.du0, "x_u(0,v)", zero.clone())?,
-                    deriv(&cross.du1, "x_u(1,v)", zero.clone())?,
-                    deriv(&cross.du0, "x_u(0,v)", one.clone())?,
-                    deriv(&cross.du1, "x_u(1,v)", one.clone())?,
+                    deriv(&du0, "x_u(0,v)", zero.clone())?,
+                    deriv(&du1, "x_u(1,v)", zero.clone())?,
+                    deriv(&du0, "x_u(0,v)", one.clone())?,
+                    deriv(&du1, "x_u(1,v)", one.clone())?,
                 ];
                 let along_u = [
-                    deriv(&cross.dv0, "x_v(u,0)", zero.clone())?,
-                    deriv(&cross.dv0, "x_v(u,0)", one.clone())?,
-                    deriv(&cross.dv1, "x_v(u,1)", zero.clone())?,
-                    deriv(&cross.dv1, "x_v(u,1)", one)?,
+                    deriv(&dv0, "x_v(u,0)", zero.clone())?,
+                    deriv(&dv0, "x_v(u,0)", one.clone())?,
+                    deriv(&dv1, "x_v(u,1)", zero.clone())?,
+                    deriv(&dv1, "x_v(u,1)", one)?,
                 ];
                 TwistData::Gregory(GregoryTwist::new(along_v, along_u))
             }
@@ -339,6 +361,7 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
         Ok(BicubicCoonsPatch {
             boundary,
             cross,
+            cross_domains,
             xu,
             xv,
             twist,
@@ -390,23 +413,31 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
 
     /// The curve values `[c1(u), x_v(u,0), x_v(u,1), c2(u)]` and `[d1(v), x_u(0,v), x_u(1,v), d2(v)]`.
     fn values_at_u(&self, u: &T) -> [DVector<T>; 4] {
-        let (c1, c2, _, _) = self.boundary.curves();
+        let [c1, c2, _, _] = self.boundary.unit_curves();
+        let [_, _, dv0, dv1] = self.unit_cross();
         [
             c1.eval(u.clone()),
-            self.cross.dv0.eval(u.clone()),
-            self.cross.dv1.eval(u.clone()),
+            dv0.eval(u.clone()),
+            dv1.eval(u.clone()),
             c2.eval(u.clone()),
         ]
     }
 
     fn values_at_v(&self, v: &T) -> [DVector<T>; 4] {
-        let (_, _, d1, d2) = self.boundary.curves();
+        let [_, _, d1, d2] = self.boundary.unit_curves();
+        let [du0, du1, _, _] = self.unit_cross();
         [
             d1.eval(v.clone()),
-            self.cross.du0.eval(v.clone()),
-            self.cross.du1.eval(v.clone()),
+            du0.eval(v.clone()),
+            du1.eval(v.clone()),
             d2.eval(v.clone()),
         ]
+    }
+
+    /// The cross-boundary curves `[x_u(0,·), x_u(1,·), x_v(·,0), x_v(·,1)]` reparametrised onto
+    /// `[0, 1]`.
+    fn unit_cross(&self) -> [OnUnitInterval<&D, T>; 4] {
+        unit_cross(&self.cross, &self.cross_domains)
     }
 
     /// `x(u, v)` with its first partial derivatives `x_u`, `x_v`, in closed form (the Gregory
@@ -416,7 +447,8 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
     /// [`Error::MissingDerivative`] if a boundary or cross-boundary curve provides no
     /// derivative.
     pub fn eval_partials(&self, u: T, v: T) -> Result<SurfacePartials<T>> {
-        let (c1, c2, d1, d2) = self.boundary.curves();
+        let [c1, c2, d1, d2] = self.boundary.unit_curves();
+        let [du0, du1, dv0, dv1] = self.unit_cross();
         let deriv = |c: &dyn Fn(T) -> Option<DVector<T>>, what: &'static str, t: &T| {
             c(t.clone()).ok_or(Error::MissingDerivative { what })
         };
@@ -424,14 +456,14 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
         let at_v = self.values_at_v(&v);
         let at_u_d = [
             deriv(&|t| c1.eval_derivative(t), "c1", &u)?,
-            deriv(&|t| self.cross.dv0.eval_derivative(t), "x_v(u,0)", &u)?,
-            deriv(&|t| self.cross.dv1.eval_derivative(t), "x_v(u,1)", &u)?,
+            deriv(&|t| dv0.eval_derivative(t), "x_v(u,0)", &u)?,
+            deriv(&|t| dv1.eval_derivative(t), "x_v(u,1)", &u)?,
             deriv(&|t| c2.eval_derivative(t), "c2", &u)?,
         ];
         let at_v_d = [
             deriv(&|t| d1.eval_derivative(t), "d1", &v)?,
-            deriv(&|t| self.cross.du0.eval_derivative(t), "x_u(0,v)", &v)?,
-            deriv(&|t| self.cross.du1.eval_derivative(t), "x_u(1,v)", &v)?,
+            deriv(&|t| du0.eval_derivative(t), "x_u(0,v)", &v)?,
+            deriv(&|t| du1.eval_derivative(t), "x_u(1,v)", &v)?,
             deriv(&|t| d2.eval_derivative(t), "d2", &v)?,
         ];
         let hu = hermite_cubic(&u);
@@ -502,6 +534,16 @@ impl<T: Scalar, C, D> BicubicCoonsPatch<C, D, T> {
     }
 }
 
+/// The cross-boundary curves `[du0, du1, dv0, dv1]` on their checked domains, reparametrised
+/// onto `[0, 1]`.
+fn unit_cross<'a, T: Scalar, D>(
+    cross: &'a CrossDerivatives<D>,
+    domains: &[(T, T); 4],
+) -> [OnUnitInterval<&'a D, T>; 4] {
+    let curves = [&cross.du0, &cross.du1, &cross.dv0, &cross.dv1];
+    [0, 1, 2, 3].map(|k| OnUnitInterval::from_checked(curves[k], domains[k].clone()))
+}
+
 /// `Σ_i h[i] · values[i][k]`.
 fn dot<T: Scalar>(h: &[T; 4], values: &[DVector<T>; 4], k: usize) -> T {
     h.iter()
@@ -512,6 +554,11 @@ fn dot<T: Scalar>(h: &[T; 4], values: &[DVector<T>; 4], k: usize) -> T {
 impl<T: Scalar, C: Curve<T>, D: Curve<T>> Surface<T> for BicubicCoonsPatch<C, D, T> {
     fn dim(&self) -> usize {
         self.boundary.dim()
+    }
+
+    /// `[0, 1]²`.
+    fn domain(&self) -> ((T, T), (T, T)) {
+        ((T::zero(), T::one()), (T::zero(), T::one()))
     }
 
     fn eval(&self, u: T, v: T) -> DVector<T> {

@@ -261,6 +261,11 @@ impl<T: Scalar, C: Curve<T>> Surface<T> for GeneralizedCoonsPatch<C, T> {
         self.boundary.dim()
     }
 
+    /// `[0, 1]²` (the boundary curves reparametrised onto `[0, 1]`).
+    fn domain(&self) -> ((T, T), (T, T)) {
+        ((T::zero(), T::one()), (T::zero(), T::one()))
+    }
+
     fn eval(&self, u: T, v: T) -> DVector<T> {
         self.eval_parts(u, v).x
     }

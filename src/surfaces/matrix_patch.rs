@@ -88,6 +88,11 @@ impl<T: Scalar> Surface<T> for CubicMatrixPatch<T> {
         self.coords.len()
     }
 
+    /// `[0, 1]²` (the bicubic continues outside it).
+    fn domain(&self) -> ((T, T), (T, T)) {
+        ((T::zero(), T::one()), (T::zero(), T::one()))
+    }
+
     fn eval(&self, u: T, v: T) -> DVector<T> {
         let fu = form_basis(self.form, &u);
         let fv = form_basis(self.form, &v);

@@ -198,6 +198,9 @@ impl Curve<f64> for Counting {
     fn dim(&self) -> usize {
         self.inner.dim()
     }
+    fn domain(&self) -> (f64, f64) {
+        self.inner.domain()
+    }
     fn eval(&self, t: f64) -> DVector<f64> {
         self.calls.set(self.calls.get() + 1);
         self.inner.eval(t)

@@ -7,6 +7,8 @@ mod coons;
 mod course_errors;
 mod course_examples;
 mod course_octave;
+mod domain;
+mod examples;
 mod gordon;
 mod grid_eval;
 mod layers;

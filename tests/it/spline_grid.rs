@@ -8,7 +8,7 @@
 //! clamped and unclamped knot vectors, parameters at every knot, at and beyond both ends of
 //! the domain, NaN and ±∞, sorted and shuffled.
 
-use cagd::bspline::{BSplineCurve, BSplineSurface};
+use cagd::bspline::{basis_functions, find_span, BSplineCurve, BSplineSurface};
 use cagd::nurbs::{NurbsCurve, NurbsSurface};
 use cagd::spline::{CubicSpline, EndCondition};
 use cagd::{Curve, Error, Scalar, Surface};
@@ -100,14 +100,15 @@ fn check_curve_bits<C: Curve>(what: &str, c: &C, ts: &[f64]) {
     }
 }
 
-/// The largest difference between a grid and `eval`, in units of `ε · scale`; NaN must match.
+/// The largest difference between a grid and `eval`, in units of `ε · scale(u, v, eval)`;
+/// NaN must match.
 fn grid_error<S: Surface>(
     what: &str,
     s: &S,
     us: &[f64],
     vs: &[f64],
     out: &[f64],
-    scale: f64,
+    scale: impl Fn(f64, f64, &DVector<f64>) -> f64,
 ) -> f64 {
     let d = s.dim();
     let mut worst: f64 = 0.0;
@@ -124,11 +125,22 @@ fn grid_error<S: Surface>(
                     );
                     continue;
                 }
-                worst = worst.max((x[k] - e[k]).abs() / (f64::EPSILON * scale));
+                worst = worst.max((x[k] - e[k]).abs() / (f64::EPSILON * scale(*u, *v, &e)));
             }
         }
     }
     worst
+}
+
+/// `Σ_i |N_{i,p}(t)|` over the piece that gives the point at `t`: 1 in the domain (the basis
+/// is non-negative and sums to one there), more where an end piece is continued beyond it.
+fn basis_magnitude(p: usize, knots: &[f64], t: f64) -> f64 {
+    let n = knots.len() - p - 1;
+    let s = find_span(p, n, knots, &t.clamp(knots[p], knots[n])).unwrap();
+    basis_functions(p, knots, s, &t)
+        .iter()
+        .map(|x| x.abs())
+        .sum()
 }
 
 fn random_control(rng: &mut Lcg, d: usize, n: usize) -> DMatrix<f64> {
@@ -188,17 +200,23 @@ fn inherent_eval_many_is_try_eval_and_refuses_parameters_outside_the_domain() {
             c.try_eval_many_into(&us, &mut out).unwrap_err(),
             r.try_eval_many_into(&us, &mut out).unwrap_err(),
         ] {
-            assert!(
-                matches!(
-                    err,
-                    Error::ParameterOutOfRange {
-                        min: 0.0,
-                        max: 1.0,
-                        ..
-                    }
-                ),
-                "{bad}: {err:?}"
-            );
+            // Finite parameters outside the domain are out of range; NaN and ±∞ are refused
+            // as non-finite (the rule of cagd::param).
+            if bad.is_finite() {
+                assert!(
+                    matches!(
+                        err,
+                        Error::ParameterOutOfRange {
+                            min: 0.0,
+                            max: 1.0,
+                            ..
+                        }
+                    ),
+                    "{bad}: {err:?}"
+                );
+            } else {
+                assert!(matches!(err, Error::NonFinite { .. }), "{bad}: {err:?}");
+            }
         }
         assert_eq!(out, vec![7.0; 9], "nothing is written on error");
     }
@@ -244,7 +262,18 @@ fn bspline_and_nurbs_surface_grids_agree_with_eval() {
             let mut out = vec![f64::NAN; us.len() * vs.len() * d];
             s.eval_grid_into(&us, &vs, &mut out).unwrap();
             let what = format!("B-spline ({p},{q}) d={d}");
-            let err = grid_error(&what, &s, &us, &vs, &out, scale);
+            let inside = |u: f64, v: f64| (a..=b).contains(&u) && (c..=e).contains(&v);
+            // Beyond the domain the end pieces continue; their basis values are no longer a
+            // partition of unity, and the error grows with Σ|N_i(u)| · Σ|N_j(v)|.
+            let magnitude =
+                |u: f64, v: f64| basis_magnitude(p, &ku, u) * basis_magnitude(q, &kv, v);
+            let err = grid_error(&what, &s, &us, &vs, &out, |u, v, _| {
+                if inside(u, v) {
+                    scale
+                } else {
+                    scale * magnitude(u, v)
+                }
+            });
             // Non-negative weights summing to one in both directions.
             assert!(err <= 2.0 * (p + q + 2) as f64, "{what}: {err} ε·scale");
             worst_b = worst_b.max(err);
@@ -258,11 +287,29 @@ fn bspline_and_nurbs_surface_grids_agree_with_eval() {
             // NURBS: weights in [0.5, 2]; the homogeneous error ~ ε·max|w P| is divided by a
             // weight ≥ 0.5.
             let w = DMatrix::from_fn(nu, nv, |_, _| 0.5 + 1.5 * rng.next());
-            let r = NurbsSurface::new(p, q, ku, kv, coords, w).unwrap();
+            let r = NurbsSurface::new(p, q, ku.clone(), kv.clone(), coords, w.clone()).unwrap();
             let mut out = vec![f64::NAN; us.len() * vs.len() * d];
             r.eval_grid_into(&us, &vs, &mut out).unwrap();
             let what = format!("NURBS ({p},{q}) d={d}");
-            let err = grid_error(&what, &r, &us, &vs, &out, scale);
+            // Beyond the domain: the homogeneous sums err by 2(p+q+2) ε Σ|N|Σ|N| max|wP| (and
+            // max|w| for the weight), and dividing by the weight h_w(u, v) — no longer at least
+            // min w there — amplifies that to (max|wP| + |x| max|w|) / |h_w|.
+            let max_wp = r
+                .homogeneous()
+                .coordinates()
+                .iter()
+                .take(d)
+                .map(|c| c.amax())
+                .fold(0.0, f64::max);
+            let max_w = w.amax();
+            let err = grid_error(&what, &r, &us, &vs, &out, |u, v, x| {
+                if inside(u, v) {
+                    scale
+                } else {
+                    let h = r.homogeneous().eval(u, v);
+                    magnitude(u, v) * (max_wp + x.amax() * max_w) / (8.0 * h[d].abs())
+                }
+            });
             assert!(err <= 16.0 * (p + q + 2) as f64, "{what}: {err} ε·scale");
             worst_n = worst_n.max(err);
             let g = Surface::eval_grid(&r, &us, &vs);
@@ -318,7 +365,14 @@ fn large_batches_on_threads_agree_with_eval() {
         s.eval_grid_into(&us[a..a + 1], &vs, &mut row).unwrap();
         assert_eq!(&out[a * vs.len() * 3..(a + 1) * vs.len() * 3], &row[..]);
     }
-    let err = grid_error("large surface", &s, &us[..20], &vs, &out[..20 * 3000], 1.0);
+    let err = grid_error(
+        "large surface",
+        &s,
+        &us[..20],
+        &vs,
+        &out[..20 * 3000],
+        |_, _, _| 1.0,
+    );
     assert!(err <= 20.0, "{err}");
 }
 

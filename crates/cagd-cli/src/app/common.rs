@@ -237,7 +237,9 @@ impl<T: LiteralScalar> CurveSource<T> {
                 let m = e
                     .sample_curve(env, p, at)
                     .map_err(|e| CliError::literal(argument, e, CURVE_FORM))?;
+                // An expression is a curve on [0, 1], sampled also where the grid reaches beyond.
                 SampledCurve::new(at.to_vec(), m)
+                    .and_then(|c| c.with_domain(T::zero(), T::one()))
                     .map(CliCurve::Sampled)
                     .map_err(lib(argument, CURVE_ARG_FORM))
             }

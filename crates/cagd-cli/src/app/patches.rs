@@ -311,7 +311,8 @@ fn coons_outcome<T: LiteralScalar, C: Curve<T>, S: Surface<T>>(
     finish(report, output, files, warnings)
 }
 
-/// The picture of appendix C: the surface, c1 and c2 in red, d1 and d2 in green.
+/// The picture of appendix C: the surface, c1 and c2 in red, d1 and d2 in green. Each curve
+/// is drawn as the patch uses it: its domain `[a, b]` mapped onto the grid's `[0, 1]`.
 pub fn coons_figure<T: LiteralScalar, C: Curve<T>>(
     title: &str,
     grid: PointGrid<f64>,
@@ -319,12 +320,20 @@ pub fn coons_figure<T: LiteralScalar, C: Curve<T>>(
     us: &[T],
     vs: &[T],
 ) -> Figure {
+    let along = |c: &C, ts: &[T]| {
+        let (a, b) = c.domain();
+        let own: Vec<T> = ts
+            .iter()
+            .map(|s| a.clone() + (b.clone() - a.clone()) * s.clone())
+            .collect();
+        to_f64(&sample(c, &own))
+    };
     Figure::new(title)
         .surface(grid, "x(u,v)")
-        .boundary(to_f64(&sample(c1, us)), Colour::Red, "c1, c2")
-        .boundary(to_f64(&sample(c2, us)), Colour::Red, "")
-        .boundary(to_f64(&sample(d1, vs)), Colour::Green, "d1, d2")
-        .boundary(to_f64(&sample(d2, vs)), Colour::Green, "")
+        .boundary(along(c1, us), Colour::Red, "c1, c2")
+        .boundary(along(c2, us), Colour::Red, "")
+        .boundary(along(d1, vs), Colour::Green, "d1, d2")
+        .boundary(along(d2, vs), Colour::Green, "")
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

@@ -102,7 +102,7 @@ fn expr(text: &str) -> Result<ParamExpr, CliError> {
     ParamExpr::parse(text).map_err(|e| CliError::literal("thesis", e, "a valid built-in example"))
 }
 
-/// An expression curve sampled exactly where it is needed.
+/// An expression curve on `[0, 1]` sampled exactly where it is needed.
 fn expr_curve<T: LiteralScalar>(
     text: &str,
     param: &str,
@@ -111,7 +111,9 @@ fn expr_curve<T: LiteralScalar>(
     let m = expr(text)?
         .sample_curve(&mut Env::new(), param, at)
         .map_err(|e| CliError::literal("thesis", e, "a valid built-in example"))?;
-    SampledCurve::new(at.to_vec(), m).map_err(lib("thesis", "a valid built-in example"))
+    SampledCurve::new(at.to_vec(), m)
+        .and_then(|c| c.with_domain(T::zero(), T::one()))
+        .map_err(lib("thesis", "a valid built-in example"))
 }
 
 const INTERNAL: &str = "a valid built-in example";

@@ -683,6 +683,27 @@ fn coons_point_script_and_bezier_boundaries() {
 }
 
 #[test]
+fn coons_expression_boundaries_keep_their_domain_beyond_the_unit_square() {
+    // Primer 4.3's expressions at u = 3/2: the samples reach 3/2, but the expressions' domain
+    // stays [0, 1] (a sampled expression is not reparametrised onto its sample range). From the
+    // closed forms: r_c = (3/2, 1/2, 3/8), r_d = (3/2, 5/8, 5/8), r_cd = (3/2, 1/2, 3/4).
+    let out = ok(&[
+        "coons",
+        "--script",
+        "tests/data/appendix_c_point.m",
+        "--u",
+        "1.5",
+        "--v",
+        "0.5",
+        "--exact",
+    ]);
+    assert!(
+        out.ends_with("result =\n\n    3/2\n    5/8\n    1/4\n\n"),
+        "{out}"
+    );
+}
+
+#[test]
 fn coons_bicubic_flat_square() {
     let args = [&["coons-bicubic"][..], &FLAT_SQUARE, &FLAT_SQUARE_CROSS].concat();
     insta::assert_snapshot!(ok(&with(&args, &["--n", "3", "--exact"])));

@@ -156,7 +156,8 @@ pub fn krpa_gordon(
 
 /// A network curve known by its samples at `t` and its crossings at the nodes: a
 /// [`SampledCurve`] through both, the crossings added where a node is not a sample parameter
-/// (where it is, the sample stays, and the network check compares it with the crossing).
+/// (where it is, the sample stays, and the network check compares it with the crossing). Its
+/// domain is that of the samples, `[t_0, t_last]`, also when a node lies outside it.
 fn sampled_with_crossings(
     t: &[f64],
     samples: &ArrayView2<'_, f64>,
@@ -180,7 +181,7 @@ fn sampled_with_crossings(
     points.sort_by(|a, b| a.0.total_cmp(&b.0));
     let params = points.iter().map(|(s, _)| *s).collect();
     let columns: Vec<DVector<f64>> = points.into_iter().map(|(_, p)| p).collect();
-    SampledCurve::new(params, DMatrix::from_columns(&columns))
+    SampledCurve::new(params, DMatrix::from_columns(&columns))?.with_domain(t[0], t[t.len() - 1])
 }
 
 #[cfg(test)]

@@ -12,7 +12,7 @@
 //! |---|---|---|
 //! | `deCasteljau(kontrolneT, N)` (A, Alg. 1) | [`de_casteljau`] | [`BezierCurve::eval_many`](cagd::bezier::BezierCurve::eval_many) |
 //! | `ploskevB(kontrolneT, N)` (B, Alg. 2) | [`ploskev_b`] | [`BezierPatch::eval`](cagd::bezier::BezierPatch::eval) on the grid |
-//! | `bilinearna(B, u, v, N)` (B, Alg. 3) | [`bilinearna`] | [`BezierPatch::try_eval`](cagd::bezier::BezierPatch::try_eval) |
+//! | `bilinearna(B, u, v, N)` (B, Alg. 3) | [`bilinearna`] | [`BezierPatch::eval`](cagd::bezier::BezierPatch::eval) |
 //! | `tenzor(B)` (B, Alg. 4) | [`tenzor`] (inverse: [`untenzor`]) | a layout conversion |
 //! | `krpaCoons(c1,c2,d1,d2,P1,P2,P3,P4)` (C, Alg. 5) | [`krpa_coons`] | [`CoonsPatch`](cagd::coons::CoonsPatch) on [`SampledCurve`](cagd::param::SampledCurve)s |
 //! | `vrednostCoons(u,v,c1,c2,d1,d2,P1,P2,P3,P4)` (C, Alg. 6) | [`vrednost_coons`] | [`CoonsPatch::eval_parts`](cagd::coons::CoonsPatch::eval_parts) |
