@@ -28,7 +28,12 @@ fn main() {
         );
         std::process::exit(1);
     }));
-    let code = match cagd_cli::run(std::env::args_os()).and_then(finish) {
+    let args: Vec<_> = std::env::args_os().collect();
+    let result = match cagd_cli::serve_request(args.iter().cloned()) {
+        Some(serve) => cagd_cli::serve::serve(&serve),
+        None => cagd_cli::run(args).and_then(finish),
+    };
+    let code = match result {
         Ok(()) => 0,
         Err(e) => {
             let _ = writeln!(std::io::stderr(), "cagd: error: {e}");

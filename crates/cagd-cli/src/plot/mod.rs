@@ -42,14 +42,27 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 /// The font embedded for text in pictures.
+#[cfg(not(target_arch = "wasm32"))]
 static FONT: &[u8] = include_bytes!("../../assets/DejaVuSans.ttf");
 static REGISTER_FONT: Once = Once::new();
 const FAMILY: &str = "sans-serif";
 
+/// The picture formats this build draws, by file extension: SVG and PNG natively; in the
+/// browser (wasm32) SVG only, since there plotters lays text out with the page's own fonts and
+/// cannot draw it into pixels.
+#[cfg(not(target_arch = "wasm32"))]
+pub const PICTURE_EXTENSIONS: &[&str] = &["svg", "png"];
+/// The picture formats this build draws, by file extension: SVG and PNG natively; in the
+/// browser (wasm32) SVG only, since there plotters lays text out with the page's own fonts and
+/// cannot draw it into pixels.
+#[cfg(target_arch = "wasm32")]
+pub const PICTURE_EXTENSIONS: &[&str] = &["svg"];
+
 fn register_font() {
     REGISTER_FONT.call_once(|| {
         // The embedded font is a valid TrueType file; should registration ever fail, text is
-        // simply not drawn.
+        // simply not drawn. (In the browser plotters measures text with the page's fonts.)
+        #[cfg(not(target_arch = "wasm32"))]
         let _ = plotters::style::register_font(FAMILY, FontStyle::Normal, FONT);
     });
 }
@@ -377,6 +390,12 @@ impl Figure {
                 }
                 Ok(svg.into_bytes())
             }
+            #[cfg(target_arch = "wasm32")]
+            ImageKind::Png => Err(PlotError::Drawing(
+                "PNG pictures are drawn by the cagd program only; in the browser, name the picture .svg"
+                    .into(),
+            )),
+            #[cfg(not(target_arch = "wasm32"))]
             ImageKind::Png => {
                 let mut rgb = vec![0u8; w as usize * h as usize * 3];
                 {
@@ -830,6 +849,7 @@ fn drawing<E: std::fmt::Debug>(e: E) -> PlotError {
     PlotError::Drawing(format!("{e:?}"))
 }
 
+#[cfg(not(target_arch = "wasm32"))]
 fn encode_png(rgb: &[u8], width: u32, height: u32) -> Result<Vec<u8>, PlotError> {
     let mut out = Vec::new();
     {
