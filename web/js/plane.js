@@ -14,7 +14,8 @@ export function el(name, attrs = {}, parent = null) {
 /** Shortest text of a number, without binary noise such as 0.30000000000000004. */
 export function num(x) {
   if (Object.is(x, -0) || Math.abs(x) < 1e-12) return "0";
-  return String(Number(x.toPrecision(12)));
+  const short = Number(x.toPrecision(12));
+  return Math.abs(short - x) <= 1e-15 * Math.abs(x) ? String(short) : String(x);
 }
 
 export class Plane {
@@ -121,7 +122,8 @@ export class Plane {
         if (!d) return;
         e.preventDefault();
         const [px, py] = [Number(c.getAttribute("cx")), -Number(c.getAttribute("cy"))];
-        onMove(i, [Number((px + d[0]).toFixed(6)), Number((py + d[1]).toFixed(6))]);
+        const q = [px + d[0], py + d[1]].map((x) => (e.shiftKey ? x : this.snapped(x)));
+        onMove(i, q.map((x) => Number(x.toFixed(6))));
         if (this.hooks.onDragEnd) this.hooks.onDragEnd();
       });
     });

@@ -167,7 +167,8 @@ export class View3D {
         ctx.closePath();
         ctx.fillStyle = viridis((z - zlo) / (zhi - zlo || 1));
         ctx.fill();
-        if (nu * nv <= 4000) ctx.stroke();
+        // Cell edges double the drawing work; fine grids read well without them.
+        if (nu * nv <= 900) ctx.stroke();
       }
     }
     for (const c of this.scene.curves) {

@@ -78,7 +78,15 @@ export async function openPage(context, url, hash = "") {
     if (m.type() === "error") errors.push(m.text());
   });
   await page.goto(url + hash);
-  await page.waitForFunction(() => document.documentElement.dataset.firstAnswerMs !== undefined || !!window.cagdApp?.current && window.cagdApp.current !== "command", null, { timeout: 30000 });
+  await page.waitForFunction(
+    () => {
+      const app = window.cagdApp;
+      if (!app?.current) return false;
+      return app.current === "command" ? document.documentElement.dataset.firstAnswerMs !== undefined : !!app.views[app.current];
+    },
+    null,
+    { timeout: 30000 },
+  );
   page.errors = errors;
   return page;
 }
