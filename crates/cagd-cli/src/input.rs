@@ -39,6 +39,46 @@ pub const PARAMS_FORM: &str =
 /// The form of a curve expression, for error messages.
 pub const CURVE_FORM: &str = "an expression in the curve parameter such as \"[u; 0; u-u^2]\"";
 
+thread_local! {
+    /// Files given in memory by [`with_input_files`], by name.
+    static INPUT_FILES: std::cell::RefCell<Vec<(String, String)>> =
+        const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// Runs `f` (typically [`crate::run`]) with `files` (name, contents) readable as input files
+/// of that name, before the file system: so the web page, which has no file system, passes a
+/// data script typed into the page as `--script data.m`. Only on the calling thread, and only
+/// while `f` runs.
+///
+/// ```
+/// let files = vec![("data.m".to_string(), "B = [0 0; 1 2]';".to_string())];
+/// let out = cagd_cli::with_input_files(files, || cagd_cli::run(["cagd", "script", "data.m"]));
+/// assert!(out.unwrap().stdout.contains("B ="));
+/// ```
+pub fn with_input_files<R>(files: Vec<(String, String)>, f: impl FnOnce() -> R) -> R {
+    let previous = INPUT_FILES.with(|cell| cell.replace(files));
+    let result = f();
+    INPUT_FILES.with(|cell| cell.replace(previous));
+    result
+}
+
+fn input_file(path: &str) -> Option<String> {
+    INPUT_FILES.with(|cell| {
+        cell.borrow()
+            .iter()
+            .find(|(name, _)| name == path)
+            .map(|(_, text)| text.clone())
+    })
+}
+
+/// Whether `path` names an input file: one given to [`with_input_files`], or something on
+/// disk to read as a file: a regular file, or a named pipe, a device or `/dev/stdin` (anything
+/// that exists and is not a folder), so that `<(command)` and FIFOs are read rather than
+/// reported missing.
+pub(crate) fn is_file(path: &str) -> bool {
+    input_file(path).is_some() || std::fs::metadata(path).is_ok_and(|m| !m.is_dir())
+}
+
 /// Reads a file (or standard input for `-`) as text, with the size limit.
 pub fn read_text(limits: &Limits, argument: &str, path: &str) -> Result<String, CliError> {
     let limit = limits.max_input_bytes;
@@ -50,7 +90,10 @@ pub fn read_text(limits: &Limits, argument: &str, path: &str) -> Result<String, 
     let form = format!("a readable UTF-8 text file (at most {size}), or - for standard input");
     let form = form.as_str();
     let mut bytes = Vec::new();
-    let result = if path == "-" {
+    let result = if let Some(text) = input_file(path) {
+        bytes = text.into_bytes();
+        Ok(bytes.len())
+    } else if path == "-" {
         std::io::stdin()
             .lock()
             .take(limit.saturating_add(1))
@@ -91,13 +134,6 @@ fn looks_like_path(text: &str) -> bool {
         || text.contains('/') && !text.starts_with(|c: char| c.is_ascii_digit())
 }
 
-/// Whether `path` names something to read as a file: a regular file, or a named pipe, a
-/// device or `/dev/stdin` (anything that exists and is not a folder), so that
-/// `<(command)` and FIFOs are read rather than reported missing.
-pub(crate) fn is_input_file(path: &str) -> bool {
-    std::fs::metadata(path).is_ok_and(|m| !m.is_dir())
-}
-
 /// Whether a text file is in Octave's `save -text` format.
 fn is_octave_text(text: &str) -> bool {
     text.lines()
@@ -131,7 +167,7 @@ pub fn load_matrix<T: LiteralScalar>(
             return parse_data_text_variable(limits, &shown, &contents, Some(variable));
         }
     }
-    if trimmed == "-" || (!is_variable && !trimmed.starts_with('[') && is_input_file(trimmed)) {
+    if trimmed == "-" || (!is_variable && !trimmed.starts_with('[') && is_file(trimmed)) {
         let contents = read_text(limits, argument, trimmed)?;
         let shown = if trimmed == "-" {
             argument.to_string()
@@ -209,7 +245,7 @@ fn split_variable(text: &str) -> Option<(&str, &str)> {
     let (path, name) = text.rsplit_once(':')?;
     let valid = name.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
         && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
-    (valid && is_input_file(path)).then_some((path, name))
+    (valid && is_file(path)).then_some((path, name))
 }
 
 /// The form of an Octave text file argument, for error messages.
@@ -358,7 +394,7 @@ pub fn load_net<T: LiteralScalar>(
         None
     } else if let Some((path, variable)) = split_variable(trimmed) {
         Some((path, Some(variable)))
-    } else if trimmed != "-" && is_input_file(trimmed) {
+    } else if trimmed != "-" && is_file(trimmed) {
         Some((trimmed, None))
     } else {
         None

@@ -33,15 +33,20 @@ fn main() {
     let command = std::thread::Builder::new()
         .name("cagd".into())
         .stack_size(cagd_cli::limits::COMMAND_STACK_BYTES)
-        .spawn(
-            || match cagd_cli::run(std::env::args_os()).and_then(finish) {
+        .spawn(|| {
+            let args: Vec<_> = std::env::args_os().collect();
+            let result = match cagd_cli::serve_request(args.iter().cloned()) {
+                Some(serve) => cagd_cli::serve::serve(&serve),
+                None => cagd_cli::run(args).and_then(finish),
+            };
+            match result {
                 Ok(()) => 0,
                 Err(e) => {
                     let _ = writeln!(std::io::stderr(), "cagd: error: {e}");
                     e.exit_code()
                 }
-            },
-        );
+            }
+        });
     let code = match command.map(|c| c.join()) {
         Ok(Ok(code)) => code,
         // A panic has already been reported (and exited) by the hook.

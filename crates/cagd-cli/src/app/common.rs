@@ -147,9 +147,9 @@ pub enum CurveSource<T: LiteralScalar> {
 fn is_file_arg(text: &str) -> bool {
     let t = text.trim();
     t == "-"
-        || crate::input::is_input_file(t)
+        || crate::input::is_file(t)
         || t.rsplit_once(':')
-            .is_some_and(|(p, _)| !p.is_empty() && crate::input::is_input_file(p))
+            .is_some_and(|(p, _)| !p.is_empty() && crate::input::is_file(p))
 }
 
 /// Loads a curve argument: a data file or a constant matrix gives Bézier control points; an

@@ -208,6 +208,17 @@ Examples:
   cagd surface \"[u; v; u.*v]\" --n 3
   cagd surface \"[u; v; u-u^2+v]\" --n 20 --plot patch.png --mesh patch.stl")]
     Surface(SurfaceCommand),
+    /// Serve the web page (every construction, in the browser) on localhost.
+    #[command(after_help = "\
+Serves the page built by `bash web/build.sh` (web/dist/) on http://127.0.0.1:P/ until stopped
+with Ctrl-C; the page computes in the browser, the server only hands out its files. A link
+such as http://127.0.0.1:8000/#cmd=cagd%20bernstein%20--degree%203%20--t%200.5 opens the page
+with that command run.
+
+Examples:
+  cagd serve
+  cagd serve --port 8080 --dir web/dist")]
+    Serve(crate::serve::ServeCommand),
     /// Run a thesis-style Octave data script and print the variables it defines.
     #[command(after_help = "\
 Scripts may contain assignments, indexed assignments x(i) = ..., for loops, comments and
@@ -323,6 +334,7 @@ impl Command {
             Command::Curve(_) => ("curve", "EXPR"),
             Command::Surface(_) => ("surface", "EXPR"),
             Command::Script(_) => ("script", "FILE"),
+            Command::Serve(_) => ("serve", "--dir"),
         }
     }
 }
@@ -364,6 +376,28 @@ fn dispatch(limits: &Limits, command: &Command) -> Result<Outcome, CliError> {
         Command::Bspline(c) => course::bspline::<f64>(limits, c),
         Command::Nurbs(c) if c.output.exact => course::nurbs::<BigRational>(limits, c),
         Command::Nurbs(c) => course::nurbs::<f64>(limits, c),
+        Command::Serve(_) => Err(CliError::new(
+            "serve",
+            "serving the page is done by the cagd program itself, not in-process",
+            "`cagd serve` typed in a terminal",
+            ErrorKind::Unsupported,
+        )),
+    }
+}
+
+/// The `serve` subcommand, if `args` (the program name first) ask for it and parse; anything
+/// else, including errors and `--help`, is left to [`run`].
+pub fn serve_request<I, A>(args: I) -> Option<crate::serve::ServeCommand>
+where
+    I: IntoIterator<Item = A>,
+    A: Into<OsString> + Clone,
+{
+    match Cli::try_parse_from(args) {
+        Ok(Cli {
+            command: Command::Serve(c),
+            ..
+        }) => Some(c),
+        _ => None,
     }
 }
 

@@ -80,7 +80,7 @@ struct Files<'a> {
 
 impl Files<'_> {
     fn picture(&mut self, name: &str, figure: &Figure) -> Result<(), CliError> {
-        for ext in ["svg", "png"] {
+        for ext in crate::plot::PICTURE_EXTENSIONS {
             let file = format!("{name}.{ext}");
             add_plot(&mut self.pending, "--out", &self.dir.join(&file), figure)?;
             self.written.push(file);

@@ -36,6 +36,17 @@
 /// could overflow the range of doubles; no geometry a picture can show needs more.
 pub const MAX_COORDINATE: f64 = 1e100;
 
+/// The picture formats this build draws, by file extension: SVG and PNG natively; in the
+/// browser (wasm32) SVG only, since there plotters lays text out with the page's own fonts and
+/// cannot draw it into pixels.
+#[cfg(not(target_arch = "wasm32"))]
+pub const PICTURE_EXTENSIONS: &[&str] = &["svg", "png"];
+/// The picture formats this build draws, by file extension: SVG and PNG natively; in the
+/// browser (wasm32) SVG only, since there plotters lays text out with the page's own fonts and
+/// cannot draw it into pixels.
+#[cfg(target_arch = "wasm32")]
+pub const PICTURE_EXTENSIONS: &[&str] = &["svg"];
+
 mod model;
 mod render;
 

@@ -13,6 +13,7 @@ use super::model::{Colour, Figure, ImageKind, Layer};
 use super::PlotError;
 
 /// The font embedded for text in pictures.
+#[cfg(not(target_arch = "wasm32"))]
 static FONT: &[u8] = include_bytes!("../../assets/DejaVuSans.ttf");
 static REGISTER_FONT: Once = Once::new();
 const FAMILY: &str = "sans-serif";
@@ -20,7 +21,8 @@ const FAMILY: &str = "sans-serif";
 fn register_font() {
     REGISTER_FONT.call_once(|| {
         // The embedded font is a valid TrueType file; should registration ever fail, text is
-        // simply not drawn.
+        // simply not drawn. (In the browser plotters measures text with the page's fonts.)
+        #[cfg(not(target_arch = "wasm32"))]
         let _ = plotters::style::register_font(FAMILY, FontStyle::Normal, FONT);
     });
 }
@@ -65,6 +67,12 @@ impl Figure {
                 }
                 Ok(svg.into_bytes())
             }
+            #[cfg(target_arch = "wasm32")]
+            ImageKind::Png => Err(PlotError::Drawing(
+                "PNG pictures are drawn by the cagd program only; in the browser, name the picture .svg"
+                    .into(),
+            )),
+            #[cfg(not(target_arch = "wasm32"))]
             ImageKind::Png => {
                 let mut rgb = vec![0u8; w as usize * h as usize * 3];
                 {
@@ -501,6 +509,7 @@ fn drawing<E: std::fmt::Debug>(e: E) -> PlotError {
     PlotError::Drawing(format!("{e:?}"))
 }
 
+#[cfg(not(target_arch = "wasm32"))]
 fn encode_png(rgb: &[u8], width: u32, height: u32) -> Result<Vec<u8>, PlotError> {
     let mut out = Vec::new();
     {

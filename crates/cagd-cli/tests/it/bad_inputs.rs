@@ -487,7 +487,11 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
             "--plot x.svg",
             "Usage",
         ),
-        (s(&["curve", "[u;u]", "-o", "-", "--plot", "-"]), "--plot -", "Usage"),
+        (
+            s(&["curve", "[u;u]", "-o", "-", "--plot", "-"]),
+            "--plot -",
+            "Usage",
+        ),
         // A depth beyond what the command thread's stack holds.
         (
             s(&["--max-depth", "100000000", "curve", "[u;u]"]),

@@ -10,3 +10,4 @@ mod limits;
 mod mesh;
 mod non_finite;
 mod regressions;
+mod serve;
