@@ -37,10 +37,11 @@
 
 use nalgebra::{DMatrix, DVector};
 
+use crate::bernstein::elevate;
 use crate::bezier::{BezierCurve, BezierPatch};
 use crate::coons::Tolerance;
 use crate::error::{Error, Result};
-use crate::lagrange::{check_nodes, Lagrange, LebesgueEstimate};
+use crate::lagrange::{bernstein_coefficients, check_nodes, Lagrange, LebesgueEstimate};
 use crate::param::{Curve, Surface};
 use crate::scalar::Scalar;
 
@@ -621,69 +622,6 @@ impl<T: Scalar, C: Curve<T>> Surface<T> for GordonSurface<C, T> {
 // ------------------------------------------------------------------------------------------
 // Gordon surfaces of Bézier networks as one Bézier patch
 
-/// `C(n, k)` in the scalar, by the product `Π (n − k + i)/i` (exact in rationals, and in `f64`
-/// while the values stay below 2^53).
-fn binomial<T: Scalar>(n: usize, k: usize) -> T {
-    let k = k.min(n - k);
-    (1..=k).fold(T::one(), |acc, i| {
-        acc * T::from_usize(n - k + i) / T::from_usize(i)
-    })
-}
-
-/// The Bernstein coefficients of the product of two polynomials given by their Bernstein
-/// coefficients (degrees `p = a.len() − 1`, `q = b.len() − 1`):
-/// `c_k = Σ_{i+j=k} C(p,i) C(q,j) / C(p+q,k) · a_i b_j`.
-fn bernstein_product<T: Scalar>(a: &[T], b: &[T]) -> Vec<T> {
-    let (p, q) = (a.len() - 1, b.len() - 1);
-    (0..=p + q)
-        .map(|k| {
-            let sum = (k.saturating_sub(q)..=k.min(p)).fold(T::zero(), |sum, i| {
-                let j = k - i;
-                sum + binomial::<T>(p, i) * binomial::<T>(q, j) * a[i].clone() * b[j].clone()
-            });
-            sum / binomial::<T>(p + q, k)
-        })
-        .collect()
-}
-
-/// Degree elevation of Bernstein coefficients from `a.len() − 1` to `to`:
-/// `c_k = Σ_i C(r,i) C(to − r, k − i) / C(to, k) · a_i`.
-fn bernstein_elevate<T: Scalar>(a: &[T], to: usize) -> Vec<T> {
-    let r = a.len() - 1;
-    if r == to {
-        return a.to_vec();
-    }
-    (0..=to)
-        .map(|k| {
-            let sum = (k.saturating_sub(to - r)..=k.min(r)).fold(T::zero(), |sum, i| {
-                sum + binomial::<T>(r, i) * binomial::<T>(to - r, k - i) * a[i].clone()
-            });
-            sum / binomial::<T>(to, k)
-        })
-        .collect()
-}
-
-/// The Bernstein coefficients, at degree `to ≥ m`, of the Lagrange basis `L_0..L_m` of `nodes`
-/// (row `i` = `L_i`), built as products of the linear factors `(t − t_j)/(t_i − t_j)`, whose
-/// Bernstein coefficients are `[−t_j, 1 − t_j]/(t_i − t_j)`.
-fn lagrange_in_bernstein_form<T: Scalar>(nodes: &[T], to: usize) -> Vec<Vec<T>> {
-    nodes
-        .iter()
-        .enumerate()
-        .map(|(i, ti)| {
-            let mut poly = vec![T::one()];
-            for (j, tj) in nodes.iter().enumerate() {
-                if j != i {
-                    let den = ti.clone() - tj.clone();
-                    let factor = [-tj.clone() / den.clone(), (T::one() - tj.clone()) / den];
-                    poly = bernstein_product(&poly, &factor);
-                }
-            }
-            bernstein_elevate(&poly, to)
-        })
-        .collect()
-}
-
 /// The control points of a Bézier curve on `[0, 1]`, elevated to degree `to`, as one vector of
 /// coefficients per coordinate.
 fn elevated_control<T: Scalar>(
@@ -704,7 +642,7 @@ fn elevated_control<T: Scalar>(
     Ok((0..c.nrows())
         .map(|k| {
             let row: Vec<T> = c.row(k).iter().cloned().collect();
-            bernstein_elevate(&row, to)
+            elevate(&row, to)
         })
         .collect())
 }
@@ -722,8 +660,8 @@ pub(crate) fn gordon_bezier_net<T: Scalar>(
     let p = curves_at_v.iter().map(|c| c.degree()).max().unwrap_or(0);
     let q = curves_at_u.iter().map(|c| c.degree()).max().unwrap_or(0);
     let (deg_u, deg_v) = (m.max(p), n.max(q));
-    let lu = lagrange_in_bernstein_form(u_nodes, deg_u);
-    let lv = lagrange_in_bernstein_form(v_nodes, deg_v);
+    let lu = bernstein_coefficients(u_nodes, deg_u);
+    let lv = bernstein_coefficients(v_nodes, deg_v);
     let at_u = curves_at_u
         .iter()
         .map(|c| elevated_control(c, deg_v, "Gordon curves g(u_i, v)"))
@@ -795,63 +733,5 @@ impl<T: Scalar> GordonSurface<BezierCurve<T>, T> {
             &self.curves_at_v,
             &self.points,
         )
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use num_rational::BigRational as Q;
-
-    fn q(n: i64, d: i64) -> Q {
-        <Q as Scalar>::from_ratio(n, d)
-    }
-
-    /// Evaluates Bernstein coefficients at `t` by the definition.
-    fn eval(c: &[Q], t: &Q) -> Q {
-        let n = c.len() - 1;
-        c.iter().enumerate().fold(q(0, 1), |acc, (i, ci)| {
-            let mut b = binomial::<Q>(n, i);
-            for _ in 0..i {
-                b *= t.clone();
-            }
-            for _ in i..n {
-                b *= q(1, 1) - t.clone();
-            }
-            acc + b * ci.clone()
-        })
-    }
-
-    #[test]
-    fn binomials() {
-        assert_eq!(binomial::<Q>(6, 2), q(15, 1));
-        assert_eq!(binomial::<f64>(30, 15), 155117520.0);
-        assert_eq!(binomial::<Q>(4, 0), q(1, 1));
-    }
-
-    #[test]
-    fn product_and_elevation_of_bernstein_coefficients() {
-        let a = [q(1, 2), q(-3, 1), q(2, 5)];
-        let b = [q(7, 3), q(0, 1)];
-        let c = bernstein_product(&a, &b);
-        let e = bernstein_elevate(&a, 5);
-        assert_eq!(c.len(), 4);
-        for t in [q(0, 1), q(1, 3), q(4, 5), q(1, 1), q(3, 2)] {
-            assert_eq!(eval(&c, &t), eval(&a, &t) * eval(&b, &t));
-            assert_eq!(eval(&e, &t), eval(&a, &t));
-        }
-    }
-
-    #[test]
-    fn lagrange_basis_in_bernstein_form_is_the_basis() {
-        let nodes = [q(-1, 2), q(0, 1), q(2, 3), q(1, 1)];
-        let basis = Lagrange::new(nodes.to_vec()).unwrap();
-        let coeffs = lagrange_in_bernstein_form(&nodes, 5);
-        for t in [q(1, 7), q(1, 2), q(9, 10), q(-1, 3)] {
-            let want = basis.basis(&t);
-            for (i, c) in coeffs.iter().enumerate() {
-                assert_eq!(eval(c, &t), want[i]);
-            }
-        }
     }
 }

@@ -548,7 +548,8 @@ impl<T: Scalar> BezierCurve<T> {
         Ok((left, right))
     }
 
-    /// The same curve written with degree `n + 1` (degree elevation):
+    /// The same curve written with degree `n + 1` (degree elevation, coordinate by coordinate
+    /// [`bernstein::elevate_once`](crate::bernstein::elevate_once)):
     /// `b'_i = i/(n+1) · b_{i−1} + (1 − i/(n+1)) · b_i`, `i = 0, …, n + 1` (with the
     /// out-of-range terms dropped, so `b'_0 = b_0` and `b'_{n+1} = b_n`).
     ///
@@ -561,19 +562,12 @@ impl<T: Scalar> BezierCurve<T> {
     /// # Ok::<(), cagd::Error>(())
     /// ```
     pub fn elevate(&self) -> Self {
-        let n = self.degree();
-        let (d, m) = (self.dim(), n + 1);
-        let control = DMatrix::from_fn(d, m + 1, |c, i| {
-            if i == 0 {
-                self.control[(c, 0)].clone()
-            } else if i == m {
-                self.control[(c, n)].clone()
-            } else {
-                let alpha = T::from_ratio(i as i64, m as i64);
-                alpha.clone() * self.control[(c, i - 1)].clone()
-                    + (T::one() - alpha) * self.control[(c, i)].clone()
-            }
-        });
+        let rows: Vec<Vec<T>> = self
+            .control
+            .row_iter()
+            .map(|r| crate::bernstein::elevate_once(&r.iter().cloned().collect::<Vec<_>>()))
+            .collect();
+        let control = DMatrix::from_fn(self.dim(), self.degree() + 2, |c, i| rows[c][i].clone());
         BezierCurve::from_valid(control, self.a.clone(), self.b.clone())
     }
 

@@ -5,56 +5,16 @@ use nalgebra::DVector;
 use super::gregory::GregoryTwist;
 use super::{push_gap, CoonsBoundary, Corner};
 use crate::error::{Error, Result};
+use crate::hermite::{hermite_basis, hermite_basis_derivative};
 use crate::param::{Curve, Surface};
 use crate::scalar::Scalar;
 
-/// The cubic Hermite basis `[H0³, H1³, H2³, H3³](t)` of thesis §4.2–4.3, from the cubic
-/// Bernstein polynomials `B_i³`:
-///
-/// ```text
-/// H0 = B0 + B1 = (1−t)²(1+2t)      H1 =  B1/3 = t(1−t)²
-/// H2 = −B2/3   = −t²(1−t)          H3 = B2 + B3 = t²(3−2t)
-/// ```
-///
-/// Checked against the Hermite conditions (the thesis states them only partly): `H0`, `H3`
-/// interpolate the values (`H0(0) = 1`, `H0(1) = 0`, `H3 = 1 − H0`) and have zero derivative at
-/// both ends; `H1`, `H2` vanish at both ends and carry the derivatives: `H1'(0) = 1`,
-/// `H1'(1) = 0`, `H2'(0) = 0`, `H2'(1) = 1`. So `H1 = B1/3` and `H2 = −B2/3` are right, signs
-/// included (the minus makes `H2'(1) = +1`).
-///
-/// ```
-/// use cagd::coons::{hermite_cubic, hermite_cubic_derivative};
-/// assert_eq!(hermite_cubic(&0.5), [0.5, 0.125, -0.125, 0.5]);
-/// assert_eq!(hermite_cubic_derivative(&0.0), [0.0, 1.0, 0.0, 0.0]);
-/// assert_eq!(hermite_cubic_derivative(&1.0), [0.0, 0.0, 1.0, 0.0]);
-/// ```
-pub fn hermite_cubic<T: Scalar>(t: &T) -> [T; 4] {
-    let s = T::one() - t.clone();
-    let three = T::from_usize(3);
-    let b0 = s.clone() * s.clone() * s.clone();
-    let ts2 = t.clone() * s.clone() * s.clone();
-    let t2s = t.clone() * t.clone() * s;
-    let b3 = t.clone() * t.clone() * t.clone();
-    [
-        b0 + three.clone() * ts2.clone(),
-        ts2,
-        -t2s.clone(),
-        three * t2s + b3,
-    ]
-}
-
-/// The derivatives `[H0', H1', H2', H3'](t)` of [`hermite_cubic`]:
-/// `H0' = −6t(1−t)`, `H1' = (1−t)(1−3t)`, `H2' = t(3t−2)`, `H3' = 6t(1−t)`.
-pub fn hermite_cubic_derivative<T: Scalar>(t: &T) -> [T; 4] {
-    let s = T::one() - t.clone();
-    let three = T::from_usize(3);
-    let six_ts = T::from_usize(6) * t.clone() * s.clone();
-    [
-        -six_ts.clone(),
-        s * (T::one() - three.clone() * t.clone()),
-        t.clone() * (three * t.clone() - T::from_usize(2)),
-        six_ts,
-    ]
+/// The cubic Hermite basis in the thesis's order `[H0, H1, H2, H3](t)` (§4.2–4.3), the order of
+/// the rows and columns of the matrix (4.5): [`hermite_basis`] `[f_1, f_2, f_3, f_4]` (the
+/// crate's one Hermite basis, in the order of the Ferguson geometry) rearranged as
+/// `[f_1, f_3, f_4, f_2]`.
+fn thesis_order<T>([f1, f2, f3, f4]: [T; 4]) -> [T; 4] {
+    [f1, f3, f4, f2]
 }
 
 /// The four cross-boundary derivative curves of a bicubically blended Coons patch (thesis
@@ -118,7 +78,8 @@ pub struct SurfacePartials<T: Scalar = f64> {
 ///     ⎣ x(1,0)    x_v(1,0)   x_v(1,1)   x(1,1)  ⎦
 /// ```
 ///
-/// with the Hermite basis of [`hermite_cubic`]. The positions in `M` are the corners of the
+/// with the Hermite basis `H0 … H3` of [`hermite_basis`](crate::hermite::hermite_basis). The
+/// positions in `M` are the corners of the
 /// [`CoonsBoundary`]; `x_u(i, j)` is taken from the cross-boundary curve `x_u(i, ·)` at `v = j`
 /// and `x_v(i, j)` from `x_v(·, j)` at `u = i`. With that choice the patch interpolates the four
 /// boundary curves whatever the derivative data. It also interpolates the four cross-boundary
@@ -378,8 +339,8 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
     /// `x(u, v)` from the curve values at `u` (`[c1, dv0, dv1, c2]`) and at `v`
     /// (`[d1, du0, du1, d2]`).
     fn combine(&self, u: &T, v: &T, at_u: &[DVector<T>; 4], at_v: &[DVector<T>; 4]) -> DVector<T> {
-        let hu = hermite_cubic(u);
-        let hv = hermite_cubic(v);
+        let hu = thesis_order(hermite_basis(u.clone()));
+        let hv = thesis_order(hermite_basis(v.clone()));
         let tw = self.twists(u, v);
         DVector::from_fn(self.boundary.dim(), |k, _| {
             let hc = dot(&hu, at_v, k);
@@ -434,10 +395,10 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
             deriv(&|t| self.cross.du1.eval_derivative(t), "x_u(1,v)", &v)?,
             deriv(&|t| d2.eval_derivative(t), "d2", &v)?,
         ];
-        let hu = hermite_cubic(&u);
-        let hv = hermite_cubic(&v);
-        let hu_d = hermite_cubic_derivative(&u);
-        let hv_d = hermite_cubic_derivative(&v);
+        let hu = thesis_order(hermite_basis(u.clone()));
+        let hv = thesis_order(hermite_basis(v.clone()));
+        let hu_d = thesis_order(hermite_basis_derivative(u.clone()));
+        let hv_d = thesis_order(hermite_basis_derivative(v.clone()));
         let tw = self.twists(&u, &v);
         let (tw_u, tw_v): ([DVector<T>; 4], [DVector<T>; 4]) = match &self.twist {
             TwistData::Constant(_) => {

@@ -48,10 +48,7 @@ mod gregory;
 mod mask;
 
 pub use crate::tolerance::{Corner, CornerGap, Tolerance};
-pub use bicubic::{
-    hermite_cubic, hermite_cubic_derivative, BicubicCoonsPatch, CrossDerivatives, SurfacePartials,
-    Twist,
-};
+pub use bicubic::{BicubicCoonsPatch, CrossDerivatives, SurfacePartials, Twist};
 pub use bilinear::CoonsPatch;
 pub use discrete::discrete_coons;
 pub use generalized::{BlendingPair, GeneralizedCoonsPatch, BLEND_TOLERANCE};
