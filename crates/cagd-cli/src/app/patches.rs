@@ -15,7 +15,8 @@ use cagd::coons::{
     discrete_coons, solve_mask, BicubicCoonsPatch, CoonsBoundary, CrossDerivatives, Mask, Twist,
 };
 use cagd::lagrange::Lagrange;
-use cagd::{CoonsPatch, Curve, GordonSurface, Surface, Tolerance};
+use cagd::{CoonsPatch, Curve, GordonSurface, SampledCurve, Surface, Tolerance};
+use cagd_octave::compat::PackedNetwork;
 use cagd_octave::literal::{Env, LiteralScalar, Warning};
 use cagd_octave::script::Script;
 
@@ -613,16 +614,12 @@ pub struct GordonCommand {
     pub mesh: MeshArgs,
 }
 
-/// The network of appendix D's packed data: `g_u` (3 × k·N, the curves g(u, v_j) sampled at
-/// u side by side), `g_v` (the curves g(u_i, v) sampled at v), `g_uv` (row i holds
-/// g(u_i, v_j) for j = 0.. side by side), nodes `x`.
-struct PackedNetwork<T: LiteralScalar> {
-    nodes: Vec<T>,
-    at_u: Vec<CurveSource<T>>,
-    at_v: Vec<CurveSource<T>>,
-    points: Vec<Vec<DVector<T>>>,
-}
-
+/// The network of appendix D's packed data (`g_u`, `g_v`, `g_uv`, nodes `x` in both
+/// directions), unpacked by [`PackedNetwork::unpack`] — the unpacker of
+/// [`cagd_octave::compat::krpa_gordon`] too, so both give the same surface. Each curve is
+/// sampled at the script's `u` (or `v`) if it has one value per sample, else at
+/// `linspace(0,1,N)`; where a node is not a sample parameter the crossing from `g_uv` is added
+/// to the curve.
 fn packed_network<T: LiteralScalar>(
     limits: &Limits,
     s: &Script<T>,
@@ -638,53 +635,32 @@ fn packed_network<T: LiteralScalar>(
     };
     let (g_u, g_v, g_uv, x) = (need("g_u")?, need("g_v")?, need("g_uv")?, need("x")?);
     let nodes: Vec<T> = x.iter().cloned().collect();
-    let k = nodes.len();
-    check_degree(limits, "--script", k.saturating_sub(1))?;
-    let split = |name: &str,
-                 m: &DMatrix<T>,
-                 param: &str|
-     -> Result<Vec<CurveSource<T>>, CliError> {
-        if k < 2 || m.ncols() % k != 0 || m.ncols() / k < 2 {
-            return Err(shape(
-                "--script",
-                format!("`{name}` is {}×{} for {k} nodes", m.nrows(), m.ncols()),
-                "3 × k·N: k curves of N ≥ 2 samples side by side, k = length(x) ≥ 2",
-            ));
-        }
-        let n = m.ncols() / k;
-        let params = script_params(s, param, n);
-        if let Some(x) = nodes.iter().find(|x| !params.contains(x)) {
-            return Err(shape(
-                "--script",
-                format!("the node {x} is not among the {n} samples of `{name}`, so the network cannot be checked where its curves cross"),
-                "sampled curves whose samples include every node (for x = [0 0.5 1], an odd N such as N = 11)",
-            ));
-        }
-        Ok((0..k)
-            .map(|c| CurveSource::Samples(params.clone(), m.columns(c * n, n).into_owned()))
-            .collect())
-    };
-    let at_v = split("g_u", &g_u, "u")?;
-    let at_u = split("g_v", &g_v, "v")?;
-    if g_uv.nrows() != k || g_uv.ncols() != 3 * k {
-        return Err(shape(
+    check_degree(limits, "--script", nodes.len().saturating_sub(1))?;
+    PackedNetwork::unpack(&g_u, &g_v, &g_uv, nodes.clone(), nodes, |param, n| {
+        script_params(s, param, n)
+    })
+    .map_err(|e| match e {
+        cagd::Error::ShapeMismatch {
+            what,
+            expected,
+            found,
+        } => shape("--script", format!("`{what}` is {found}"), &expected),
+        cagd::Error::TooFewCurves { .. } => CliError::library(
             "--script",
-            format!("`g_uv` is {}×{} for {k} nodes", g_uv.nrows(), g_uv.ncols()),
-            "k × 3k: row i holds g(u_i, v_j) for j = 1..k, x y z side by side",
-        ));
-    }
-    let points = (0..k)
-        .map(|i| {
-            (0..k)
-                .map(|j| DVector::from_iterator(3, (0..3).map(|c| g_uv[(i, 3 * j + c)].clone())))
-                .collect()
-        })
-        .collect();
-    Ok(PackedNetwork {
-        nodes,
-        at_u,
-        at_v,
-        points,
+            e,
+            "at least 2 nodes x, one curve per node in g_u and in g_v",
+        ),
+        cagd::Error::UnsortedNodes { .. }
+        | cagd::Error::DuplicateNodes { .. }
+        | cagd::Error::NonFinite {
+            what: "x_u" | "x_v",
+            ..
+        } => CliError::library("--script", e, "increasing distinct nodes x"),
+        _ => CliError::library(
+            "--script",
+            e,
+            "curves sampled at increasing parameters u and v, finite samples and crossings",
+        ),
     })
 }
 
@@ -693,7 +669,7 @@ pub fn gordon<T: LiteralScalar>(limits: &Limits, cmd: &GordonCommand) -> Result<
     let script = prepare_script::<T>(limits, &cmd.script, cmd.params.n)?;
     let mut env = script.as_ref().map(|s| s.env().clone()).unwrap_or_default();
     let form_nodes = "increasing distinct values, one per curve";
-    let (u_nodes, v_nodes, at_u, at_v, points) = if cmd.u_curves.is_empty()
+    let (u_nodes, v_nodes, at_u, at_v, packed) = if cmd.u_curves.is_empty()
         && cmd.v_curves.is_empty()
     {
         let s = script.as_ref().ok_or_else(|| {
@@ -704,7 +680,23 @@ pub fn gordon<T: LiteralScalar>(limits: &Limits, cmd: &GordonCommand) -> Result<
             )
         })?;
         let p = packed_network(limits, s)?;
-        (p.nodes.clone(), p.nodes, p.at_u, p.at_v, Some(p.points))
+        let samples = |curves: &[SampledCurve<T>]| -> Vec<CurveSource<T>> {
+            curves
+                .iter()
+                .map(|c| CurveSource::Samples(c.params().to_vec(), c.samples().clone()))
+                .collect()
+        };
+        (
+            p.u_nodes().to_vec(),
+            p.v_nodes().to_vec(),
+            samples(p.curves_at_u()),
+            samples(p.curves_at_v()),
+            Some((
+                p.points().to_vec(),
+                p.u_samples().to_vec(),
+                p.v_samples().to_vec(),
+            )),
+        )
     } else {
         let load_all = |arg: &str, list: &[String]| -> Result<Vec<CurveSource<T>>, CliError> {
             list.iter()
@@ -735,14 +727,21 @@ pub fn gordon<T: LiteralScalar>(limits: &Limits, cmd: &GordonCommand) -> Result<
         (un, vn, at_u, at_v, None)
     };
     let single = point_mode(limits, &cmd.params);
-    let sampled_u = at_v
-        .first()
-        .and_then(|c| c.sample_params())
-        .map(<[T]>::to_vec);
-    let sampled_v = at_u
-        .first()
-        .and_then(|c| c.sample_params())
-        .map(<[T]>::to_vec);
+    // By default the surface is evaluated where the network is sampled: at the packed data's
+    // own sample parameters (without the crossings added at nodes), else at those of the
+    // first sampled curve.
+    let (points, sampled_u, sampled_v) = match packed {
+        Some((p, su, sv)) => (Some(p), Some(su), Some(sv)),
+        None => (
+            None,
+            at_v.first()
+                .and_then(|c| c.sample_params())
+                .map(<[T]>::to_vec),
+            at_u.first()
+                .and_then(|c| c.sample_params())
+                .map(<[T]>::to_vec),
+        ),
+    };
     let (us, vs) = surface_params(
         limits,
         &cmd.params,

@@ -8,4 +8,5 @@ mod error_catalogue;
 mod limits;
 mod mesh;
 mod non_finite;
+mod packed_network;
 mod regressions;
