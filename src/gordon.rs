@@ -40,6 +40,7 @@ use nalgebra::{DMatrix, DVector};
 use crate::bernstein::elevate;
 use crate::bezier::{BezierCurve, BezierPatch};
 use crate::coons::Tolerance;
+use crate::cost::{blended, polynomial_bits, Cost};
 use crate::error::{Error, Result};
 use crate::lagrange::{bernstein_coefficients, check_nodes, Lagrange, LebesgueEstimate};
 use crate::param::{Curve, Surface};
@@ -733,5 +734,60 @@ impl<T: Scalar> GordonSurface<BezierCurve<T>, T> {
             &self.curves_at_v,
             &self.points,
         )
+    }
+}
+
+/// The cost of one point of a Gordon surface of `k_u × k_v` curves in `d` coordinates,
+/// `g = g1 + g2 − g12`: every curve of the network at its parameter (`curves`, the cost of
+/// each), the `k_u k_v` points of `g12` and the Lagrange bases in `u` and `v`,
+/// `(4(k_u + k_v) + 2 k_u k_v)(1 + d)` operations, on numbers as large as the curves' values
+/// grown by the bases: products of `k − 1` factors `(u − u_j)/(u_i − u_j)`,
+/// [`polynomial_bits`]`(k_u − 1, u_bits + 2 u_node_bits, 0)` and the same in `v`
+/// ([`blended`]). `u = (u_bits, u_node_bits)` are the sizes of the parameter and of the nodes
+/// in `u`, `v` those in `v`.
+///
+/// ```
+/// use cagd::cost::Cost;
+/// use cagd::gordon::gordon_point_cost;
+/// let c = gordon_point_cost([Cost::new(1, 0); 6], (3, 3), 3, (0, 0), (0, 0));
+/// assert_eq!(c, Cost::new(6 + (24 + 18) * 4, 4));
+/// ```
+pub fn gordon_point_cost(
+    curves: impl IntoIterator<Item = Cost>,
+    (k_u, k_v): (usize, usize),
+    d: usize,
+    u: (u128, u128),
+    v: (u128, u128),
+) -> Cost {
+    let (ku, kv) = (k_u as u128, k_v as u128);
+    let basis_bits = |k: usize, (param_bits, node_bits): (u128, u128)| {
+        polynomial_bits(
+            k.saturating_sub(1),
+            param_bits.saturating_add(node_bits.saturating_mul(2)),
+            0,
+        )
+    };
+    blended(
+        curves,
+        (4 * (ku + kv) + 2 * ku * kv) * (1 + d as u128),
+        basis_bits(k_u, u).saturating_add(basis_bits(k_v, v)),
+    )
+}
+
+#[cfg(test)]
+mod cost_tests {
+    use super::*;
+
+    #[test]
+    fn the_lagrange_bases_grow_the_numbers() {
+        let c = gordon_point_cost(
+            [Cost::new(5, 20), Cost::new(5, 30)],
+            (2, 4),
+            2,
+            (3, 1),
+            (0, 2),
+        );
+        assert_eq!(c.ops(), 10 + (24 + 16) * 3);
+        assert_eq!(c.bits(), 30 + (3 + 2 + 1) + 3 * (4 + 1));
     }
 }

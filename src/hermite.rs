@@ -19,6 +19,7 @@
 use nalgebra::{DMatrix, DVector};
 
 use crate::bezier::BezierCurve;
+use crate::cost::{polynomial_bits, Cost};
 use crate::error::{check_finite, Error, Result};
 use crate::param::Curve;
 use crate::scalar::Scalar;
@@ -83,6 +84,17 @@ pub fn hermite_basis_derivative<T: Scalar>(u: T) -> [T; 4] {
         s * (T::one() - three.clone() * u.clone()),
         u.clone() * (three * u - T::from_usize(2)),
     ]
+}
+
+/// The cost of the four Hermite functions at one parameter of `param_bits` bits
+/// ([`hermite_basis`]): about 16 operations, on cubics in the parameter
+/// ([`polynomial_bits`](crate::cost::polynomial_bits)`(3, param_bits, 0)` bits).
+///
+/// ```
+/// assert_eq!(cagd::hermite::basis_cost(5), cagd::cost::Cost::new(16, 18));
+/// ```
+pub fn basis_cost(param_bits: u128) -> Cost {
+    Cost::new(16, polynomial_bits(3, param_bits, 0))
 }
 
 /// A Ferguson (Hermite) cubic over `u ∈ [0, 1]` in any dimension.
@@ -152,6 +164,27 @@ impl<T: Scalar> HermiteCubic<T> {
     /// `x(u) = Σ f_i(u) X_H[:, i]`.
     pub fn eval(&self, u: T) -> DVector<T> {
         combine4(&self.geometry, &hermite_basis(u))
+    }
+
+    /// The cost of the point at one parameter of `param_bits` bits ([`eval`](Self::eval)):
+    /// the four Hermite functions ([`basis_cost`]) and their combination, 8 operations per
+    /// coordinate, on cubics in the parameter over coefficients of `bezier_bits + 2` bits,
+    /// `bezier_bits` the size of the curve's Bézier points ([`to_bezier`](Self::to_bezier); the
+    /// 2 bits cover the factors 3 and 1/3 between the forms).
+    ///
+    /// ```
+    /// use cagd::hermite::HermiteCubic;
+    /// use cagd::cost::Cost;
+    /// use nalgebra::dvector;
+    /// let c = HermiteCubic::new(dvector![0.0, 0.0], dvector![1.0, 0.0], dvector![1.0, 1.0], dvector![1.0, -1.0])?;
+    /// assert_eq!(c.eval_cost(5, 10), Cost::new(16 + 2 * 8, 18 + 12));
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn eval_cost(&self, param_bits: u128, bezier_bits: u128) -> Cost {
+        Cost::new(
+            basis_cost(param_bits).ops() + 8 * self.dim() as u128,
+            polynomial_bits(3, param_bits, bezier_bits.saturating_add(2)),
+        )
     }
 
     /// `x'(u)`.
@@ -241,6 +274,14 @@ impl<T: Scalar> Curve<T> for HermiteCubic<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn costs_of_the_basis_and_of_a_point() {
+        assert_eq!(basis_cost(0), Cost::new(16, 3));
+        let c = HermiteCubic::<f64>::from_geometry(DMatrix::zeros(3, 4)).unwrap();
+        assert_eq!(c.eval_cost(0, 0), Cost::new(16 + 24, 3 + 2));
+        assert_eq!(c.eval_cost(7, 30).bits(), 3 * 8 + 32);
+    }
     use crate::conversion::CubicForm;
     use num_rational::BigRational;
 

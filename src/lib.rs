@@ -45,6 +45,7 @@ pub mod bspline;
 pub mod continuity;
 pub mod conversion;
 pub mod coons;
+pub mod cost;
 pub mod error;
 pub mod gordon;
 pub mod grid;

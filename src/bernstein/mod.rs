@@ -28,6 +28,7 @@
 
 use nalgebra::DMatrix;
 
+use crate::cost::{polynomial_bits, Cost};
 use crate::scalar::Scalar;
 
 mod binomial;
@@ -136,6 +137,18 @@ pub(crate) fn recurrence<T: Scalar>(t: &T, out: &mut [T]) {
         }
         out[k] = carry;
     }
+}
+
+/// The cost of all Bernstein polynomials of degree `n` at one parameter of `param_bits` bits
+/// by the triangular recurrence ([`bernstein_all`]): `(n+1)²` operations on numbers of
+/// [`polynomial_bits`](crate::cost::polynomial_bits)`(n, param_bits, 0)` bits.
+///
+/// ```
+/// use cagd::cost::Cost;
+/// assert_eq!(cagd::bernstein::basis_cost(3, 2), Cost::new(16, 9));
+/// ```
+pub fn basis_cost(n: usize, param_bits: u128) -> Cost {
+    Cost::new((n as u128 + 1).pow(2), polynomial_bits(n, param_bits, 0))
 }
 
 /// The `r`-th derivative of `B_i^n` at `t`.
@@ -269,6 +282,14 @@ mod tests {
 
     fn q(n: i64, d: i64) -> BigRational {
         <BigRational as Scalar>::from_ratio(n, d)
+    }
+
+    #[test]
+    fn basis_cost_counts_the_recurrence() {
+        // The recurrence does k multiplications and additions at level k: below (n+1)².
+        assert_eq!(basis_cost(0, 5).ops(), 1);
+        assert_eq!(basis_cost(10, 0), Cost::new(121, 10));
+        assert_eq!(basis_cost(10, 7).bits(), 80);
     }
 
     #[test]

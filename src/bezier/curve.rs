@@ -5,6 +5,7 @@ use nalgebra::{DMatrix, DVector};
 use super::scheme::DeCasteljauScheme;
 use super::{check_param, check_params};
 use crate::bernstein::{bernstein_all, bernstein_all_into, falling_factorial, power};
+use crate::cost::{polynomial_bits, Cost};
 use crate::error::{check_finite, Error, Result};
 use crate::param::Curve;
 use crate::scalar::Scalar;
@@ -270,6 +271,27 @@ impl<T: Scalar> BezierCurve<T> {
     pub fn scheme(&self, u: T) -> DeCasteljauScheme<T> {
         let (s, t) = self.weights(&u);
         DeCasteljauScheme::compute(&self.control, &s, &t, u)
+    }
+
+    /// The cost of the point at one parameter of `param_bits` bits by de Casteljau's scheme
+    /// ([`scheme`](Self::scheme); [`eval`](Self::eval) does no more): `d (n+1)²` operations
+    /// (`n` levels of convex combinations, two products and a sum per coordinate and point), on
+    /// numbers of [`polynomial_bits`](crate::cost::polynomial_bits)`(n, param_bits,
+    /// control_bits)` bits, `control_bits` the size of the control points.
+    ///
+    /// ```
+    /// use cagd::bezier::BezierCurve;
+    /// use cagd::cost::Cost;
+    /// let c = BezierCurve::from_points(&[[0.0, 0.0], [1.0, 2.0], [3.0, 1.0]])?;
+    /// assert_eq!(c.eval_cost(4, 10), Cost::new(18, 20));
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn eval_cost(&self, param_bits: u128, control_bits: u128) -> Cost {
+        let n = self.degree();
+        Cost::new(
+            self.dim() as u128 * (n as u128 + 1).pow(2),
+            polynomial_bits(n, param_bits, control_bits),
+        )
     }
 
     /// The point `Σ_i b_i B_i^n(t)`, `t = (u − a)/(b − a)`, from the Bernstein form (thesis
@@ -679,6 +701,16 @@ mod tests {
 
     fn q(n: i64, d: i64) -> BigRational {
         <BigRational as Scalar>::from_ratio(n, d)
+    }
+
+    #[test]
+    fn de_casteljau_cost_grows_with_the_degree_and_the_parameter() {
+        let c = BezierCurve::new(DMatrix::<f64>::zeros(3, 5)).unwrap();
+        assert_eq!(c.eval_cost(0, 0), Cost::new(3 * 25, 4));
+        // Each of the 4 levels multiplies by t = p/q: 10-bit parameters add 11 bits each.
+        assert_eq!(c.eval_cost(10, 7).bits(), 7 + 4 * 11);
+        let point = BezierCurve::new(DMatrix::<f64>::zeros(2, 1)).unwrap();
+        assert_eq!(point.eval_cost(10, 7), Cost::new(2, 7));
     }
 
     #[test]

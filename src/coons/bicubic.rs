@@ -4,6 +4,7 @@ use nalgebra::DVector;
 
 use super::gregory::GregoryTwist;
 use super::{push_gap, CoonsBoundary, Corner};
+use crate::cost::{blended, polynomial_bits, Cost};
 use crate::error::{Error, Result};
 use crate::hermite::{hermite_basis, hermite_basis_derivative};
 use crate::param::{Curve, Surface};
@@ -497,5 +498,45 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> Surface<T> for BicubicCoonsPatch<C, D,
             }
         }
         grid
+    }
+}
+
+/// The cost of one point of a bicubically blended Coons patch in `d` coordinates: the eight
+/// curves at their parameters (`curves`, the cost of each: the four boundary curves and the
+/// four cross-boundary derivatives) and about 64 operations per coordinate for the blend, on
+/// numbers as large as the curves' values grown by the cubic Hermite functions of `u` and `v`
+/// ([`polynomial_bits`]`(3, u_bits, 0) + polynomial_bits(3, v_bits, 0)`;
+/// [`blended`](crate::cost::blended)).
+///
+/// ```
+/// use cagd::coons::bicubic_point_cost;
+/// use cagd::cost::Cost;
+/// assert_eq!(bicubic_point_cost([Cost::new(2, 10); 8], 3, 1, 1), Cost::new(16 + 192, 10 + 12));
+/// ```
+pub fn bicubic_point_cost(
+    curves: impl IntoIterator<Item = Cost>,
+    d: usize,
+    u_bits: u128,
+    v_bits: u128,
+) -> Cost {
+    blended(
+        curves,
+        64 * d as u128,
+        polynomial_bits(3, u_bits, 0).saturating_add(polynomial_bits(3, v_bits, 0)),
+    )
+}
+
+#[cfg(test)]
+mod cost_tests {
+    use super::*;
+
+    #[test]
+    fn the_hermite_blend_grows_by_cubics_in_u_and_v() {
+        let c = bicubic_point_cost([Cost::new(1, 0); 8], 1, 0, 0);
+        assert_eq!(c, Cost::new(8 + 64, 6));
+        assert_eq!(
+            bicubic_point_cost([Cost::new(1, 100); 8], 1, 10, 0).bits(),
+            100 + 33 + 3
+        );
     }
 }

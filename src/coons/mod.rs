@@ -48,8 +48,10 @@ mod gregory;
 mod mask;
 
 pub use crate::tolerance::{Corner, CornerGap, Tolerance};
-pub use bicubic::{BicubicCoonsPatch, CrossDerivatives, SurfacePartials, Twist};
-pub use bilinear::CoonsPatch;
+pub use bicubic::{
+    bicubic_point_cost, BicubicCoonsPatch, CrossDerivatives, SurfacePartials, Twist,
+};
+pub use bilinear::{coons_point_cost, CoonsPatch};
 pub use discrete::discrete_coons;
 pub use generalized::{BlendingPair, GeneralizedCoonsPatch, BLEND_TOLERANCE};
 pub use gregory::GregoryTwist;

@@ -13,6 +13,7 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::check_nodes;
+use crate::cost::{polynomial_bits, Cost};
 use crate::error::{Error, Result};
 use crate::param::Curve;
 use crate::scalar::Scalar;
@@ -66,6 +67,66 @@ impl<T: Scalar> Lagrange<T> {
             })
             .collect();
         Ok(Lagrange { nodes, weights })
+    }
+
+    /// The cost of the set-up ([`new`](Self::new), the weights): `(m+1)²` operations on
+    /// numbers of [`polynomial_bits`]`(m, node_bits, 0)` bits, `node_bits` the size of the
+    /// nodes.
+    ///
+    /// ```
+    /// use cagd::lagrange::Lagrange;
+    /// use cagd::cost::Cost;
+    /// let l = Lagrange::new(vec![0.0, 0.5, 1.0])?;
+    /// assert_eq!(l.weights_cost(3), Cost::new(9, 8));
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn weights_cost(&self, node_bits: u128) -> Cost {
+        let m1 = self.nodes.len() as u128;
+        Cost::new(m1 * m1, polynomial_bits(self.degree(), node_bits, 0))
+    }
+
+    /// The cost of the basis at one parameter of `param_bits` bits ([`basis`](Self::basis)):
+    /// `4(m+1)` operations, on numbers of `m` factors `(t − t_j)`
+    /// ([`polynomial_bits`]`(m, param_bits + node_bits, 0)`).
+    ///
+    /// ```
+    /// use cagd::lagrange::Lagrange;
+    /// use cagd::cost::Cost;
+    /// let l = Lagrange::new(vec![0.0, 0.5, 1.0])?;
+    /// assert_eq!(l.basis_cost(2, 3), Cost::new(12, 12));
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn basis_cost(&self, param_bits: u128, node_bits: u128) -> Cost {
+        self.interpolation_cost(0, param_bits, node_bits, 0)
+    }
+
+    /// The cost of the interpolant of `d`-dimensional values at one parameter
+    /// ([`interpolate`](Self::interpolate)): the basis and its combination with the values,
+    /// `(4 + 2d)(m+1)` operations, on numbers of
+    /// [`polynomial_bits`]`(m, param_bits + node_bits, value_bits)` bits.
+    ///
+    /// ```
+    /// use cagd::lagrange::Lagrange;
+    /// use cagd::cost::Cost;
+    /// let l = Lagrange::new(vec![0.0, 0.5, 1.0])?;
+    /// assert_eq!(l.interpolation_cost(2, 2, 3, 10), Cost::new(24, 22));
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn interpolation_cost(
+        &self,
+        d: usize,
+        param_bits: u128,
+        node_bits: u128,
+        value_bits: u128,
+    ) -> Cost {
+        Cost::new(
+            (4 + 2 * d as u128) * self.nodes.len() as u128,
+            polynomial_bits(
+                self.degree(),
+                param_bits.saturating_add(node_bits),
+                value_bits,
+            ),
+        )
     }
 
     /// The nodes.
@@ -281,5 +342,19 @@ impl<T: Scalar> Curve<T> for LagrangeInterpolant<T> {
             }
         }
         Some(num.map(|v| v / den.clone()))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn costs_of_the_set_up_the_basis_and_the_interpolant() {
+        let l = Lagrange::new(vec![0.0, 0.25, 0.5, 0.75, 1.0]).unwrap(); // m = 4
+        assert_eq!(l.weights_cost(0), Cost::new(25, 4));
+        assert_eq!(l.basis_cost(3, 2), Cost::new(20, 4 * 6));
+        assert_eq!(l.interpolation_cost(0, 3, 2, 0), l.basis_cost(3, 2));
+        assert_eq!(l.interpolation_cost(3, 3, 2, 9), Cost::new(50, 24 + 9));
     }
 }
