@@ -88,7 +88,7 @@ pub fn hermite_basis_derivative<T: Scalar>(u: T) -> [T; 4] {
 
 /// The cost of the four Hermite functions at one parameter of `param_bits` bits
 /// ([`hermite_basis`]): about 16 operations, on cubics in the parameter
-/// ([`polynomial_bits`](crate::cost::polynomial_bits)`(3, param_bits, 0)` bits).
+/// ([`polynomial_bits`]`(3, param_bits, 0)` bits).
 ///
 /// ```
 /// assert_eq!(cagd::hermite::basis_cost(5), cagd::cost::Cost::new(16, 18));

@@ -141,7 +141,7 @@ pub(crate) fn recurrence<T: Scalar>(t: &T, out: &mut [T]) {
 
 /// The cost of all Bernstein polynomials of degree `n` at one parameter of `param_bits` bits
 /// by the triangular recurrence ([`bernstein_all`]): `(n+1)²` operations on numbers of
-/// [`polynomial_bits`](crate::cost::polynomial_bits)`(n, param_bits, 0)` bits.
+/// [`polynomial_bits`]`(n, param_bits, 0)` bits.
 ///
 /// ```
 /// use cagd::cost::Cost;

@@ -276,7 +276,7 @@ impl<T: Scalar> BezierCurve<T> {
     /// The cost of the point at one parameter of `param_bits` bits by de Casteljau's scheme
     /// ([`scheme`](Self::scheme); [`eval`](Self::eval) does no more): `d (n+1)²` operations
     /// (`n` levels of convex combinations, two products and a sum per coordinate and point), on
-    /// numbers of [`polynomial_bits`](crate::cost::polynomial_bits)`(n, param_bits,
+    /// numbers of [`polynomial_bits`]`(n, param_bits,
     /// control_bits)` bits, `control_bits` the size of the control points.
     ///
     /// ```

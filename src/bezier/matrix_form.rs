@@ -148,7 +148,8 @@ impl<T: Scalar> MatrixForm<T> {
 
 impl<T: Scalar> BezierCurve<T> {
     /// The matrix (monomial) form `P · M` of this curve, over the same interval (the matrix-form notes;
-    /// [`cubic_bezier_matrix`] for cubics, [`bezier_to_monomial_matrix`] in general).
+    /// [`cubic_bezier_matrix`](crate::conversion::cubic_bezier_matrix) for cubics,
+    /// [`bezier_to_monomial_matrix`] in general).
     pub fn matrix_form(&self) -> MatrixForm<T> {
         let m = bezier_to_monomial_matrix::<T>(self.degree());
         let (a, b) = self.interval();

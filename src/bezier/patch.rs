@@ -517,7 +517,7 @@ impl<T: Scalar> BezierPatch<T> {
     /// and `v`, then about `2 (m+1)(n+1)` operations per coordinate, counted for the three
     /// coordinates of a net in space (`6 (m+1)(n+1)`), on numbers that grow by the bits of `u`
     /// at `m` levels and of `v` at `n` over the control points' `control_bits`
-    /// ([`polynomial_bits`](crate::cost::polynomial_bits)).
+    /// ([`polynomial_bits`]).
     ///
     /// ```
     /// use cagd::bezier::BezierPatch;

@@ -22,7 +22,7 @@
 //! product starts at zero, so the function always returns 0 — the fixed Octave reference starts
 //! it at one). The barycentric form evaluates all `m+1` basis functions in `O(m)` operations
 //! after an `O(m²)` set-up and is numerically stable (Berrut–Trefethen). Everything is generic
-//! over the [`Scalar`](crate::Scalar), so every form is exact in rationals.
+//! over the [`Scalar`], so every form is exact in rationals.
 //!
 //! Interpolation at equispaced nodes is badly conditioned for many nodes (the Lebesgue
 //! constant grows like `2^m / (e m log m)`); [`chebyshev_nodes`] places nodes at the
