@@ -146,8 +146,8 @@ pub enum Error {
         /// End of its domain.
         end: f64,
     },
-    /// A square system that has no unique solution (repeated interpolation parameters, a
-    /// singular matrix to invert).
+    /// A square system that has no unique solution (a singular matrix to invert, a zero
+    /// pivot of a spline system). Repeated interpolation nodes are [`Error::DuplicateNodes`].
     #[error("{what}: the system is singular ({reason})")]
     Singular {
         /// Which argument.

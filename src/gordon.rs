@@ -41,10 +41,12 @@
 
 use nalgebra::{DMatrix, DVector};
 
+use crate::bernstein::elevate;
 use crate::bezier::{BezierCurve, BezierPatch};
 use crate::coons::Tolerance;
+use crate::cost::{blended, polynomial_bits, Cost};
 use crate::error::{Error, Result};
-use crate::lagrange::{check_nodes, Lagrange, LebesgueEstimate};
+use crate::lagrange::{bernstein_coefficients, check_nodes, Lagrange, LebesgueEstimate};
 use crate::param::{usable_domain, Curve, OnUnitInterval, Surface};
 use crate::scalar::Scalar;
 
@@ -686,69 +688,6 @@ impl<T: Scalar, C: Curve<T>> Surface<T> for GordonSurface<C, T> {
 // ------------------------------------------------------------------------------------------
 // Gordon surfaces of Bézier networks as one Bézier patch
 
-/// `C(n, k)` in the scalar, by the product `Π (n − k + i)/i` (exact in rationals, and in `f64`
-/// while the values stay below 2^53).
-fn binomial<T: Scalar>(n: usize, k: usize) -> T {
-    let k = k.min(n - k);
-    (1..=k).fold(T::one(), |acc, i| {
-        acc * T::from_usize(n - k + i) / T::from_usize(i)
-    })
-}
-
-/// The Bernstein coefficients of the product of two polynomials given by their Bernstein
-/// coefficients (degrees `p = a.len() − 1`, `q = b.len() − 1`):
-/// `c_k = Σ_{i+j=k} C(p,i) C(q,j) / C(p+q,k) · a_i b_j`.
-fn bernstein_product<T: Scalar>(a: &[T], b: &[T]) -> Vec<T> {
-    let (p, q) = (a.len() - 1, b.len() - 1);
-    (0..=p + q)
-        .map(|k| {
-            let sum = (k.saturating_sub(q)..=k.min(p)).fold(T::zero(), |sum, i| {
-                let j = k - i;
-                sum + binomial::<T>(p, i) * binomial::<T>(q, j) * a[i].clone() * b[j].clone()
-            });
-            sum / binomial::<T>(p + q, k)
-        })
-        .collect()
-}
-
-/// Degree elevation of Bernstein coefficients from `a.len() − 1` to `to`:
-/// `c_k = Σ_i C(r,i) C(to − r, k − i) / C(to, k) · a_i`.
-fn bernstein_elevate<T: Scalar>(a: &[T], to: usize) -> Vec<T> {
-    let r = a.len() - 1;
-    if r == to {
-        return a.to_vec();
-    }
-    (0..=to)
-        .map(|k| {
-            let sum = (k.saturating_sub(to - r)..=k.min(r)).fold(T::zero(), |sum, i| {
-                sum + binomial::<T>(r, i) * binomial::<T>(to - r, k - i) * a[i].clone()
-            });
-            sum / binomial::<T>(to, k)
-        })
-        .collect()
-}
-
-/// The Bernstein coefficients, at degree `to ≥ m`, of the Lagrange basis `L_0..L_m` of `nodes`
-/// (row `i` = `L_i`), built as products of the linear factors `(t − t_j)/(t_i − t_j)`, whose
-/// Bernstein coefficients are `[−t_j, 1 − t_j]/(t_i − t_j)`.
-fn lagrange_in_bernstein_form<T: Scalar>(nodes: &[T], to: usize) -> Vec<Vec<T>> {
-    nodes
-        .iter()
-        .enumerate()
-        .map(|(i, ti)| {
-            let mut poly = vec![T::one()];
-            for (j, tj) in nodes.iter().enumerate() {
-                if j != i {
-                    let den = ti.clone() - tj.clone();
-                    let factor = [-tj.clone() / den.clone(), (T::one() - tj.clone()) / den];
-                    poly = bernstein_product(&poly, &factor);
-                }
-            }
-            bernstein_elevate(&poly, to)
-        })
-        .collect()
-}
-
 /// The control points of a Bézier curve elevated to degree `to`, as one vector of
 /// coefficients per coordinate. They are those of the curve reparametrised onto `[0, 1]`
 /// whatever its interval `[a, b]` (the Bernstein form is in `(u − a)/(b − a)`).
@@ -757,7 +696,7 @@ fn elevated_control<T: Scalar>(curve: &BezierCurve<T>, to: usize) -> Vec<Vec<T>>
     (0..c.nrows())
         .map(|k| {
             let row: Vec<T> = c.row(k).iter().cloned().collect();
-            bernstein_elevate(&row, to)
+            elevate(&row, to)
         })
         .collect()
 }
@@ -775,8 +714,8 @@ pub(crate) fn gordon_bezier_net<T: Scalar>(
     let p = curves_at_v.iter().map(|c| c.degree()).max().unwrap_or(0);
     let q = curves_at_u.iter().map(|c| c.degree()).max().unwrap_or(0);
     let (deg_u, deg_v) = (m.max(p), n.max(q));
-    let lu = lagrange_in_bernstein_form(u_nodes, deg_u);
-    let lv = lagrange_in_bernstein_form(v_nodes, deg_v);
+    let lu = bernstein_coefficients(u_nodes, deg_u);
+    let lv = bernstein_coefficients(v_nodes, deg_v);
     let at_u: Vec<_> = curves_at_u
         .iter()
         .map(|c| elevated_control(c, deg_v))
@@ -852,60 +791,57 @@ impl<T: Scalar> GordonSurface<BezierCurve<T>, T> {
     }
 }
 
+/// The cost of one point of a Gordon surface of `k_u × k_v` curves in `d` coordinates,
+/// `g = g1 + g2 − g12`: every curve of the network at its parameter (`curves`, the cost of
+/// each), the `k_u k_v` points of `g12` and the Lagrange bases in `u` and `v`,
+/// `(4(k_u + k_v) + 2 k_u k_v)(1 + d)` operations, on numbers as large as the curves' values
+/// grown by the bases: products of `k − 1` factors `(u − u_j)/(u_i − u_j)`,
+/// [`polynomial_bits`]`(k_u − 1, u_bits + 2 u_node_bits, 0)` and the same in `v`
+/// ([`blended`]). `u = (u_bits, u_node_bits)` are the sizes of the parameter and of the nodes
+/// in `u`, `v` those in `v`.
+///
+/// ```
+/// use cagd::cost::Cost;
+/// use cagd::gordon::gordon_point_cost;
+/// let c = gordon_point_cost([Cost::new(1, 0); 6], (3, 3), 3, (0, 0), (0, 0));
+/// assert_eq!(c, Cost::new(6 + (24 + 18) * 4, 4));
+/// ```
+pub fn gordon_point_cost(
+    curves: impl IntoIterator<Item = Cost>,
+    (k_u, k_v): (usize, usize),
+    d: usize,
+    u: (u128, u128),
+    v: (u128, u128),
+) -> Cost {
+    let (ku, kv) = (k_u as u128, k_v as u128);
+    let basis_bits = |k: usize, (param_bits, node_bits): (u128, u128)| {
+        polynomial_bits(
+            k.saturating_sub(1),
+            param_bits.saturating_add(node_bits.saturating_mul(2)),
+            0,
+        )
+    };
+    blended(
+        curves,
+        (4 * (ku + kv) + 2 * ku * kv) * (1 + d as u128),
+        basis_bits(k_u, u).saturating_add(basis_bits(k_v, v)),
+    )
+}
+
 #[cfg(test)]
-mod tests {
+mod cost_tests {
     use super::*;
-    use num_rational::BigRational as Q;
-
-    fn q(n: i64, d: i64) -> Q {
-        <Q as Scalar>::from_ratio(n, d)
-    }
-
-    /// Evaluates Bernstein coefficients at `t` by the definition.
-    fn eval(c: &[Q], t: &Q) -> Q {
-        let n = c.len() - 1;
-        c.iter().enumerate().fold(q(0, 1), |acc, (i, ci)| {
-            let mut b = binomial::<Q>(n, i);
-            for _ in 0..i {
-                b *= t.clone();
-            }
-            for _ in i..n {
-                b *= q(1, 1) - t.clone();
-            }
-            acc + b * ci.clone()
-        })
-    }
 
     #[test]
-    fn binomials() {
-        assert_eq!(binomial::<Q>(6, 2), q(15, 1));
-        assert_eq!(binomial::<f64>(30, 15), 155117520.0);
-        assert_eq!(binomial::<Q>(4, 0), q(1, 1));
-    }
-
-    #[test]
-    fn product_and_elevation_of_bernstein_coefficients() {
-        let a = [q(1, 2), q(-3, 1), q(2, 5)];
-        let b = [q(7, 3), q(0, 1)];
-        let c = bernstein_product(&a, &b);
-        let e = bernstein_elevate(&a, 5);
-        assert_eq!(c.len(), 4);
-        for t in [q(0, 1), q(1, 3), q(4, 5), q(1, 1), q(3, 2)] {
-            assert_eq!(eval(&c, &t), eval(&a, &t) * eval(&b, &t));
-            assert_eq!(eval(&e, &t), eval(&a, &t));
-        }
-    }
-
-    #[test]
-    fn lagrange_basis_in_bernstein_form_is_the_basis() {
-        let nodes = [q(-1, 2), q(0, 1), q(2, 3), q(1, 1)];
-        let basis = Lagrange::new(nodes.to_vec()).unwrap();
-        let coeffs = lagrange_in_bernstein_form(&nodes, 5);
-        for t in [q(1, 7), q(1, 2), q(9, 10), q(-1, 3)] {
-            let want = basis.basis(&t);
-            for (i, c) in coeffs.iter().enumerate() {
-                assert_eq!(eval(c, &t), want[i]);
-            }
-        }
+    fn the_lagrange_bases_grow_the_numbers() {
+        let c = gordon_point_cost(
+            [Cost::new(5, 20), Cost::new(5, 30)],
+            (2, 4),
+            2,
+            (3, 1),
+            (0, 2),
+        );
+        assert_eq!(c.ops(), 10 + (24 + 16) * 3);
+        assert_eq!(c.bits(), 30 + (3 + 2 + 1) + 3 * (4 + 1));
     }
 }

@@ -41,7 +41,12 @@
 //! **Resource limits** ([`limits`], a plain value passed to what needs it) refuse sizes that
 //! would not fit in memory with [`Error::TooLarge`]; every error variant of the workspace, with
 //! an example triggering it, is listed in `docs/ERRORS.md` (the `cagd-cli` crate's
-//! `error_catalogue`).
+//! `error_catalogue`). Each construction estimates its own work beside its code ([`cost`]), so
+//! a caller can refuse a computation above [`Limits::max_work`] before it starts.
+//!
+//! **One owner per concept**: binomials, products and degree elevation live in [`bernstein`],
+//! every form of the Lagrange basis and its node check in [`lagrange`], the cubic Hermite basis
+//! in [`hermite`], every matrix form (one power order, ascending) in [`conversion`].
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -51,6 +56,7 @@ pub mod bspline;
 pub mod continuity;
 pub mod conversion;
 pub mod coons;
+pub mod cost;
 pub mod error;
 pub mod gordon;
 pub mod grid;

@@ -492,6 +492,23 @@ impl<T: Scalar> SampledCurve<T> {
         &self.samples
     }
 
+    /// The cost of the point at one parameter of `param_bits` bits: a binary search among the
+    /// `N` parameters (`log₂ N` comparisons) and a copy of the sample (`d`) where the parameter
+    /// is one, on numbers of `sample_bits + param_bits` bits.
+    ///
+    /// ```
+    /// use cagd::{cost::Cost, SampledCurve};
+    /// let c = SampledCurve::new(vec![0.0, 0.5, 1.0, 1.5], nalgebra::DMatrix::zeros(3, 4))?;
+    /// assert_eq!(c.eval_cost(2, 7), Cost::new(3 + 2, 9));
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn eval_cost(&self, param_bits: u128, sample_bits: u128) -> crate::cost::Cost {
+        crate::cost::Cost::new(
+            self.samples.nrows() as u128 + (self.params.len() as u128).ilog2() as u128,
+            sample_bits.saturating_add(param_bits),
+        )
+    }
+
     /// Index `k` of the segment `[params[k], params[k+1]]` that holds `t` (clamped to the ends).
     fn segment(&self, t: &T) -> usize {
         let last = self.params.len() - 2;

@@ -5,6 +5,7 @@ use nalgebra::{DMatrix, DVector};
 use super::scheme::DeCasteljauScheme;
 use super::{check_param, check_params};
 use crate::bernstein::{bernstein_all, bernstein_all_into, falling_factorial, power};
+use crate::cost::{polynomial_bits, Cost};
 use crate::error::{check_finite, Error, Result};
 use crate::param::check_parameter;
 use crate::param::Curve;
@@ -282,6 +283,27 @@ impl<T: Scalar> BezierCurve<T> {
     pub fn scheme(&self, u: T) -> DeCasteljauScheme<T> {
         let (s, t) = self.weights(&u);
         DeCasteljauScheme::compute(&self.control, &s, &t, u)
+    }
+
+    /// The cost of the point at one parameter of `param_bits` bits by de Casteljau's scheme
+    /// ([`scheme`](Self::scheme); [`eval`](Self::eval) does no more): `d (n+1)²` operations
+    /// (`n` levels of convex combinations, two products and a sum per coordinate and point), on
+    /// numbers of [`polynomial_bits`]`(n, param_bits,
+    /// control_bits)` bits, `control_bits` the size of the control points.
+    ///
+    /// ```
+    /// use cagd::bezier::BezierCurve;
+    /// use cagd::cost::Cost;
+    /// let c = BezierCurve::from_points(&[[0.0, 0.0], [1.0, 2.0], [3.0, 1.0]])?;
+    /// assert_eq!(c.eval_cost(4, 10), Cost::new(18, 20));
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn eval_cost(&self, param_bits: u128, control_bits: u128) -> Cost {
+        let n = self.degree();
+        Cost::new(
+            self.dim() as u128 * (n as u128 + 1).pow(2),
+            polynomial_bits(n, param_bits, control_bits),
+        )
     }
 
     /// The point `Σ_i b_i B_i^n(t)`, `t = (u − a)/(b − a)`, from the Bernstein form (thesis
@@ -562,7 +584,8 @@ impl<T: Scalar> BezierCurve<T> {
         Ok((left, right))
     }
 
-    /// The same curve written with degree `n + 1` (degree elevation):
+    /// The same curve written with degree `n + 1` (degree elevation, coordinate by coordinate
+    /// [`bernstein::elevate_once`](crate::bernstein::elevate_once)):
     /// `b'_i = i/(n+1) · b_{i−1} + (1 − i/(n+1)) · b_i`, `i = 0, …, n + 1` (with the
     /// out-of-range terms dropped, so `b'_0 = b_0` and `b'_{n+1} = b_n`).
     ///
@@ -575,19 +598,12 @@ impl<T: Scalar> BezierCurve<T> {
     /// # Ok::<(), cagd::Error>(())
     /// ```
     pub fn elevate(&self) -> Self {
-        let n = self.degree();
-        let (d, m) = (self.dim(), n + 1);
-        let control = DMatrix::from_fn(d, m + 1, |c, i| {
-            if i == 0 {
-                self.control[(c, 0)].clone()
-            } else if i == m {
-                self.control[(c, n)].clone()
-            } else {
-                let alpha = T::from_ratio(i as i64, m as i64);
-                alpha.clone() * self.control[(c, i - 1)].clone()
-                    + (T::one() - alpha) * self.control[(c, i)].clone()
-            }
-        });
+        let rows: Vec<Vec<T>> = self
+            .control
+            .row_iter()
+            .map(|r| crate::bernstein::elevate_once(&r.iter().cloned().collect::<Vec<_>>()))
+            .collect();
+        let control = DMatrix::from_fn(self.dim(), self.degree() + 2, |c, i| rows[c][i].clone());
         BezierCurve::from_valid(control, self.a.clone(), self.b.clone())
     }
 
@@ -707,6 +723,16 @@ mod tests {
 
     fn q(n: i64, d: i64) -> BigRational {
         <BigRational as Scalar>::from_ratio(n, d)
+    }
+
+    #[test]
+    fn de_casteljau_cost_grows_with_the_degree_and_the_parameter() {
+        let c = BezierCurve::new(DMatrix::<f64>::zeros(3, 5)).unwrap();
+        assert_eq!(c.eval_cost(0, 0), Cost::new(3 * 25, 4));
+        // Each of the 4 levels multiplies by t = p/q: 10-bit parameters add 11 bits each.
+        assert_eq!(c.eval_cost(10, 7).bits(), 7 + 4 * 11);
+        let point = BezierCurve::new(DMatrix::<f64>::zeros(2, 1)).unwrap();
+        assert_eq!(point.eval_cost(10, 7), Cost::new(2, 7));
     }
 
     #[test]

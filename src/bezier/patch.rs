@@ -7,6 +7,7 @@ use super::check_params;
 use super::curve::BezierCurve;
 use super::scheme::{patch_step_in_place, patch_steps, PatchScheme};
 use crate::bernstein::{bernstein_all, bernstein_all_into, falling_factorial};
+use crate::cost::{polynomial_bits, Cost};
 use crate::error::{check_finite, Error, Result};
 use crate::param::{check_parameter, Surface};
 use crate::scalar::Scalar;
@@ -326,6 +327,37 @@ impl<T: Scalar> BezierPatch<T> {
         PatchScheme::compute(&self.coords, u, v)
     }
 
+    /// The cost of the tensor de Casteljau scheme at one point ([`scheme`](Self::scheme)):
+    /// `(m+1)(n+1)(m+n+2)` operations per coordinate (`m + n` levels over at most
+    /// `(m+1)(n+1)` points), counted for the three coordinates of a net in space, on numbers
+    /// of the size of [`grid_cost`](Self::grid_cost).
+    ///
+    /// ```
+    /// use cagd::bezier::BezierPatch;
+    /// let p: BezierPatch = BezierPatch::hyperbolic_paraboloid(); // degree (1, 1)
+    /// assert_eq!(p.scheme_cost(0, 0, 0).ops(), 3 * 4 * 4);
+    /// ```
+    pub fn scheme_cost(&self, u_bits: u128, v_bits: u128, control_bits: u128) -> Cost {
+        let (m1, n1) = self.net_size();
+        Cost::new(
+            3 * (m1 * n1) * (m1 + n1),
+            self.point_bits(u_bits, v_bits, control_bits),
+        )
+    }
+
+    /// `(m + 1, n + 1)`.
+    fn net_size(&self) -> (u128, u128) {
+        let (m, n) = self.degree();
+        (m as u128 + 1, n as u128 + 1)
+    }
+
+    /// The size the values reach: the bits of `u` at `m` levels, of `v` at `n`, over the
+    /// control points'.
+    fn point_bits(&self, u_bits: u128, v_bits: u128, control_bits: u128) -> u128 {
+        let (m, n) = self.degree();
+        polynomial_bits(m, u_bits, 0).saturating_add(polynomial_bits(n, v_bits, control_bits))
+    }
+
     /// The point from the Bernstein form, eq. (3.5): `Σ_i B_i^m(u) (Σ_j B_j^n(v) b_{i,j})`, the
     /// bases from [`bernstein_all`]. Agrees with [`eval`](Self::eval) up to rounding (exactly,
     /// for rationals).
@@ -490,6 +522,23 @@ impl<T: Scalar> BezierPatch<T> {
         Ok(self.grid(us, vs))
     }
 
+    /// The cost of one point of [`try_eval_grid`](Self::try_eval_grid): the basis rows in `u`
+    /// and `v`, then about `2 (m+1)(n+1)` operations per coordinate, counted for the three
+    /// coordinates of a net in space (`6 (m+1)(n+1)`), on numbers that grow by the bits of `u`
+    /// at `m` levels and of `v` at `n` over the control points' `control_bits`
+    /// ([`polynomial_bits`]).
+    ///
+    /// ```
+    /// use cagd::bezier::BezierPatch;
+    /// use cagd::cost::Cost;
+    /// let p: BezierPatch = BezierPatch::hyperbolic_paraboloid(); // degree (1, 1)
+    /// assert_eq!(p.grid_cost(3, 5, 2), Cost::new(24, 4 + 8));
+    /// ```
+    pub fn grid_cost(&self, u_bits: u128, v_bits: u128, control_bits: u128) -> Cost {
+        let (m1, n1) = self.net_size();
+        Cost::new(6 * m1 * n1, self.point_bits(u_bits, v_bits, control_bits))
+    }
+
     fn grid(&self, us: &[T], vs: &[T]) -> PointGrid<T> {
         let mut grid = PointGrid::from_elem((us.len(), vs.len(), self.dim()), T::zero());
         let out = grid.as_mut_slice();
@@ -598,6 +647,16 @@ mod tests {
 
     fn q(n: i64, d: i64) -> BigRational {
         <BigRational as Scalar>::from_ratio(n, d)
+    }
+
+    #[test]
+    fn grid_and_scheme_costs() {
+        let p = rational_patch(3, 2); // (m + 1)(n + 1) = 12
+        assert_eq!(p.grid_cost(0, 0, 0), Cost::new(72, 5));
+        assert_eq!(p.scheme_cost(0, 0, 0), Cost::new(3 * 12 * 7, 5));
+        // u at m = 3 levels, v at n = 2 over the control points.
+        assert_eq!(p.grid_cost(4, 9, 20).bits(), 3 * 5 + 2 * 10 + 20);
+        assert_eq!(p.scheme_cost(4, 9, 20).bits(), p.grid_cost(4, 9, 20).bits());
     }
 
     fn rational_patch(m: usize, n: usize) -> BezierPatch<BigRational> {

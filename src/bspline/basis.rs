@@ -1,6 +1,7 @@
 //! B-spline basis functions: the Cox–de Boor recursion (the CAD notes and the lecture notes) and the
 //! triangular scheme that evaluates the `p + 1` non-zero ones at once.
 
+use crate::cost::{polynomial_bits, Cost};
 use crate::error::Result;
 use crate::scalar::Scalar;
 
@@ -187,6 +188,50 @@ pub fn basis_all<T: Scalar>(p: usize, n_control: usize, knots: &[T], u: &T) -> R
     Ok(all)
 }
 
+/// The cost of the `p + 1` non-zero basis functions of degree `p` at one parameter of
+/// `param_bits` bits ([`basis_functions`], the triangular scheme): `(p+1)²` operations, on
+/// numbers of `p` levels of `(u − u_i)/(u_{i+p} − u_i)`
+/// ([`polynomial_bits`]`(p, param_bits + 3 knot_bits, 0)`, `knot_bits` the size of the knots).
+///
+/// ```
+/// assert_eq!(cagd::bspline::basis_cost(2, 4, 1), cagd::cost::Cost::new(9, 16));
+/// ```
+pub fn basis_cost(p: usize, param_bits: u128, knot_bits: u128) -> Cost {
+    Cost::new(
+        (p as u128 + 1).pow(2),
+        polynomial_bits(p, span_bits(param_bits, knot_bits), 0),
+    )
+}
+
+/// The cost of the point of a degree-`p` B-spline curve in `d` coordinates at one parameter:
+/// the basis ([`basis_cost`]) and its combination with the `p + 1` control points, `2d(p+1)`
+/// operations, on numbers of [`polynomial_bits`]`(p, param_bits + 3 knot_bits,
+/// coefficient_bits)` bits. A NURBS curve is the B-spline curve of its homogeneous points:
+/// `d + 1` coordinates, coefficients as large as its points and weights together.
+///
+/// ```
+/// use cagd::cost::Cost;
+/// // A cubic in the plane: 16 + 2·2·4 operations.
+/// assert_eq!(cagd::bspline::curve_point_cost(3, 2, 0, 0, 0), Cost::new(32, 3));
+/// ```
+pub fn curve_point_cost(
+    p: usize,
+    d: usize,
+    param_bits: u128,
+    knot_bits: u128,
+    coefficient_bits: u128,
+) -> Cost {
+    Cost::new(
+        basis_cost(p, param_bits, knot_bits).ops() + 2 * d as u128 * (p as u128 + 1),
+        polynomial_bits(p, span_bits(param_bits, knot_bits), coefficient_bits),
+    )
+}
+
+/// The bits of one level of the triangular scheme, `(u − u_i)/(u_{i+p} − u_i)`.
+fn span_bits(param_bits: u128, knot_bits: u128) -> u128 {
+    param_bits.saturating_add(knot_bits.saturating_mul(3))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -204,6 +249,16 @@ mod tests {
             }
             assert!((all.iter().sum::<f64>() - 1.0).abs() < 1e-15);
         }
+    }
+
+    #[test]
+    fn costs_of_the_basis_and_of_a_point() {
+        let basis = basis_cost(3, 10, 2);
+        assert_eq!(basis, Cost::new(16, 3 * 17));
+        let point = curve_point_cost(3, 4, 10, 2, 5);
+        assert_eq!(point, Cost::new(16 + 32, 3 * 17 + 5));
+        // Degree 0: one basis function, one copy per coordinate.
+        assert_eq!(curve_point_cost(0, 3, 9, 9, 1), Cost::new(1 + 6, 1));
     }
 
     #[test]

@@ -14,7 +14,7 @@ mod grid;
 mod knots;
 mod surface;
 
-pub use basis::{basis_all, basis_functions, cox_de_boor, find_span};
+pub use basis::{basis_all, basis_cost, basis_functions, cox_de_boor, curve_point_cost, find_span};
 pub use curve::BSplineCurve;
 pub use knots::KnotVector;
 pub use surface::BSplineSurface;

@@ -4,57 +4,18 @@ use nalgebra::DVector;
 
 use super::gregory::GregoryTwist;
 use super::{push_gap, CoonsBoundary, Corner};
+use crate::cost::{blended, polynomial_bits, Cost};
 use crate::error::{Error, Result};
+use crate::hermite::{hermite_basis, hermite_basis_derivative};
 use crate::param::{usable_domain, Curve, OnUnitInterval, Surface};
 use crate::scalar::Scalar;
 
-/// The cubic Hermite basis `[H0³, H1³, H2³, H3³](t)` of thesis §4.2–4.3, from the cubic
-/// Bernstein polynomials `B_i³`:
-///
-/// ```text
-/// H0 = B0 + B1 = (1−t)²(1+2t)      H1 =  B1/3 = t(1−t)²
-/// H2 = −B2/3   = −t²(1−t)          H3 = B2 + B3 = t²(3−2t)
-/// ```
-///
-/// Checked against the Hermite conditions (the thesis states them only partly): `H0`, `H3`
-/// interpolate the values (`H0(0) = 1`, `H0(1) = 0`, `H3 = 1 − H0`) and have zero derivative at
-/// both ends; `H1`, `H2` vanish at both ends and carry the derivatives: `H1'(0) = 1`,
-/// `H1'(1) = 0`, `H2'(0) = 0`, `H2'(1) = 1`. So `H1 = B1/3` and `H2 = −B2/3` are right, signs
-/// included (the minus makes `H2'(1) = +1`).
-///
-/// ```
-/// use cagd::coons::{hermite_cubic, hermite_cubic_derivative};
-/// assert_eq!(hermite_cubic(&0.5), [0.5, 0.125, -0.125, 0.5]);
-/// assert_eq!(hermite_cubic_derivative(&0.0), [0.0, 1.0, 0.0, 0.0]);
-/// assert_eq!(hermite_cubic_derivative(&1.0), [0.0, 0.0, 1.0, 0.0]);
-/// ```
-pub fn hermite_cubic<T: Scalar>(t: &T) -> [T; 4] {
-    let s = T::one() - t.clone();
-    let three = T::from_usize(3);
-    let b0 = s.clone() * s.clone() * s.clone();
-    let ts2 = t.clone() * s.clone() * s.clone();
-    let t2s = t.clone() * t.clone() * s;
-    let b3 = t.clone() * t.clone() * t.clone();
-    [
-        b0 + three.clone() * ts2.clone(),
-        ts2,
-        -t2s.clone(),
-        three * t2s + b3,
-    ]
-}
-
-/// The derivatives `[H0', H1', H2', H3'](t)` of [`hermite_cubic`]:
-/// `H0' = −6t(1−t)`, `H1' = (1−t)(1−3t)`, `H2' = t(3t−2)`, `H3' = 6t(1−t)`.
-pub fn hermite_cubic_derivative<T: Scalar>(t: &T) -> [T; 4] {
-    let s = T::one() - t.clone();
-    let three = T::from_usize(3);
-    let six_ts = T::from_usize(6) * t.clone() * s.clone();
-    [
-        -six_ts.clone(),
-        s * (T::one() - three.clone() * t.clone()),
-        t.clone() * (three * t.clone() - T::from_usize(2)),
-        six_ts,
-    ]
+/// The cubic Hermite basis in the thesis's order `[H0, H1, H2, H3](t)` (§4.2–4.3), the order of
+/// the rows and columns of the matrix (4.5): [`hermite_basis`] `[f_1, f_2, f_3, f_4]` (the
+/// crate's one Hermite basis, in the order of the Ferguson geometry) rearranged as
+/// `[f_1, f_3, f_4, f_2]`.
+fn thesis_order<T>([f1, f2, f3, f4]: [T; 4]) -> [T; 4] {
+    [f1, f3, f4, f2]
 }
 
 /// The four cross-boundary derivative curves of a bicubically blended Coons patch (thesis
@@ -118,7 +79,7 @@ pub struct SurfacePartials<T: Scalar = f64> {
 ///     ⎣ x(1,0)    x_v(1,0)   x_v(1,1)   x(1,1)  ⎦
 /// ```
 ///
-/// with the Hermite basis of [`hermite_cubic`].
+/// with the Hermite basis `H0 … H3` of [`hermite_basis`](crate::hermite::hermite_basis).
 ///
 /// **Domains.** The patch is over `[0, 1]²`. The boundary curves are reparametrised onto
 /// `[0, 1]` as for every Coons patch ([`CoonsBoundary`]); so are the cross-boundary curves in
@@ -401,8 +362,8 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
     /// `x(u, v)` from the curve values at `u` (`[c1, dv0, dv1, c2]`) and at `v`
     /// (`[d1, du0, du1, d2]`).
     fn combine(&self, u: &T, v: &T, at_u: &[DVector<T>; 4], at_v: &[DVector<T>; 4]) -> DVector<T> {
-        let hu = hermite_cubic(u);
-        let hv = hermite_cubic(v);
+        let hu = thesis_order(hermite_basis(u.clone()));
+        let hv = thesis_order(hermite_basis(v.clone()));
         let tw = self.twists(u, v);
         DVector::from_fn(self.boundary.dim(), |k, _| {
             let hc = dot(&hu, at_v, k);
@@ -466,10 +427,10 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
             deriv(&|t| du1.eval_derivative(t), "x_u(1,v)", &v)?,
             deriv(&|t| d2.eval_derivative(t), "d2", &v)?,
         ];
-        let hu = hermite_cubic(&u);
-        let hv = hermite_cubic(&v);
-        let hu_d = hermite_cubic_derivative(&u);
-        let hv_d = hermite_cubic_derivative(&v);
+        let hu = thesis_order(hermite_basis(u.clone()));
+        let hv = thesis_order(hermite_basis(v.clone()));
+        let hu_d = thesis_order(hermite_basis_derivative(u.clone()));
+        let hv_d = thesis_order(hermite_basis_derivative(v.clone()));
         let tw = self.twists(&u, &v);
         let (tw_u, tw_v): ([DVector<T>; 4], [DVector<T>; 4]) = match &self.twist {
             TwistData::Constant(_) => {
@@ -583,5 +544,45 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> Surface<T> for BicubicCoonsPatch<C, D,
             }
         }
         grid
+    }
+}
+
+/// The cost of one point of a bicubically blended Coons patch in `d` coordinates: the eight
+/// curves at their parameters (`curves`, the cost of each: the four boundary curves and the
+/// four cross-boundary derivatives) and about 64 operations per coordinate for the blend, on
+/// numbers as large as the curves' values grown by the cubic Hermite functions of `u` and `v`
+/// ([`polynomial_bits`]`(3, u_bits, 0) + polynomial_bits(3, v_bits, 0)`;
+/// [`blended`](crate::cost::blended)).
+///
+/// ```
+/// use cagd::coons::bicubic_point_cost;
+/// use cagd::cost::Cost;
+/// assert_eq!(bicubic_point_cost([Cost::new(2, 10); 8], 3, 1, 1), Cost::new(16 + 192, 10 + 12));
+/// ```
+pub fn bicubic_point_cost(
+    curves: impl IntoIterator<Item = Cost>,
+    d: usize,
+    u_bits: u128,
+    v_bits: u128,
+) -> Cost {
+    blended(
+        curves,
+        64 * d as u128,
+        polynomial_bits(3, u_bits, 0).saturating_add(polynomial_bits(3, v_bits, 0)),
+    )
+}
+
+#[cfg(test)]
+mod cost_tests {
+    use super::*;
+
+    #[test]
+    fn the_hermite_blend_grows_by_cubics_in_u_and_v() {
+        let c = bicubic_point_cost([Cost::new(1, 0); 8], 1, 0, 0);
+        assert_eq!(c, Cost::new(8 + 64, 6));
+        assert_eq!(
+            bicubic_point_cost([Cost::new(1, 100); 8], 1, 10, 0).bits(),
+            100 + 33 + 3
+        );
     }
 }

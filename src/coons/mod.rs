@@ -52,10 +52,9 @@ mod mask;
 
 pub use crate::tolerance::{Corner, CornerGap, Tolerance};
 pub use bicubic::{
-    hermite_cubic, hermite_cubic_derivative, BicubicCoonsPatch, CrossDerivatives, SurfacePartials,
-    Twist,
+    bicubic_point_cost, BicubicCoonsPatch, CrossDerivatives, SurfacePartials, Twist,
 };
-pub use bilinear::CoonsPatch;
+pub use bilinear::{coons_point_cost, CoonsPatch};
 pub use discrete::discrete_coons;
 pub use generalized::{BlendingPair, GeneralizedCoonsPatch, BLEND_TOLERANCE};
 pub use gregory::GregoryTwist;

@@ -230,9 +230,15 @@ fn too_few_spline_points() {
 
 #[test]
 fn interpolation_and_hermite_errors() {
+    // Repeated nodes are `DuplicateNodes` (naming both), as everywhere else the Lagrange basis
+    // is used: the lecture notes' interpolation shares the node check of `cagd::lagrange`.
     assert!(matches!(
         LagrangePolynomial::new(vec![1.0, 1.0], vec![0.0, 1.0]),
-        Err(Error::Singular { .. })
+        Err(Error::DuplicateNodes {
+            first: 0,
+            second: 1,
+            ..
+        })
     ));
     assert!(matches!(
         LagrangePolynomial::new(vec![1.0], vec![0.0, 1.0]),
@@ -240,7 +246,11 @@ fn interpolation_and_hermite_errors() {
     ));
     assert!(matches!(
         blending_matrix(&[0.0, 0.5, 0.5]),
-        Err(Error::Singular { .. })
+        Err(Error::DuplicateNodes {
+            first: 1,
+            second: 2,
+            ..
+        })
     ));
     assert!(matches!(
         PiecewiseLinear::new(vec![0.0], vec![1.0]),

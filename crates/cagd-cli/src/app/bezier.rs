@@ -14,7 +14,7 @@ use cagd::bezier::{BezierCurve, BezierPatch};
 use cagd_octave::literal::{Env, LiteralScalar};
 
 use super::common::*;
-use super::work::{bits, check_work, plotted, polynomial_bits, work};
+use super::work::{bits, check_work, plotted, weigh};
 use super::{prepare_script, Outcome};
 
 #[derive(Debug, Args)]
@@ -110,20 +110,22 @@ pub fn decasteljau<T: LiteralScalar>(
 /// is 6.6 GB of text) is refused up front like any other large work.
 const STEPS_FACTOR: u128 = 50;
 
-/// The work of evaluating `curve` by de Casteljau at `ts` and at `dense` (a picture): `(n+1)²`
-/// operations per coordinate and parameter, on numbers of [`polynomial_bits`] of the degree;
-/// with `steps` [`STEPS_FACTOR`] times that at `ts`.
+/// The work of evaluating `curve` by de Casteljau at `ts` and at `dense` (a picture),
+/// [`BezierCurve::eval_cost`] at each parameter; with `steps` [`STEPS_FACTOR`] times that at
+/// `ts`.
 fn curve_work<T: LiteralScalar>(
     curve: &BezierCurve<T>,
     ts: &[T],
     steps: bool,
     dense: &[T],
 ) -> u128 {
-    let per_t = curve.dim() as u128 * (curve.degree() as u128 + 1).pow(2);
     let coefficients = bits(curve.control().iter());
     let at = |params: &[T], times: u128| {
-        let size = polynomial_bits(curve.degree(), bits(params), coefficients);
-        work::<T>(params.len() as u128 * times * per_t, size)
+        weigh::<T>(
+            curve
+                .eval_cost(bits(params), coefficients)
+                .times(params.len() as u128 * times),
+        )
     };
     at(ts, if steps { STEPS_FACTOR } else { 1 }).saturating_add(at(dense, 1))
 }
@@ -178,19 +180,21 @@ pub fn bezier_patch<T: LiteralScalar>(
     check_grid(limits, us.len(), vs.len())?;
     let single = point_mode(limits, &cmd.params);
     let picture: Vec<T> = T::linspace(&T::zero(), &T::one(), 21);
-    // The grid: basis rows per u and v, then about 2(m+1)(n+1) operations per coordinate and
-    // point, on numbers that grow by the bits of u at m levels and of v at n. --steps adds a
-    // tensor de Casteljau scheme per point, (m+1)(n+1)(m+n+2) operations per coordinate,
-    // STEPS_FACTOR times for writing it out; the 21 × 21 picture of a single point is a grid.
-    let per_point = 6 * (m1 as u128 * n1 as u128);
-    let per_scheme = 3 * (m1 as u128 * n1 as u128) * (m1 + n1) as u128;
+    // The grid (BezierPatch::grid_cost per point); --steps adds a tensor de Casteljau scheme
+    // per point (BezierPatch::scheme_cost), STEPS_FACTOR times for writing it out; the
+    // 21 × 21 picture of a single point is a grid.
     let coefficients = bits(net.iter());
     let grid_work = |us: &[T], vs: &[T], steps: bool| {
-        let size = polynomial_bits(m1.saturating_sub(1), bits(us), 0)
-            .saturating_add(polynomial_bits(n1 - 1, bits(vs), coefficients));
-        let points = us.len() as u128 * vs.len() as u128;
-        let per = per_point + if steps { STEPS_FACTOR * per_scheme } else { 0 };
-        work::<T>(points * per, size)
+        let (u_bits, v_bits) = (bits(us), bits(vs));
+        let mut per = patch.grid_cost(u_bits, v_bits, coefficients);
+        if steps {
+            per = per.and(
+                patch
+                    .scheme_cost(u_bits, v_bits, coefficients)
+                    .times(STEPS_FACTOR),
+            );
+        }
+        weigh::<T>(per.times(us.len() as u128 * vs.len() as u128))
     };
     let pictures = single && (cmd.plot.plot.is_some() || cmd.mesh.mesh.is_some());
     let picture = if pictures { picture } else { Vec::new() };
@@ -281,15 +285,11 @@ pub fn bernstein<T: LiteralScalar>(
     check_degree(limits, "--degree", cmd.degree)?;
     let ts: Vec<T> =
         params_or_samples(limits, "--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
-    // The triangular recurrence: (n+1)² operations per parameter, on numbers of
-    // polynomial_bits of the degree.
+    // The triangular recurrence at every parameter.
     check_work(
         limits,
         "--t",
-        work::<T>(
-            ts.len() as u128 * (cmd.degree as u128 + 1).pow(2),
-            polynomial_bits(cmd.degree, bits(&ts), 0),
-        ),
+        weigh::<T>(cagd::bernstein::basis_cost(cmd.degree, bits(&ts)).times(ts.len() as u128)),
     )?;
     let all = cagd::bernstein::basis_matrix(cmd.degree, &ts);
     let result = match cmd.i {

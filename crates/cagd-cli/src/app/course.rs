@@ -11,7 +11,7 @@ use cagd::{BSplineCurve, CubicSpline, EndCondition, HermiteCubic, NurbsCurve};
 use cagd_octave::literal::LiteralScalar;
 
 use super::common::*;
-use super::work::{bits, check_work, plotted, polynomial_bits, work};
+use super::work::{bits, check_work, plotted, weigh};
 use super::Outcome;
 
 fn vector<T: LiteralScalar>(
@@ -131,31 +131,29 @@ pub fn spline<T: LiteralScalar>(limits: &Limits, cmd: &SplineCommand) -> Result<
 }
 
 /// The work of an interpolating spline through the columns of `pts`: the (cyclic)
-/// tridiagonal solve, about 10 operations per point and coordinate (twice when closed), then
-/// a cubic at every parameter (`ts`, else 10 per segment), about 12 operations per
-/// coordinate. In exact arithmetic the solve's pivots are continuants growing by about
-/// 4 bits per point (found by fuzzing: 2 223 points took 2 s, 1 000 points of random digits
-/// 6 s, each number of the result near 3 800 bits).
+/// tridiagonal solve ([`cagd::spline::interpolation_cost`]) on the points and end tangents,
+/// then a cubic at every parameter ([`cagd::spline::sample_cost`]; at `ts`, else 10 per
+/// segment, whose parameters `k/10s` have about twice the bits of the sample count).
 fn spline_work<T: LiteralScalar>(
     pts: &DMatrix<T>,
     end: &EndCondition<T>,
     ts: Option<&[T]>,
 ) -> u128 {
-    let (d, n) = (pts.nrows() as u128, pts.ncols() as u128);
-    let (data_bits, solves) = match end {
+    let (d, n) = (pts.nrows(), pts.ncols());
+    let data_bits = match end {
         EndCondition::Clamped { start, end } => {
-            (bits(pts.iter().chain(start.iter()).chain(end.iter())), 1)
+            bits(pts.iter().chain(start.iter()).chain(end.iter()))
         }
-        EndCondition::Closed => (bits(pts.iter()), 2),
-        EndCondition::Natural => (bits(pts.iter()), 1),
+        EndCondition::Closed | EndCondition::Natural => bits(pts.iter()),
     };
-    let solved = (4 * n).saturating_add(2 * data_bits);
-    let samples = ts.map_or(10 * n + 1, |t| t.len() as u128);
-    let param_bits = ts.map_or(2 * (128 - (10 * n + 1).leading_zeros() as u128), |t| {
+    let default_samples = 10 * n as u128 + 1;
+    let samples = ts.map_or(default_samples, |t| t.len() as u128);
+    let param_bits = ts.map_or(2 * (128 - default_samples.leading_zeros() as u128), |t| {
         bits(t)
     });
-    work::<T>(10 * solves * n * d, solved)
-        .saturating_add(work::<T>(12 * samples * d, solved + 3 * param_bits))
+    weigh::<T>(cagd::spline::interpolation_cost(n, d, end, data_bits)).saturating_add(weigh::<T>(
+        cagd::spline::sample_cost(n, d, data_bits, param_bits).times(samples),
+    ))
 }
 
 #[derive(Debug, Args)]
@@ -200,28 +198,26 @@ pub fn hermite<T: LiteralScalar>(
     let ts: Vec<T> =
         params_or_samples(limits, "--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
     let dense: Vec<T> = T::linspace(&T::zero(), &T::one(), 101);
-    // Per parameter the four cubic Hermite functions (about 16 operations) and their
-    // combination (8 per coordinate), on cubics in t; --steps adds the basis rows.
-    let d = h.dim() as u128;
     // The Bézier form of the cubic (drawn, and printed with --steps); its inner points are
     // x_1 ± x'/3, which overflow for end points and tangents near ±1.8e308.
     let bezier = h.to_bezier().map_err(lib(
         "--p0/--p1/--t0/--t1",
         "end points and tangents whose Bézier points x ± x'/3 stay within ±1.8e308",
     ))?;
-    let coefficient_bits = bits(bezier.control().iter()) + 2;
-    let at = |params: &[T], per: u128| {
-        work::<T>(
-            params.len() as u128 * per,
-            polynomial_bits(3, bits(params), coefficient_bits),
-        )
+    // Per parameter the point (HermiteCubic::eval_cost); --steps adds the basis rows.
+    let bezier_bits = bits(bezier.control().iter());
+    let at = |params: &[T], steps: bool| {
+        let mut per = h.eval_cost(bits(params), bezier_bits);
+        if steps {
+            per = per.and(cagd::hermite::basis_cost(bits(params)));
+        }
+        weigh::<T>(per.times(params.len() as u128))
     };
     let picture = plotted(&cmd.plot, &dense);
-    let steps = if cmd.steps.steps { 16 } else { 0 };
     check_work(
         limits,
         "--t",
-        at(&ts, 16 + 8 * d + steps).saturating_add(at(picture, 16 + 8 * d)),
+        at(&ts, cmd.steps.steps).saturating_add(at(picture, false)),
     )?;
     let mut report = Report::new();
     if cmd.steps.steps {
@@ -349,9 +345,9 @@ pub fn bspline<T: LiteralScalar>(
 }
 
 /// The work of a B-spline or NURBS curve of degree p in d coordinates (`(p, d, knot bits)`)
-/// at `ts` (the basis twice with `steps`) and at `dense` (a picture): per parameter the
-/// triangular basis, `(p+1)²` operations, and the combination, `2d(p+1)`; on numbers of
-/// p levels of `(t − t_i)/(t_{i+p} − t_i)` over the coefficients' `coefficient_bits`.
+/// at `ts` (the basis twice with `steps`) and at `dense` (a picture):
+/// [`cagd::bspline::curve_point_cost`] per parameter, plus [`cagd::bspline::basis_cost`] with
+/// `steps`.
 fn spline_basis_work<T: LiteralScalar>(
     (p, d, knot_bits): (usize, usize, u128),
     coefficient_bits: u128,
@@ -359,13 +355,16 @@ fn spline_basis_work<T: LiteralScalar>(
     steps: bool,
     dense: &[T],
 ) -> u128 {
-    let basis = (p as u128 + 1).pow(2);
-    let per = basis * if steps { 2 } else { 1 } + 2 * d as u128 * (p as u128 + 1);
-    let at = |params: &[T], per: u128| {
-        let size = polynomial_bits(p, bits(params) + 3 * knot_bits, coefficient_bits);
-        work::<T>(params.len() as u128 * per, size)
+    let at = |params: &[T], steps: bool| {
+        let param_bits = bits(params);
+        let mut per =
+            cagd::bspline::curve_point_cost(p, d, param_bits, knot_bits, coefficient_bits);
+        if steps {
+            per = per.and(cagd::bspline::basis_cost(p, param_bits, knot_bits));
+        }
+        weigh::<T>(per.times(params.len() as u128))
     };
-    at(ts, per).saturating_add(at(dense, basis + 2 * d as u128 * (p as u128 + 1)))
+    at(ts, steps).saturating_add(at(dense, false))
 }
 
 #[derive(Debug, Args)]

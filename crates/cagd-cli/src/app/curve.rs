@@ -2,11 +2,12 @@
 //! what evaluating one costs.
 
 use cagd::bezier::BezierCurve;
+use cagd::cost::Cost;
 use cagd::{Curve, SampledCurve};
 use cagd_octave::literal::LiteralScalar;
 use nalgebra::DVector;
 
-use super::work::{bits, polynomial_bits};
+use super::work::bits;
 
 /// A curve as the command line takes it, with its domain (what a Coons or Gordon construction
 /// reparametrises onto `[0, 1]`).
@@ -51,25 +52,19 @@ impl<T: LiteralScalar> Curve<T> for CliCurve<T> {
     }
 }
 
-/// What evaluating `curve` at one of `params` costs: (operations, bits its values reach).
-/// A Bézier curve is a de Casteljau scheme (`d (n+1)²` operations on numbers of
-/// [`polynomial_bits`]); a sampled curve is looked up (a binary search, then a copy of the
-/// sample where the construction needs it).
-pub fn curve_cost<T: LiteralScalar>(curve: &CliCurve<T>, params: &[T]) -> (u128, u128) {
+/// What evaluating `curve` at one of `params` costs: a Bézier curve is a de Casteljau scheme
+/// ([`BezierCurve::eval_cost`]), a sampled curve is looked up ([`SampledCurve::eval_cost`]),
+/// on numbers the size of the parameters and of the curve's points.
+pub fn curve_cost<T: LiteralScalar>(curve: &CliCurve<T>, params: &[T]) -> Cost {
     match curve {
-        CliCurve::Bezier(b) => (
-            b.dim() as u128 * (b.degree() as u128 + 1).pow(2),
-            polynomial_bits(b.degree(), bits(params), bits(b.control().iter())),
-        ),
-        CliCurve::Sampled(s) => (
-            s.dim() as u128 + (s.params().len() as u128).ilog2() as u128,
-            bits(s.samples().iter()).saturating_add(bits(params)),
-        ),
+        CliCurve::Bezier(b) => b.eval_cost(bits(params), bits(b.control().iter())),
+        CliCurve::Sampled(s) => s.eval_cost(bits(params), bits(s.samples().iter())),
     }
 }
 
-/// [`curve_cost`] of each `(curve, parameters)` pair, for [`super::work::blend_work`].
-pub fn curve_costs<T: LiteralScalar>(curves: &[(&CliCurve<T>, &[T])]) -> Vec<(u128, u128)> {
+/// [`curve_cost`] of each `(curve, parameters)` pair, for the blends of
+/// [`cagd::cost::blended`].
+pub fn curve_costs<T: LiteralScalar>(curves: &[(&CliCurve<T>, &[T])]) -> Vec<Cost> {
     curves
         .iter()
         .map(|(c, params)| curve_cost(c, params))

@@ -124,7 +124,9 @@ Examples:
     #[command(after_help = "\
 Input: repeated --u-curve g(u_i, v) (expressions in v) and --v-curve g(u, v_j) (in u), in node
 order, with --u-nodes and --v-nodes (default equally spaced); or --script FILE with appendix
-D's packed g_u (3×kN), g_v, g_uv (k×3k) and nodes x.
+D's packed g_u (3×kN), g_v, g_uv (k×3k) and nodes x, read as krpa_gordon reads them: each curve
+is the polyline through its N samples (at the script's u and v, else linspace(0,1,N)), with the
+crossing from g_uv added where a node is not a sample; default --u/--v: the samples.
 Layout: single --u and --v give the 3×1 point; otherwise the grid nu×nv×3. --steps also prints
 g1, g2, g12. The conditioning line gives the Lebesgue constants of the node vectors.
 

@@ -12,17 +12,20 @@ use crate::args::{
 use crate::plot::{Colour, Figure};
 use crate::{load_net, load_params, CliError, PendingWrites, Report, Value};
 use cagd::coons::{
-    discrete_coons, solve_mask, BicubicCoonsPatch, CoonsBoundary, CrossDerivatives, Mask, Twist,
+    bicubic_point_cost, coons_point_cost, discrete_coons, solve_mask, BicubicCoonsPatch,
+    CoonsBoundary, CrossDerivatives, Mask, Twist,
 };
+use cagd::gordon::gordon_point_cost;
 use cagd::lagrange::Lagrange;
-use cagd::{CoonsPatch, Curve, GordonSurface, Surface, Tolerance};
+use cagd::{CoonsPatch, Curve, GordonSurface, SampledCurve, Surface, Tolerance};
+use cagd_octave::compat::PackedNetwork;
 use cagd_octave::literal::{Env, LiteralScalar, Warning};
 use cagd_octave::script::Script;
 
 use super::bezier::point_mode;
 use super::common::*;
 use super::curve::curve_costs;
-use super::work::{bits, blend_work, check_work, polynomial_bits, work};
+use super::work::{bits, check_work, weigh};
 use super::{prepare_script, Outcome};
 
 /// The boundary curve arguments shared by `coons` and `coons-bicubic`.
@@ -202,17 +205,17 @@ pub fn coons<T: LiteralScalar>(limits: &Limits, cmd: &CoonsCommand) -> Result<Ou
         _ => CoonsPatch::new(c1.clone(), c2.clone(), d1.clone(), d2.clone()),
     }
     .map_err(lib("--c1/--c2/--d1/--d2", expected))?;
-    // x = rc + rd − rcd at every point: the four curves and about 16 operations per
-    // coordinate, on numbers grown by the bits of u and v.
+    // x = rc + rd − rcd at every point (cagd::coons::coons_point_cost).
+    let per_point = coons_point_cost(
+        curve_costs(&[(&c1, &at_u), (&c2, &at_u), (&d1, &at_v), (&d2, &at_v)]),
+        c1.dim(),
+        bits(&at_u),
+        bits(&at_v),
+    );
     check_work(
         limits,
         "--u/--v",
-        blend_work::<T>(
-            evaluated_points((&us, &vs), pictures, (&pus, &pvs)),
-            &curve_costs(&[(&c1, &at_u), (&c2, &at_u), (&d1, &at_v), (&d2, &at_v)]),
-            16 * c1.dim() as u128,
-            bits(&at_u) + bits(&at_v) + 2,
-        ),
+        weigh::<T>(per_point.times(evaluated_points((&us, &vs), pictures, (&pus, &pvs)))),
     )?;
     let mut report = Report::new();
     report.push("u", Value::Matrix(row(&us)));
@@ -434,15 +437,16 @@ pub fn coons_bicubic<T: LiteralScalar>(
             )
         })
         .collect();
+    let per_point = bicubic_point_cost(
+        curve_costs(&uv_curves),
+        curves[0].dim(),
+        bits(&at_u),
+        bits(&at_v),
+    );
     check_work(
         limits,
         "--u/--v",
-        blend_work::<T>(
-            evaluated_points((&us, &vs), pictures, (&pus, &pvs)),
-            &curve_costs(&uv_curves),
-            64 * curves[0].dim() as u128,
-            polynomial_bits(3, bits(&at_u), 0) + polynomial_bits(3, bits(&at_v), 0),
-        ),
+        weigh::<T>(per_point.times(evaluated_points((&us, &vs), pictures, (&pus, &pvs)))),
     )?;
     let [du0, du1, dv0, dv1] = four(curves.split_off(4));
     let [c1, c2, d1, d2] = four(curves);
@@ -526,18 +530,17 @@ pub struct DiscreteCoonsCommand {
     pub plot: PlotArgs,
 }
 
-/// The work of the exact band solve of a mask on `net`. The library refuses its
-/// `size · (w+1)²` operations per coordinate above `--max-work` counting each as one; in
-/// exact arithmetic they took 60–160 ns each (N × N nets of random digits, N = 40…120, 0.4 s
-/// to 12 s: the band starts mostly zero and the mask's weights are small), so each is charged
-/// a sixteenth of [`cagd::limits::exact_op_cost`] of the net's and the mask's numbers.
+/// The work of the exact band solve of a mask on `net` ([`Mask::solve_cost`] for every
+/// coordinate), on numbers as large as the net's and the mask's. The library refuses the
+/// operation count itself above `--max-work`, counting each as one.
 fn exact_mask_work<T: LiteralScalar>(net: &PointGrid<T>, mask: &Mask<T>) -> u128 {
     let (m1, n1, d) = net.dim();
-    let inner = m1.min(n1).saturating_sub(2) as u128;
-    let outer = m1.max(n1).saturating_sub(2) as u128;
     let size_bits = bits(net.iter()).max(bits(&[mask.alpha(), mask.beta()]));
-    let ops = inner * outer * (inner + 2).pow(2) * d as u128;
-    ops.saturating_mul(cagd::limits::exact_op_cost(size_bits)) / 16
+    weigh::<T>(
+        mask.solve_cost(m1.saturating_sub(1), n1.saturating_sub(1))
+            .times(d as u128)
+            .grown(size_bits),
+    )
 }
 
 /// The interior control points from the boundary of a net.
@@ -622,16 +625,12 @@ pub struct GordonCommand {
     pub mesh: MeshArgs,
 }
 
-/// The network of appendix D's packed data: `g_u` (3 × k·N, the curves g(u, v_j) sampled at
-/// u side by side), `g_v` (the curves g(u_i, v) sampled at v), `g_uv` (row i holds
-/// g(u_i, v_j) for j = 0.. side by side), nodes `x`.
-struct PackedNetwork<T: LiteralScalar> {
-    nodes: Vec<T>,
-    at_u: Vec<CurveSource<T>>,
-    at_v: Vec<CurveSource<T>>,
-    points: Vec<Vec<DVector<T>>>,
-}
-
+/// The network of appendix D's packed data (`g_u`, `g_v`, `g_uv`, nodes `x` in both
+/// directions), unpacked by [`PackedNetwork::unpack`] — the unpacker of
+/// [`cagd_octave::compat::krpa_gordon`] too, so both give the same surface. Each curve is
+/// sampled at the script's `u` (or `v`) if it has one value per sample, else at
+/// `linspace(0,1,N)`; where a node is not a sample parameter the crossing from `g_uv` is added
+/// to the curve.
 fn packed_network<T: LiteralScalar>(
     limits: &Limits,
     s: &Script<T>,
@@ -647,53 +646,32 @@ fn packed_network<T: LiteralScalar>(
     };
     let (g_u, g_v, g_uv, x) = (need("g_u")?, need("g_v")?, need("g_uv")?, need("x")?);
     let nodes: Vec<T> = x.iter().cloned().collect();
-    let k = nodes.len();
-    check_degree(limits, "--script", k.saturating_sub(1))?;
-    let split = |name: &str,
-                 m: &DMatrix<T>,
-                 param: &str|
-     -> Result<Vec<CurveSource<T>>, CliError> {
-        if k < 2 || m.ncols() % k != 0 || m.ncols() / k < 2 {
-            return Err(shape(
-                "--script",
-                format!("`{name}` is {}×{} for {k} nodes", m.nrows(), m.ncols()),
-                "3 × k·N: k curves of N ≥ 2 samples side by side, k = length(x) ≥ 2",
-            ));
-        }
-        let n = m.ncols() / k;
-        let params = script_params(s, param, n);
-        if let Some(x) = nodes.iter().find(|x| !params.contains(x)) {
-            return Err(shape(
-                "--script",
-                format!("the node {x} is not among the {n} samples of `{name}`, so the network cannot be checked where its curves cross"),
-                "sampled curves whose samples include every node (for x = [0 0.5 1], an odd N such as N = 11)",
-            ));
-        }
-        Ok((0..k)
-            .map(|c| CurveSource::Samples(params.clone(), m.columns(c * n, n).into_owned()))
-            .collect())
-    };
-    let at_v = split("g_u", &g_u, "u")?;
-    let at_u = split("g_v", &g_v, "v")?;
-    if g_uv.nrows() != k || g_uv.ncols() != 3 * k {
-        return Err(shape(
+    check_degree(limits, "--script", nodes.len().saturating_sub(1))?;
+    PackedNetwork::unpack(&g_u, &g_v, &g_uv, nodes.clone(), nodes, |param, n| {
+        script_params(s, param, n)
+    })
+    .map_err(|e| match e {
+        cagd::Error::ShapeMismatch {
+            what,
+            expected,
+            found,
+        } => shape("--script", format!("`{what}` is {found}"), &expected),
+        cagd::Error::TooFewCurves { .. } => CliError::library(
             "--script",
-            format!("`g_uv` is {}×{} for {k} nodes", g_uv.nrows(), g_uv.ncols()),
-            "k × 3k: row i holds g(u_i, v_j) for j = 1..k, x y z side by side",
-        ));
-    }
-    let points = (0..k)
-        .map(|i| {
-            (0..k)
-                .map(|j| DVector::from_iterator(3, (0..3).map(|c| g_uv[(i, 3 * j + c)].clone())))
-                .collect()
-        })
-        .collect();
-    Ok(PackedNetwork {
-        nodes,
-        at_u,
-        at_v,
-        points,
+            e,
+            "at least 2 nodes x, one curve per node in g_u and in g_v",
+        ),
+        cagd::Error::UnsortedNodes { .. }
+        | cagd::Error::DuplicateNodes { .. }
+        | cagd::Error::NonFinite {
+            what: "x_u" | "x_v",
+            ..
+        } => CliError::library("--script", e, "increasing distinct nodes x"),
+        _ => CliError::library(
+            "--script",
+            e,
+            "curves sampled at increasing parameters u and v, finite samples and crossings",
+        ),
     })
 }
 
@@ -702,7 +680,7 @@ pub fn gordon<T: LiteralScalar>(limits: &Limits, cmd: &GordonCommand) -> Result<
     let script = prepare_script::<T>(limits, &cmd.script, cmd.params.n)?;
     let mut env = script.as_ref().map(|s| s.env().clone()).unwrap_or_default();
     let form_nodes = "increasing distinct values, one per curve";
-    let (u_nodes, v_nodes, at_u, at_v, points) = if cmd.u_curves.is_empty()
+    let (u_nodes, v_nodes, at_u, at_v, packed) = if cmd.u_curves.is_empty()
         && cmd.v_curves.is_empty()
     {
         let s = script.as_ref().ok_or_else(|| {
@@ -713,7 +691,23 @@ pub fn gordon<T: LiteralScalar>(limits: &Limits, cmd: &GordonCommand) -> Result<
             )
         })?;
         let p = packed_network(limits, s)?;
-        (p.nodes.clone(), p.nodes, p.at_u, p.at_v, Some(p.points))
+        let samples = |curves: &[SampledCurve<T>]| -> Vec<CurveSource<T>> {
+            curves
+                .iter()
+                .map(|c| CurveSource::Samples(c.params().to_vec(), c.samples().clone()))
+                .collect()
+        };
+        (
+            p.u_nodes().to_vec(),
+            p.v_nodes().to_vec(),
+            samples(p.curves_at_u()),
+            samples(p.curves_at_v()),
+            Some((
+                p.points().to_vec(),
+                p.u_samples().to_vec(),
+                p.v_samples().to_vec(),
+            )),
+        )
     } else {
         let load_all = |arg: &str, list: &[String]| -> Result<Vec<CurveSource<T>>, CliError> {
             list.iter()
@@ -744,14 +738,21 @@ pub fn gordon<T: LiteralScalar>(limits: &Limits, cmd: &GordonCommand) -> Result<
         (un, vn, at_u, at_v, None)
     };
     let single = point_mode(limits, &cmd.params);
-    let sampled_u = at_v
-        .first()
-        .and_then(|c| c.sample_params())
-        .map(<[T]>::to_vec);
-    let sampled_v = at_u
-        .first()
-        .and_then(|c| c.sample_params())
-        .map(<[T]>::to_vec);
+    // By default the surface is evaluated where the network is sampled: at the packed data's
+    // own sample parameters (without the crossings added at nodes), else at those of the
+    // first sampled curve.
+    let (points, sampled_u, sampled_v) = match packed {
+        Some((p, su, sv)) => (Some(p), Some(su), Some(sv)),
+        None => (
+            None,
+            at_v.first()
+                .and_then(|c| c.sample_params())
+                .map(<[T]>::to_vec),
+            at_u.first()
+                .and_then(|c| c.sample_params())
+                .map(<[T]>::to_vec),
+        ),
+    };
     let (us, vs) = surface_params(
         limits,
         &cmd.params,
@@ -793,26 +794,23 @@ pub fn gordon<T: LiteralScalar>(limits: &Limits, cmd: &GordonCommand) -> Result<
         };
         CliError::library("--u-curve/--v-curve", e, form)
     })?;
-    // g = g1 + g2 − g12 at every point: every curve of the network, the ku·kv points of g12
-    // and the Lagrange bases in u and v (products of k − 1 factors (u − u_j)/(u_i − u_j)).
-    let (ku, kv) = (curves_u.len(), curves_v.len());
+    // g = g1 + g2 − g12 at every point (cagd::gordon::gordon_point_cost).
     let network: Vec<(&CliCurve<T>, &[T])> = curves_u
         .iter()
         .map(|c| (c, &need_v[..]))
         .chain(curves_v.iter().map(|c| (c, &need_u[..])))
         .collect();
-    let basis_bits = |k: usize, at: &[T], nodes: &[T]| {
-        polynomial_bits(k.saturating_sub(1), bits(at) + 2 * bits(nodes), 0)
-    };
+    let per_point = gordon_point_cost(
+        curve_costs(&network),
+        (curves_u.len(), curves_v.len()),
+        curves_u[0].dim(),
+        (bits(&need_u), bits(&u_nodes)),
+        (bits(&need_v), bits(&v_nodes)),
+    );
     check_work(
         limits,
         "--u/--v",
-        blend_work::<T>(
-            evaluated_points((&us, &vs), pictures, (&pus, &pvs)),
-            &curve_costs(&network),
-            (4 * (ku + kv) as u128 + 2 * (ku * kv) as u128) * (1 + curves_u[0].dim() as u128),
-            basis_bits(ku, &need_u, &u_nodes) + basis_bits(kv, &need_v, &v_nodes),
-        ),
+        weigh::<T>(per_point.times(evaluated_points((&us, &vs), pictures, (&pus, &pvs)))),
     )?;
     let mut report = Report::new();
     report.push("u", Value::Matrix(row(&us)));
@@ -898,29 +896,29 @@ pub fn lagrange<T: LiteralScalar>(
         .map_err(lib("--nodes", "distinct finite nodes, at least one"))?;
     let ts: Vec<T> =
         params_or_samples(limits, "--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
-    // The weights: (m+1)² operations; then per parameter the barycentric basis, 4(m+1)
-    // operations, and its combination with d rows of values, 2d(m+1); on numbers of m factors
-    // (t − x_j) of at most bits(t) + bits(x) + 1 bits (polynomial_bits adds the 1). Without
-    // values the m+1 basis values of every parameter are written out: about 100 operations
-    // each to format.
+    // The weights (Lagrange::weights_cost), then per parameter the barycentric basis
+    // (Lagrange::basis_cost) or, with values, the interpolant (Lagrange::interpolation_cost).
+    // Without values the m+1 basis values of every parameter are written out: about 100
+    // operations each to format.
     let values = match &cmd.points {
         Some(text) => Some(points::<T>(limits, "--points", text, None, cmd.rows.rows)?),
         None => None,
     };
     let m1 = nodes.len() as u128;
     let k = ts.len() as u128;
-    let node_bits = bits(&nodes);
-    let (per_node, written) = match &values {
-        Some(v) => (4 + 2 * v.nrows() as u128, 0),
-        None => (4, 100 * k * m1),
+    let (node_bits, param_bits) = (bits(&nodes), bits(&ts));
+    let (per_param, written) = match &values {
+        Some(v) => (
+            basis.interpolation_cost(v.nrows(), param_bits, node_bits, bits(v.iter())),
+            0,
+        ),
+        None => (basis.basis_cost(param_bits, node_bits), 100 * k * m1),
     };
-    let value_bits = values.as_ref().map_or(0, |v| bits(v.iter()));
-    let size = polynomial_bits(nodes.len() - 1, bits(&ts) + node_bits, value_bits);
     check_work(
         limits,
         "--t",
-        work::<T>(m1 * m1, polynomial_bits(nodes.len() - 1, node_bits, 0))
-            .saturating_add(work::<T>(k * m1 * per_node, size))
+        weigh::<T>(basis.weights_cost(node_bits))
+            .saturating_add(weigh::<T>(per_param.times(k)))
             .saturating_add(written),
     )?;
     let mut report = Report::new();

@@ -1124,6 +1124,16 @@ fn new_subcommands_reject_bad_input_cleanly() {
     let d = dir.path();
     let o = |name: &str| d.join(name).to_str().unwrap().to_string();
     let (svg, stl, txt) = (o("x.svg"), o("x.stl"), o("x.txt"));
+    // A packed network whose crossings g_uv have one row instead of one per node (in a
+    // directory of its own: `d` must stay empty).
+    let scripts = tempfile::tempdir().unwrap();
+    let bad_network = scripts.path().join("bad_network.m");
+    let bad_network = bad_network.to_str().unwrap().to_string();
+    std::fs::write(
+        &bad_network,
+        "x = [0 1];\ng_u = [0 1 0 1; 0 0 1 1; 0 1 1 2];\ng_v = [0 0 1 1; 0 1 0 1; 0 1 1 2];\ng_uv = [0 0 0 0 1 1];\n",
+    )
+    .unwrap();
     let cases: Vec<(Vec<&str>, &str)> = vec![
         (vec!["decasteljau", "[1 2; 3]", "--plot", &svg], "CONTROL: "),
         (
@@ -1209,8 +1219,8 @@ fn new_subcommands_reject_bad_input_cleanly() {
             "at least 2 curves",
         ),
         (
-            vec!["gordon", "--script", "tests/data/appendix_d.m", "-o", &txt],
-            "not among the 10 samples",
+            vec!["gordon", "--script", &bad_network, "-o", &txt],
+            "--script: `g_uv` is 1×6 for 2 × 2 nodes",
         ),
         (
             vec!["lagrange", "--nodes", "[0 0 1]", "-o", &txt],

@@ -9,5 +9,6 @@ mod hostile;
 mod limits;
 mod mesh;
 mod non_finite;
+mod packed_network;
 mod regressions;
 mod serve;
