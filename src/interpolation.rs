@@ -12,7 +12,7 @@
 use nalgebra::{DMatrix, DVector};
 
 use crate::error::{check_finite, Error, Result};
-use crate::lagrange::{basis_product, check_distinct_nodes, power_coefficients};
+use crate::lagrange::{basis_product_unchecked, check_distinct_nodes, power_coefficients};
 use crate::param::Curve;
 use crate::scalar::Scalar;
 
@@ -66,10 +66,11 @@ impl<T: Scalar> LagrangePolynomial<T> {
         Ok(LagrangePolynomial { xs, ys })
     }
 
-    /// `Σ y_i L_{i,n}(x)`, each `L_{i,n}` by its product formula ([`basis_product`]).
+    /// `Σ y_i L_{i,n}(x)`, each `L_{i,n}` by its product formula
+    /// ([`basis_product`](crate::lagrange::basis_product)).
     pub fn eval(&self, x: T) -> T {
         self.ys.iter().enumerate().fold(T::zero(), |acc, (i, y)| {
-            acc + y.clone() * basis_product(&self.xs, i, &x)
+            acc + y.clone() * basis_product_unchecked(&self.xs, i, &x)
         })
     }
 

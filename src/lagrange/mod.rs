@@ -43,6 +43,7 @@ pub use bernstein_form::bernstein_coefficients;
 pub use placement::{chebyshev_nodes, NodePlacement};
 pub use power::power_coefficients;
 pub use product::basis_product;
+pub(crate) use product::basis_product_unchecked;
 
 /// Checks interpolation nodes: at least `min`, finite, strictly increasing (what the
 /// barycentric basis and Gordon surfaces take).

@@ -4,19 +4,50 @@
 //! L_i(t) = Π_{j≠i} (t − t_j) / (t_i − t_j)
 //! ```
 
+use crate::error::{Error, Result};
 use crate::scalar::Scalar;
 
 /// `L_i(t)` as the thesis's product (appendix D, `Lagrange.m` with the product started at one):
 /// `v = 1; for j ≠ i: v = (t − t_j)/(t_i − t_j) · v`, in that order, so `f64` values agree
-/// with the Octave reference bit for bit. `i` counts from 0 (the Octave code from 1). Nodes are
-/// not checked; `i` must be a valid index.
+/// with the Octave reference bit for bit. `i` counts from 0 (the Octave code from 1).
+///
+/// # Errors
+/// [`Error::InvalidArgument`] unless `i < nodes.len()`; [`Error::DuplicateNodes`] when a node
+/// equals `t_i` (the factor would divide by zero).
 ///
 /// ```
 /// use cagd::lagrange::basis_product;
 /// let x = [0.0, 0.5, 1.0];
-/// assert_eq!(basis_product(&x, 1, &0.25), 0.75); // 4t(1 − t)
+/// assert_eq!(basis_product(&x, 1, &0.25)?, 0.75); // 4t(1 − t)
+/// assert!(basis_product(&x, 3, &0.25).is_err());
+/// assert!(basis_product(&[0.0, 0.5, 0.5], 1, &0.25).is_err());
+/// # Ok::<(), cagd::Error>(())
 /// ```
-pub fn basis_product<T: Scalar>(nodes: &[T], i: usize, t: &T) -> T {
+pub fn basis_product<T: Scalar>(nodes: &[T], i: usize, t: &T) -> Result<T> {
+    let Some(ti) = nodes.get(i) else {
+        return Err(Error::InvalidArgument {
+            what: "Lagrange basis index",
+            message: format!("index {i} is not one of the {} nodes", nodes.len()),
+        });
+    };
+    if let Some(j) = nodes
+        .iter()
+        .enumerate()
+        .position(|(j, x)| j != i && x == ti)
+    {
+        return Err(Error::DuplicateNodes {
+            what: "Lagrange nodes",
+            first: i.min(j),
+            second: i.max(j),
+            value: ti.to_f64(),
+        });
+    }
+    Ok(basis_product_unchecked(nodes, i, t))
+}
+
+/// [`basis_product`] for nodes already known to be distinct and an index known to be valid
+/// (checked when the nodes were given).
+pub(crate) fn basis_product_unchecked<T: Scalar>(nodes: &[T], i: usize, t: &T) -> T {
     let mut v = T::one();
     for (j, xj) in nodes.iter().enumerate() {
         if j != i {
@@ -44,11 +75,11 @@ mod tests {
                 } else {
                     Q::from_ratio(0, 1)
                 };
-                assert_eq!(basis_product(&x, i, xk), want);
+                assert_eq!(basis_product(&x, i, xk).unwrap(), want);
             }
         }
         // One node: the constant 1 (the loop is empty), as in Octave.
-        assert_eq!(basis_product(&[0.3], 0, &7.0), 1.0);
+        assert_eq!(basis_product(&[0.3], 0, &7.0).unwrap(), 1.0);
     }
 
     #[test]
@@ -60,6 +91,6 @@ mod tests {
         for xj in [0.1, 1.3] {
             v *= (t - xj) / (0.7 - xj); // a product commutes bit for bit
         }
-        assert_eq!(basis_product(&x, 1, &t).to_bits(), v.to_bits());
+        assert_eq!(basis_product(&x, 1, &t).unwrap().to_bits(), v.to_bits());
     }
 }

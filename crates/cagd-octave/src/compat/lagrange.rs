@@ -63,7 +63,12 @@ pub fn lagrange<D: Dimension>(
         });
     }
     check_finite_array("lagrange: u", &u)?;
-    Ok(u.mapv(|t| basis_product(&nodes, m - 1, &t)))
+    // The nodes are distinct (node_vector) and 1 ≤ m ≤ their count: the product is defined.
+    let mut out = u.to_owned();
+    for (o, t) in out.iter_mut().zip(u.iter()) {
+        *o = basis_product(&nodes, m - 1, t)?;
+    }
+    Ok(out)
 }
 
 /// A non-empty row or column of finite, pairwise distinct nodes, in Octave's order (the
