@@ -427,6 +427,7 @@ pub fn load_params<T: LiteralScalar>(
     argument: &str,
     text: &str,
 ) -> Result<Vec<T>, CliError> {
+    crate::slips::decimal_commas(argument, text);
     let values = cagd_octave::literal::parse_params_with::<T>(text, limits)
         .map_err(|e| CliError::literal(argument, e, PARAMS_FORM))?;
     if values.is_empty() {

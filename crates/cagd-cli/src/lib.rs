@@ -25,6 +25,7 @@ pub mod limits;
 pub mod mesh;
 mod output;
 pub mod plot;
+pub mod slips;
 
 pub use app::{run, Outcome};
 pub use atomic::{write_atomic, PendingWrites};
@@ -34,4 +35,6 @@ pub use input::{
     parse_data_text_variable, parse_numeric_text, read_octave_array, read_text, samples,
     scalar_from_double, unpack_net, CURVE_FORM, MATRIX_FORM, MAX_INPUT_BYTES, PARAMS_FORM,
 };
-pub use output::{number_text, render, Format, Item, Report, Value};
+pub use output::{
+    number_text, number_text_digits, render, render_with, Format, Item, Report, Value, TEXT_DIGITS,
+};

@@ -25,6 +25,10 @@ pub struct DeCasteljauCommand {
     pub control: String,
     #[command(flatten)]
     pub params: CurveParamArgs,
+    /// The parameter interval [a, b] of the curve (thesis §2.3.2), e.g. --interval 2,5: the
+    /// weights of each step are (b − t)/(b − a) and (t − a)/(b − a); --n samples [a, b].
+    #[arg(long, value_name = "A,B", allow_hyphen_values = true)]
+    pub interval: Option<String>,
     #[command(flatten)]
     pub rows: RowsArgs,
     #[command(flatten)]
@@ -35,6 +39,29 @@ pub struct DeCasteljauCommand {
     pub output: OutputArgs,
     #[command(flatten)]
     pub plot: PlotArgs,
+}
+
+/// The interval `a,b` of `--interval` (default `[0, 1]`).
+pub fn interval<T: LiteralScalar>(
+    limits: &Limits,
+    given: &Option<String>,
+) -> Result<(T, T), CliError> {
+    let Some(text) = given else {
+        return Ok((T::zero(), T::one()));
+    };
+    let form = "two numbers a,b with a < b, e.g. --interval 2,5";
+    let inner = text.trim().trim_start_matches('[').trim_end_matches(']');
+    // Not load_params: the comma between a and b is not a decimal comma.
+    let values: Vec<T> = cagd_octave::literal::parse_params_with(&format!("[{inner}]"), limits)
+        .map_err(|e| crate::CliError::literal("--interval", e, form))?;
+    match values.as_slice() {
+        [a, b] if a < b => Ok((a.clone(), b.clone())),
+        _ => Err(shape(
+            "--interval",
+            format!("`{}` is not an interval a < b", text.trim()),
+            form,
+        )),
+    }
 }
 
 /// Curve points by de Casteljau's algorithm (thesis algorithm 1, `deCasteljau`).
@@ -51,14 +78,28 @@ pub fn decasteljau<T: LiteralScalar>(
         cmd.rows.rows,
     )?;
     check_degree(limits, "CONTROL", control.ncols().saturating_sub(1))?;
-    let curve = BezierCurve::new(control).map_err(lib(
+    let (a, b) = interval::<T>(limits, &cmd.interval)?;
+    let curve = BezierCurve::new_on_interval(control, a.clone(), b.clone()).map_err(lib(
         "CONTROL",
         "control points b_0..b_n, one per column (or per row with --rows)",
     ))?;
-    let ts: Vec<T> =
-        params_or_samples(limits, "--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
-    // The picture always shows the whole curve over [0, 1], as the thesis's plot3.
-    let dense: Vec<T> = T::linspace(&T::zero(), &T::one(), 101);
+    let ts: Vec<T> = match &cmd.params.t {
+        Some(t) => crate::load_params(limits, "--t", t)?,
+        None => {
+            // --n: the thesis's linspace(0,1,N), mapped onto [a, b] if given.
+            let unit: Vec<T> = crate::samples(limits, cmd.params.n.unwrap_or(DEFAULT_SAMPLES), 2)?;
+            if cmd.interval.is_none() {
+                unit
+            } else {
+                unit.into_iter()
+                    .map(|x| a.clone() + x * (b.clone() - a.clone()))
+                    .collect()
+            }
+        }
+    };
+    crate::slips::outside("--t", &ts, &a, &b, "the curve is extrapolated there");
+    // The picture always shows the whole curve over [a, b], as the thesis's plot3.
+    let dense: Vec<T> = T::linspace(&a, &b, 101);
     check_work(
         limits,
         "--t",
@@ -75,7 +116,14 @@ pub fn decasteljau<T: LiteralScalar>(
             } else {
                 format!("scheme_{}", k + 1)
             };
-            report.push(name, Value::Text(curve.scheme(t.clone()).to_string()));
+            report.push(
+                name,
+                super::scheme::curve_scheme(
+                    &curve.scheme(t.clone()),
+                    cmd.output.text_digits(),
+                    super::scheme::Marks::None,
+                ),
+            );
         }
     }
     report.push("t", Value::Matrix(row(&ts)));
@@ -152,8 +200,9 @@ pub struct BezierPatchCommand {
 /// Whether `--u` and `--v` ask for one point.
 pub fn point_mode(limits: &Limits, params: &SurfaceParamArgs) -> bool {
     let single = |s: &Option<String>| {
-        s.as_ref()
-            .is_some_and(|t| crate::load_params::<f64>(limits, "", t).is_ok_and(|v| v.len() == 1))
+        s.as_ref().is_some_and(|t| {
+            cagd_octave::literal::parse_params_with::<f64>(t, limits).is_ok_and(|v| v.len() == 1)
+        })
     };
     params.n.is_none() && single(&params.u) && single(&params.v)
 }
@@ -215,7 +264,7 @@ pub fn bezier_patch<T: LiteralScalar>(
                 };
                 report.push(
                     name,
-                    Value::Text(patch.scheme(u.clone(), v.clone()).to_string()),
+                    super::scheme::patch_scheme(&patch.scheme(u.clone(), v.clone())),
                 );
             }
         }

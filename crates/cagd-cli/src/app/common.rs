@@ -10,7 +10,7 @@ use nalgebra::{DMatrix, DVector};
 use crate::args::OutputArgs;
 use crate::plot::{Figure, ImageKind};
 use crate::{
-    load_expression, load_matrix, load_params, render, samples, CliError, PendingWrites, Report,
+    load_expression, load_matrix, load_params, render_with, samples, CliError, PendingWrites, Report,
     CURVE_FORM,
 };
 use cagd::bezier::BezierCurve;
@@ -38,6 +38,7 @@ pub fn points<T: LiteralScalar>(
     rows: bool,
 ) -> Result<DMatrix<T>, CliError> {
     let m = load_matrix(limits, argument, text, script)?;
+    crate::slips::point_matrix(argument, &m, rows);
     Ok(if rows { m.transpose() } else { m })
 }
 
@@ -159,7 +160,55 @@ pub fn load_curve<T: LiteralScalar>(
     rows: bool,
     env: &Env<T>,
 ) -> Result<CurveSource<T>, CliError> {
+    load_curve_as(limits, argument, text, script, rows, env, None)
+}
+
+/// Whether a curve argument names sampled data: a data file or a matrix of the script.
+pub fn names_data<T: LiteralScalar>(text: &str, script: Option<&Script<T>>) -> bool {
+    is_file_arg(text) || script.is_some_and(|s| s.value(text.trim()).is_some())
+}
+
+/// [`load_curve`], with `samples = Some(param)` (`--samples`) reading a data file or a matrix
+/// of the script as samples of the curve, one column per parameter value (the script's
+/// `param` variable if it has one per column, else `linspace(0,1,N)`), as appendix C's data
+/// scripts sample their boundary curves. Without it such data is read as Bézier control
+/// points, and a matrix of the script gets a warning saying so.
+pub fn load_curve_as<T: LiteralScalar>(
+    limits: &Limits,
+    argument: &str,
+    text: &str,
+    script: Option<&Script<T>>,
+    rows: bool,
+    env: &Env<T>,
+    samples: Option<&str>,
+) -> Result<CurveSource<T>, CliError> {
+    if let Some(param) = samples {
+        if names_data(text, script) {
+            let m = load_matrix(limits, argument, text, script)?;
+            let m = if rows { m.transpose() } else { m };
+            let params = match script {
+                Some(s) => script_params(s, param, m.ncols()),
+                None => T::linspace(&T::zero(), &T::one(), m.ncols()),
+            };
+            return Ok(CurveSource::Samples(params, m));
+        }
+    }
+    if let Some(m) = script.and_then(|s| s.value(text.trim())) {
+        if m.ncols() > 1 && m.nrows() > 1 {
+            crate::slips::warn(
+                argument,
+                format!(
+                    "`{}` is a {}×{} matrix of the script, read as the control points of a Bézier curve of degree {}; if its columns are samples of the curve (as in the thesis's data scripts), add --samples",
+                    text.trim(),
+                    m.nrows(),
+                    m.ncols(),
+                    if rows { m.nrows() - 1 } else { m.ncols() - 1 }
+                ),
+            );
+        }
+    }
     let bezier = |m: DMatrix<T>| -> Result<CurveSource<T>, CliError> {
+        crate::slips::point_matrix(argument, &m, rows);
         let m = if rows { m.transpose() } else { m };
         BezierCurve::new(m)
             .map(CurveSource::Bezier)
@@ -298,7 +347,7 @@ pub fn finish<T: LiteralScalar>(
     mut files: PendingWrites,
     warnings: Vec<(String, Warning)>,
 ) -> Result<Outcome, CliError> {
-    let text = render(report, output.format)?;
+    let text = render_with(report, output.format, output.text_digits())?;
     let stdout = match &output.output {
         Some(path) => {
             files.add("--output", path, text.into_bytes());

@@ -32,11 +32,11 @@ fn vector<T: LiteralScalar>(
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum End {
-    /// Given end tangents (--start-tangent, --end-tangent).
+    /// Given end tangents (--start-tangent, --end-tangent), case a of the lecture notes.
     Clamped,
-    /// Zero second derivatives at the ends.
+    /// Zero second derivatives at the ends, case b.
     Natural,
-    /// A closed (periodic) spline.
+    /// A closed (periodic) spline, case c.
     Closed,
 }
 
@@ -45,20 +45,27 @@ pub struct SplineCommand {
     /// The points to interpolate, one per column.
     #[arg(value_name = "POINTS", allow_hyphen_values = true)]
     pub points: String,
-    /// The end condition.
-    #[arg(long, value_enum, default_value_t = End::Natural)]
-    pub end: End,
-    /// The tangent at the first point (with --end clamped).
+    /// The end condition (default: clamped when both tangents are given, else natural).
+    #[arg(long, value_enum)]
+    pub end: Option<End>,
+    /// The tangent at the first point (clamped ends).
     #[arg(long, value_name = "VECTOR", allow_hyphen_values = true)]
     pub start_tangent: Option<String>,
-    /// The tangent at the last point (with --end clamped).
+    /// The tangent at the last point (clamped ends).
     #[arg(long, value_name = "VECTOR", allow_hyphen_values = true)]
     pub end_tangent: Option<String>,
-    /// Curve parameters (segment k runs over [k, k+1]).
+    /// The parameters of the points: uniform (t_k = k, the lecture notes), chord, centripetal,
+    /// or a list of increasing values (one per point, one more for a closed spline).
+    #[arg(long, value_name = "CHOICE|VALUES", allow_hyphen_values = true)]
+    pub params: Option<String>,
+    /// Curve parameters (with uniform parameters segment k runs over [k, k+1]); a closed
+    /// spline is periodic, so any value is on the curve.
     #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
     pub t: Option<String>,
     #[command(flatten)]
     pub rows: RowsArgs,
+    #[command(flatten)]
+    pub steps: StepsArgs,
     #[command(flatten)]
     pub output: OutputArgs,
     #[command(flatten)]
@@ -68,7 +75,27 @@ pub struct SplineCommand {
 /// An interpolating cubic spline.
 pub fn spline<T: LiteralScalar>(limits: &Limits, cmd: &SplineCommand) -> Result<Outcome, CliError> {
     let pts = points(limits, "POINTS", &cmd.points, None, cmd.rows.rows)?;
-    let end = match cmd.end {
+    let tangents = cmd.start_tangent.is_some() || cmd.end_tangent.is_some();
+    let chosen = cmd
+        .end
+        .unwrap_or(if tangents { End::Clamped } else { End::Natural });
+    if chosen != End::Clamped {
+        // A tangent that the end condition ignores is a slip, not a choice.
+        let name = if chosen == End::Natural { "natural" } else { "closed" };
+        for (arg, given) in [
+            ("--start-tangent", &cmd.start_tangent),
+            ("--end-tangent", &cmd.end_tangent),
+        ] {
+            if given.is_some() {
+                return Err(usage(
+                    arg,
+                    &format!("has no effect with --end {name}"),
+                    "--end clamped with both tangents (or no --end), or no tangents",
+                ));
+            }
+        }
+    }
+    let end = match chosen {
         End::Natural => EndCondition::Natural,
         End::Closed => EndCondition::Closed,
         End::Clamped => {
@@ -88,17 +115,24 @@ pub fn spline<T: LiteralScalar>(limits: &Limits, cmd: &SplineCommand) -> Result<
             }
         }
     };
+    let closed = chosen == End::Closed;
+    let params = super::spline_steps::parameters(limits, cmd.params.as_deref(), &pts, closed)?;
     let given: Option<Vec<T>> = cmd
         .t
         .as_ref()
         .map(|t| load_params(limits, "--t", t))
         .transpose()?;
     check_work(limits, "POINTS", spline_work(&pts, &end, given.as_deref()))?;
-    let s = CubicSpline::interpolate(pts, end).map_err(lib(
+    let clamped = match &end {
+        EndCondition::Clamped { start, end } => Some((start.clone(), end.clone())),
+        _ => None,
+    };
+    let s = CubicSpline::interpolate_with_params(pts, params, end).map_err(lib(
         "POINTS",
-        "at least 2 points (3 for closed) as columns, tangents of the same dimension",
+        "at least 2 points (3 for closed) as columns, tangents of the same dimension, increasing --params",
     ))?;
     let segments = s.segment_count();
+    let (first, last) = (s.params()[0].clone(), s.params()[segments].clone());
     let ts: Vec<T> = match given {
         Some(t) => t,
         None => {
@@ -111,19 +145,48 @@ pub fn spline<T: LiteralScalar>(limits: &Limits, cmd: &SplineCommand) -> Result<
                 "fewer points (10 samples per segment), parameters --t, or a higher --max-samples",
             ))?;
             let unit: Vec<T> = samples(limits, count, 2)?;
-            let k = T::from_usize(segments);
-            unit.into_iter().map(|x| x * k.clone()).collect()
+            let span = last.clone() - first.clone();
+            unit.into_iter()
+                .map(|x| first.clone() + x * span.clone())
+                .collect()
         }
     };
+    let at: Vec<T> = if closed {
+        ts.iter()
+            .map(|t| super::spline_steps::periodic(t, s.params()))
+            .collect()
+    } else {
+        crate::slips::outside(
+            "--t",
+            &ts,
+            &first,
+            &last,
+            "the end segments are extended there",
+        );
+        ts.clone()
+    };
     let mut report = Report::new();
+    if cmd.steps.steps {
+        let (a, rhs) = super::spline_steps::system(
+            &s,
+            clamped.as_ref().map(|(a, b)| (a, b)),
+        );
+        report.push("params", Value::Matrix(row(s.params())));
+        report.push("system", Value::Matrix(a));
+        report.push("rhs", Value::Matrix(rhs));
+        for item in super::spline_steps::segments(&s)? {
+            report.items.push(item);
+        }
+    }
     report.push("tangents", Value::Matrix(s.tangents().clone()));
     report.push("t", Value::Matrix(row(&ts)));
-    let values = s.eval_many(&ts);
+    let values = s.eval_many(&at);
     report.push("result", Value::Matrix(values.clone()));
     let mut files = PendingWrites::new();
     if let Some(path) = &cmd.plot.plot {
+        let dense: Vec<T> = T::linspace(&first, &last, 10 * segments + 1);
         let figure = Figure::new("interpolating cubic spline")
-            .curve(to_f64(&values), Colour::Blue, "spline")
+            .curve(to_f64(&s.eval_many(&dense)), Colour::Blue, "spline")
             .control_polygon(to_f64(s.points()), "points");
         add_plot(&mut files, "--plot", path, &figure)?;
     }

@@ -22,6 +22,10 @@ mod outcome;
 
 mod patches;
 
+mod scheme;
+
+mod spline_steps;
+
 mod thesis;
 
 mod work;
@@ -279,7 +283,19 @@ where
         Err(e) => return usage_error(e),
     };
     let limits = &cli.limits.resolve()?;
-    match &cli.command {
+    crate::slips::take();
+    let outcome = dispatch(limits, &cli.command);
+    // The slips noticed while reading the input come first; each warning is printed once.
+    let mut warnings = crate::slips::take();
+    let mut outcome = outcome?;
+    warnings.append(&mut outcome.warnings);
+    outcome.warnings = crate::slips::dedup(warnings);
+    Ok(outcome)
+}
+
+/// Runs the subcommand, in `f64` or with `--exact` in rationals.
+fn dispatch(limits: &Limits, command: &Command) -> Result<Outcome, CliError> {
+    match command {
         Command::Curve(c) if c.output.exact => curve::<BigRational>(limits, c),
         Command::Curve(c) => curve::<f64>(limits, c),
         Command::Surface(c) if c.output.exact => surface::<BigRational>(limits, c),

@@ -40,6 +40,11 @@ pub struct BoundaryArgs {
     /// x(1,v), in v.
     #[arg(long, value_name = "CURVE", allow_hyphen_values = true)]
     pub d2: Option<String>,
+    /// Curves given as data (a matrix of the --script, a data file) are samples of the
+    /// curve, one column per parameter value (the script's u or v, else linspace(0,1,N)),
+    /// not Bézier control points.
+    #[arg(long)]
+    pub samples: bool,
 }
 
 /// The four boundary sources: from the arguments, else from the script's c1, c2, d1, d2.
@@ -50,6 +55,18 @@ fn boundary_sources<T: LiteralScalar>(
     rows: bool,
     env: &Env<T>,
 ) -> Result<[CurveSource<T>; 4], CliError> {
+    let given = [&b.c1, &b.c2, &b.d1, &b.d2];
+    if b.samples
+        && !given
+            .iter()
+            .any(|g| g.as_deref().is_some_and(|t| names_data(t, script)))
+    {
+        return Err(usage(
+            "--samples",
+            "has no effect: no curve argument names a matrix of the script or a data file",
+            "--samples with curves such as --c1 c1 from a --script, or without --samples",
+        ));
+    }
     let mut out = Vec::with_capacity(4);
     for (arg, given, name, param) in [
         ("--c1", &b.c1, "c1", "u"),
@@ -58,7 +75,15 @@ fn boundary_sources<T: LiteralScalar>(
         ("--d2", &b.d2, "d2", "v"),
     ] {
         let source = match (given, script) {
-            (Some(text), _) => load_curve(limits, arg, text, script, rows, env)?,
+            (Some(text), _) => load_curve_as(
+                limits,
+                arg,
+                text,
+                script,
+                rows,
+                env,
+                b.samples.then_some(param),
+            )?,
             (None, Some(s)) => script_curve(s, name, param).ok_or_else(|| {
                 usage(
                     arg,
@@ -548,7 +573,10 @@ pub fn discrete<T: LiteralScalar>(
         None => discrete_coons(&coords).map_err(lib("NET", expected))?,
         Some(text) => {
             let form = "two numbers α,β with α + β = 1/4, e.g. -0.25,0.5";
-            let values: Vec<T> = load_params(limits, "--mask", &format!("[{text}]"))?;
+            // Not load_params: the comma between α and β is not a decimal comma.
+            let values: Vec<T> =
+                cagd_octave::literal::parse_params_with(&format!("[{text}]"), limits)
+                    .map_err(|e| CliError::literal("--mask", e, form))?;
             let [alpha, beta]: [T; 2] = values
                 .try_into()
                 .map_err(|v: Vec<T>| shape("--mask", format!("{} value(s)", v.len()), form))?;
