@@ -8,7 +8,9 @@
 //! `1e-20`), or, with `--exact`, as reduced fractions (`7/2`, `31/15`, integers without `/1`).
 //! The readable text format first rounds every double to [`TEXT_DIGITS`] significant digits
 //! (`--digits N` chooses another count), so round-off such as `0.30000000000000004` prints as
-//! `0.3`; the machine formats (`octave`, `csv`, `json`) keep every bit.
+//! `0.3`, and shows an entry below `10^−digits` times the largest of its matrix as 0 (so
+//! `cos(π/2) = 6.1e-17` beside 1 is 0, as Octave displays it); the machine formats (`octave`,
+//! `csv`, `json`) keep every bit.
 //!
 //! Steps may be structured: a [`Value::Record`] of named parts is an object in JSON and a
 //! struct in Octave's format, and a [`Value::Shown`] is printed as its text (a de Casteljau
@@ -281,6 +283,21 @@ fn aligned(m: &DMatrix<String>) -> String {
     out
 }
 
+/// The entries of a matrix as the text format prints them: `digits` significant digits, and
+/// doubles below `10^−digits` times the largest magnitude of the matrix as 0 (round-off of a
+/// zero, such as cos(π/2) = 6.1e-17 next to 1); fractions in full.
+fn text_entries<T: LiteralScalar>(m: &DMatrix<T>, digits: usize) -> DMatrix<String> {
+    let scale = m.iter().map(|x| x.to_f64().abs()).fold(0.0, f64::max);
+    let floor = scale * 10f64.powi(-(digits.clamp(1, 17) as i32));
+    m.map(|x| {
+        if !T::EXACT && x.to_f64().abs() < floor {
+            "0".to_string()
+        } else {
+            number_text_digits(&x, digits)
+        }
+    })
+}
+
 fn text_matrix<T: LiteralScalar>(name: &str, m: &DMatrix<T>, digits: usize, out: &mut String) {
     if m.is_empty() {
         let _ = writeln!(out, "{name} = []({}x{})\n", m.nrows(), m.ncols());
@@ -288,7 +305,7 @@ fn text_matrix<T: LiteralScalar>(name: &str, m: &DMatrix<T>, digits: usize, out:
         let _ = writeln!(out, "{name} = {}\n", number_text_digits(&m[(0, 0)], digits));
     } else {
         let _ = writeln!(out, "{name} =\n");
-        out.push_str(&aligned(&m.map(|x| number_text_digits(&x, digits))));
+        out.push_str(&aligned(&text_entries(m, digits)));
         out.push('\n');
     }
 }

@@ -383,3 +383,66 @@ pub fn warnings<T: LiteralScalar>(
     );
     out
 }
+
+/// Pushes a surface result: the grid `us × vs × d` (`result(i,j,:)` at `(us[i], vs[j])`), or
+/// with `list` (`--list`) a matrix with one row `u v x y z` per grid point, `u` varying
+/// slowest.
+pub fn push_surface<T: LiteralScalar>(
+    report: &mut Report<T>,
+    name: &str,
+    (us, vs): (&[T], &[T]),
+    grid: PointGrid<T>,
+    list: bool,
+) {
+    if !list {
+        report.push(name, crate::Value::Grid(grid));
+        return;
+    }
+    let (nu, nv, d) = grid.dim();
+    let rows = DMatrix::from_fn(nu * nv, d + 2, |k, c| {
+        let (i, j) = (k / nv, k % nv);
+        match c {
+            0 => us[i].clone(),
+            1 => vs[j].clone(),
+            _ => grid[[i, j, c - 2]].clone(),
+        }
+    });
+    report.push(name, crate::Value::Matrix(rows));
+}
+
+/// The degree `p` of a B-spline from `--degree P` or the notes' `--order K = p + 1`
+/// (`default` when neither is given).
+pub fn spline_degree(
+    degree: Option<usize>,
+    order: Option<usize>,
+    default: usize,
+) -> Result<usize, CliError> {
+    match (degree, order) {
+        (Some(_), Some(_)) => Err(usage(
+            "--order",
+            "cannot be used together with --degree",
+            "only one of them (the order k is the degree p + 1)",
+        )),
+        (None, Some(0)) => Err(shape(
+            "--order",
+            "order k = 0".to_string(),
+            "an order k ≥ 1 (the degree p = k − 1)",
+        )),
+        (None, Some(k)) => Ok(k - 1),
+        (Some(p), None) => Ok(p),
+        (None, None) => Ok(default),
+    }
+}
+
+/// Named values as a [`crate::Value::Record`].
+pub fn record<T: LiteralScalar>(parts: Vec<(&str, crate::Value<T>)>) -> crate::Value<T> {
+    crate::Value::Record(
+        parts
+            .into_iter()
+            .map(|(name, value)| crate::Item {
+                name: name.to_string(),
+                value,
+            })
+            .collect(),
+    )
+}

@@ -12,19 +12,43 @@ use num_rational::BigRational;
 
 mod bezier;
 
+mod bspline_basis;
+
+mod bspline_surface;
+
+mod circle;
+
 mod common;
+
+mod continuity;
+
+mod convert;
 
 mod course;
 
 mod curve;
 
+mod elevate;
+
+mod ferguson;
+
+mod insert_knot;
+
+mod integrate;
+
+mod nurbs_surface;
+
 mod outcome;
 
 mod patches;
 
+mod ruled;
+
 mod scheme;
 
 mod spline_steps;
+
+mod subdivide;
 
 mod thesis;
 
@@ -194,6 +218,158 @@ Layout: result d×k; --steps prints the rational basis functions R_i,p(t).
 Example (a quarter circle):
   cagd nurbs \"[1 0; 1 1; 0 1]'\" --weights \"[1 0.7071067811865476 1]\" --degree 2 --n 5")]
     Nurbs(course::NurbsCommand),
+    /// Convert a curve between Hermite, Bézier, B-spline, monomial and algebraic forms.
+    #[command(after_help = "\
+Input: GEOMETRY, the d×(n+1) geometry matrix of the --from form, one vector per column (rows
+with --rows): hermite [x(0) x(1) x'(0) x'(1)], bezier [b_0 … b_n], bspline (the uniform cubic
+segment of the lecture notes) [x_(i-1) x_i x_(i+1) x_(i+2)], monomial [a_0 … a_n] with
+p(t) = Σ a_j t^j (the matrix-form notes' P·M), algebraic [a b c d] of u³ u² u 1 (the lecture
+notes' A). hermite and bspline are cubic (4 columns); bezier, monomial and algebraic any degree.
+Layout: result is the geometry of the --to form (d×(n+1)). X_to = X_from · T; --steps prints T
+and, between the cubic forms, the basis matrices M_from, M_to and M_to⁻¹ (T = M_from·M_to⁻¹, the
+lecture notes' conversion table); otherwise the matrices to and from the Bézier form.
+
+Examples:
+  cagd convert \"[0 0; 1 1; 2 0; 3 1]\" --rows --from bezier --to monomial --exact
+  cagd convert \"[2 3; 5 3; 3 6; 3 -12]\" --rows --from hermite --to bspline --steps --exact")]
+    Convert(convert::ConvertCommand),
+    /// Raise the degree of a Bézier curve (or of a clamped B-spline curve) without changing it.
+    #[command(after_help = "\
+Input: control points as columns (rows with --rows); --by R. A Bézier curve, or a B-spline with
+--degree/--order and --knots (clamped: first and last knot p+1 times; default clamped uniform).
+Layout: control is d×(n+R+1); for a B-spline also knots (each distinct knot R times more, as
+octave-nurbs nrbdegelev). --steps prints every intermediate Bézier polygon
+b'_i = i/(n+1)·b_(i-1) + (1 − i/(n+1))·b_i.
+
+Examples:
+  cagd elevate \"[0 0; 1 2; 3 2; 4 0]\" --rows --by 1 --steps --exact
+  cagd elevate \"[0 0; 1 2; 3 2; 4 0]\" --rows --degree 2 --knots \"[0 0 0 0.5 1 1 1]\" --by 1 --exact")]
+    Elevate(elevate::ElevateCommand),
+    /// Split a Bézier curve at t into two Bézier curves (de Casteljau subdivision).
+    #[command(after_help = "\
+Input: control points as columns (rows with --rows); --t (default the middle of the interval).
+Layout: left and right are d×(n+1), the control polygons of the parts before and after t.
+--steps prints the de Casteljau scheme with the two polygons marked: L on the diagonal
+b_0^r (left part), R on the last row b_(n-r)^r (right part).
+
+Example:
+  cagd subdivide \"[0 0 0; 0 2 2; 8 2 0; 4 0 0]'\" --t 0.5 --steps --exact")]
+    Subdivide(subdivide::SubdivideCommand),
+    /// Insert knots into a B-spline or NURBS curve (Boehm's algorithm).
+    #[command(after_help = "\
+Input: control points as columns (rows with --rows), --degree P (or --order K), --knots
+(default clamped uniform), --insert the knots to add (strictly inside the domain); --weights for
+a NURBS curve (the homogeneous points (w P, w) are refined).
+Layout: knots 1×(n+p+1+r) and control d×(n+r) (weights 1×(n+r) for NURBS). --steps prints each
+insertion: the span k, α_i = (u − u_i)/(u_(i+p) − u_i) for i = k−p+1..k, and the new polygon.
+
+Example:
+  cagd insert-knot \"[0 0; 1 2; 3 2; 4 0]\" --rows --degree 2 --knots \"[0 0 0 0.5 1 1 1]\" --insert 0.25 --steps --exact")]
+    InsertKnot(insert_knot::InsertKnotCommand),
+    /// B-spline basis functions N_i,p(u) of a knot vector (Cox–de Boor).
+    #[command(after_help = "\
+Input: --knots u_0..u_m, --degree P (or --order K = P + 1, as the lecture notes count); --t,
+or --n samples of the domain [u_p, u_(m-p)].
+Layout: t is k×1, result k×n (row = parameter, column = N_0,p..N_(n-1),p, n = m − p). --steps
+prints the Cox–de Boor triangle N_i,j(t) for j = 0..p (triangle.p0 … triangle.pP). --plot draws
+the functions.
+
+Examples:
+  cagd bspline-basis --knots \"[0 0 0 1 2 3 3 3]\" --degree 2 --t 1.5 --steps --exact
+  cagd bspline-basis --knots 0:7 --order 4 --n 50 --plot basis.svg")]
+    BsplineBasis(bspline_basis::BSplineBasisCommand),
+    /// Continuity (C0, C1, G1, C2) where two Bézier curves join; the free point of a C1 joint.
+    #[command(after_help = "\
+Input: FIRST (ends at u = 1) and SECOND (starts at v = 0), Bézier control points as columns
+(rows with --rows). With --free-point the second-to-last point of FIRST is unknown and left out:
+the line x_(n-1)(k) = x_n + k·(m/n)(y_0 − y_1) of points giving x'(1) = k·¹x'(0) is printed
+(k = 1: C1; k > 0: G1, which the lecture notes call C1), and the joint with k = --k (default 1).
+Layout: end, start (x(1), ¹x(0)), d_end, d_start (first derivatives), dd_end, dd_start
+(second), k if the tangents are parallel, continuity (1 = holds), verdict (the comparison).
+
+Examples:
+  cagd continuity \"[2 3 4; 3 1 5; 3 4 3]\" \"[3 4 3; 2 6 0; 5 7 5; 5 2 3]\" --rows --free-point --exact
+  cagd continuity \"[0 0; 1 1; 2 1]'\" \"[2 1; 3 1; 4 0]'\" --exact")]
+    Continuity(continuity::ContinuityCommand),
+    /// Antiderivative and definite integral of Bernstein polynomials, Bézier or B-spline curves.
+    #[command(after_help = "\
+Input: Bézier control points as columns (rows with --rows) over [0, 1] or --interval a,b; with
+--degree/--order and --knots a B-spline; or --bernstein N [--i I] alone.
+Layout: antiderivative holds the control points of ∫ (d×(n+2); a B-spline's with its knots,
+(u_0, u_0, …, u_m, u_m)); integral the definite integral over the domain (d×1); with --t, result
+holds ∫ from the start of the domain to t. Bernstein: rows of Bernstein coefficients of degree
+N+1 of ∫₀ᵗ B_i^N, and ∫₀¹ B_i^N = 1/(N+1).
+
+Examples:
+  cagd integrate \"[0 0; 1 2; 2 0]\" --rows --exact
+  cagd integrate --bernstein 3 --exact
+  cagd integrate \"[6 0 0 0]\" --degree 2 --knots \"[0 0 0 0.5 1 1 1]\" --exact")]
+    Integrate(integrate::IntegrateCommand),
+    /// The ruled surface (1 − v)·¹x(u) + v·²x(u) between two curves (the lecture notes).
+    #[command(after_help = "\
+Input: --first ¹x(u) and --second ²x(u): expressions in u such as \"[u;0;u-u^2]\", or Bézier
+control points (columns; rows with --rows).
+Layout: single --u and --v give the d×1 point; otherwise the grid nu×nv×d (like P), or with
+--list one row u v x y z per point. --steps prints both curves at the u's.
+
+Examples:
+  cagd ruled --first \"[u;0;0]\" --second \"[u;1;u-u^2]\" --u 0.5 --v 0.25 --exact
+  cagd ruled --first \"[0 0 0; 1 0 1; 2 0 0]'\" --second \"[0 1 1; 2 1 1]'\" --n 10 --plot ruled.png")]
+    Ruled(ruled::RuledCommand),
+    /// The Hermite bicubic (Ferguson) patch from corner points, tangents and twists.
+    #[command(after_help = "\
+Input: --points, --du, --dv, --twists (default zero: the F-patch): d×4 matrices whose columns
+are the vectors at the corners (u,v) = (0,0), (1,0), (0,1), (1,1) (rows with --rows).
+Layout: single --u and --v give the d×1 point; otherwise the grid nu×nv×d, or --list. --steps
+prints the geometry matrices G (one per coordinate, rows x(0,·) x(1,·) x_u(0,·) x_u(1,·),
+columns x(·,0) x(·,1) x_v(·,0) x_v(·,1)): x(u,v) = f(u)ᵀ G f(v) with the Hermite basis f. The
+lecture notes write vᵀ M_Hᵀ X_H M_H u with X_H = Gᵀ.
+
+Example (z = uv):
+  cagd ferguson --points \"[0 0 0; 1 0 0; 0 1 0; 1 1 1]'\" --du \"[1 0 0; 1 0 0; 1 0 1; 1 0 1]'\" \\
+                --dv \"[0 1 0; 0 1 1; 0 1 0; 0 1 1]'\" --twists \"[0 0 1; 0 0 1; 0 0 1; 0 0 1]'\" --u 0.5 --v 0.25 --exact")]
+    Ferguson(ferguson::FergusonCommand),
+    /// A tensor-product B-spline surface (the CAD notes, the lecture notes).
+    #[command(after_help = "\
+Input: the control net packed (m+1)×3(n+1) as for bezier-patch, an Octave (m+1)×(n+1)×3 array
+file, or an Octave save -text file with an octave-nurbs nrbmak struct (weights all 1);
+--degree P or P,Q (or --order), --uknots and --vknots (default clamped uniform).
+Layout: single --u and --v give the 3×1 point; otherwise the grid nu×nv×3, or --list. Parameters
+default to --n samples of the domain; outside it the surface is not defined (an error). --steps
+prints the knots and the basis values N_i,p(u), N_j,q(v).
+
+Example:
+  cagd bspline-surface net.txt --degree 2 --n 20 --plot surface.png --mesh surface.stl")]
+    BsplineSurface(bspline_surface::BSplineSurfaceCommand),
+    /// A tensor-product NURBS surface (the CAD notes): weights and homogeneous points.
+    #[command(after_help = "\
+Input: as for bspline-surface, with --weights (an (m+1)×(n+1) matrix of positive weights), or
+an Octave save -text file with an octave-nurbs nrbmak struct (coefs 4×nu×nv homogeneous
+[w·x; w·y; w·z; w], knots {ku, kv}, order) — e.g. from Octave: srf = nrbmak(coefs, {ku, kv});
+save -text srf.txt srf.
+Layout: as for bspline-surface.
+
+Example:
+  cagd nurbs-surface srf.txt --n 20 --plot srf.png")]
+    NurbsSurface(nurbs_surface::NurbsSurfaceCommand),
+    /// A circle as an exact NURBS curve (octave-nurbs nrbcirc).
+    #[command(after_help = "\
+Input: --radius (default 1), --center (2 or 3 coordinates, default [0 0]).
+Layout: knots, control (d×9: four quarter arcs), weights (1 and √2/2), and the points at --t
+(default --n 11 samples of [0, 1]). --steps prints the homogeneous coefficients (w·x, w·y, w),
+as octave-nurbs stores them.
+
+Example:
+  cagd circle --radius 2 --center \"[1 -1]\" --n 9 --plot circle.svg")]
+    Circle(circle::CircleCommand),
+    /// A circular arc as an exact NURBS curve (octave-nurbs nrbcirc with angles).
+    #[command(after_help = "\
+Input: as for circle, with --start and --end angles in radians (expressions such as pi/2).
+Layout: as for circle; 1 to 4 rational quadratic pieces of at most 90° each.
+
+Example:
+  cagd arc --radius 1 --start 0 --end pi/2 --n 5")]
+    Arc(circle::ArcCommand),
     /// Sample a curve given as an expression in its parameter, as the thesis writes curves.
     #[command(after_help = "\
 Layout: the result is d × k, one point per column (like T in the thesis's deCasteljau).
@@ -331,6 +507,40 @@ fn dispatch(limits: &Limits, command: &Command) -> Result<Outcome, CliError> {
         Command::Bspline(c) => course::bspline::<f64>(limits, c),
         Command::Nurbs(c) if c.output.exact => course::nurbs::<BigRational>(limits, c),
         Command::Nurbs(c) => course::nurbs::<f64>(limits, c),
+        Command::Convert(c) if c.output.exact => convert::convert::<BigRational>(limits, c),
+        Command::Convert(c) => convert::convert::<f64>(limits, c),
+        Command::Elevate(c) if c.output.exact => elevate::elevate::<BigRational>(limits, c),
+        Command::Elevate(c) => elevate::elevate::<f64>(limits, c),
+        Command::Subdivide(c) if c.output.exact => subdivide::subdivide::<BigRational>(limits, c),
+        Command::Subdivide(c) => subdivide::subdivide::<f64>(limits, c),
+        Command::InsertKnot(c) if c.output.exact => {
+            insert_knot::insert_knot::<BigRational>(limits, c)
+        }
+        Command::InsertKnot(c) => insert_knot::insert_knot::<f64>(limits, c),
+        Command::BsplineBasis(c) if c.output.exact => {
+            bspline_basis::bspline_basis::<BigRational>(limits, c)
+        }
+        Command::BsplineBasis(c) => bspline_basis::bspline_basis::<f64>(limits, c),
+        Command::Continuity(c) if c.output.exact => {
+            continuity::continuity::<BigRational>(limits, c)
+        }
+        Command::Continuity(c) => continuity::continuity::<f64>(limits, c),
+        Command::Integrate(c) if c.output.exact => integrate::integrate::<BigRational>(limits, c),
+        Command::Integrate(c) => integrate::integrate::<f64>(limits, c),
+        Command::Ruled(c) if c.output.exact => ruled::ruled::<BigRational>(limits, c),
+        Command::Ruled(c) => ruled::ruled::<f64>(limits, c),
+        Command::Ferguson(c) if c.output.exact => ferguson::ferguson::<BigRational>(limits, c),
+        Command::Ferguson(c) => ferguson::ferguson::<f64>(limits, c),
+        Command::BsplineSurface(c) if c.args.output.exact => {
+            bspline_surface::bspline_surface::<BigRational>(limits, c)
+        }
+        Command::BsplineSurface(c) => bspline_surface::bspline_surface::<f64>(limits, c),
+        Command::NurbsSurface(c) if c.args.output.exact => {
+            nurbs_surface::nurbs_surface::<BigRational>(limits, c)
+        }
+        Command::NurbsSurface(c) => nurbs_surface::nurbs_surface::<f64>(limits, c),
+        Command::Circle(c) => circle::circle(limits, c),
+        Command::Arc(c) => circle::arc(limits, c),
     }
 }
 
