@@ -11,6 +11,7 @@
 
 mod basis;
 mod curve;
+mod de_boor_scheme;
 mod elevate;
 mod grid;
 mod knots;
@@ -19,6 +20,7 @@ mod triangle;
 
 pub use basis::{basis_all, basis_functions, cox_de_boor, find_span};
 pub use curve::BSplineCurve;
+pub use de_boor_scheme::DeBoorScheme;
 pub use knots::KnotVector;
 pub use surface::BSplineSurface;
 pub use triangle::cox_de_boor_triangle;

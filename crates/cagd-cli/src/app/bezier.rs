@@ -182,7 +182,25 @@ pub struct BezierPatchCommand {
     /// b_in], each point's x y z side by side), or an Octave save -text file holding an
     /// (m+1)×(n+1)×3 array (FILE or FILE.txt:NAME).
     #[arg(value_name = "NET", allow_hyphen_values = true)]
-    pub net: String,
+    pub net: Option<String>,
+    /// Instead of NET: the x coordinates of the control points as an (m+1)×(n+1) matrix,
+    /// entry (i, j) of b_ij (i along u). The lecture notes' X_B, with x(u,v) = vᵀM_BᵀX_BM_Bu,
+    /// has its rows along v: pass its transpose.
+    #[arg(long, value_name = "MATRIX", allow_hyphen_values = true, conflicts_with = "net")]
+    pub x: Option<String>,
+    /// The y coordinates (with --x), as --x.
+    #[arg(long, value_name = "MATRIX", allow_hyphen_values = true, requires = "x")]
+    pub y: Option<String>,
+    /// The z coordinates (with --x and --y), as --x.
+    #[arg(long, value_name = "MATRIX", allow_hyphen_values = true, requires = "y")]
+    pub z: Option<String>,
+    /// Differentiate R times along u: the partial derivative patch (thesis Trditev 3.3),
+    /// whose net is printed as `net`.
+    #[arg(long, value_name = "R", default_value_t = 0)]
+    pub du: usize,
+    /// Differentiate S times along v (--du 1 --dv 1 is the twist x_uv).
+    #[arg(long, value_name = "S", default_value_t = 0)]
+    pub dv: usize,
     #[command(flatten)]
     pub params: SurfaceParamArgs,
     #[command(flatten)]
@@ -207,24 +225,73 @@ pub fn point_mode(limits: &Limits, params: &SurfaceParamArgs) -> bool {
     params.n.is_none() && single(&params.u) && single(&params.v)
 }
 
+/// The net of `--x`, `--y`, `--z`: one (m+1)×(n+1) matrix per coordinate.
+fn component_net<T: LiteralScalar>(
+    limits: &Limits,
+    cmd: &BezierPatchCommand,
+    script: Option<&cagd_octave::script::Script<T>>,
+) -> Result<cagd::grid::PointGrid<T>, CliError> {
+    let mut coords = Vec::with_capacity(3);
+    for (arg, given) in [("--x", &cmd.x), ("--y", &cmd.y), ("--z", &cmd.z)] {
+        if let Some(text) = given {
+            coords.push((arg, crate::load_matrix::<T>(limits, arg, text, script)?));
+        }
+    }
+    let shape0 = coords[0].1.shape();
+    if let Some((arg, m)) = coords.iter().find(|(_, m)| m.shape() != shape0) {
+        return Err(shape(
+            arg,
+            format!("a {}×{} matrix, but --x is {}×{}", m.nrows(), m.ncols(), shape0.0, shape0.1),
+            "coordinate matrices of one shape (m+1)×(n+1)",
+        ));
+    }
+    Ok(cagd::grid::PointGrid::from_shape_fn(
+        (shape0.0, shape0.1, coords.len()),
+        |(i, j, k)| coords[k].1[(i, j)].clone(),
+    ))
+}
+
 /// Points of a Bézier patch (thesis algorithms 2–4, `ploskevB`, `bilinearna`, `tenzor`).
 pub fn bezier_patch<T: LiteralScalar>(
     limits: &Limits,
     cmd: &BezierPatchCommand,
 ) -> Result<Outcome, CliError> {
     let script = prepare_script::<T>(limits, &cmd.script, cmd.params.n)?;
-    let net = load_net::<T>(limits, "NET", &cmd.net, script.as_ref())?;
+    let net = match (&cmd.net, &cmd.x) {
+        (Some(text), _) => load_net::<T>(limits, "NET", text, script.as_ref())?,
+        (None, Some(_)) => component_net(limits, cmd, script.as_ref())?,
+        (None, None) => {
+            return Err(usage(
+                "NET",
+                "missing",
+                "a control net NET, or its coordinate matrices --x, --y (and --z)",
+            ))
+        }
+    };
     let (m1, n1, _) = net.dim();
     check_degree(limits, "NET", m1.max(n1).saturating_sub(1))?;
     let patch = BezierPatch::from_grid(&net).map_err(lib(
         "NET",
         "a packed (m+1)×3(n+1) control net as ploskevB takes it",
     ))?;
+    let differentiated = cmd.du > 0 || cmd.dv > 0;
+    let patch = if differentiated {
+        patch.derivative(cmd.du, cmd.dv).map_err(lib(
+            "--du/--dv",
+            "orders R ≤ m and S ≤ n (the degrees of the patch)",
+        ))?
+    } else {
+        patch
+    };
+    let net = if differentiated { patch.to_grid() } else { net };
+    let (m1, n1, _) = net.dim();
     let us: Vec<T> =
         params_or_samples(limits, "--u", &cmd.params.u, cmd.params.n, DEFAULT_SAMPLES)?;
     let vs: Vec<T> =
         params_or_samples(limits, "--v", &cmd.params.v, cmd.params.n, DEFAULT_SAMPLES)?;
     check_grid(limits, us.len(), vs.len())?;
+    crate::slips::outside("--u", &us, &T::zero(), &T::one(), "the patch is extrapolated there");
+    crate::slips::outside("--v", &vs, &T::zero(), &T::one(), "the patch is extrapolated there");
     let single = point_mode(limits, &cmd.params);
     let picture: Vec<T> = T::linspace(&T::zero(), &T::one(), 21);
     // The grid: basis rows per u and v, then about 2(m+1)(n+1) operations per coordinate and
@@ -269,15 +336,18 @@ pub fn bezier_patch<T: LiteralScalar>(
             }
         }
     }
+    if differentiated {
+        report.push("net", Value::Grid(net.clone()));
+    }
     report.push("u", Value::Matrix(row(&us)));
     report.push("v", Value::Matrix(row(&vs)));
-    if single {
+    if single && !cmd.params.list {
         report.push(
             "result",
             Value::Matrix(column(&patch.eval(us[0].clone(), vs[0].clone()))),
         );
     } else {
-        report.push("result", Value::Grid(grid.clone()));
+        push_surface(&mut report, "result", (&us, &vs), grid.clone(), cmd.params.list);
     }
     let mut files = PendingWrites::new();
     let picture_grid = if pictures {
@@ -320,6 +390,8 @@ pub struct BernsteinCommand {
     pub params: CurveParamArgs,
     #[command(flatten)]
     pub output: OutputArgs,
+    #[command(flatten)]
+    pub plot: PlotArgs,
 }
 
 /// Bernstein polynomial values.
@@ -332,14 +404,16 @@ pub fn bernstein<T: LiteralScalar>(
         params_or_samples(limits, "--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
     // The triangular recurrence: (n+1)² operations per parameter, on numbers of
     // polynomial_bits of the degree.
+    let picture = if cmd.plot.plot.is_some() { 201 } else { 0 };
     check_work(
         limits,
         "--t",
         work::<T>(
-            ts.len() as u128 * (cmd.degree as u128 + 1).pow(2),
+            (ts.len() as u128 + picture) * (cmd.degree as u128 + 1).pow(2),
             polynomial_bits(cmd.degree, bits(&ts), 0),
         ),
     )?;
+    crate::slips::outside("--t", &ts, &T::zero(), &T::one(), "the polynomials are extrapolated there");
     let all = cagd::bernstein::basis_matrix(cmd.degree, &ts);
     let result = match cmd.i {
         Some(i) if i > cmd.degree => {
@@ -357,8 +431,43 @@ pub fn bernstein<T: LiteralScalar>(
         "t",
         Value::Matrix(DMatrix::from_column_slice(ts.len(), 1, &ts)),
     );
+    let mut files = PendingWrites::new();
+    if let Some(path) = &cmd.plot.plot {
+        // The functions over [0, 1], each as the plane curve (t, B_i^n(t)).
+        let dense: Vec<T> = T::linspace(&T::zero(), &T::one(), 201);
+        let values = cagd::bernstein::basis_matrix(cmd.degree, &dense);
+        let colours = [
+            Colour::Blue,
+            Colour::Red,
+            Colour::Green,
+            Colour::Orange,
+            Colour::Purple,
+            Colour::Black,
+        ];
+        let mut figure = Figure::new(format!("Bernstein polynomials of degree {}", cmd.degree));
+        let shown: Vec<usize> = match cmd.i {
+            Some(i) => vec![i],
+            None => (0..=cmd.degree).collect(),
+        };
+        for (k, &i) in shown.iter().enumerate() {
+            let line = DMatrix::from_fn(2, dense.len(), |r, c| {
+                if r == 0 {
+                    dense[c].to_f64()
+                } else {
+                    values[(c, i)].to_f64()
+                }
+            });
+            let label = match (shown.len() <= 6, k) {
+                (true, _) => format!("B_{i}^{}", cmd.degree),
+                (false, 0) => format!("B_i^{}, i = 0..{}", cmd.degree, cmd.degree),
+                _ => String::new(),
+            };
+            figure = figure.curve(line, colours[k % colours.len()], label);
+        }
+        add_plot(&mut files, "--plot", path, &figure)?;
+    }
     report.push("result", Value::Matrix(result));
-    finish(&report, &cmd.output, PendingWrites::new(), Vec::new())
+    finish(&report, &cmd.output, files, Vec::new())
 }
 
 #[derive(Debug, Args)]
@@ -414,6 +523,7 @@ pub fn derivative<T: LiteralScalar>(
         curve_work(&d, &ts, false, plotted(&cmd.plot, &dense)),
     )?;
     if cmd.t.is_some() {
+        crate::slips::outside("--t", &ts, &T::zero(), &T::one(), "the derivative is extrapolated there");
         let values = d
             .eval_many(&ts)
             .map_err(lib("--t", "finite parameter values"))?;

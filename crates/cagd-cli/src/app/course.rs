@@ -262,6 +262,7 @@ pub fn hermite<T: LiteralScalar>(
     ))?;
     let ts: Vec<T> =
         params_or_samples(limits, "--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
+    crate::slips::outside("--t", &ts, &T::zero(), &T::one(), "the cubic is extrapolated there");
     let dense: Vec<T> = T::linspace(&T::zero(), &T::one(), 101);
     // Per parameter the four cubic Hermite functions (about 16 operations) and their
     // combination (8 per coordinate), on cubics in t; --steps adds the basis rows.
@@ -313,9 +314,12 @@ pub struct BSplineCommand {
     /// Control points, one per column.
     #[arg(value_name = "CONTROL", allow_hyphen_values = true)]
     pub control: String,
-    /// The degree p.
-    #[arg(long, value_name = "P", default_value_t = 3)]
-    pub degree: usize,
+    /// The degree p (default 3).
+    #[arg(long, value_name = "P")]
+    pub degree: Option<usize>,
+    /// The order k = p + 1 instead of the degree (the lecture notes count B-splines by order).
+    #[arg(long, value_name = "K")]
+    pub order: Option<usize>,
     /// The knot vector (n+p+2 non-decreasing values); default clamped uniform on [0, 1].
     #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
     pub knots: Option<String>,
@@ -354,12 +358,13 @@ pub fn bspline<T: LiteralScalar>(
     limits: &Limits,
     cmd: &BSplineCommand,
 ) -> Result<Outcome, CliError> {
-    check_degree(limits, "--degree", cmd.degree)?;
+    let degree = spline_degree(cmd.degree, cmd.order, 3)?;
+    check_degree(limits, "--degree", degree)?;
     let control = points::<T>(limits, "CONTROL", &cmd.control, None, cmd.rows.rows)?;
     let form = "degree p, n+1 ≥ p+1 control points and n+p+2 non-decreasing knots";
     let curve = match &cmd.knots {
-        Some(k) => BSplineCurve::new(cmd.degree, load_params(limits, "--knots", k)?, control),
-        None => BSplineCurve::clamped(cmd.degree, control),
+        Some(k) => BSplineCurve::new(degree, load_params(limits, "--knots", k)?, control),
+        None => BSplineCurve::clamped(degree, control),
     }
     .map_err(lib("CONTROL/--degree/--knots", form))?;
     let ts = domain_params(limits, &cmd.params, curve.domain())?;
@@ -369,7 +374,7 @@ pub fn bspline<T: LiteralScalar>(
         limits,
         "--t",
         spline_basis_work(
-            (cmd.degree, curve.dim(), bits(curve.knots().as_slice())),
+            (degree, curve.dim(), bits(curve.knots().as_slice())),
             bits(curve.control().iter()),
             &ts,
             cmd.steps.steps,
@@ -394,6 +399,35 @@ pub fn bspline<T: LiteralScalar>(
             "basis",
             Value::Matrix(DMatrix::from_fn(ts.len(), n, |i, j| rows[i][j].clone())),
         );
+        // The de Boor scheme of every parameter: span, α's and levels.
+        for (k, t) in ts.iter().enumerate() {
+            let scheme = curve
+                .de_boor_scheme(t.clone())
+                .map_err(lib("--t", "parameters inside the knot span"))?;
+            let item = |name: String, value: Value<T>| crate::Item { name, value };
+            let mut parts = vec![
+                item("t".into(), Value::Matrix(row(std::slice::from_ref(t)))),
+                item(
+                    "span".into(),
+                    Value::Matrix(DMatrix::from_element(1, 1, T::from_usize(scheme.span))),
+                ),
+            ];
+            for (r, level) in scheme.levels.iter().enumerate() {
+                if r > 0 {
+                    parts.push(item(
+                        format!("alpha{r}"),
+                        Value::Matrix(row(&scheme.alphas[r - 1])),
+                    ));
+                }
+                parts.push(item(format!("d{r}"), Value::Matrix(level.clone())));
+            }
+            let name = if ts.len() == 1 {
+                "de_boor".to_string()
+            } else {
+                format!("de_boor_{}", k + 1)
+            };
+            report.push(name, Value::Record(parts));
+        }
     }
     report.push("t", Value::Matrix(row(&ts)));
     report.push("result", Value::Matrix(values));

@@ -12,6 +12,8 @@ use num_rational::BigRational;
 
 mod bezier;
 
+mod blend;
+
 mod bspline_basis;
 
 mod bspline_surface;
@@ -27,6 +29,8 @@ mod convert;
 mod course;
 
 mod curve;
+
+mod discrete_parts;
 
 mod elevate;
 
@@ -100,6 +104,7 @@ Layout: result is d×k, one point per column (like T in deCasteljau); t is 1×k.
 Examples:
   cagd decasteljau \"[0 0 0; 0 2 2; 8 2 0; 4 0 0]'\" --t 0.5 --steps --exact
   cagd decasteljau \"[0 0 0; 0 2 2; 8 2 0; 4 0 0]\" --rows --n 50 --plot curve.svg")]
+    #[command(mut_arg("n", |a| a.help("Sample at linspace(0,1,N), like the thesis's N (mapped onto --interval if given)")))]
     Decasteljau(bezier::DeCasteljauCommand),
     /// Points of a Bézier patch (thesis algorithms 2-4, ploskevB/bilinearna/tenzor).
     #[command(after_help = "\
@@ -209,6 +214,7 @@ Layout: result d×k at the parameters; --steps prints the basis functions N_i,p(
 
 Example:
   cagd bspline \"[0 0; 1 2; 3 2; 4 0]'\" --degree 2 --knots \"[0 0 0 0.5 1 1 1]\" --t 0.25 --steps --exact")]
+    #[command(mut_arg("n", |a| a.help("Sample the knot domain [u_p, u_n] (not [0, 1]) at N equally spaced parameters")))]
     Bspline(course::BSplineCommand),
     /// A NURBS curve (the CAD notes): rational B-spline with weights.
     #[command(after_help = "\
@@ -217,6 +223,7 @@ Layout: result d×k; --steps prints the rational basis functions R_i,p(t).
 
 Example (a quarter circle):
   cagd nurbs \"[1 0; 1 1; 0 1]'\" --weights \"[1 0.7071067811865476 1]\" --degree 2 --n 5")]
+    #[command(mut_arg("n", |a| a.help("Sample the knot domain [u_p, u_n] (not [0, 1]) at N equally spaced parameters")))]
     Nurbs(course::NurbsCommand),
     /// Convert a curve between Hermite, Bézier, B-spline, monomial and algebraic forms.
     #[command(after_help = "\
@@ -277,6 +284,7 @@ the functions.
 Examples:
   cagd bspline-basis --knots \"[0 0 0 1 2 3 3 3]\" --degree 2 --t 1.5 --steps --exact
   cagd bspline-basis --knots 0:7 --order 4 --n 50 --plot basis.svg")]
+    #[command(mut_arg("n", |a| a.help("Sample the knot domain [u_p, u_(m-p)] at N equally spaced parameters")))]
     BsplineBasis(bspline_basis::BSplineBasisCommand),
     /// Continuity (C0, C1, G1, C2) where two Bézier curves join; the free point of a C1 joint.
     #[command(after_help = "\

@@ -15,7 +15,7 @@ use cagd::coons::{
     discrete_coons, solve_mask, BicubicCoonsPatch, CoonsBoundary, CrossDerivatives, Mask, Twist,
 };
 use cagd::lagrange::Lagrange;
-use cagd::{CoonsPatch, Curve, GordonSurface, Surface, Tolerance};
+use cagd::{Curve, GordonSurface, Surface, Tolerance};
 use cagd_octave::literal::{Env, LiteralScalar, Warning};
 use cagd_octave::script::Script;
 
@@ -125,6 +125,9 @@ fn surface_params<T: LiteralScalar>(
         pick("--v", &params.v, from_script.1)?,
     );
     check_grid(limits, us.len(), vs.len())?;
+    let (zero, one) = (T::zero(), T::one());
+    crate::slips::outside("--u", &us, &zero, &one, "the patch is extrapolated there");
+    crate::slips::outside("--v", &vs, &zero, &one, "the patch is extrapolated there");
     Ok((us, vs))
 }
 
@@ -179,6 +182,12 @@ fn four<T: LiteralScalar>(curves: Vec<CliCurve<T>>) -> [CliCurve<T>; 4] {
 pub struct CoonsCommand {
     #[command(flatten)]
     pub boundary: BoundaryArgs,
+    /// The blending functions (thesis (4.4)) in u and v: linear (1 − t, t), the bilinear patch
+    /// (default); hermite (H0³, H3³), the partially bicubic patch of §4.2; or f1 as an
+    /// expression in t (f2 = 1 − f1), or a pair "[f1; f2]". They must satisfy f1(0) = 1,
+    /// f1(1) = 0 and f1 + f2 = 1 (checked at t = k/32).
+    #[arg(long, value_name = "linear|hermite|EXPR", allow_hyphen_values = true)]
+    pub blend: Option<String>,
     #[command(flatten)]
     pub params: SurfaceParamArgs,
     #[command(flatten)]
@@ -215,18 +224,27 @@ pub fn coons<T: LiteralScalar>(limits: &Limits, cmd: &CoonsCommand) -> Result<Ou
         &mut env,
     )?);
     let expected = "four boundary curves that meet at the corners: c1(0)=d1(0), c1(1)=d2(0), c2(0)=d1(1), c2(1)=d2(1)";
-    let patch = match script_corners(script.as_ref()) {
-        Some(corners) if cmd.boundary.c1.is_none() => CoonsPatch::with_corners(
-            c1.clone(),
-            c2.clone(),
-            d1.clone(),
-            d2.clone(),
-            corners,
-            Tolerance::default(),
-        ),
-        _ => CoonsPatch::new(c1.clone(), c2.clone(), d1.clone(), d2.clone()),
-    }
-    .map_err(lib("--c1/--c2/--d1/--d2", expected))?;
+    let pair = super::blend::blending_pair(
+        limits,
+        cmd.blend.as_deref(),
+        &needed(&[&at_u, &at_v]),
+    )?;
+    let corners = match script_corners(script.as_ref()) {
+        Some(corners) if cmd.boundary.c1.is_none() => Some(corners),
+        _ => None,
+    };
+    let patch = super::blend::coons_patch(
+        [c1.clone(), c2.clone(), d1.clone(), d2.clone()],
+        corners,
+        pair,
+    )
+    .map_err(|e| {
+        let (argument, form) = match e {
+            cagd::Error::BlendingCondition { .. } => ("--blend", super::blend::BLEND_FORM),
+            _ => ("--c1/--c2/--d1/--d2", expected),
+        };
+        CliError::library(argument, e, form)
+    })?;
     // x = rc + rd − rcd at every point: the four curves and about 16 operations per
     // coordinate, on numbers grown by the bits of u and v.
     check_work(
@@ -245,12 +263,12 @@ pub fn coons<T: LiteralScalar>(limits: &Limits, cmd: &CoonsCommand) -> Result<Ou
     push_terms(
         &mut report,
         ["rc", "rd", "rcd"],
-        cmd.steps.steps,
+        (cmd.steps.steps, cmd.params.list),
         (&us, &vs),
         single,
         c1.dim(),
         |u, v| {
-            let p = patch.eval_parts(u, v);
+            let p = patch.parts(u, v);
             [p.rc, p.rd, p.rcd, p.x]
         },
     );
@@ -272,13 +290,13 @@ pub fn coons<T: LiteralScalar>(limits: &Limits, cmd: &CoonsCommand) -> Result<Ou
 fn push_terms<T: LiteralScalar>(
     report: &mut Report<T>,
     names: [&str; 3],
-    steps: bool,
+    (steps, list): (bool, bool),
     (us, vs): (&[T], &[T]),
     single: bool,
     d: usize,
     terms: impl Fn(T, T) -> [DVector<T>; 4],
 ) {
-    if single {
+    if single && !list {
         let [a, b, c, x] = terms(us[0].clone(), vs[0].clone());
         if steps {
             for (name, term) in names.into_iter().zip([a, b, c]) {
@@ -303,10 +321,10 @@ fn push_terms<T: LiteralScalar>(
     let [a, b, c, x] = grids;
     if steps {
         for (name, grid) in names.into_iter().zip([a, b, c]) {
-            report.push(name, Value::Grid(grid));
+            push_surface(report, name, (us, vs), grid, list);
         }
     }
-    report.push("result", Value::Grid(x));
+    push_surface(report, "result", (us, vs), x, list);
 }
 
 /// The outcome of a Coons-type subcommand: the report (written as `--format`/`-o` say) and the
@@ -390,6 +408,8 @@ pub struct CoonsBicubicCommand {
     pub params: SurfaceParamArgs,
     #[command(flatten)]
     pub rows: RowsArgs,
+    #[command(flatten)]
+    pub steps: StepsArgs,
     #[command(flatten)]
     pub script: ScriptArgs,
     #[command(flatten)]
@@ -504,14 +524,18 @@ pub fn coons_bicubic<T: LiteralScalar>(
     let mut report = Report::new();
     report.push("u", Value::Matrix(row(&us)));
     report.push("v", Value::Matrix(row(&vs)));
-    if single {
-        report.push(
-            "result",
-            Value::Matrix(column(&patch.eval(us[0].clone(), vs[0].clone()))),
-        );
-    } else {
-        report.push("result", Value::Grid(patch.eval_grid(&us, &vs)));
-    }
+    push_terms(
+        &mut report,
+        ["hc", "hd", "hcd"],
+        (cmd.steps.steps, cmd.params.list),
+        (&us, &vs),
+        single,
+        c1.dim(),
+        |u, v| {
+            let p = patch.eval_parts(u, v);
+            [p.hc, p.hd, p.hcd, p.x]
+        },
+    );
     coons_outcome(
         "bicubic Coons patch",
         &patch,
@@ -529,11 +553,18 @@ pub struct DiscreteCoonsCommand {
     /// (m+1)×(n+1)×3 array file. Only its boundary rows and columns are used.
     #[arg(value_name = "NET", allow_hyphen_values = true)]
     pub net: String,
-    /// Solve the affine mask α·(corners) + β·(edges) instead of the discrete Coons formula;
-    /// α + β must be 1/4 (α = -1/4, β = 1/2 is the discrete Coons patch, α = 0 the
-    /// permanence principle's mask), e.g. --mask=-0.25,0.5.
+    /// Solve the affine mask P_ij = α·(the 4 diagonal neighbours) + β·(the 4 edge neighbours)
+    /// for every interior point instead of the discrete Coons formula; α + β must be 1/4.
+    /// α = −1/4, β = 1/2 is the mask the permanence principle gives (the CAD notes (7)–(8)):
+    /// the discrete Coons patch again; α = 0, β = 1/4 is the discrete Laplace mask (each
+    /// point the average of its 4 edge neighbours). E.g. --mask=-0.25,0.5.
     #[arg(long, value_name = "ALPHA,BETA", allow_hyphen_values = true)]
     pub mask: Option<String>,
+    /// Also print the three parts of the discrete Coons formula (the CAD notes (6)):
+    /// b^u = (1 − i/m) P_0j + (i/m) P_mj, b^v = (1 − j/n) P_i0 + (j/n) P_in and the corner
+    /// term b^uv; the net is b^u + b^v − b^uv.
+    #[command(flatten)]
+    pub steps: StepsArgs,
     #[command(flatten)]
     pub script: ScriptArgs,
     #[command(flatten)]
@@ -589,6 +620,19 @@ pub fn discrete<T: LiteralScalar>(
     };
     let grid = PointGrid::from_shape_fn((m1, n1, d), |(i, j, k)| full[k][(i, j)].clone());
     let mut report = Report::new();
+    if cmd.steps.steps {
+        if cmd.mask.is_some() {
+            return Err(usage(
+                "--steps",
+                "has no effect with --mask (the mask is solved as one linear system)",
+                "--steps without --mask (the parts of the discrete Coons formula)",
+            ));
+        }
+        let [bu, bv, buv] = super::discrete_parts::parts(&net);
+        report.push("bu", Value::Grid(bu));
+        report.push("bv", Value::Grid(bv));
+        report.push("buv", Value::Grid(buv));
+    }
     report.push("result", Value::Grid(grid.clone()));
     let mut files = PendingWrites::new();
     if let Some(path) = &cmd.plot.plot {
@@ -731,6 +775,15 @@ pub fn gordon<T: LiteralScalar>(limits: &Limits, cmd: &GordonCommand) -> Result<
                 "repeated --u-curve and --v-curve (or --script with appendix D's g_u, g_v, g_uv, x)",
             )
         })?;
+        for (arg, given) in [("--u-nodes", &cmd.u_nodes), ("--v-nodes", &cmd.v_nodes)] {
+            if given.is_some() {
+                return Err(usage(
+                    arg,
+                    "has no effect with the script's packed network (its nodes are x)",
+                    "--u-curve/--v-curve with --u-nodes/--v-nodes, or the script alone",
+                ));
+            }
+        }
         let p = packed_network(limits, s)?;
         (p.nodes.clone(), p.nodes, p.at_u, p.at_v, Some(p.points))
     } else {
@@ -840,7 +893,7 @@ pub fn gordon<T: LiteralScalar>(limits: &Limits, cmd: &GordonCommand) -> Result<
     push_terms(
         &mut report,
         ["g1", "g2", "g12"],
-        cmd.steps.steps,
+        (cmd.steps.steps, cmd.params.list),
         (&us, &vs),
         single,
         d,
@@ -896,6 +949,11 @@ pub struct LagrangeCommand {
     /// polynomials L_0..L_m.
     #[arg(long, value_name = "MATRIX", allow_hyphen_values = true)]
     pub points: Option<String>,
+    /// Also print the monomial coefficients (highest power first, as Octave's polyfit):
+    /// `coefficients`, row i those of L_i (the lecture notes' blending matrix G), and with
+    /// --points `polynomial`, those of the interpolant (the lecture notes' A = X G).
+    #[arg(long)]
+    pub coefficients: bool,
     #[command(flatten)]
     pub params: CurveParamArgs,
     #[command(flatten)]
@@ -913,10 +971,26 @@ pub fn lagrange<T: LiteralScalar>(
 ) -> Result<Outcome, CliError> {
     let nodes: Vec<T> = load_params(limits, "--nodes", &cmd.nodes)?;
     check_degree(limits, "--nodes", nodes.len().saturating_sub(1))?;
-    let basis = Lagrange::new(nodes.clone())
+    // Any order of distinct nodes (the lecture notes' Příklad 1 takes 0, 1/2, 1/4, 1): the
+    // barycentric basis is built on the sorted nodes and read back in the order given.
+    let mut order: Vec<usize> = (0..nodes.len()).collect();
+    order.sort_by(|&a, &b| {
+        nodes[a]
+            .partial_cmp(&nodes[b])
+            .unwrap_or(std::cmp::Ordering::Equal)
+    });
+    let sorted: Vec<T> = order.iter().map(|&k| nodes[k].clone()).collect();
+    let basis = Lagrange::new(sorted.clone())
         .map_err(lib("--nodes", "distinct finite nodes, at least one"))?;
     let ts: Vec<T> =
         params_or_samples(limits, "--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
+    crate::slips::outside(
+        "--t",
+        &ts,
+        &sorted[0],
+        &sorted[sorted.len() - 1],
+        "the polynomial is extrapolated beyond its nodes",
+    );
     // The weights: (m+1)² operations; then per parameter the barycentric basis, 4(m+1)
     // operations, and its combination with d rows of values, 2d(m+1); on numbers of m factors
     // (t − x_j) of at most bits(t) + bits(x) + 1 bits (polynomial_bits adds the 1). Without
@@ -943,20 +1017,54 @@ pub fn lagrange<T: LiteralScalar>(
             .saturating_add(written),
     )?;
     let mut report = Report::new();
+    if cmd.coefficients {
+        let g = cagd::interpolation::blending_matrix(&nodes)
+            .map_err(lib("--nodes", "distinct finite nodes, at least one"))?;
+        if let Some(v) = &values {
+            if v.ncols() == nodes.len() {
+                report.push("polynomial", Value::Matrix(T::mat_mul(v, &g)));
+            }
+        }
+        report.push("coefficients", Value::Matrix(g));
+    }
     report.push("t", Value::Matrix(row(&ts)));
     let mut files = PendingWrites::new();
+    // Position k of the sorted nodes is node order[k] as given.
+    let unsorted = |b: Vec<T>| -> Vec<T> {
+        let mut out = b.clone();
+        for (k, v) in b.into_iter().enumerate() {
+            out[order[k]] = v;
+        }
+        out
+    };
     match values {
         None => {
-            let rows: Vec<Vec<T>> = ts.iter().map(|t| basis.basis(t)).collect();
+            let rows: Vec<Vec<T>> = ts.iter().map(|t| unsorted(basis.basis(t))).collect();
             let m = DMatrix::from_fn(ts.len(), nodes.len(), |i, j| rows[i][j].clone());
             report.push("result", Value::Matrix(m));
         }
         Some(values) => {
+            if values.ncols() == nodes.len()
+                && values.nrows() > 1
+                && order.iter().enumerate().any(|(k, &j)| k != j)
+            {
+                crate::slips::warn(
+                    "--nodes",
+                    "the nodes do not increase, so the curve passes the points in the order of their nodes, not in the order given",
+                );
+            }
+            let sorted_values = if values.ncols() == nodes.len() {
+                DMatrix::from_fn(values.nrows(), values.ncols(), |r, k| {
+                    values[(r, order[k])].clone()
+                })
+            } else {
+                values.clone()
+            };
             let mut cols = Vec::with_capacity(ts.len());
             for t in &ts {
                 cols.push(
                     basis
-                        .interpolate(&values, t)
+                        .interpolate(&sorted_values, t)
                         .map_err(lib("--points", "one column of values per node"))?,
                 );
             }
