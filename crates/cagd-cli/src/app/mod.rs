@@ -28,6 +28,8 @@ mod convert;
 
 mod course;
 
+mod course_examples;
+
 mod curve;
 
 mod discrete_parts;
@@ -93,6 +95,19 @@ meshes (STL, OBJ, PLY) go to --out, written atomically.
 Example:
   cagd thesis --out cagd-out")]
     Thesis(thesis::ThesisCommand),
+    /// Reproduce the worked examples of the course notes (matrix-form, lecture and CAD notes).
+    #[command(after_help = "\
+Needs no input. Prints, exactly where the maths is rational, the matrix-form notes' table
+(P·M = [0 3 0 0; 0 3 -6 4] and the points at t = 0, 0.2, …, 1), the lecture notes' conversion
+table on their Bézier example (Bézier → Hermite → B-spline and back), the three splines of
+the lecture notes (clamped, natural, closed; the printed sign error of the clamped example
+named), the Lagrange example and Příklad 1, the C1 joint with its free point, the NURBS
+circle of the CAD notes and the discrete Coons patch with its 3×3 masks. Pictures (SVG and
+PNG) go to --out, written atomically.
+
+Example:
+  cagd course --out cagd-course")]
+    Course(course_examples::CourseCommand),
     /// Points of a Bézier curve by de Casteljau's algorithm (thesis algorithm 1).
     #[command(after_help = "\
 Input: control points b_0..b_n as the columns of a d×(n+1) matrix (rows with --rows): a
@@ -487,6 +502,7 @@ fn dispatch(limits: &Limits, command: &Command) -> Result<Outcome, CliError> {
         Command::Script(c) if c.output.exact => script::<BigRational>(limits, c),
         Command::Script(c) => script::<f64>(limits, c),
         Command::Thesis(c) => thesis::thesis(limits, c),
+        Command::Course(c) => course_examples::course(limits, c),
         Command::Decasteljau(c) if c.output.exact => bezier::decasteljau::<BigRational>(limits, c),
         Command::Decasteljau(c) => bezier::decasteljau::<f64>(limits, c),
         Command::BezierPatch(c) if c.output.exact => bezier::bezier_patch::<BigRational>(limits, c),
