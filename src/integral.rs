@@ -157,7 +157,15 @@ mod tests {
         .unwrap();
         let f = bezier_antiderivative(&c);
         assert_eq!(f.derivative(1).unwrap().control(), c.control());
-        let knots = vec![q(0, 1), q(1, 3), q(1, 2), q(2, 1), q(5, 2), q(3, 1), q(4, 1)];
+        let knots = vec![
+            q(0, 1),
+            q(1, 3),
+            q(1, 2),
+            q(2, 1),
+            q(5, 2),
+            q(3, 1),
+            q(4, 1),
+        ];
         let s = BSplineCurve::new(
             2,
             knots,

@@ -88,8 +88,11 @@ impl<T: Scalar> BSplineCurve<T> {
                     self.blossom(k, &args)
                 })
                 .collect();
-            let mut piece =
-                BezierCurve::new_on_interval(DMatrix::from_columns(&columns), a.clone(), b.clone())?;
+            let mut piece = BezierCurve::new_on_interval(
+                DMatrix::from_columns(&columns),
+                a.clone(),
+                b.clone(),
+            )?;
             for _ in 0..r {
                 piece = piece.elevate();
             }
@@ -141,7 +144,9 @@ impl<T: Scalar> BSplineCurve<T> {
 /// `(1 − t) a + t b`, coordinate by coordinate.
 fn combine<T: Scalar>(a: &DVector<T>, b: &DVector<T>, t: &T) -> DVector<T> {
     let s = T::one() - t.clone();
-    DVector::from_fn(a.len(), |r, _| s.clone() * a[r].clone() + t.clone() * b[r].clone())
+    DVector::from_fn(a.len(), |r, _| {
+        s.clone() * a[r].clone() + t.clone() * b[r].clone()
+    })
 }
 
 /// The polar form of a Bézier curve (control points as columns, over `[0, 1]`) at `ts`, one
@@ -149,10 +154,7 @@ fn combine<T: Scalar>(a: &DVector<T>, b: &DVector<T>, t: &T) -> DVector<T> {
 fn polar_bezier<T: Scalar>(control: &DMatrix<T>, ts: &[T]) -> DVector<T> {
     let mut level: Vec<DVector<T>> = control.column_iter().map(|c| c.into_owned()).collect();
     for t in ts {
-        level = level
-            .windows(2)
-            .map(|w| combine(&w[0], &w[1], t))
-            .collect();
+        level = level.windows(2).map(|w| combine(&w[0], &w[1], t)).collect();
     }
     level[0].clone()
 }
@@ -168,7 +170,9 @@ mod tests {
 
     #[test]
     fn elevation_keeps_the_curve_exactly() {
-        let control = DMatrix::from_fn(2, 6, |r, c| q((3 * c as i64 + 5 * r as i64) % 7, 1 + r as i64));
+        let control = DMatrix::from_fn(2, 6, |r, c| {
+            q((3 * c as i64 + 5 * r as i64) % 7, 1 + r as i64)
+        });
         let knots = vec![
             q(0, 1),
             q(0, 1),

@@ -42,8 +42,8 @@ pub fn cox_de_boor_triangle<T: Scalar>(p: usize, knots: &[T], u: &T) -> Vec<Vec<
                 }
                 let d2 = knots[i + j + 1].clone() - knots[i + 1].clone();
                 if !d2.is_zero() {
-                    value = value
-                        + (knots[i + j + 1].clone() - u.clone()) / d2 * below[i + 1].clone();
+                    value =
+                        value + (knots[i + j + 1].clone() - u.clone()) / d2 * below[i + 1].clone();
                 }
                 value
             })

@@ -413,9 +413,7 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
         let hc = DVector::from_fn(dim, |k, _| dot(&hu, &at_v, k));
         let hd = DVector::from_fn(dim, |k, _| dot(&hv, &at_u, k));
         let hcd = DVector::from_fn(dim, |k, _| self.corner_blend(&hu, &hv, &tw, k));
-        let x = DVector::from_fn(dim, |k, _| {
-            hc[k].clone() + hd[k].clone() - hcd[k].clone()
-        });
+        let x = DVector::from_fn(dim, |k, _| hc[k].clone() + hd[k].clone() - hcd[k].clone());
         BicubicCoonsPoint { x, hc, hd, hcd }
     }
 

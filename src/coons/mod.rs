@@ -49,9 +49,8 @@ mod mask;
 
 pub use crate::tolerance::{Corner, CornerGap, Tolerance};
 pub use bicubic::{
-    hermite_cubic, hermite_cubic_derivative, BicubicCoonsPatch, BicubicCoonsPoint, CrossDerivatives,
-    SurfacePartials,
-    Twist,
+    hermite_cubic, hermite_cubic_derivative, BicubicCoonsPatch, BicubicCoonsPoint,
+    CrossDerivatives, SurfacePartials, Twist,
 };
 pub use bilinear::CoonsPatch;
 pub use discrete::discrete_coons;

@@ -48,8 +48,8 @@ pub fn dedup(warnings: Vec<(String, Warning)>) -> Vec<(String, Warning)> {
 }
 
 /// Warns when a matrix of points, as typed, is implausible in the orientation it is read in:
-/// read as columns (`rows` false), a matrix with more rows than columns or more than 3 rows;
-/// read as rows, the same of its transpose. The warning says how it was read and names
+/// read as columns (`rows` false), a matrix with more rows than columns (but more than one
+/// column) or more than 3 rows; read as rows, the same of its transpose. The warning says how it was read and names
 /// `--rows`.
 ///
 /// ```
@@ -64,7 +64,9 @@ pub fn dedup(warnings: Vec<(String, Warning)>) -> Vec<(String, Warning)> {
 pub fn point_matrix<T: LiteralScalar>(argument: &str, typed: &DMatrix<T>, rows: bool) {
     let (r, c) = typed.shape();
     let (dim, count) = if rows { (c, r) } else { (r, c) };
-    if dim <= 3 && dim <= count {
+    // One point written as a column (or, with --rows, as a row) is the natural way to write
+    // it; only its dimension can be implausible.
+    if dim <= 3 && (dim <= count || count == 1) {
         return;
     }
     let why = if dim > 3 {

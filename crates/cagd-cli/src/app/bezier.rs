@@ -186,13 +186,28 @@ pub struct BezierPatchCommand {
     /// Instead of NET: the x coordinates of the control points as an (m+1)×(n+1) matrix,
     /// entry (i, j) of b_ij (i along u). The lecture notes' X_B, with x(u,v) = vᵀM_BᵀX_BM_Bu,
     /// has its rows along v: pass its transpose.
-    #[arg(long, value_name = "MATRIX", allow_hyphen_values = true, conflicts_with = "net")]
+    #[arg(
+        long,
+        value_name = "MATRIX",
+        allow_hyphen_values = true,
+        conflicts_with = "net"
+    )]
     pub x: Option<String>,
     /// The y coordinates (with --x), as --x.
-    #[arg(long, value_name = "MATRIX", allow_hyphen_values = true, requires = "x")]
+    #[arg(
+        long,
+        value_name = "MATRIX",
+        allow_hyphen_values = true,
+        requires = "x"
+    )]
     pub y: Option<String>,
     /// The z coordinates (with --x and --y), as --x.
-    #[arg(long, value_name = "MATRIX", allow_hyphen_values = true, requires = "y")]
+    #[arg(
+        long,
+        value_name = "MATRIX",
+        allow_hyphen_values = true,
+        requires = "y"
+    )]
     pub z: Option<String>,
     /// Differentiate R times along u: the partial derivative patch (thesis Trditev 3.3),
     /// whose net is printed as `net`.
@@ -225,32 +240,6 @@ pub fn point_mode(limits: &Limits, params: &SurfaceParamArgs) -> bool {
     params.n.is_none() && single(&params.u) && single(&params.v)
 }
 
-/// The net of `--x`, `--y`, `--z`: one (m+1)×(n+1) matrix per coordinate.
-fn component_net<T: LiteralScalar>(
-    limits: &Limits,
-    cmd: &BezierPatchCommand,
-    script: Option<&cagd_octave::script::Script<T>>,
-) -> Result<cagd::grid::PointGrid<T>, CliError> {
-    let mut coords = Vec::with_capacity(3);
-    for (arg, given) in [("--x", &cmd.x), ("--y", &cmd.y), ("--z", &cmd.z)] {
-        if let Some(text) = given {
-            coords.push((arg, crate::load_matrix::<T>(limits, arg, text, script)?));
-        }
-    }
-    let shape0 = coords[0].1.shape();
-    if let Some((arg, m)) = coords.iter().find(|(_, m)| m.shape() != shape0) {
-        return Err(shape(
-            arg,
-            format!("a {}×{} matrix, but --x is {}×{}", m.nrows(), m.ncols(), shape0.0, shape0.1),
-            "coordinate matrices of one shape (m+1)×(n+1)",
-        ));
-    }
-    Ok(cagd::grid::PointGrid::from_shape_fn(
-        (shape0.0, shape0.1, coords.len()),
-        |(i, j, k)| coords[k].1[(i, j)].clone(),
-    ))
-}
-
 /// Points of a Bézier patch (thesis algorithms 2–4, `ploskevB`, `bilinearna`, `tenzor`).
 pub fn bezier_patch<T: LiteralScalar>(
     limits: &Limits,
@@ -259,7 +248,7 @@ pub fn bezier_patch<T: LiteralScalar>(
     let script = prepare_script::<T>(limits, &cmd.script, cmd.params.n)?;
     let net = match (&cmd.net, &cmd.x) {
         (Some(text), _) => load_net::<T>(limits, "NET", text, script.as_ref())?,
-        (None, Some(_)) => component_net(limits, cmd, script.as_ref())?,
+        (None, Some(_)) => coordinate_net(limits, [&cmd.x, &cmd.y, &cmd.z], script.as_ref())?,
         (None, None) => {
             return Err(usage(
                 "NET",
@@ -290,8 +279,20 @@ pub fn bezier_patch<T: LiteralScalar>(
     let vs: Vec<T> =
         params_or_samples(limits, "--v", &cmd.params.v, cmd.params.n, DEFAULT_SAMPLES)?;
     check_grid(limits, us.len(), vs.len())?;
-    crate::slips::outside("--u", &us, &T::zero(), &T::one(), "the patch is extrapolated there");
-    crate::slips::outside("--v", &vs, &T::zero(), &T::one(), "the patch is extrapolated there");
+    crate::slips::outside(
+        "--u",
+        &us,
+        &T::zero(),
+        &T::one(),
+        "the patch is extrapolated there",
+    );
+    crate::slips::outside(
+        "--v",
+        &vs,
+        &T::zero(),
+        &T::one(),
+        "the patch is extrapolated there",
+    );
     let single = point_mode(limits, &cmd.params);
     let picture: Vec<T> = T::linspace(&T::zero(), &T::one(), 21);
     // The grid: basis rows per u and v, then about 2(m+1)(n+1) operations per coordinate and
@@ -347,7 +348,13 @@ pub fn bezier_patch<T: LiteralScalar>(
             Value::Matrix(column(&patch.eval(us[0].clone(), vs[0].clone()))),
         );
     } else {
-        push_surface(&mut report, "result", (&us, &vs), grid.clone(), cmd.params.list);
+        push_surface(
+            &mut report,
+            "result",
+            (&us, &vs),
+            grid.clone(),
+            cmd.params.list,
+        );
     }
     let mut files = PendingWrites::new();
     let picture_grid = if pictures {
@@ -413,7 +420,13 @@ pub fn bernstein<T: LiteralScalar>(
             polynomial_bits(cmd.degree, bits(&ts), 0),
         ),
     )?;
-    crate::slips::outside("--t", &ts, &T::zero(), &T::one(), "the polynomials are extrapolated there");
+    crate::slips::outside(
+        "--t",
+        &ts,
+        &T::zero(),
+        &T::one(),
+        "the polynomials are extrapolated there",
+    );
     let all = cagd::bernstein::basis_matrix(cmd.degree, &ts);
     let result = match cmd.i {
         Some(i) if i > cmd.degree => {
@@ -523,7 +536,13 @@ pub fn derivative<T: LiteralScalar>(
         curve_work(&d, &ts, false, plotted(&cmd.plot, &dense)),
     )?;
     if cmd.t.is_some() {
-        crate::slips::outside("--t", &ts, &T::zero(), &T::one(), "the derivative is extrapolated there");
+        crate::slips::outside(
+            "--t",
+            &ts,
+            &T::zero(),
+            &T::one(),
+            "the derivative is extrapolated there",
+        );
         let values = d
             .eval_many(&ts)
             .map_err(lib("--t", "finite parameter values"))?;

@@ -67,8 +67,8 @@ pub fn blending_pair<T: LiteralScalar>(
         Some("hermite") => return Ok(Some(BlendingPair::hermite_cubic())),
         Some(t) => t,
     };
-    let expr =
-        ParamExpr::parse_with(text, limits).map_err(|e| CliError::literal("--blend", e, BLEND_FORM))?;
+    let expr = ParamExpr::parse_with(text, limits)
+        .map_err(|e| CliError::literal("--blend", e, BLEND_FORM))?;
     let env = Env::<T>::with_limits(*limits);
     let params = expr.parameters(&env);
     let name = match params.as_slice() {
@@ -106,9 +106,9 @@ pub fn blending_pair<T: LiteralScalar>(
     }
     let table = std::sync::Arc::new(table);
     let lookup = |table: &[(T, T, T)], t: &T, second: bool| -> T {
-        match table.binary_search_by(|(x, _, _)| {
-            x.partial_cmp(t).unwrap_or(std::cmp::Ordering::Equal)
-        }) {
+        match table
+            .binary_search_by(|(x, _, _)| x.partial_cmp(t).unwrap_or(std::cmp::Ordering::Equal))
+        {
             Ok(k) if second => table[k].2.clone(),
             Ok(k) => table[k].1.clone(),
             // Every parameter the patch asks for was tabulated.

@@ -1,7 +1,7 @@
 //! `bspline-basis`: the B-spline basis functions `N_{i,p}(u)` of a knot vector alone (the CAD
 //! notes §1.2, the lecture notes), with the Cox–de Boor triangle as steps.
 
-use cagd::bspline::{basis_all, cox_de_boor_triangle, KnotVector};
+use cagd::bspline::{cox_de_boor_triangle, KnotVector};
 use cagd::limits::Limits;
 use cagd_octave::literal::LiteralScalar;
 use clap::Args;
@@ -44,7 +44,8 @@ pub fn bspline_basis<T: LiteralScalar>(
     let p = spline_degree(cmd.degree, cmd.order, 3)?;
     check_degree(limits, "--degree", p)?;
     let knots: Vec<T> = load_params(limits, "--knots", &cmd.knots)?;
-    let form = "non-decreasing knots, at least p+2 of them (n = m − p ≥ 1 basis functions), with a non-empty domain";
+    let form =
+        "non-decreasing knots, at least p+2 of them (n = m − p ≥ 1 basis functions), not all equal";
     KnotVector::new(knots.clone()).map_err(lib("--knots", form))?;
     if knots.len() < p + 2 {
         return Err(shape(
@@ -54,13 +55,11 @@ pub fn bspline_basis<T: LiteralScalar>(
         ));
     }
     let n = knots.len() - p - 1;
-    let (a, b) = (knots[p].clone(), knots[n].clone());
+    // Every basis function N_i,p lives on [u_i, u_(i+p+1)]: the values are taken over the
+    // whole knot range, not only the domain [u_p, u_n] of a spline.
+    let (a, b) = (knots[0].clone(), knots[knots.len() - 1].clone());
     if a >= b {
-        return Err(shape(
-            "--knots",
-            format!("the domain [u_p, u_n] = [{a}, {b}] is empty"),
-            form,
-        ));
+        return Err(shape("--knots", format!("all knots equal {a}"), form));
     }
     let ts: Vec<T> = match &cmd.params.t {
         Some(t) => load_params(limits, "--t", t)?,
@@ -71,29 +70,43 @@ pub fn bspline_basis<T: LiteralScalar>(
                 .collect()
         }
     };
+    if let Some(x) = ts.iter().find(|x| **x < a || **x > b) {
+        return Err(shape(
+            "--t",
+            format!(
+                "{} is outside the knots [{}, {}]",
+                crate::number_text(x),
+                crate::number_text(&a),
+                crate::number_text(&b)
+            ),
+            "parameters between the first and the last knot",
+        ));
+    }
     let dense: Vec<T> = T::linspace(&a, &b, 201);
     // Per parameter the triangle: (p+1)·m operations, on numbers of p levels of
     // (u − u_i)/(u_{i+j} − u_i); written out, every value about 100 operations.
     let m = knots.len() as u128;
     let per = 4 * (p as u128 + 1) * m + 100 * n as u128;
-    let triangle = if cmd.steps.steps { 100 * (p as u128 + 1) * m } else { 0 };
+    let triangle = if cmd.steps.steps {
+        100 * (p as u128 + 1) * m
+    } else {
+        0
+    };
     let size = |params: &[T]| polynomial_bits(p, bits(params) + 3 * bits(&knots), 0);
     let picture = plotted(&cmd.plot, &dense);
     check_work(
         limits,
         "--t",
-        work::<T>(ts.len() as u128 * (per + triangle), size(&ts)).saturating_add(work::<T>(
-            picture.len() as u128 * per,
-            size(picture),
-        )),
+        work::<T>(ts.len() as u128 * (per + triangle), size(&ts))
+            .saturating_add(work::<T>(picture.len() as u128 * per, size(picture))),
     )?;
-    let mut rows = Vec::with_capacity(ts.len());
-    for t in &ts {
-        rows.push(basis_all(p, n, &knots, t).map_err(lib(
-            "--t",
-            "parameters inside the domain [u_p, u_n] of the knot vector",
-        ))?);
-    }
+    // The top level of the Cox–de Boor triangle: N_0,p … N_(n−1),p.
+    let top = |t: &T| -> Vec<T> {
+        cox_de_boor_triangle(p, &knots, t)
+            .pop()
+            .expect("p + 1 levels")
+    };
+    let rows: Vec<Vec<T>> = ts.iter().map(top).collect();
     let mut report = Report::new();
     if cmd.steps.steps {
         for (k, t) in ts.iter().enumerate() {
@@ -116,17 +129,17 @@ pub fn bspline_basis<T: LiteralScalar>(
             report.push(name, Value::Record(parts));
         }
     }
-    report.push("t", Value::Matrix(DMatrix::from_column_slice(ts.len(), 1, &ts)));
+    report.push(
+        "t",
+        Value::Matrix(DMatrix::from_column_slice(ts.len(), 1, &ts)),
+    );
     report.push(
         "result",
         Value::Matrix(DMatrix::from_fn(ts.len(), n, |i, j| rows[i][j].clone())),
     );
     let mut files = PendingWrites::new();
     if let Some(path) = &cmd.plot.plot {
-        let mut values = Vec::with_capacity(dense.len());
-        for t in &dense {
-            values.push(basis_all(p, n, &knots, t).map_err(lib("--plot", "a knot vector"))?);
-        }
+        let values: Vec<Vec<T>> = dense.iter().map(top).collect();
         let colours = [
             Colour::Blue,
             Colour::Red,

@@ -35,7 +35,33 @@ pub struct SplineSurfaceArgs {
     /// x y z side by side), an Octave (m+1)×(n+1)×3 array file, or an Octave save -text file
     /// holding an octave-nurbs nrbmak struct (FILE or FILE:NAME).
     #[arg(value_name = "NET", allow_hyphen_values = true)]
-    pub net: String,
+    pub net: Option<String>,
+    /// Instead of NET: the x coordinates of the control points, an (m+1)×(n+1) matrix with
+    /// entry (i, j) of P_ij (i along u; the lecture notes' X_S has its rows along v: pass its
+    /// transpose).
+    #[arg(
+        long,
+        value_name = "MATRIX",
+        allow_hyphen_values = true,
+        conflicts_with = "net"
+    )]
+    pub x: Option<String>,
+    /// The y coordinates (with --x).
+    #[arg(
+        long,
+        value_name = "MATRIX",
+        allow_hyphen_values = true,
+        requires = "x"
+    )]
+    pub y: Option<String>,
+    /// The z coordinates (with --x and --y).
+    #[arg(
+        long,
+        value_name = "MATRIX",
+        allow_hyphen_values = true,
+        requires = "y"
+    )]
+    pub z: Option<String>,
     /// The degrees: P for both directions or P,Q (default 3, or the struct's order − 1).
     #[arg(long, value_name = "P[,Q]", allow_hyphen_values = true)]
     pub degree: Option<String>,
@@ -91,11 +117,16 @@ fn read_struct<T: LiteralScalar>(
         return Ok(None);
     }
     let contents = read_text(limits, "NET", path)?;
-    if !contents.lines().take(20).any(|l| l.trim_start().starts_with("# name:")) {
+    if !contents
+        .lines()
+        .take(20)
+        .any(|l| l.trim_start().starts_with("# name:"))
+    {
         return Ok(None);
     }
     let shown = format!("NET {trimmed}");
-    let data = |problem: String| CliError::new(shown.clone(), problem, STRUCT_FORM, ErrorKind::Data);
+    let data =
+        |problem: String| CliError::new(shown.clone(), problem, STRUCT_FORM, ErrorKind::Data);
     let ws = text_format::read_text_with(&contents, limits).map_err(|e| data(e.to_string()))?;
     let found = ws.iter().find(|(n, v)| {
         matches!(v, OValue::Struct(_)) && v.field("coefs").is_some() && name.is_none_or(|m| m == *n)
@@ -109,7 +140,9 @@ fn read_struct<T: LiteralScalar>(
         .ok_or_else(|| data("`coefs` is not numeric".into()))?;
     let shape = coefs.shape().to_vec();
     if shape.len() != 3 || shape[0] != 4 {
-        return Err(data(format!("`coefs` is {shape:?}, not a surface's 4×nu×nv")));
+        return Err(data(format!(
+            "`coefs` is {shape:?}, not a surface's 4×nu×nv"
+        )));
     }
     let knot_list: Vec<Vec<T>> = match s.field("knots") {
         Some(OValue::Cell(c)) if c.len() == 2 => c
@@ -166,7 +199,9 @@ fn degrees(args: &SplineSurfaceArgs, limits: &Limits) -> Result<Option<(usize, u
                 .map_err(|e| CliError::literal(arg, e, form))?;
         let ok = !values.is_empty()
             && values.len() <= 2
-            && values.iter().all(|x| *x >= 0.0 && x.fract() == 0.0 && *x < 1e6);
+            && values
+                .iter()
+                .all(|x| *x >= 0.0 && x.fract() == 0.0 && *x < 1e6);
         if !ok {
             return Err(shape(arg, format!("`{}`", text.trim()), form));
         }
@@ -233,7 +268,10 @@ pub fn spline_surface<T: LiteralScalar>(
     rational: bool,
 ) -> Result<Outcome, CliError> {
     let given = degrees(args, limits)?;
-    let from_struct = read_struct::<T>(limits, &args.net)?;
+    let from_struct = match &args.net {
+        Some(net) => read_struct::<T>(limits, net)?,
+        None => None,
+    };
     let (degrees, knots, mut coords, struct_weights) = match from_struct {
         Some(s) => {
             for (arg, set) in [("--uknots", &args.uknots), ("--vknots", &args.vknots)] {
@@ -247,10 +285,8 @@ pub fn spline_surface<T: LiteralScalar>(
             }
             let mut h = s.homogeneous;
             let w = h.pop().expect("four coordinates");
-            let points: Vec<DMatrix<T>> = h
-                .into_iter()
-                .map(|c| c.zip_map(&w, |x, w| x / w))
-                .collect();
+            let points: Vec<DMatrix<T>> =
+                h.into_iter().map(|c| c.zip_map(&w, |x, w| x / w)).collect();
             (
                 given.unwrap_or(s.degrees),
                 (Some(s.knots.0), Some(s.knots.1)),
@@ -259,7 +295,19 @@ pub fn spline_surface<T: LiteralScalar>(
             )
         }
         None => {
-            let net = load_net::<T>(limits, "NET", &args.net, None)?;
+            let net = match &args.net {
+                Some(text) => load_net::<T>(limits, "NET", text, None)?,
+                None if args.x.is_some() => {
+                    coordinate_net(limits, [&args.x, &args.y, &args.z], None)?
+                }
+                None => {
+                    return Err(usage(
+                        "NET",
+                        "missing",
+                        "a control net NET, an nrbmak struct file, or the coordinate matrices --x, --y, --z",
+                    ))
+                }
+            };
             let (nu, nv, d) = net.dim();
             let coords = (0..d)
                 .map(|k| DMatrix::from_fn(nu, nv, |i, j| net[[i, j, k]].clone()))
@@ -339,8 +387,20 @@ pub fn spline_surface<T: LiteralScalar>(
         Kind::Rational(s) => s.homogeneous().domain(),
     };
     let single = point_mode(limits, &args.params);
-    let us = domain_params(limits, "--u", &args.params.u, args.params.n, domain.0.clone())?;
-    let vs = domain_params(limits, "--v", &args.params.v, args.params.n, domain.1.clone())?;
+    let us = domain_params(
+        limits,
+        "--u",
+        &args.params.u,
+        args.params.n,
+        domain.0.clone(),
+    )?;
+    let vs = domain_params(
+        limits,
+        "--v",
+        &args.params.v,
+        args.params.n,
+        domain.1.clone(),
+    )?;
     check_grid(limits, us.len(), vs.len())?;
     let pictures = args.plot.plot.is_some() || args.mesh.mesh.is_some();
     let (pus, pvs) = if single && pictures {
@@ -353,10 +413,16 @@ pub fn spline_surface<T: LiteralScalar>(
     };
     // Per point the two bases ((p+1)², (q+1)²) and (p+1)(q+1)·(d+1) products.
     let d = if rational { 4u128 } else { 3 };
-    let per = (p as u128 + 1).pow(2) + (q as u128 + 1).pow(2) + 2 * (p as u128 + 1) * (q as u128 + 1) * d;
+    let per =
+        (p as u128 + 1).pow(2) + (q as u128 + 1).pow(2) + 2 * (p as u128 + 1) * (q as u128 + 1) * d;
     let knot_bits = bits(&ku).max(bits(&kv));
     let net_bits = match &surface {
-        Kind::Plain(s) => s.coordinates().iter().map(|c| bits(c.iter())).max().unwrap_or(0),
+        Kind::Plain(s) => s
+            .coordinates()
+            .iter()
+            .map(|c| bits(c.iter()))
+            .max()
+            .unwrap_or(0),
         Kind::Rational(s) => s
             .homogeneous()
             .coordinates()
@@ -396,7 +462,10 @@ pub fn spline_surface<T: LiteralScalar>(
         let basis = |deg: usize, n: usize, knots: &[T], at: &[T]| -> Result<DMatrix<T>, CliError> {
             let mut rows = Vec::with_capacity(at.len());
             for t in at {
-                rows.push(basis_all(deg, n, knots, t).map_err(lib("--u/--v", "parameters inside the domain"))?);
+                rows.push(
+                    basis_all(deg, n, knots, t)
+                        .map_err(lib("--u/--v", "parameters inside the domain"))?,
+                );
             }
             Ok(DMatrix::from_fn(at.len(), n, |i, j| rows[i][j].clone()))
         };
@@ -414,7 +483,13 @@ pub fn spline_surface<T: LiteralScalar>(
             Value::Matrix(DMatrix::from_fn(dim, 1, |k, _| grid[[0, 0, k]].clone())),
         );
     } else {
-        push_surface(&mut report, "result", (&us, &vs), grid.clone(), args.params.list);
+        push_surface(
+            &mut report,
+            "result",
+            (&us, &vs),
+            grid.clone(),
+            args.params.list,
+        );
     }
     let mut files = PendingWrites::new();
     if pictures {
@@ -435,10 +510,16 @@ pub fn spline_surface<T: LiteralScalar>(
             let net = PointGrid::from_shape_fn((nu, nv, net_coords.len()), |(i, j, k)| {
                 net_coords[k][(i, j)].to_f64()
             });
-            let title = if rational { "NURBS surface" } else { "B-spline surface" };
-            let figure = Figure::new(title)
-                .surface(g.clone(), "surface")
-                .net(net, Colour::Red, "control net");
+            let title = if rational {
+                "NURBS surface"
+            } else {
+                "B-spline surface"
+            };
+            let figure = Figure::new(title).surface(g.clone(), "surface").net(
+                net,
+                Colour::Red,
+                "control net",
+            );
             add_plot(&mut files, "--plot", path, &figure)?;
         }
         if let Some(path) = &args.mesh.mesh {

@@ -19,10 +19,20 @@ use super::Outcome;
 #[derive(Debug, Args)]
 pub struct CircleCommand {
     /// The radius r > 0.
-    #[arg(long, value_name = "R", default_value = "1", allow_hyphen_values = true)]
+    #[arg(
+        long,
+        value_name = "R",
+        default_value = "1",
+        allow_hyphen_values = true
+    )]
     pub radius: String,
     /// The center, 2 or 3 coordinates (the circle lies in the plane z = center z).
-    #[arg(long, value_name = "VECTOR", default_value = "[0 0]", allow_hyphen_values = true)]
+    #[arg(
+        long,
+        value_name = "VECTOR",
+        default_value = "[0 0]",
+        allow_hyphen_values = true
+    )]
     pub center: String,
     #[command(flatten)]
     pub params: CurveParamArgs,
@@ -65,7 +75,11 @@ fn number(limits: &Limits, argument: &str, text: &str) -> Result<f64, CliError> 
     }
 }
 
-fn run(limits: &Limits, cmd: &CircleCommand, angles: Option<(f64, f64)>) -> Result<Outcome, CliError> {
+fn run(
+    limits: &Limits,
+    cmd: &CircleCommand,
+    angles: Option<(f64, f64)>,
+) -> Result<Outcome, CliError> {
     if cmd.output.exact {
         return Err(usage(
             "--exact",
@@ -86,7 +100,13 @@ fn run(limits: &Limits, cmd: &CircleCommand, angles: Option<(f64, f64)>) -> Resu
         Some(t) => load_params(limits, "--t", t)?,
         None => crate::samples(limits, cmd.params.n.unwrap_or(DEFAULT_SAMPLES), 2)?,
     };
-    crate::slips::outside("--t", &ts, &0.0, &1.0, "outside its domain a NURBS curve is not defined");
+    crate::slips::outside(
+        "--t",
+        &ts,
+        &0.0,
+        &1.0,
+        "outside its domain a NURBS curve is not defined",
+    );
     check_work(limits, "--t", 40 * (ts.len() as u128 + 201))?;
     let mut cols = Vec::with_capacity(ts.len());
     for t in &ts {
@@ -98,7 +118,10 @@ fn run(limits: &Limits, cmd: &CircleCommand, angles: Option<(f64, f64)>) -> Resu
     }
     let mut report = Report::new();
     if cmd.steps.steps {
-        report.push("coefs", Value::Matrix(curve.homogeneous().control().clone()));
+        report.push(
+            "coefs",
+            Value::Matrix(curve.homogeneous().control().clone()),
+        );
     }
     report.push("knots", Value::Matrix(row(curve.knots())));
     report.push("control", Value::Matrix(curve.points()));
@@ -112,7 +135,11 @@ fn run(limits: &Limits, cmd: &CircleCommand, angles: Option<(f64, f64)>) -> Resu
         for t in &dense {
             line.push(curve.try_eval(*t).map_err(lib("--plot", "a curve"))?);
         }
-        let title = if angles.is_some() { "circular arc (NURBS)" } else { "circle (NURBS)" };
+        let title = if angles.is_some() {
+            "circular arc (NURBS)"
+        } else {
+            "circle (NURBS)"
+        };
         let figure = Figure::new(title)
             .curve(DMatrix::from_columns(&line), Colour::Blue, "curve")
             .control_polygon(curve.points(), "control polygon");

@@ -10,8 +10,8 @@ use nalgebra::{DMatrix, DVector};
 use crate::args::OutputArgs;
 use crate::plot::{Figure, ImageKind};
 use crate::{
-    load_expression, load_matrix, load_params, render_with, samples, CliError, PendingWrites, Report,
-    CURVE_FORM,
+    load_expression, load_matrix, load_params, render_with, samples, CliError, PendingWrites,
+    Report, CURVE_FORM,
 };
 use cagd::bezier::BezierCurve;
 use cagd::{Curve, SampledCurve};
@@ -376,9 +376,13 @@ pub fn warnings<T: LiteralScalar>(
             .collect(),
         _ => Vec::new(),
     };
+    // The environment starts as a copy of the script's, so it repeats the script's warnings:
+    // each is reported once, about the script.
+    let from_script: Vec<Warning> = out.iter().map(|(_, w)| w.clone()).collect();
     out.extend(
         env.take_warnings()
             .into_iter()
+            .filter(|w| !from_script.contains(w))
             .map(|w| ("expression".to_string(), w)),
     );
     out
@@ -445,4 +449,45 @@ pub fn record<T: LiteralScalar>(parts: Vec<(&str, crate::Value<T>)>) -> crate::V
             })
             .collect(),
     )
+}
+
+/// The net of `--x`, `--y`, `--z` (the lecture notes' `X`, `Y`, `Z` of a patch): one
+/// `(m+1) × (n+1)` matrix per coordinate given (`--x` at least), entry `(i, j)` of point
+/// `P_ij`.
+pub fn coordinate_net<T: LiteralScalar>(
+    limits: &Limits,
+    given: [&Option<String>; 3],
+    script: Option<&Script<T>>,
+) -> Result<PointGrid<T>, CliError> {
+    let mut coords = Vec::with_capacity(3);
+    for (arg, given) in ["--x", "--y", "--z"].into_iter().zip(given) {
+        if let Some(text) = given {
+            coords.push((arg, load_matrix::<T>(limits, arg, text, script)?));
+        }
+    }
+    let Some((_, first)) = coords.first() else {
+        return Err(usage(
+            "--x",
+            "missing",
+            "the coordinate matrices --x, --y (and --z)",
+        ));
+    };
+    let shape0 = first.shape();
+    if let Some((arg, m)) = coords.iter().find(|(_, m)| m.shape() != shape0) {
+        return Err(shape(
+            arg,
+            format!(
+                "a {}×{} matrix, but --x is {}×{}",
+                m.nrows(),
+                m.ncols(),
+                shape0.0,
+                shape0.1
+            ),
+            "coordinate matrices of one shape (m+1)×(n+1)",
+        ));
+    }
+    Ok(PointGrid::from_shape_fn(
+        (shape0.0, shape0.1, coords.len()),
+        |(i, j, k)| coords[k].1[(i, j)].clone(),
+    ))
 }

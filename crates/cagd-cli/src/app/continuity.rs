@@ -93,7 +93,10 @@ fn analyse<T: LiteralScalar>(
 ) -> Result<(), CliError> {
     let (one, zero) = (T::one(), T::zero());
     let (p, q) = (a.eval(one.clone()), b.eval(zero.clone()));
-    let (dp, dq) = (derivative_at(a, 1, one.clone()), derivative_at(b, 1, zero.clone()));
+    let (dp, dq) = (
+        derivative_at(a, 1, one.clone()),
+        derivative_at(b, 1, zero.clone()),
+    );
     let (ddp, ddq) = (derivative_at(a, 2, one), derivative_at(b, 2, zero));
     let scale = a
         .control()
@@ -105,10 +108,8 @@ fn analyse<T: LiteralScalar>(
     } else {
         scale * T::from_f64(1e-12).unwrap_or_else(T::zero)
     };
-    let j = joint((&p, &dp), (&q, &dq), tol.clone()).map_err(lib(
-        "FIRST/SECOND",
-        "two curves of the same dimension",
-    ))?;
+    let j = joint((&p, &dp), (&q, &dq), tol.clone())
+        .map_err(lib("FIRST/SECOND", "two curves of the same dimension"))?;
     let same = |x: &DVector<T>, y: &DVector<T>| {
         x.iter()
             .zip(y.iter())
@@ -229,8 +230,7 @@ pub fn continuity<T: LiteralScalar>(
         }
         // Degree of the full first curve: the n given points and the free one.
         let ratio = T::from_ratio(b.degree() as i64, n as i64);
-        let direction =
-            DVector::from_fn(d, |r, _| ratio.clone() * (y0[r].clone() - y1[r].clone()));
+        let direction = DVector::from_fn(d, |r, _| ratio.clone() * (y0[r].clone() - y1[r].clone()));
         let k: T = match &cmd.k {
             Some(text) => match load_params::<T>(limits, "--k", text)?.as_slice() {
                 [k] => k.clone(),
@@ -282,8 +282,7 @@ pub fn continuity<T: LiteralScalar>(
         );
         report.push("k_used", Value::Matrix(DMatrix::from_element(1, 1, k)));
         report.push("point", column(&point));
-        let mut columns: Vec<DVector<T>> =
-            first.column_iter().map(|c| c.into_owned()).collect();
+        let mut columns: Vec<DVector<T>> = first.column_iter().map(|c| c.into_owned()).collect();
         columns.insert(n - 1, point);
         BezierCurve::new(DMatrix::from_columns(&columns)).map_err(lib("FIRST", form))?
     } else {

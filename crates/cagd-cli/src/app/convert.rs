@@ -85,11 +85,23 @@ pub struct ConvertCommand {
 
 /// The `(n+1) × (n+1)` matrix reversing the order of columns.
 fn reversal<T: LiteralScalar>(k: usize) -> DMatrix<T> {
-    DMatrix::from_fn(k, k, |i, j| if i + j + 1 == k { T::one() } else { T::zero() })
+    DMatrix::from_fn(
+        k,
+        k,
+        |i, j| if i + j + 1 == k { T::one() } else { T::zero() },
+    )
+}
+
+/// The `k × k` identity.
+fn identity<T: LiteralScalar>(k: usize) -> DMatrix<T> {
+    DMatrix::from_fn(k, k, |i, j| if i == j { T::one() } else { T::zero() })
 }
 
 /// `T` with `X_bezier = X_form · T` (`k` columns).
 fn to_bezier<T: LiteralScalar>(form: Form, k: usize) -> DMatrix<T> {
+    if form == Form::Bezier {
+        return identity(k);
+    }
     match form.cubic() {
         Some(c) => conversion_matrix(c, CubicForm::Bezier),
         None => {
@@ -106,6 +118,9 @@ fn to_bezier<T: LiteralScalar>(form: Form, k: usize) -> DMatrix<T> {
 
 /// `T` with `X_form = X_bezier · T` (`k` columns).
 fn from_bezier<T: LiteralScalar>(form: Form, k: usize) -> DMatrix<T> {
+    if form == Form::Bezier {
+        return identity(k);
+    }
     match form.cubic() {
         Some(c) => conversion_matrix(CubicForm::Bezier, c),
         None => {

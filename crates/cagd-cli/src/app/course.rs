@@ -81,7 +81,11 @@ pub fn spline<T: LiteralScalar>(limits: &Limits, cmd: &SplineCommand) -> Result<
         .unwrap_or(if tangents { End::Clamped } else { End::Natural });
     if chosen != End::Clamped {
         // A tangent that the end condition ignores is a slip, not a choice.
-        let name = if chosen == End::Natural { "natural" } else { "closed" };
+        let name = if chosen == End::Natural {
+            "natural"
+        } else {
+            "closed"
+        };
         for (arg, given) in [
             ("--start-tangent", &cmd.start_tangent),
             ("--end-tangent", &cmd.end_tangent),
@@ -167,10 +171,7 @@ pub fn spline<T: LiteralScalar>(limits: &Limits, cmd: &SplineCommand) -> Result<
     };
     let mut report = Report::new();
     if cmd.steps.steps {
-        let (a, rhs) = super::spline_steps::system(
-            &s,
-            clamped.as_ref().map(|(a, b)| (a, b)),
-        );
+        let (a, rhs) = super::spline_steps::system(&s, clamped.as_ref().map(|(a, b)| (a, b)));
         report.push("params", Value::Matrix(row(s.params())));
         report.push("system", Value::Matrix(a));
         report.push("rhs", Value::Matrix(rhs));
@@ -262,7 +263,13 @@ pub fn hermite<T: LiteralScalar>(
     ))?;
     let ts: Vec<T> =
         params_or_samples(limits, "--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
-    crate::slips::outside("--t", &ts, &T::zero(), &T::one(), "the cubic is extrapolated there");
+    crate::slips::outside(
+        "--t",
+        &ts,
+        &T::zero(),
+        &T::one(),
+        "the cubic is extrapolated there",
+    );
     let dense: Vec<T> = T::linspace(&T::zero(), &T::one(), 101);
     // Per parameter the four cubic Hermite functions (about 16 operations) and their
     // combination (8 per coordinate), on cubics in t; --steps adds the basis rows.

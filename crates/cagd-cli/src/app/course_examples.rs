@@ -7,7 +7,7 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use cagd::bezier::{cubic_bezier_matrix, BezierCurve};
-use cagd::conversion::{convert, conversion_matrix, invert, CubicForm};
+use cagd::conversion::{conversion_matrix, convert, invert, CubicForm};
 use cagd::coons::{discrete_coons, solve_mask, Mask};
 use cagd::interpolation::{blending_matrix, LagrangePolynomial, PiecewiseLinear};
 use cagd::limits::Limits;
@@ -74,7 +74,10 @@ pub fn course(limits: &Limits, cmd: &CourseCommand) -> Result<Outcome, CliError>
 /// The matrix-form notes §1.2–1.3: `p(t) = P · M · [1 t t² t³]ᵀ` and the table at
 /// `t = 0, 0.2, …, 1`.
 fn matrix_form_table(out: &mut String, files: &mut Files) -> Result<(), CliError> {
-    heading(out, "Matrix-form notes §1.3: a cubic Bézier curve in matrix form");
+    heading(
+        out,
+        "Matrix-form notes §1.3: a cubic Bézier curve in matrix form",
+    );
     out.push_str(
         "p0 = (0,0), p1 = (1,1), p2 = (2,0), p3 = (3,1); p(t) = P · M · [1 t t² t³]ᵀ, exactly.\n\
          (cagd convert \"[0 0; 1 1; 2 0; 3 1]\" --rows --from bezier --to monomial --steps --exact)\n\n",
@@ -128,7 +131,10 @@ impl ToF64Value for Q {
 
 /// The lecture notes' Bézier example and the conversion table (Hermite ↔ Bézier ↔ B-spline).
 fn conversions(out: &mut String, files: &mut Files) -> Result<(), CliError> {
-    heading(out, "Lecture notes: Bézier → Hermite → B-spline (the conversion table)");
+    heading(
+        out,
+        "Lecture notes: Bézier → Hermite → B-spline (the conversion table)",
+    );
     out.push_str(
         "x0 = (2,3), x1 = (3,5), x2 = (4,7) (or (4,1)), x3 = (5,3). The same cubic in the three forms:\n\
          X_to = X_from · T with T = M_from · M_to⁻¹ (entry of the notes' table in row \"to\", column\n\
@@ -172,7 +178,11 @@ fn conversions(out: &mut String, files: &mut Files) -> Result<(), CliError> {
         let _ = writeln!(
             out,
             "and back from X_C to Bézier: {}.\n",
-            if back == b { "X_B again, exactly" } else { "DIFFERENT (a bug)" }
+            if back == b {
+                "X_B again, exactly"
+            } else {
+                "DIFFERENT (a bug)"
+            }
         );
         if k == 0 {
             let curve = BezierCurve::new(b.clone()).map_err(lib("course", INTERNAL))?;
@@ -190,7 +200,10 @@ fn conversions(out: &mut String, files: &mut Files) -> Result<(), CliError> {
 
 /// The three splines of the lecture notes (cases a, b, c) on the points of their example.
 fn splines(out: &mut String, files: &mut Files) -> Result<(), CliError> {
-    heading(out, "Lecture notes: the three cubic splines (cases a, b, c)");
+    heading(
+        out,
+        "Lecture notes: the three cubic splines (cases a, b, c)",
+    );
     out.push_str(
         "Points x0 = (0,0), x1 = (2,1), x2 = (4,4), x3 = (6,0), every segment over ⟨0,1⟩.\n\
          (cagd spline \"[0 0; 2 1; 4 4; 6 0]\" --rows --start-tangent \"[1;1]\" --end-tangent \"[-1;1]\" --steps --exact)\n\n",
@@ -240,12 +253,19 @@ fn splines(out: &mut String, files: &mut Files) -> Result<(), CliError> {
             let inverse = invert(&a).map_err(lib("course", INTERNAL))?;
             r.push("A⁻¹", Value::Matrix(inverse));
         }
-        r.push("tangents (rows x', y')", Value::Matrix(s.tangents().clone()));
+        r.push(
+            "tangents (rows x', y')",
+            Value::Matrix(s.tangents().clone()),
+        );
         out.push_str(&text(&r));
         out.push_str(note);
         let segs = s.segment_count();
         let dense: Vec<Q> = (0..=20 * segs as i64).map(|j| q(j, 20)).collect();
-        figure = figure.curve(f64m(&s.eval_many(&dense)), colours[k], title.split(',').next().unwrap_or(title));
+        figure = figure.curve(
+            f64m(&s.eval_many(&dense)),
+            colours[k],
+            title.split(',').next().unwrap_or(title),
+        );
     }
     figure = figure.control_polygon(f64m(&pts), "points x0..x3");
     files.picture("splines", &figure)
@@ -253,7 +273,10 @@ fn splines(out: &mut String, files: &mut Files) -> Result<(), CliError> {
 
 /// The lecture notes' interpolation example and Příklad 1.
 fn lagrange(out: &mut String, files: &mut Files) -> Result<(), CliError> {
-    heading(out, "Lecture notes: Lagrange and piecewise-linear interpolation");
+    heading(
+        out,
+        "Lecture notes: Lagrange and piecewise-linear interpolation",
+    );
     out.push_str(
         "Through (1,1), (2,2), (3,3), (4,2), (5,1).\n\
          (cagd lagrange --nodes 1:5 --points \"[1 2 3 2 1]\" --coefficients --exact)\n\n",
@@ -267,7 +290,10 @@ fn lagrange(out: &mut String, files: &mut Files) -> Result<(), CliError> {
         "coefficients of x⁴ … 1",
         Value::Matrix(row(&f.coefficients())),
     );
-    r.push("f(5/2)", Value::Matrix(DMatrix::from_element(1, 1, f.eval(q(5, 2)))));
+    r.push(
+        "f(5/2)",
+        Value::Matrix(DMatrix::from_element(1, 1, f.eval(q(5, 2)))),
+    );
     r.push(
         "piecewise linear at 5/2",
         Value::Matrix(DMatrix::from_element(1, 1, lin.eval(q(5, 2)))),
@@ -282,8 +308,8 @@ fn lagrange(out: &mut String, files: &mut Files) -> Result<(), CliError> {
          values, and the curve passes x1, x3, x2, x4 in the order of the parameters.\n\
          (cagd lagrange --nodes \"[0 0.5 0.25 1]\" --coefficients --exact)\n\n",
     );
-    let g = blending_matrix(&[q(0, 1), q(1, 2), q(1, 4), q(1, 1)])
-        .map_err(lib("course", INTERNAL))?;
+    let g =
+        blending_matrix(&[q(0, 1), q(1, 2), q(1, 4), q(1, 1)]).map_err(lib("course", INTERNAL))?;
     let mut r = Report::<Q>::new();
     r.push("G for (0, 1/2, 1/4, 1)", Value::Matrix(g));
     r.push(
@@ -397,7 +423,10 @@ fn nurbs_circle(out: &mut String, files: &mut Files) -> Result<(), CliError> {
 
 /// The discrete Coons patch and the masks of the CAD notes (6)–(9).
 fn discrete_mask(limits: &Limits, out: &mut String, files: &mut Files) -> Result<(), CliError> {
-    heading(out, "CAD notes §2.1: the discrete Coons patch and its 3×3 mask");
+    heading(
+        out,
+        "CAD notes §2.1: the discrete Coons patch and its 3×3 mask",
+    );
     out.push_str(
         "A 4×4 net P_ij = (i, j, z_ij) with the boundary heights below (interior unknown). The\n\
          discrete Coons formula (6) and the mask (7)–(8), α = −1/4 on the diagonal neighbours and\n\
@@ -421,8 +450,14 @@ fn discrete_mask(limits: &Limits, out: &mut String, files: &mut Files) -> Result
     let mut r = Report::<Q>::new();
     r.push("boundary z (interior 0 = unknown)", Value::Matrix(z));
     r.push("z by the formula (6)", Value::Matrix(coons[2].clone()));
-    r.push("z by the mask α = -1/4, β = 1/2", Value::Matrix(mask[2].clone()));
-    r.push("z by the mask α = 0, β = 1/4", Value::Matrix(laplace[2].clone()));
+    r.push(
+        "z by the mask α = -1/4, β = 1/2",
+        Value::Matrix(mask[2].clone()),
+    );
+    r.push(
+        "z by the mask α = 0, β = 1/4",
+        Value::Matrix(laplace[2].clone()),
+    );
     out.push_str(&text(&r));
     let _ = writeln!(
         out,
@@ -433,9 +468,10 @@ fn discrete_mask(limits: &Limits, out: &mut String, files: &mut Files) -> Result
     let grid = |c: &[DMatrix<Q>]| {
         cagd::grid::PointGrid::from_shape_fn((4, 4, 3), |(i, j, k)| c[k][(i, j)].to_f64_value())
     };
-    let figure = Figure::new("CAD notes: discrete Coons net (red) and discrete Laplace net (green)")
-        .surface(grid(&coons), "Coons net as a surface")
-        .net(grid(&coons), Colour::Red, "Coons mask α = -1/4, β = 1/2")
-        .net(grid(&laplace), Colour::Green, "Laplace mask α = 0, β = 1/4");
+    let figure =
+        Figure::new("CAD notes: discrete Coons net (red) and discrete Laplace net (green)")
+            .surface(grid(&coons), "Coons net as a surface")
+            .net(grid(&coons), Colour::Red, "Coons mask α = -1/4, β = 1/2")
+            .net(grid(&laplace), Colour::Green, "Laplace mask α = 0, β = 1/4");
     files.picture("discrete_coons", &figure)
 }

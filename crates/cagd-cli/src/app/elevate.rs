@@ -45,7 +45,10 @@ pub struct ElevateCommand {
 }
 
 /// Degree elevation.
-pub fn elevate<T: LiteralScalar>(limits: &Limits, cmd: &ElevateCommand) -> Result<Outcome, CliError> {
+pub fn elevate<T: LiteralScalar>(
+    limits: &Limits,
+    cmd: &ElevateCommand,
+) -> Result<Outcome, CliError> {
     let control = points::<T>(limits, "CONTROL", &cmd.control, None, cmd.rows.rows)?;
     let n1 = control.ncols();
     let bspline = cmd.degree.is_some() || cmd.order.is_some() || cmd.knots.is_some();
@@ -112,12 +115,20 @@ pub fn elevate<T: LiteralScalar>(limits: &Limits, cmd: &ElevateCommand) -> Resul
         None => BSplineCurve::clamped(degree, control),
     }
     .map_err(lib("CONTROL/--degree/--knots", form))?;
-    let elevated = curve
-        .elevate(cmd.by)
-        .map_err(lib("--knots", "a clamped knot vector (first and last knots p+1 times)"))?;
+    let elevated = curve.elevate(cmd.by).map_err(lib(
+        "--knots",
+        "a clamped knot vector (first and last knots p+1 times)",
+    ))?;
     if cmd.steps.steps {
         report.push("knots_before", Value::Matrix(row(curve.knots().as_slice())));
-        report.push("degree", Value::Matrix(DMatrix::from_element(1, 1, T::from_usize(elevated.degree()))));
+        report.push(
+            "degree",
+            Value::Matrix(DMatrix::from_element(
+                1,
+                1,
+                T::from_usize(elevated.degree()),
+            )),
+        );
     }
     report.push("knots", Value::Matrix(row(elevated.knots().as_slice())));
     report.push("control", Value::Matrix(elevated.control().clone()));

@@ -78,15 +78,19 @@ pub fn ferguson<T: LiteralScalar>(
     let d = points[0][0].len();
     let twists = match &cmd.twists {
         Some(t) => corners::<T>(limits, "--twists", t, rows)?,
-        None => std::array::from_fn(|_| std::array::from_fn(|_| DVector::from_element(d, T::zero()))),
+        None => {
+            std::array::from_fn(|_| std::array::from_fn(|_| DVector::from_element(d, T::zero())))
+        }
     };
     let patch = FergusonPatch::new(&points, &du, &dv, &twists).map_err(lib(
         "--points/--du/--dv/--twists",
         "four d×4 matrices of the same dimension d",
     ))?;
     let single = point_mode(limits, &cmd.params);
-    let us: Vec<T> = params_or_samples(limits, "--u", &cmd.params.u, cmd.params.n, DEFAULT_SAMPLES)?;
-    let vs: Vec<T> = params_or_samples(limits, "--v", &cmd.params.v, cmd.params.n, DEFAULT_SAMPLES)?;
+    let us: Vec<T> =
+        params_or_samples(limits, "--u", &cmd.params.u, cmd.params.n, DEFAULT_SAMPLES)?;
+    let vs: Vec<T> =
+        params_or_samples(limits, "--v", &cmd.params.v, cmd.params.n, DEFAULT_SAMPLES)?;
     check_grid(limits, us.len(), vs.len())?;
     let (zero, one) = (T::zero(), T::one());
     crate::slips::outside("--u", &us, &zero, &one, "the patch is extrapolated there");
@@ -98,7 +102,12 @@ pub fn ferguson<T: LiteralScalar>(
         Vec::new()
     };
     // Per point the two Hermite bases (cubics) and 16·d products.
-    let data_bits = patch.geometry().iter().map(|g| bits(g.iter())).max().unwrap_or(0);
+    let data_bits = patch
+        .geometry()
+        .iter()
+        .map(|g| bits(g.iter()))
+        .max()
+        .unwrap_or(0);
     let grid_work = |us: &[T], vs: &[T]| {
         work::<T>(
             us.len() as u128 * vs.len() as u128 * (40 + 32 * d as u128),
@@ -127,7 +136,13 @@ pub fn ferguson<T: LiteralScalar>(
             Value::Matrix(column(&patch.eval(us[0].clone(), vs[0].clone()))),
         );
     } else {
-        push_surface(&mut report, "result", (&us, &vs), grid.clone(), cmd.params.list);
+        push_surface(
+            &mut report,
+            "result",
+            (&us, &vs),
+            grid.clone(),
+            cmd.params.list,
+        );
     }
     let mut files = PendingWrites::new();
     if pictures {

@@ -63,7 +63,9 @@ fn boehm_step<T: LiteralScalar>(
     let alphas = (k + 1 - p..=k)
         .map(|i| (u.clone() - knots[i].clone()) / (knots[i + p].clone() - knots[i].clone()))
         .collect();
-    let next = curve.insert_knot(u.clone()).map_err(lib("--insert", form))?;
+    let next = curve
+        .insert_knot(u.clone())
+        .map_err(lib("--insert", form))?;
     Ok((k, alphas, next))
 }
 

@@ -133,14 +133,23 @@ pub fn integrate<T: LiteralScalar>(
             )),
         );
         if !ts.is_empty() {
-            crate::slips::outside("--t", &ts, &T::zero(), &T::one(), "the polynomials are extrapolated there");
+            crate::slips::outside(
+                "--t",
+                &ts,
+                &T::zero(),
+                &T::one(),
+                "the polynomials are extrapolated there",
+            );
             let basis = cagd::bernstein::basis_matrix(n + 1, &ts);
             let values = DMatrix::from_fn(ts.len(), rows.len(), |k, r| {
                 (0..n + 2).fold(T::zero(), |s, j| {
                     s + basis[(k, j)].clone() * coefficients[r][j].clone()
                 })
             });
-            report.push("t", Value::Matrix(DMatrix::from_column_slice(ts.len(), 1, &ts)));
+            report.push(
+                "t",
+                Value::Matrix(DMatrix::from_column_slice(ts.len(), 1, &ts)),
+            );
             report.push("result", Value::Matrix(values));
         }
         return finish(&report, &cmd.output, files, Vec::new());
@@ -199,16 +208,19 @@ pub fn integrate<T: LiteralScalar>(
         report.push("antiderivative", Value::Matrix(anti.control().clone()));
         report.push(
             "integral",
-            Value::Matrix(DMatrix::from_column_slice(integral.len(), 1, integral.as_slice())),
+            Value::Matrix(DMatrix::from_column_slice(
+                integral.len(),
+                1,
+                integral.as_slice(),
+            )),
         );
         if !ts.is_empty() {
             let mut cols = Vec::with_capacity(ts.len());
             let start = anti.try_eval(a.clone()).map_err(lib("CONTROL", form))?;
             for t in &ts {
-                let v = anti.try_eval(t.clone()).map_err(lib(
-                    "--t",
-                    "parameters inside the domain [u_p, u_n]",
-                ))?;
+                let v = anti
+                    .try_eval(t.clone())
+                    .map_err(lib("--t", "parameters inside the domain [u_p, u_n]"))?;
                 cols.push(nalgebra::DVector::from_fn(v.len(), |r, _| {
                     v[r].clone() - start[r].clone()
                 }));
@@ -246,11 +258,23 @@ pub fn integrate<T: LiteralScalar>(
     report.push("antiderivative", Value::Matrix(anti.control().clone()));
     report.push(
         "integral",
-        Value::Matrix(DMatrix::from_column_slice(integral.len(), 1, integral.as_slice())),
+        Value::Matrix(DMatrix::from_column_slice(
+            integral.len(),
+            1,
+            integral.as_slice(),
+        )),
     );
     if !ts.is_empty() {
-        crate::slips::outside("--t", &ts, &a, &b, "the antiderivative is extrapolated there");
-        let values = anti.eval_many(&ts).map_err(lib("--t", "finite parameters"))?;
+        crate::slips::outside(
+            "--t",
+            &ts,
+            &a,
+            &b,
+            "the antiderivative is extrapolated there",
+        );
+        let values = anti
+            .eval_many(&ts)
+            .map_err(lib("--t", "finite parameters"))?;
         report.push("t", Value::Matrix(row(&ts)));
         report.push("result", Value::Matrix(values));
     }

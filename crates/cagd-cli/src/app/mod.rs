@@ -114,7 +114,10 @@ Input: control points b_0..b_n as the columns of a d×(n+1) matrix (rows with --
 literal, a numeric text/CSV file, an Octave save -text file (FILE or FILE:NAME; else its first
 numeric variable), or - for standard input.
 Layout: result is d×k, one point per column (like T in deCasteljau); t is 1×k.
---steps prints the whole scheme b_i^r(t) for each t, columns r = 0..n, as in Primer 2.4.
+--steps prints the whole scheme b_i^r(t) for each t, columns r = 0..n, as in Primer 2.4 (in
+json and octave formats as data: scheme.r0 … scheme.rn, level r a d×(n+1−r) matrix).
+--interval a,b puts the curve on [a, b] (thesis §2.3.2). Points typed as rows (more rows than
+columns, or more than 3 rows) get a warning naming --rows.
 
 Examples:
   cagd decasteljau \"[0 0 0; 0 2 2; 8 2 0; 4 0 0]'\" --t 0.5 --steps --exact
@@ -125,9 +128,12 @@ Examples:
     #[command(after_help = "\
 Input: the net packed (m+1)×3(n+1) as ploskevB takes it (row i = [b_i0 b_i1 ... b_in], x y z
 side by side), or an Octave save -text file with an (m+1)×(n+1)×3 array.
+Instead of NET: --x, --y, --z, the coordinate matrices (m+1)×(n+1) (entry (i,j) of b_ij).
 Layout: with single --u and --v, result is the 3×1 point; otherwise result is the grid
-nu×nv×3 (result(i,j,:) at (u(i), v(j)), like P in ploskevB).
---steps prints the tensor de Casteljau scheme for each (u, v).
+nu×nv×3 (result(i,j,:) at (u(i), v(j)), like P in ploskevB), or with --list one row u v x y z
+per point. --steps prints the tensor de Casteljau scheme for each (u, v). --du R --dv S give
+the partial derivative ∂^(R+S)x/∂u^R∂v^S (thesis Trditev 3.3; --du 1 --dv 1 the twist): its
+values as result and its net as net.
 
 Examples:
   cagd bezier-patch \"[0 0 0 0 2 1 0 4 0; 2 0 1 2 2 4 2 4 1; 4 0 0 4 2 1 4 4 0]\" --u 0.5 --v 0.5 --steps
@@ -138,10 +144,13 @@ Examples:
 Input: --c1 x(u,0), --c2 x(u,1) (expressions in u), --d1 x(0,v), --d2 x(1,v) (in v), as the
 thesis writes them, e.g. \"[u;0;u-u^2]\"; a constant matrix or data file instead gives the
 control points (columns) of a Bézier curve. Or --script FILE: the appendix C data script
-(sampled c1, c2, d1, d2 and corners P1..P4); --n binds its N.
-Layout: single --u and --v give the 3×1 point; otherwise the grid nu×nv×3 (like P).
---steps also prints rc, rd, rcd (same layout). --plot draws the surface with c1, c2 in red and
-d1, d2 in green, as appendix C does.
+(sampled c1, c2, d1, d2 and corners P1..P4); --n binds its N. A script's matrix named in a
+curve argument (--c1 c1) is read as Bézier control points, with a warning; --samples reads it
+as samples of the curve, as appendix C means. --blend linear|hermite|EXPR chooses the blending
+functions of thesis (4.4) (hermite: the partially bicubic patch of §4.2).
+Layout: single --u and --v give the 3×1 point; otherwise the grid nu×nv×3 (like P), or with
+--list one row u v x y z per point. --steps also prints rc, rd, rcd (same layout). --plot draws
+the surface with c1, c2 in red and d1, d2 in green, as appendix C does.
 
 Examples:
   cagd coons --c1 \"[u;0;u-u^2]\" --c2 \"[u;1;u]\" --d1 \"[0;v^2;v-v^2]\" --d2 \"[1;v;v]\" --u 0.2 --v 0.5 --steps --exact
@@ -153,7 +162,8 @@ Input: the boundaries as for coons, and the cross-boundary derivative curves --c
 --c2v x_v(u,1) (in u), --d1u x_u(0,v), --d2u x_u(1,v) (in v). --twist zero|gregory|given
 chooses the corner twists x_uv (given: --twists, a d×4 matrix for P1..P4; gregory needs
 Bézier cross-boundary curves, whose derivatives it uses).
-Layout: as for coons.
+Layout: as for coons; --steps prints the three parts of thesis (4.5): hc (the curves in v
+blended along u), hd (the curves in u blended along v) and hcd (the corner data), x = hc + hd − hcd.
 
 Example:
   cagd coons-bicubic --c1 \"[u;0;0]\" --c2 \"[u;1;0]\" --d1 \"[0;v;0]\" --d2 \"[1;v;0]\" --c1v \"[0;1;0]\" --c2v \"[0;1;0]\" --d1u \"[1;0;0]\" --d2u \"[1;0;0]\" --n 5")]
@@ -161,8 +171,11 @@ Example:
     /// The discrete Coons patch: interior control points from the boundary of a net.
     #[command(after_help = "\
 Input: a net as for bezier-patch; only its boundary rows and columns are used.
-Layout: result is the full net (m+1)×(n+1)×3.
---mask=ALPHA,BETA solves the affine mask instead (alpha + beta = 1/4).
+Layout: result is the full net (m+1)×(n+1)×3; --steps also prints its parts bu, bv, buv (the
+CAD notes (6): net = bu + bv − buv).
+--mask=ALPHA,BETA solves the affine mask instead (alpha + beta = 1/4): α = −1/4, β = 1/2 is the
+permanence principle's mask, the discrete Coons patch again; α = 0, β = 1/4 the discrete Laplace
+mask.
 
 Examples:
   cagd discrete-coons \"[0 0 0 0 1 0 0 2 0; 1 0 0 0 0 0 1 2 1; 2 0 0 2 1 1 2 2 0]\"
@@ -183,8 +196,11 @@ Examples:
     Gordon(patches::GordonCommand),
     /// Lagrange basis polynomials, or the polynomial interpolating values at nodes.
     #[command(after_help = "\
-Layout: without --points, result is k×(m+1): row = parameter, column = L_0..L_m. With --points
-(d×(m+1), one column per node), result is d×k, the interpolant at each t.
+Nodes: distinct, in any order (the lecture notes' Příklad 1 takes 0, 1/2, 1/4, 1).
+Layout: without --points, result is k×(m+1): row = parameter, column = L_0..L_m (in the order of
+the nodes given). With --points (d×(m+1), one column per node), result is d×k, the interpolant
+at each t. --coefficients adds coefficients (row i: L_i, highest power first, the lecture notes'
+G) and with --points polynomial (the interpolant's, A = X G).
 
 Examples:
   cagd lagrange --nodes \"[0 0.5 1]\" --t 0.25 --exact
@@ -193,6 +209,7 @@ Examples:
     /// Bernstein polynomial values B_i^n(t).
     #[command(after_help = "\
 Layout: t is k×1, result k×(n+1) (row = parameter, column = B_0^n..B_n^n), or k×1 with --i.
+--plot draws the polynomials over [0, 1].
 
 Examples:
   cagd bernstein --degree 3 --t 0.5 --exact
@@ -208,8 +225,13 @@ Example:
     /// An interpolating cubic spline (the lecture notes): tangents at the points and curve samples.
     #[command(after_help = "\
 Input: points as columns (rows with --rows); --end clamped (with --start-tangent and
---end-tangent), natural or closed. Segment k runs over [k, k+1].
+--end-tangent; the default when both are given), natural or closed (a tangent with natural or
+closed is an error). --params uniform (t_k = k, the lecture notes: segment k over [k, k+1]),
+chord, centripetal or a list of values. A closed spline is periodic: every t is on the curve.
 Layout: tangents is d×m (one per point); result d×k at --t (default: 10 samples per segment).
+--steps prints params, the linear system (system, m×m, and rhs, d×m: system · tangentsᵀ = rhsᵀ,
+as the lecture notes write it) and each segment's hermite data [x_k x_(k+1) h·x'_k h·x'_(k+1)]
+and bezier control points.
 
 Example:
   cagd spline \"[0 0; 2 1; 4 4; 6 0]'\" --end clamped --start-tangent \"[1;1]\" --end-tangent \"[-1;1]\" --exact")]
@@ -224,8 +246,10 @@ Example:
     Hermite(course::HermiteCommand),
     /// A B-spline curve by de Boor's algorithm (the CAD notes and the lecture notes).
     #[command(after_help = "\
-Input: control points as columns, --degree p, --knots (n+p+2 values; default clamped uniform).
-Layout: result d×k at the parameters; --steps prints the basis functions N_i,p(t) (k×(n+1)).
+Input: control points as columns, --degree p or --order k = p + 1 (as the lecture notes
+count), --knots (n+p+2 values; default clamped uniform). --n samples the knot domain.
+Layout: result d×k at the parameters; --steps prints the basis functions N_i,p(t) (k×(n+1)) and
+the de Boor scheme of each t (span, α's and levels d0..dp).
 
 Example:
   cagd bspline \"[0 0; 1 2; 3 2; 4 0]'\" --degree 2 --knots \"[0 0 0 0.5 1 1 1]\" --t 0.25 --steps --exact")]
@@ -290,8 +314,8 @@ Example:
     InsertKnot(insert_knot::InsertKnotCommand),
     /// B-spline basis functions N_i,p(u) of a knot vector (Cox–de Boor).
     #[command(after_help = "\
-Input: --knots u_0..u_m, --degree P (or --order K = P + 1, as the lecture notes count); --t,
-or --n samples of the domain [u_p, u_(m-p)].
+Input: --knots u_0..u_m, --degree P (or --order K = P + 1, as the lecture notes count); --t in
+[u_0, u_m], or --n samples of it.
 Layout: t is k×1, result k×n (row = parameter, column = N_0,p..N_(n-1),p, n = m − p). --steps
 prints the Cox–de Boor triangle N_i,j(t) for j = 0..p (triangle.p0 … triangle.pP). --plot draws
 the functions.
@@ -299,7 +323,7 @@ the functions.
 Examples:
   cagd bspline-basis --knots \"[0 0 0 1 2 3 3 3]\" --degree 2 --t 1.5 --steps --exact
   cagd bspline-basis --knots 0:7 --order 4 --n 50 --plot basis.svg")]
-    #[command(mut_arg("n", |a| a.help("Sample the knot domain [u_p, u_(m-p)] at N equally spaced parameters")))]
+    #[command(mut_arg("n", |a| a.help("Sample the whole knot range [u_0, u_m] at N equally spaced parameters")))]
     BsplineBasis(bspline_basis::BSplineBasisCommand),
     /// Continuity (C0, C1, G1, C2) where two Bézier curves join; the free point of a C1 joint.
     #[command(after_help = "\
@@ -698,7 +722,7 @@ fn surface<T: LiteralScalar>(limits: &Limits, cmd: &SurfaceCommand) -> Result<Ou
         Value::Matrix(DMatrix::from_row_slice(1, vs.len(), &vs)),
     );
     let grid_f64: PointGrid<f64> = grid.map(|x| x.to_f64());
-    report.push("result", Value::Grid(grid));
+    common::push_surface(&mut report, "result", (&us, &vs), grid, cmd.params.list);
     let mut files = PendingWrites::new();
     if let Some(path) = &cmd.plot.plot {
         let figure = Figure::new(format!("surface {}", cmd.expr.trim()))

@@ -224,11 +224,7 @@ pub fn coons<T: LiteralScalar>(limits: &Limits, cmd: &CoonsCommand) -> Result<Ou
         &mut env,
     )?);
     let expected = "four boundary curves that meet at the corners: c1(0)=d1(0), c1(1)=d2(0), c2(0)=d1(1), c2(1)=d2(1)";
-    let pair = super::blend::blending_pair(
-        limits,
-        cmd.blend.as_deref(),
-        &needed(&[&at_u, &at_v]),
-    )?;
+    let pair = super::blend::blending_pair(limits, cmd.blend.as_deref(), &needed(&[&at_u, &at_v]))?;
     let corners = match script_corners(script.as_ref()) {
         Some(corners) if cmd.boundary.c1.is_none() => Some(corners),
         _ => None,

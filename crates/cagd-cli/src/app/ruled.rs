@@ -7,7 +7,9 @@ use cagd::{Curve, Surface};
 use cagd_octave::literal::LiteralScalar;
 use clap::Args;
 
-use crate::args::{MeshArgs, OutputArgs, PlotArgs, RowsArgs, ScriptArgs, StepsArgs, SurfaceParamArgs};
+use crate::args::{
+    MeshArgs, OutputArgs, PlotArgs, RowsArgs, ScriptArgs, StepsArgs, SurfaceParamArgs,
+};
 use crate::plot::{Colour, Figure};
 use crate::{CliError, PendingWrites, Report, Value};
 
@@ -46,15 +48,37 @@ pub struct RuledCommand {
 pub fn ruled<T: LiteralScalar>(limits: &Limits, cmd: &RuledCommand) -> Result<Outcome, CliError> {
     let script = prepare_script::<T>(limits, &cmd.script, cmd.params.n)?;
     let mut env = script.as_ref().map(|s| s.env().clone()).unwrap_or_default();
-    let first = load_curve(limits, "--first", &cmd.first, script.as_ref(), cmd.rows.rows, &env)?;
-    let second = load_curve(limits, "--second", &cmd.second, script.as_ref(), cmd.rows.rows, &env)?;
+    let first = load_curve(
+        limits,
+        "--first",
+        &cmd.first,
+        script.as_ref(),
+        cmd.rows.rows,
+        &env,
+    )?;
+    let second = load_curve(
+        limits,
+        "--second",
+        &cmd.second,
+        script.as_ref(),
+        cmd.rows.rows,
+        &env,
+    )?;
     let single = point_mode(limits, &cmd.params);
-    let us: Vec<T> = params_or_samples(limits, "--u", &cmd.params.u, cmd.params.n, DEFAULT_SAMPLES)?;
-    let vs: Vec<T> = params_or_samples(limits, "--v", &cmd.params.v, cmd.params.n, DEFAULT_SAMPLES)?;
+    let us: Vec<T> =
+        params_or_samples(limits, "--u", &cmd.params.u, cmd.params.n, DEFAULT_SAMPLES)?;
+    let vs: Vec<T> =
+        params_or_samples(limits, "--v", &cmd.params.v, cmd.params.n, DEFAULT_SAMPLES)?;
     check_grid(limits, us.len(), vs.len())?;
     let (zero, one) = (T::zero(), T::one());
     crate::slips::outside("--u", &us, &zero, &one, "the curves are extrapolated there");
-    crate::slips::outside("--v", &vs, &zero, &one, "the surface is extrapolated beyond its curves");
+    crate::slips::outside(
+        "--v",
+        &vs,
+        &zero,
+        &one,
+        "the surface is extrapolated beyond its curves",
+    );
     let pictures = cmd.plot.plot.is_some() || cmd.mesh.mesh.is_some();
     let (pus, pvs) = if single && pictures {
         let t = T::linspace(&zero, &one, 21);
@@ -86,10 +110,8 @@ pub fn ruled<T: LiteralScalar>(limits: &Limits, cmd: &RuledCommand) -> Result<Ou
             bits(&at_u) + bits(&vs) + 2,
         ),
     )?;
-    let surface = RuledSurface::new(a.clone(), b.clone()).map_err(lib(
-        "--first/--second",
-        "two curves of the same dimension",
-    ))?;
+    let surface = RuledSurface::new(a.clone(), b.clone())
+        .map_err(lib("--first/--second", "two curves of the same dimension"))?;
     let mut report = Report::new();
     report.push("u", Value::Matrix(row(&us)));
     report.push("v", Value::Matrix(row(&vs)));
@@ -103,7 +125,13 @@ pub fn ruled<T: LiteralScalar>(limits: &Limits, cmd: &RuledCommand) -> Result<Ou
             Value::Matrix(column(&surface.eval(us[0].clone(), vs[0].clone()))),
         );
     } else {
-        push_surface(&mut report, "result", (&us, &vs), surface.eval_grid(&us, &vs), cmd.params.list);
+        push_surface(
+            &mut report,
+            "result",
+            (&us, &vs),
+            surface.eval_grid(&us, &vs),
+            cmd.params.list,
+        );
     }
     let mut files = PendingWrites::new();
     if pictures {

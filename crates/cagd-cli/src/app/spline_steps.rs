@@ -112,9 +112,8 @@ pub fn system<T: LiteralScalar>(
     let closed = s.is_closed();
     let segs = s.segment_count();
     let h: Vec<T> = (0..segs).map(|k| t[k + 1].clone() - t[k].clone()).collect();
-    let delta = |k: usize, r: usize| {
-        (pts[(r, (k + 1) % m)].clone() - pts[(r, k)].clone()) / h[k].clone()
-    };
+    let delta =
+        |k: usize, r: usize| (pts[(r, (k + 1) % m)].clone() - pts[(r, k)].clone()) / h[k].clone();
     let (two, three) = (T::from_usize(2), T::from_usize(3));
     let mut a = DMatrix::from_element(m, m, T::zero());
     let mut rhs = DMatrix::from_element(d, m, T::zero());

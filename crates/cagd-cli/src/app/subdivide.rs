@@ -66,7 +66,11 @@ pub fn subdivide<T: LiteralScalar>(
         None => (a.clone() + b.clone()) / T::from_usize(2),
     };
     let (n, d) = (curve.degree() as u128, curve.dim() as u128);
-    let size = polynomial_bits(curve.degree(), bits(std::slice::from_ref(&t)), bits(curve.control().iter()));
+    let size = polynomial_bits(
+        curve.degree(),
+        bits(std::slice::from_ref(&t)),
+        bits(curve.control().iter()),
+    );
     let picture = if cmd.plot.plot.is_some() { 101 } else { 0 };
     check_work(
         limits,
@@ -81,7 +85,11 @@ pub fn subdivide<T: LiteralScalar>(
     if cmd.steps.steps {
         report.push(
             "scheme",
-            curve_scheme(&curve.scheme(t.clone()), cmd.output.text_digits(), Marks::Subdivision),
+            curve_scheme(
+                &curve.scheme(t.clone()),
+                cmd.output.text_digits(),
+                Marks::Subdivision,
+            ),
         );
     }
     report.push("t", Value::Matrix(row(std::slice::from_ref(&t))));
