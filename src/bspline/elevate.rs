@@ -26,9 +26,12 @@ use crate::error::{Error, Result};
 use crate::scalar::Scalar;
 
 impl<T: Scalar> BSplineCurve<T> {
-    /// The same curve with degree `p + r` (see the [module](self) documentation): every
-    /// distinct knot occurs `r` times more, the control points are blossom values. `r = 0`
-    /// returns the curve itself.
+    /// The same curve with degree `q = p + r` (the CAD notes §1.2, "raising the degree"), as
+    /// octave-nurbs `nrbdegelev`: every distinct knot occurs `r` times more (so the smoothness
+    /// across each knot is kept), and the new control points are values of the curve's
+    /// degree-`q` blossom at `q` consecutive new knots, `P'_i = F(u'_{i+1}, …, u'_{i+q})`,
+    /// taken from the Bézier form of each piece raised to degree `q`. Exact in rationals.
+    /// `r = 0` returns the curve itself.
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] unless the knot vector is clamped (first and last knot

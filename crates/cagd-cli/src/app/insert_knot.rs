@@ -99,7 +99,7 @@ pub fn insert_knot<T: LiteralScalar>(
         "--insert",
         work::<T>(
             steps * r * (p1 * d1 + total * d1),
-            bits(control.iter()) + bits(&knots) * 2 + 2 * r as u128 * (bits(&inserted) + 1),
+            bits(control.iter()) + bits(&knots) * 2 + 2 * r * (bits(&inserted) + 1),
         ),
     )?;
     let form = "degree p, n ≥ p+1 control points and n+p+1 non-decreasing knots";

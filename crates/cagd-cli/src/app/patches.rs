@@ -950,6 +950,10 @@ pub struct LagrangeCommand {
     /// --points `polynomial`, those of the interpolant (the lecture notes' A = X G).
     #[arg(long)]
     pub coefficients: bool,
+    /// Piecewise-linear interpolation of --points instead of the polynomial (the lecture
+    /// notes' "lineární interpolace"; the nodes must increase, the end pieces are extended).
+    #[arg(long, requires = "points", conflicts_with = "coefficients")]
+    pub linear: bool,
     #[command(flatten)]
     pub params: CurveParamArgs,
     #[command(flatten)]
@@ -1012,6 +1016,30 @@ pub fn lagrange<T: LiteralScalar>(
             .saturating_add(work::<T>(k * m1 * per_node, size))
             .saturating_add(written),
     )?;
+    if cmd.linear {
+        let values = values.unwrap_or_else(|| DMatrix::zeros(0, 0));
+        let mut rows = Vec::with_capacity(values.nrows());
+        for r in 0..values.nrows() {
+            let f = cagd::interpolation::PiecewiseLinear::new(
+                nodes.clone(),
+                values.row(r).iter().cloned().collect(),
+            )
+            .map_err(lib(
+                "--nodes/--points",
+                "increasing nodes and one value per node (a d×(m+1) --points)",
+            ))?;
+            rows.push(ts.iter().map(|t| f.eval(t.clone())).collect::<Vec<T>>());
+        }
+        let mut report = Report::new();
+        report.push("t", Value::Matrix(row(&ts)));
+        report.push(
+            "result",
+            Value::Matrix(DMatrix::from_fn(rows.len(), ts.len(), |r, k| {
+                rows[r][k].clone()
+            })),
+        );
+        return finish(&report, &cmd.output, PendingWrites::new(), Vec::new());
+    }
     let mut report = Report::new();
     if cmd.coefficients {
         let g = cagd::interpolation::blending_matrix(&nodes)

@@ -1594,6 +1594,28 @@ fn lagrange_coefficients_and_nodes_in_any_order() {
     );
     let e = error(&["lagrange", "--nodes", "[0 0.5 0]"]);
     assert!(e.starts_with("--nodes: "), "{e}");
+    // The lecture notes' linear interpolation of the same points: 5/2 at x = 5/2, 3/2 at 4.5.
+    let out = json(&[
+        "lagrange",
+        "--nodes",
+        "1:5",
+        "--points",
+        "[1 2 3 2 1]",
+        "--linear",
+        "--t",
+        "[2.5 4.5]",
+        "--exact",
+    ]);
+    assert_eq!(exact(&out["result"]), strs(&[&["5/2", "3/2"]]));
+    let e = error(&[
+        "lagrange",
+        "--nodes",
+        "[0 1 0.5]",
+        "--points",
+        "[1 2 3]",
+        "--linear",
+    ]);
+    assert!(e.starts_with("--nodes/--points: "), "{e}");
 }
 
 #[test]
