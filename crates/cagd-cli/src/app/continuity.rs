@@ -18,7 +18,7 @@ use cagd_octave::literal::LiteralScalar;
 use clap::Args;
 use nalgebra::{DMatrix, DVector};
 
-use crate::args::{OutputArgs, PlotArgs, RowsArgs};
+use crate::args::{OutputArgs, PlotArgs, RowsArgs, StepsArgs};
 use crate::plot::{Colour, Figure};
 use crate::{load_params, number_text_digits, CliError, PendingWrites, Report, Value};
 
@@ -44,6 +44,10 @@ pub struct ContinuityCommand {
     pub k: Option<String>,
     #[command(flatten)]
     pub rows: RowsArgs,
+    /// Also print the control points of the first and second derivatives of both curves
+    /// (n Δb_i and n(n−1) Δ²b_i), whose ends are compared.
+    #[command(flatten)]
+    pub steps: StepsArgs,
     #[command(flatten)]
     pub output: OutputArgs,
     #[command(flatten)]
@@ -294,6 +298,17 @@ pub fn continuity<T: LiteralScalar>(
             format!("points of dimension {} and {}", a.dim(), b.dim()),
             form,
         ));
+    }
+    if cmd.steps.steps {
+        for (name, curve) in [("first", &a), ("second", &b)] {
+            let mut parts = vec![("control", Value::Matrix(curve.control().clone()))];
+            for (r, label) in [(1, "d1"), (2, "d2")] {
+                if let Ok(d) = curve.derivative(r) {
+                    parts.push((label, Value::Matrix(d.control().clone())));
+                }
+            }
+            report.push(name, record(parts));
+        }
     }
     analyse(&mut report, &a, &b, digits)?;
     let mut files = PendingWrites::new();

@@ -477,9 +477,12 @@ pub struct NurbsCommand {
     /// The weights, one per control point, positive.
     #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
     pub weights: String,
-    /// The degree p.
-    #[arg(long, value_name = "P", default_value_t = 2)]
-    pub degree: usize,
+    /// The degree p (default 2).
+    #[arg(long, value_name = "P")]
+    pub degree: Option<usize>,
+    /// The order k = p + 1 instead of the degree.
+    #[arg(long, value_name = "K")]
+    pub order: Option<usize>,
     /// The knot vector; default clamped uniform on [0, 1].
     #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
     pub knots: Option<String>,
@@ -497,14 +500,15 @@ pub struct NurbsCommand {
 
 /// A NURBS curve.
 pub fn nurbs<T: LiteralScalar>(limits: &Limits, cmd: &NurbsCommand) -> Result<Outcome, CliError> {
-    check_degree(limits, "--degree", cmd.degree)?;
+    let degree = spline_degree(cmd.degree, cmd.order, 2)?;
+    check_degree(limits, "--degree", degree)?;
     let control = points(limits, "CONTROL", &cmd.control, None, cmd.rows.rows)?;
     let weights: Vec<T> = load_params(limits, "--weights", &cmd.weights)?;
     let n = control.ncols();
     let knots: Vec<T> = match &cmd.knots {
         Some(k) => load_params(limits, "--knots", k)?,
         None => {
-            let p = cmd.degree;
+            let p = degree;
             if n < p + 1 {
                 return Err(shape(
                     "CONTROL",
@@ -521,7 +525,7 @@ pub fn nurbs<T: LiteralScalar>(limits: &Limits, cmd: &NurbsCommand) -> Result<Ou
             k
         }
     };
-    let curve = NurbsCurve::new(cmd.degree, knots, control, weights).map_err(lib(
+    let curve = NurbsCurve::new(degree, knots, control, weights).map_err(lib(
         "CONTROL/--weights/--knots",
         "one positive weight per control point and n+p+2 non-decreasing knots",
     ))?;
@@ -532,7 +536,7 @@ pub fn nurbs<T: LiteralScalar>(limits: &Limits, cmd: &NurbsCommand) -> Result<Ou
         limits,
         "--t",
         spline_basis_work(
-            (cmd.degree, curve.dim() + 1, bits(curve.knots())),
+            (degree, curve.dim() + 1, bits(curve.knots())),
             bits(curve.points().iter()) + bits(&curve.weights()),
             &ts,
             cmd.steps.steps,

@@ -258,7 +258,8 @@ Example:
     Bspline(course::BSplineCommand),
     /// A NURBS curve (the CAD notes): rational B-spline with weights.
     #[command(after_help = "\
-Input: control points as columns, --weights (one per point, positive), --degree, --knots.
+Input: control points as columns, --weights (one per point, positive), --degree (or --order),
+--knots.
 Layout: result d×k; --steps prints the rational basis functions R_i,p(t).
 
 Example (a quarter circle):
@@ -333,7 +334,8 @@ Input: FIRST (ends at u = 1) and SECOND (starts at v = 0), Bézier control point
 the line x_(n-1)(k) = x_n + k·(m/n)(y_0 − y_1) of points giving x'(1) = k·¹x'(0) is printed
 (k = 1: C1; k > 0: G1, which the lecture notes call C1), and the joint with k = --k (default 1).
 Layout: end, start (x(1), ¹x(0)), d_end, d_start (first derivatives), dd_end, dd_start
-(second), k if the tangents are parallel, continuity (1 = holds), verdict (the comparison).
+(second), k if the tangents are parallel, continuity (1 = holds), verdict (the comparison);
+--steps adds each curve's control points and derivative polygons (first.d1, first.d2, …).
 
 Examples:
   cagd continuity \"[2 3 4; 3 1 5; 3 4 3]\" \"[3 4 3; 2 6 0; 5 7 5; 5 2 3]\" --rows --free-point --exact

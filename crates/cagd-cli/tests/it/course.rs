@@ -1078,9 +1078,17 @@ fn continuity_reproduces_the_lecture_notes_free_point() {
         "[0 0; 1 2; 2 2]",
         "[2 2; 3 2; 4 0]",
         "--rows",
+        "--steps",
         "--exact",
     ]);
     assert_eq!(exact(&out["continuity"]["C2"]), strs(&[&["1"]]));
+    // The derivative polygons 2Δb_i and 2Δ²b_i whose ends are compared.
+    assert_eq!(
+        exact(&out["first"]["d1"]),
+        strs(&[&["2", "2"], &["4", "0"]])
+    );
+    assert_eq!(exact(&out["first"]["d2"]), strs(&[&["0"], &["-4"]]));
+    assert_eq!(exact(&out["second"]["d2"]), strs(&[&["0"], &["-4"]]));
 }
 
 #[test]
