@@ -6,7 +6,7 @@
 //!   but read as columns, or the other way round — a matrix with more rows than columns, or
 //!   points of dimension above 3;
 //! - [`decimal_commas`]: `--t "[0,2 0,4]"` is t = 0, 2, 0, 4 (a comma separates elements), not
-//!   the decimals 0,2 and 0,4 the sources write;
+//!   the decimals 0,2 and 0,4 the sources write (and `--t 0,5` is 0 and 5);
 //! - [`outside`]: parameters outside the domain of a construction (the curve is extrapolated
 //!   there).
 //!
@@ -86,20 +86,36 @@ pub fn point_matrix<T: LiteralScalar>(argument: &str, typed: &DMatrix<T>, rows: 
     warn(argument, message);
 }
 
-/// Warns when a list looks as if written with decimal commas: a comma with a digit right
-/// before and right after it (`[0,2 0,4]`), which Octave — and so the command line — reads as
-/// two elements. The warning says what was read and how to write a decimal.
+/// Warns when a list looks as if written with decimal commas, as the sources write decimals:
+/// a comma with a digit right before and right after it, which Octave — and so the command
+/// line — reads as two elements, in a list whose elements are otherwise separated by spaces
+/// or semicolons (`[0,2 0,4]`), or a lone `0,5`. A list separated by commas only
+/// (`[0,0,0,1,1,1]`) is read as written, silently. The warning says what was read and how to
+/// write a decimal.
 ///
 /// ```
 /// cagd_cli::slips::take();
 /// cagd_cli::slips::decimal_commas("--t", "[0,2 0,4]");
 /// let w = cagd_cli::slips::take();
 /// assert!(w[0].1.message.contains("0.2"), "{}", w[0].1.message);
-/// cagd_cli::slips::decimal_commas("--t", "[0, 0.5, 1]");
-/// cagd_cli::slips::decimal_commas("--t", "0:0.2:1");
+/// cagd_cli::slips::decimal_commas("--t", "0,5");
+/// assert_eq!(cagd_cli::slips::take().len(), 1);
+/// for fine in ["[0, 0.5, 1]", "0:0.2:1", "[0,0,0,1,1,1]", "[0.2 0.4]"] {
+///     cagd_cli::slips::decimal_commas("--knots", fine);
+/// }
 /// assert!(cagd_cli::slips::take().is_empty());
 /// ```
 pub fn decimal_commas(argument: &str, text: &str) {
+    let trimmed = text.trim();
+    let inner = trimmed.trim_start_matches('[').trim_end_matches(']');
+    let elements = inner
+        .split(|c: char| c.is_whitespace() || c == ';')
+        .filter(|t| !t.is_empty())
+        .count();
+    let lone = !trimmed.starts_with('[') && elements == 1 && inner.matches(',').count() == 1;
+    if elements < 2 && !lone {
+        return;
+    }
     let chars: Vec<char> = text.chars().collect();
     let Some(k) = (1..chars.len().saturating_sub(1)).find(|&k| {
         chars[k] == ',' && chars[k - 1].is_ascii_digit() && chars[k + 1].is_ascii_digit()

@@ -221,7 +221,16 @@ fn slip_decimal_commas_warn_and_decimal_points_run_silently() {
         "--t: 2 values lie (the first t = 2) outside [0, 1]; the curve is extrapolated there"
     );
     assert!(out.contains("t =\n\n    0  2  0  4\n"), "{out}");
-    for good in ["[0.2 0.4]", "0:0.2:1", "[0, 0.5, 1]", "[0;0.5]"] {
+    // Without brackets a decimal comma is a syntax error, not a silent reading.
+    let e = error(&["bernstein", "--degree", "2", "--t", "0,5"]);
+    assert!(e.starts_with("--t: "), "{e}");
+    for good in [
+        "[0.2 0.4]",
+        "0:0.2:1",
+        "[0, 0.5, 1]",
+        "[0;0.5]",
+        "[0,0.5,1]",
+    ] {
         silent(&["decasteljau", "[0 0 0; 0 2 2; 8 2 0; 4 0 0]'", "--t", good]);
     }
 }
