@@ -86,6 +86,15 @@ pub fn blending_pair<T: LiteralScalar>(
     points.extend((0..=32).map(|k| T::from_ratio(k, 32)));
     points.sort_by(|a, b| a.partial_cmp(b).unwrap_or(std::cmp::Ordering::Equal));
     points.dedup();
+    super::work::check_expression_work(
+        limits,
+        &[super::work::Sampling {
+            argument: "--blend",
+            expr: &expr,
+            params: vec![(name, &points)],
+        }],
+        &env,
+    )?;
     let mut table: Vec<(T, T, T)> = Vec::with_capacity(points.len());
     for t in points {
         let m = expr
