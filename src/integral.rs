@@ -88,10 +88,11 @@ pub fn bezier_integral<T: Scalar>(curve: &BezierCurve<T>) -> DVector<T> {
 /// use cagd::bspline::BSplineCurve;
 /// use cagd::integral::bspline_antiderivative;
 /// use nalgebra::DMatrix;
-/// // The hat function N_{0,1} on knots 0, 1, 2 has area 1.
+/// // The hat function N_{1,1} on the knots 0, 0, 1, 2, 2 has area 1, half of it up to 1.
 /// let c = BSplineCurve::new(1, vec![0.0, 0.0, 1.0, 2.0, 2.0], DMatrix::from_row_slice(1, 3, &[0.0, 1.0, 0.0]))?;
 /// let f = bspline_antiderivative(&c)?;
-/// assert_eq!(f.control().as_slice(), &[0.0, 0.0, 0.5, 1.0]);
+/// assert_eq!(f.control().as_slice(), &[0.0, 0.0, 1.0, 1.0]);
+/// assert_eq!(f.try_eval(1.0)?[0], 0.5);
 /// # Ok::<(), cagd::Error>(())
 /// ```
 pub fn bspline_antiderivative<T: Scalar>(curve: &BSplineCurve<T>) -> Result<BSplineCurve<T>> {
