@@ -8,8 +8,8 @@
 //! [`bezier::BezierPatch`], the Coons and Gordon constructions, and the course material of the
 //! notes: [`interpolation`] (Lagrange, piecewise linear, parametric), [`hermite`] (Ferguson
 //! cubics), [`spline`] (interpolating cubic splines), [`continuity`], [`conversion`] (matrix
-//! forms), [`bspline`], [`nurbs`] and the [`surfaces`] of the notes, all built on the
-//! [`param::Curve`] / [`param::Surface`] traits and generic over the [`scalar::Scalar`] (`f64`
+//! forms), [`bspline`], [`nurbs`], the [`surfaces`] of the notes and the [`integral`]s of the
+//! CAD notes, all built on the [`param::Curve`] / [`param::Surface`] traits and generic over the [`scalar::Scalar`] (`f64`
 //! or exact `BigRational`). Its dependencies are mathematical (nalgebra, num, thiserror; rayon
 //! and pulp behind the default features `parallel` and `simd`).
 //!
@@ -61,6 +61,7 @@ pub mod error;
 pub mod gordon;
 pub mod grid;
 pub mod hermite;
+pub mod integral;
 pub mod interpolation;
 pub mod lagrange;
 pub mod limits;

@@ -54,6 +54,19 @@ enum TwistData<T: Scalar> {
     Gregory(GregoryTwist<T>),
 }
 
+/// A point of a bicubically blended Coons patch with the three parts of (4.5).
+#[derive(Debug, Clone, PartialEq)]
+pub struct BicubicCoonsPoint<T: Scalar = f64> {
+    /// `x = h_c + h_d − h_cd`.
+    pub x: DVector<T>,
+    /// `h_c(u,v) = H0(u) x(0,v) + H1(u) x_u(0,v) + H2(u) x_u(1,v) + H3(u) x(1,v)`.
+    pub hc: DVector<T>,
+    /// `h_d(u,v) = H0(v) x(u,0) + H1(v) x_v(u,0) + H2(v) x_v(u,1) + H3(v) x(u,1)`.
+    pub hd: DVector<T>,
+    /// `h_cd(u,v) = [H0(u) … H3(u)] M [H0(v) … H3(v)]ᵀ`.
+    pub hcd: DVector<T>,
+}
+
 /// A point with its first partial derivatives.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SurfacePartials<T: Scalar = f64> {
@@ -370,6 +383,25 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
             let hd = dot(&hv, at_u, k);
             hc + hd - self.corner_blend(&hu, &hv, &tw, k)
         })
+    }
+
+    /// The three parts of (4.5) at `(u, v)`: `h_c` (the curves `x(0,v)`, `x_u(0,v)`,
+    /// `x_u(1,v)`, `x(1,v)` blended along `u`), `h_d` (the curves in `u` blended along `v`),
+    /// `h_cd` (the corner data `M`) and `x = h_c + h_d − h_cd`, the point [`Surface::eval`]
+    /// gives (the same operations).
+    pub fn eval_parts(&self, u: T, v: T) -> BicubicCoonsPoint<T> {
+        let (at_u, at_v) = (self.values_at_u(&u), self.values_at_v(&v));
+        let (hu, hv) = (
+            thesis_order(hermite_basis(u.clone())),
+            thesis_order(hermite_basis(v.clone())),
+        );
+        let tw = self.twists(&u, &v);
+        let dim = self.boundary.dim();
+        let hc = DVector::from_fn(dim, |k, _| dot(&hu, &at_v, k));
+        let hd = DVector::from_fn(dim, |k, _| dot(&hv, &at_u, k));
+        let hcd = DVector::from_fn(dim, |k, _| self.corner_blend(&hu, &hv, &tw, k));
+        let x = DVector::from_fn(dim, |k, _| hc[k].clone() + hd[k].clone() - hcd[k].clone());
+        BicubicCoonsPoint { x, hc, hd, hcd }
     }
 
     /// The curve values `[c1(u), x_v(u,0), x_v(u,1), c2(u)]` and `[d1(v), x_u(0,v), x_u(1,v), d2(v)]`.

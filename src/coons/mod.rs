@@ -52,7 +52,8 @@ mod mask;
 
 pub use crate::tolerance::{Corner, CornerGap, Tolerance};
 pub use bicubic::{
-    bicubic_point_cost, BicubicCoonsPatch, CrossDerivatives, SurfacePartials, Twist,
+    bicubic_point_cost, BicubicCoonsPatch, BicubicCoonsPoint, CrossDerivatives, SurfacePartials,
+    Twist,
 };
 pub use bilinear::{coons_point_cost, CoonsPatch};
 pub use discrete::discrete_coons;

@@ -24,6 +24,17 @@ pub struct OutputArgs {
     /// refused, never replaced.
     #[arg(short = 'o', long, value_name = "FILE")]
     pub output: Option<PathBuf>,
+    /// Significant digits of the numbers in the text format (1 to 17; default 15, which hides
+    /// round-off such as 0.30000000000000004). The octave, csv and json formats keep every bit.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u8).range(1..=17))]
+    pub digits: Option<u8>,
+}
+
+impl OutputArgs {
+    /// The significant digits of the text format.
+    pub fn text_digits(&self) -> usize {
+        self.digits.map_or(crate::TEXT_DIGITS, usize::from)
+    }
 }
 
 /// A picture of the result.
@@ -91,6 +102,10 @@ pub struct SurfaceParamArgs {
     /// Sample u and v at linspace(0,1,N), like the thesis's N.
     #[arg(long, value_name = "N", allow_negative_numbers = true)]
     pub n: Option<usize>,
+    /// List the surface one point per line, `u v x y z` (a matrix with one row per grid
+    /// point, u varying slowest), instead of the nu×nv×d grid.
+    #[arg(long)]
+    pub list: bool,
 }
 
 /// Orientation of point matrices.

@@ -503,6 +503,7 @@ pub fn load_params<T: LiteralScalar>(
     argument: &str,
     text: &str,
 ) -> Result<Vec<T>, CliError> {
+    crate::slips::decimal_commas(argument, text);
     let (values, warnings) = cagd_octave::literal::parse_params_warning::<T>(text, limits)
         .map_err(|e| CliError::literal(argument, e, PARAMS_FORM))?;
     refuse_lenient(argument, warnings, PARAMS_FORM)?;

@@ -45,6 +45,7 @@ mod serve {
         pub dir: Option<std::path::PathBuf>,
     }
 }
+pub mod slips;
 
 pub use app::{run, serve_request, Outcome};
 pub use atomic::{write_atomic, PendingWrites};
@@ -55,4 +56,6 @@ pub use input::{
     scalar_from_double, unpack_net, with_input_files, CURVE_FORM, MATRIX_FORM, MAX_INPUT_BYTES,
     PARAMS_FORM,
 };
-pub use output::{number_text, render, Format, Item, Report, Value};
+pub use output::{
+    number_text, number_text_digits, render, render_with, Format, Item, Report, Value, TEXT_DIGITS,
+};

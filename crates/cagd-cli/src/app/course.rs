@@ -32,11 +32,11 @@ fn vector<T: LiteralScalar>(
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum End {
-    /// Given end tangents (--start-tangent, --end-tangent).
+    /// Given end tangents (--start-tangent, --end-tangent), case a of the lecture notes.
     Clamped,
-    /// Zero second derivatives at the ends.
+    /// Zero second derivatives at the ends, case b.
     Natural,
-    /// A closed (periodic) spline.
+    /// A closed (periodic) spline, case c.
     Closed,
 }
 
@@ -45,20 +45,27 @@ pub struct SplineCommand {
     /// The points to interpolate, one per column.
     #[arg(value_name = "POINTS", allow_hyphen_values = true)]
     pub points: String,
-    /// The end condition.
-    #[arg(long, value_enum, default_value_t = End::Natural)]
-    pub end: End,
-    /// The tangent at the first point (with --end clamped).
+    /// The end condition (default: clamped when both tangents are given, else natural).
+    #[arg(long, value_enum)]
+    pub end: Option<End>,
+    /// The tangent at the first point (clamped ends).
     #[arg(long, value_name = "VECTOR", allow_hyphen_values = true)]
     pub start_tangent: Option<String>,
-    /// The tangent at the last point (with --end clamped).
+    /// The tangent at the last point (clamped ends).
     #[arg(long, value_name = "VECTOR", allow_hyphen_values = true)]
     pub end_tangent: Option<String>,
-    /// Curve parameters (segment k runs over [k, k+1]).
+    /// The parameters of the points: uniform (t_k = k, the lecture notes), chord, centripetal,
+    /// or a list of increasing values (one per point, one more for a closed spline).
+    #[arg(long, value_name = "CHOICE|VALUES", allow_hyphen_values = true)]
+    pub params: Option<String>,
+    /// Curve parameters (with uniform parameters segment k runs over [k, k+1]); a closed
+    /// spline is periodic, so any value is on the curve.
     #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
     pub t: Option<String>,
     #[command(flatten)]
     pub rows: RowsArgs,
+    #[command(flatten)]
+    pub steps: StepsArgs,
     #[command(flatten)]
     pub output: OutputArgs,
     #[command(flatten)]
@@ -68,7 +75,31 @@ pub struct SplineCommand {
 /// An interpolating cubic spline.
 pub fn spline<T: LiteralScalar>(limits: &Limits, cmd: &SplineCommand) -> Result<Outcome, CliError> {
     let pts = points(limits, "POINTS", &cmd.points, None, cmd.rows.rows)?;
-    let end = match cmd.end {
+    let tangents = cmd.start_tangent.is_some() || cmd.end_tangent.is_some();
+    let chosen = cmd
+        .end
+        .unwrap_or(if tangents { End::Clamped } else { End::Natural });
+    if chosen != End::Clamped {
+        // A tangent that the end condition ignores is a slip, not a choice.
+        let name = if chosen == End::Natural {
+            "natural"
+        } else {
+            "closed"
+        };
+        for (arg, given) in [
+            ("--start-tangent", &cmd.start_tangent),
+            ("--end-tangent", &cmd.end_tangent),
+        ] {
+            if given.is_some() {
+                return Err(usage(
+                    arg,
+                    &format!("has no effect with --end {name}"),
+                    "--end clamped with both tangents (or no --end), or no tangents",
+                ));
+            }
+        }
+    }
+    let end = match chosen {
         End::Natural => EndCondition::Natural,
         End::Closed => EndCondition::Closed,
         End::Clamped => {
@@ -88,17 +119,24 @@ pub fn spline<T: LiteralScalar>(limits: &Limits, cmd: &SplineCommand) -> Result<
             }
         }
     };
+    let closed = chosen == End::Closed;
+    let params = super::spline_steps::parameters(limits, cmd.params.as_deref(), &pts, closed)?;
     let given: Option<Vec<T>> = cmd
         .t
         .as_ref()
         .map(|t| load_params(limits, "--t", t))
         .transpose()?;
     check_work(limits, "POINTS", spline_work(&pts, &end, given.as_deref()))?;
-    let s = CubicSpline::interpolate(pts, end).map_err(lib(
+    let clamped = match &end {
+        EndCondition::Clamped { start, end } => Some((start.clone(), end.clone())),
+        _ => None,
+    };
+    let s = CubicSpline::interpolate_with_params(pts, params, end).map_err(lib(
         "POINTS",
-        "at least 2 points (3 for closed) as columns, tangents of the same dimension",
+        "at least 2 points (3 for closed) as columns, tangents of the same dimension, increasing --params",
     ))?;
     let segments = s.segment_count();
+    let (first, last) = (s.params()[0].clone(), s.params()[segments].clone());
     let ts: Vec<T> = match given {
         Some(t) => t,
         None => {
@@ -111,19 +149,45 @@ pub fn spline<T: LiteralScalar>(limits: &Limits, cmd: &SplineCommand) -> Result<
                 "fewer points (10 samples per segment), parameters --t, or a higher --max-samples",
             ))?;
             let unit: Vec<T> = samples(limits, count, 2)?;
-            let k = T::from_usize(segments);
-            unit.into_iter().map(|x| x * k.clone()).collect()
+            let span = last.clone() - first.clone();
+            unit.into_iter()
+                .map(|x| first.clone() + x * span.clone())
+                .collect()
         }
     };
+    let at: Vec<T> = if closed {
+        ts.iter()
+            .map(|t| super::spline_steps::periodic(t, s.params()))
+            .collect()
+    } else {
+        crate::slips::outside(
+            "--t",
+            &ts,
+            &first,
+            &last,
+            "the end segments are extended there",
+        );
+        ts.clone()
+    };
     let mut report = Report::new();
+    if cmd.steps.steps {
+        let (a, rhs) = super::spline_steps::system(&s, clamped.as_ref().map(|(a, b)| (a, b)));
+        report.push("params", Value::Matrix(row(s.params())));
+        report.push("system", Value::Matrix(a));
+        report.push("rhs", Value::Matrix(rhs));
+        for item in super::spline_steps::segments(&s)? {
+            report.items.push(item);
+        }
+    }
     report.push("tangents", Value::Matrix(s.tangents().clone()));
     report.push("t", Value::Matrix(row(&ts)));
-    let values = s.eval_many(&ts);
+    let values = s.eval_many(&at);
     report.push("result", Value::Matrix(values.clone()));
     let mut files = PendingWrites::new();
     if let Some(path) = &cmd.plot.plot {
+        let dense: Vec<T> = T::linspace(&first, &last, 10 * segments + 1);
         let figure = Figure::new("interpolating cubic spline")
-            .curve(to_f64(&values), Colour::Blue, "spline")
+            .curve(to_f64(&s.eval_many(&dense)), Colour::Blue, "spline")
             .control_polygon(to_f64(s.points()), "points");
         add_plot(&mut files, "--plot", path, &figure)?;
     }
@@ -197,6 +261,13 @@ pub fn hermite<T: LiteralScalar>(
     ))?;
     let ts: Vec<T> =
         params_or_samples(limits, "--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
+    crate::slips::outside(
+        "--t",
+        &ts,
+        &T::zero(),
+        &T::one(),
+        "the cubic is extrapolated there",
+    );
     let dense: Vec<T> = T::linspace(&T::zero(), &T::one(), 101);
     // The Bézier form of the cubic (drawn, and printed with --steps); its inner points are
     // x_1 ± x'/3, which overflow for end points and tangents near ±1.8e308.
@@ -249,9 +320,12 @@ pub struct BSplineCommand {
     /// Control points, one per column.
     #[arg(value_name = "CONTROL", allow_hyphen_values = true)]
     pub control: String,
-    /// The degree p.
-    #[arg(long, value_name = "P", default_value_t = 3)]
-    pub degree: usize,
+    /// The degree p (default 3).
+    #[arg(long, value_name = "P")]
+    pub degree: Option<usize>,
+    /// The order k = p + 1 instead of the degree (the lecture notes count B-splines by order).
+    #[arg(long, value_name = "K")]
+    pub order: Option<usize>,
     /// The knot vector (n+p+2 non-decreasing values); default clamped uniform on [0, 1].
     #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
     pub knots: Option<String>,
@@ -290,12 +364,13 @@ pub fn bspline<T: LiteralScalar>(
     limits: &Limits,
     cmd: &BSplineCommand,
 ) -> Result<Outcome, CliError> {
-    check_degree(limits, "--degree", cmd.degree)?;
+    let degree = spline_degree(cmd.degree, cmd.order, 3)?;
+    check_degree(limits, "--degree", degree)?;
     let control = points::<T>(limits, "CONTROL", &cmd.control, None, cmd.rows.rows)?;
     let form = "degree p, n+1 ≥ p+1 control points and n+p+2 non-decreasing knots";
     let curve = match &cmd.knots {
-        Some(k) => BSplineCurve::new(cmd.degree, load_params(limits, "--knots", k)?, control),
-        None => BSplineCurve::clamped(cmd.degree, control),
+        Some(k) => BSplineCurve::new(degree, load_params(limits, "--knots", k)?, control),
+        None => BSplineCurve::clamped(degree, control),
     }
     .map_err(lib("CONTROL/--degree/--knots", form))?;
     let ts = domain_params(limits, &cmd.params, curve.domain())?;
@@ -305,7 +380,7 @@ pub fn bspline<T: LiteralScalar>(
         limits,
         "--t",
         spline_basis_work(
-            (cmd.degree, curve.dim(), bits(curve.knots().as_slice())),
+            (degree, curve.dim(), bits(curve.knots().as_slice())),
             bits(curve.control().iter()),
             &ts,
             cmd.steps.steps,
@@ -330,6 +405,35 @@ pub fn bspline<T: LiteralScalar>(
             "basis",
             Value::Matrix(DMatrix::from_fn(ts.len(), n, |i, j| rows[i][j].clone())),
         );
+        // The de Boor scheme of every parameter: span, α's and levels.
+        for (k, t) in ts.iter().enumerate() {
+            let scheme = curve
+                .de_boor_scheme(t.clone())
+                .map_err(lib("--t", "parameters inside the knot span"))?;
+            let item = |name: String, value: Value<T>| crate::Item { name, value };
+            let mut parts = vec![
+                item("t".into(), Value::Matrix(row(std::slice::from_ref(t)))),
+                item(
+                    "span".into(),
+                    Value::Matrix(DMatrix::from_element(1, 1, T::from_usize(scheme.span))),
+                ),
+            ];
+            for (r, level) in scheme.levels.iter().enumerate() {
+                if r > 0 {
+                    parts.push(item(
+                        format!("alpha{r}"),
+                        Value::Matrix(row(&scheme.alphas[r - 1])),
+                    ));
+                }
+                parts.push(item(format!("d{r}"), Value::Matrix(level.clone())));
+            }
+            let name = if ts.len() == 1 {
+                "de_boor".to_string()
+            } else {
+                format!("de_boor_{}", k + 1)
+            };
+            report.push(name, Value::Record(parts));
+        }
     }
     report.push("t", Value::Matrix(row(&ts)));
     report.push("result", Value::Matrix(values));
@@ -375,9 +479,12 @@ pub struct NurbsCommand {
     /// The weights, one per control point, positive.
     #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
     pub weights: String,
-    /// The degree p.
-    #[arg(long, value_name = "P", default_value_t = 2)]
-    pub degree: usize,
+    /// The degree p (default 2).
+    #[arg(long, value_name = "P")]
+    pub degree: Option<usize>,
+    /// The order k = p + 1 instead of the degree.
+    #[arg(long, value_name = "K")]
+    pub order: Option<usize>,
     /// The knot vector; default clamped uniform on [0, 1].
     #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
     pub knots: Option<String>,
@@ -395,14 +502,15 @@ pub struct NurbsCommand {
 
 /// A NURBS curve.
 pub fn nurbs<T: LiteralScalar>(limits: &Limits, cmd: &NurbsCommand) -> Result<Outcome, CliError> {
-    check_degree(limits, "--degree", cmd.degree)?;
+    let degree = spline_degree(cmd.degree, cmd.order, 2)?;
+    check_degree(limits, "--degree", degree)?;
     let control = points(limits, "CONTROL", &cmd.control, None, cmd.rows.rows)?;
     let weights: Vec<T> = load_params(limits, "--weights", &cmd.weights)?;
     let n = control.ncols();
     let knots: Vec<T> = match &cmd.knots {
         Some(k) => load_params(limits, "--knots", k)?,
         None => {
-            let p = cmd.degree;
+            let p = degree;
             if n < p + 1 {
                 return Err(shape(
                     "CONTROL",
@@ -419,7 +527,7 @@ pub fn nurbs<T: LiteralScalar>(limits: &Limits, cmd: &NurbsCommand) -> Result<Ou
             k
         }
     };
-    let curve = NurbsCurve::new(cmd.degree, knots, control, weights).map_err(lib(
+    let curve = NurbsCurve::new(degree, knots, control, weights).map_err(lib(
         "CONTROL/--weights/--knots",
         "one positive weight per control point and n+p+2 non-decreasing knots",
     ))?;
@@ -430,7 +538,7 @@ pub fn nurbs<T: LiteralScalar>(limits: &Limits, cmd: &NurbsCommand) -> Result<Ou
         limits,
         "--t",
         spline_basis_work(
-            (cmd.degree, curve.dim() + 1, bits(curve.knots())),
+            (degree, curve.dim() + 1, bits(curve.knots())),
             bits(curve.points().iter()) + bits(&curve.weights()),
             &ts,
             cmd.steps.steps,

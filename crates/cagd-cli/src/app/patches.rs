@@ -17,7 +17,7 @@ use cagd::coons::{
 };
 use cagd::gordon::gordon_point_cost;
 use cagd::lagrange::Lagrange;
-use cagd::{CoonsPatch, Curve, GordonSurface, SampledCurve, Surface, Tolerance};
+use cagd::{Curve, GordonSurface, SampledCurve, Surface, Tolerance};
 use cagd_octave::compat::PackedNetwork;
 use cagd_octave::literal::{Env, LiteralScalar, Warning};
 use cagd_octave::script::Script;
@@ -43,6 +43,11 @@ pub struct BoundaryArgs {
     /// x(1,v), in v.
     #[arg(long, value_name = "CURVE", allow_hyphen_values = true)]
     pub d2: Option<String>,
+    /// Curves given as data (a matrix of the --script, a data file) are samples of the
+    /// curve, one column per parameter value (the script's u or v, else linspace(0,1,N)),
+    /// not Bézier control points.
+    #[arg(long)]
+    pub samples: bool,
 }
 
 /// The four boundary sources: from the arguments, else from the script's c1, c2, d1, d2.
@@ -53,6 +58,18 @@ fn boundary_sources<T: LiteralScalar>(
     rows: bool,
     env: &Env<T>,
 ) -> Result<[CurveSource<T>; 4], CliError> {
+    let given = [&b.c1, &b.c2, &b.d1, &b.d2];
+    if b.samples
+        && !given
+            .iter()
+            .any(|g| g.as_deref().is_some_and(|t| names_data(t, script)))
+    {
+        return Err(usage(
+            "--samples",
+            "has no effect: no curve argument names a matrix of the script or a data file",
+            "--samples with curves such as --c1 c1 from a --script, or without --samples",
+        ));
+    }
     let mut out = Vec::with_capacity(4);
     for (arg, given, name, param) in [
         ("--c1", &b.c1, "c1", "u"),
@@ -61,7 +78,15 @@ fn boundary_sources<T: LiteralScalar>(
         ("--d2", &b.d2, "d2", "v"),
     ] {
         let source = match (given, script) {
-            (Some(text), _) => load_curve(limits, arg, text, script, rows, env)?,
+            (Some(text), _) => load_curve_as(
+                limits,
+                arg,
+                text,
+                script,
+                rows,
+                env,
+                b.samples.then_some(param),
+            )?,
             (None, Some(s)) => script_curve(s, name, param).ok_or_else(|| {
                 usage(
                     arg,
@@ -103,6 +128,9 @@ fn surface_params<T: LiteralScalar>(
         pick("--v", &params.v, from_script.1)?,
     );
     check_grid(limits, us.len(), vs.len())?;
+    let (zero, one) = (T::zero(), T::one());
+    crate::slips::outside("--u", &us, &zero, &one, "the patch is extrapolated there");
+    crate::slips::outside("--v", &vs, &zero, &one, "the patch is extrapolated there");
     Ok((us, vs))
 }
 
@@ -157,6 +185,12 @@ fn four<T: LiteralScalar>(curves: Vec<CliCurve<T>>) -> [CliCurve<T>; 4] {
 pub struct CoonsCommand {
     #[command(flatten)]
     pub boundary: BoundaryArgs,
+    /// The blending functions (thesis (4.4)) in u and v: linear (1 − t, t), the bilinear patch
+    /// (default); hermite (H0³, H3³), the partially bicubic patch of §4.2; or f1 as an
+    /// expression in t (f2 = 1 − f1), or a pair "[f1; f2]". They must satisfy f1(0) = 1,
+    /// f1(1) = 0 and f1 + f2 = 1 (checked at t = k/32).
+    #[arg(long, value_name = "linear|hermite|EXPR", allow_hyphen_values = true)]
+    pub blend: Option<String>,
     #[command(flatten)]
     pub params: SurfaceParamArgs,
     #[command(flatten)]
@@ -193,18 +227,23 @@ pub fn coons<T: LiteralScalar>(limits: &Limits, cmd: &CoonsCommand) -> Result<Ou
         &mut env,
     )?);
     let expected = "four boundary curves that meet at the corners: c1(0)=d1(0), c1(1)=d2(0), c2(0)=d1(1), c2(1)=d2(1)";
-    let patch = match script_corners(script.as_ref()) {
-        Some(corners) if cmd.boundary.c1.is_none() => CoonsPatch::with_corners(
-            c1.clone(),
-            c2.clone(),
-            d1.clone(),
-            d2.clone(),
-            corners,
-            Tolerance::default(),
-        ),
-        _ => CoonsPatch::new(c1.clone(), c2.clone(), d1.clone(), d2.clone()),
-    }
-    .map_err(lib("--c1/--c2/--d1/--d2", expected))?;
+    let pair = super::blend::blending_pair(limits, cmd.blend.as_deref(), &needed(&[&at_u, &at_v]))?;
+    let corners = match script_corners(script.as_ref()) {
+        Some(corners) if cmd.boundary.c1.is_none() => Some(corners),
+        _ => None,
+    };
+    let patch = super::blend::coons_patch(
+        [c1.clone(), c2.clone(), d1.clone(), d2.clone()],
+        corners,
+        pair,
+    )
+    .map_err(|e| {
+        let (argument, form) = match e {
+            cagd::Error::BlendingCondition { .. } => ("--blend", super::blend::BLEND_FORM),
+            _ => ("--c1/--c2/--d1/--d2", expected),
+        };
+        CliError::library(argument, e, form)
+    })?;
     // x = rc + rd − rcd at every point (cagd::coons::coons_point_cost).
     let per_point = coons_point_cost(
         curve_costs(&[(&c1, &at_u), (&c2, &at_u), (&d1, &at_v), (&d2, &at_v)]),
@@ -223,12 +262,12 @@ pub fn coons<T: LiteralScalar>(limits: &Limits, cmd: &CoonsCommand) -> Result<Ou
     push_terms(
         &mut report,
         ["rc", "rd", "rcd"],
-        cmd.steps.steps,
+        (cmd.steps.steps, cmd.params.list),
         (&us, &vs),
         single,
         c1.dim(),
         |u, v| {
-            let p = patch.eval_parts(u, v);
+            let p = patch.parts(u, v);
             [p.rc, p.rd, p.rcd, p.x]
         },
     );
@@ -250,13 +289,13 @@ pub fn coons<T: LiteralScalar>(limits: &Limits, cmd: &CoonsCommand) -> Result<Ou
 fn push_terms<T: LiteralScalar>(
     report: &mut Report<T>,
     names: [&str; 3],
-    steps: bool,
+    (steps, list): (bool, bool),
     (us, vs): (&[T], &[T]),
     single: bool,
     d: usize,
     terms: impl Fn(T, T) -> [DVector<T>; 4],
 ) {
-    if single {
+    if single && !list {
         let [a, b, c, x] = terms(us[0].clone(), vs[0].clone());
         if steps {
             for (name, term) in names.into_iter().zip([a, b, c]) {
@@ -281,10 +320,10 @@ fn push_terms<T: LiteralScalar>(
     let [a, b, c, x] = grids;
     if steps {
         for (name, grid) in names.into_iter().zip([a, b, c]) {
-            report.push(name, Value::Grid(grid));
+            push_surface(report, name, (us, vs), grid, list);
         }
     }
-    report.push("result", Value::Grid(x));
+    push_surface(report, "result", (us, vs), x, list);
 }
 
 /// The outcome of a Coons-type subcommand: the report (written as `--format`/`-o` say) and the
@@ -377,6 +416,8 @@ pub struct CoonsBicubicCommand {
     pub params: SurfaceParamArgs,
     #[command(flatten)]
     pub rows: RowsArgs,
+    #[command(flatten)]
+    pub steps: StepsArgs,
     #[command(flatten)]
     pub script: ScriptArgs,
     #[command(flatten)]
@@ -492,14 +533,18 @@ pub fn coons_bicubic<T: LiteralScalar>(
     let mut report = Report::new();
     report.push("u", Value::Matrix(row(&us)));
     report.push("v", Value::Matrix(row(&vs)));
-    if single {
-        report.push(
-            "result",
-            Value::Matrix(column(&patch.eval(us[0].clone(), vs[0].clone()))),
-        );
-    } else {
-        report.push("result", Value::Grid(patch.eval_grid(&us, &vs)));
-    }
+    push_terms(
+        &mut report,
+        ["hc", "hd", "hcd"],
+        (cmd.steps.steps, cmd.params.list),
+        (&us, &vs),
+        single,
+        c1.dim(),
+        |u, v| {
+            let p = patch.eval_parts(u, v);
+            [p.hc, p.hd, p.hcd, p.x]
+        },
+    );
     coons_outcome(
         "bicubic Coons patch",
         &patch,
@@ -517,11 +562,18 @@ pub struct DiscreteCoonsCommand {
     /// (m+1)×(n+1)×3 array file. Only its boundary rows and columns are used.
     #[arg(value_name = "NET", allow_hyphen_values = true)]
     pub net: String,
-    /// Solve the affine mask α·(corners) + β·(edges) instead of the discrete Coons formula;
-    /// α + β must be 1/4 (α = -1/4, β = 1/2 is the discrete Coons patch, α = 0 the
-    /// permanence principle's mask), e.g. --mask=-0.25,0.5.
+    /// Solve the affine mask P_ij = α·(the 4 diagonal neighbours) + β·(the 4 edge neighbours)
+    /// for every interior point instead of the discrete Coons formula; α + β must be 1/4.
+    /// α = −1/4, β = 1/2 is the mask the permanence principle gives (the CAD notes (7)–(8)):
+    /// the discrete Coons patch again; α = 0, β = 1/4 is the discrete Laplace mask (each
+    /// point the average of its 4 edge neighbours). E.g. --mask=-0.25,0.5.
     #[arg(long, value_name = "ALPHA,BETA", allow_hyphen_values = true)]
     pub mask: Option<String>,
+    /// Also print the three parts of the discrete Coons formula (the CAD notes (6)):
+    /// b^u = (1 − i/m) P_0j + (i/m) P_mj, b^v = (1 − j/n) P_i0 + (j/n) P_in and the corner
+    /// term b^uv; the net is b^u + b^v − b^uv.
+    #[command(flatten)]
+    pub steps: StepsArgs,
     #[command(flatten)]
     pub script: ScriptArgs,
     #[command(flatten)]
@@ -560,7 +612,10 @@ pub fn discrete<T: LiteralScalar>(
         None => discrete_coons(&coords).map_err(lib("NET", expected))?,
         Some(text) => {
             let form = "two numbers α,β with α + β = 1/4, e.g. -0.25,0.5";
-            let values: Vec<T> = load_params(limits, "--mask", &format!("[{text}]"))?;
+            // Not load_params: the comma between α and β is not a decimal comma.
+            let values: Vec<T> =
+                cagd_octave::literal::parse_params_with(&format!("[{text}]"), limits)
+                    .map_err(|e| CliError::literal("--mask", e, form))?;
             let [alpha, beta]: [T; 2] = values
                 .try_into()
                 .map_err(|v: Vec<T>| shape("--mask", format!("{} value(s)", v.len()), form))?;
@@ -573,6 +628,19 @@ pub fn discrete<T: LiteralScalar>(
     };
     let grid = PointGrid::from_shape_fn((m1, n1, d), |(i, j, k)| full[k][(i, j)].clone());
     let mut report = Report::new();
+    if cmd.steps.steps {
+        if cmd.mask.is_some() {
+            return Err(usage(
+                "--steps",
+                "has no effect with --mask (the mask is solved as one linear system)",
+                "--steps without --mask (the parts of the discrete Coons formula)",
+            ));
+        }
+        let [bu, bv, buv] = super::discrete_parts::parts(&net);
+        report.push("bu", Value::Grid(bu));
+        report.push("bv", Value::Grid(bv));
+        report.push("buv", Value::Grid(buv));
+    }
     report.push("result", Value::Grid(grid.clone()));
     let mut files = PendingWrites::new();
     if let Some(path) = &cmd.plot.plot {
@@ -690,6 +758,15 @@ pub fn gordon<T: LiteralScalar>(limits: &Limits, cmd: &GordonCommand) -> Result<
                 "repeated --u-curve and --v-curve (or --script with appendix D's g_u, g_v, g_uv, x)",
             )
         })?;
+        for (arg, given) in [("--u-nodes", &cmd.u_nodes), ("--v-nodes", &cmd.v_nodes)] {
+            if given.is_some() {
+                return Err(usage(
+                    arg,
+                    "has no effect with the script's packed network (its nodes are x)",
+                    "--u-curve/--v-curve with --u-nodes/--v-nodes, or the script alone",
+                ));
+            }
+        }
         let p = packed_network(limits, s)?;
         let samples = |curves: &[SampledCurve<T>]| -> Vec<CurveSource<T>> {
             curves
@@ -819,7 +896,7 @@ pub fn gordon<T: LiteralScalar>(limits: &Limits, cmd: &GordonCommand) -> Result<
     push_terms(
         &mut report,
         ["g1", "g2", "g12"],
-        cmd.steps.steps,
+        (cmd.steps.steps, cmd.params.list),
         (&us, &vs),
         single,
         d,
@@ -875,6 +952,15 @@ pub struct LagrangeCommand {
     /// polynomials L_0..L_m.
     #[arg(long, value_name = "MATRIX", allow_hyphen_values = true)]
     pub points: Option<String>,
+    /// Also print the monomial coefficients (highest power first, as Octave's polyfit):
+    /// `coefficients`, row i those of L_i (the lecture notes' blending matrix G), and with
+    /// --points `polynomial`, those of the interpolant (the lecture notes' A = X G).
+    #[arg(long)]
+    pub coefficients: bool,
+    /// Piecewise-linear interpolation of --points instead of the polynomial (the lecture
+    /// notes' "lineární interpolace"; the nodes must increase, the end pieces are extended).
+    #[arg(long, requires = "points", conflicts_with = "coefficients")]
+    pub linear: bool,
     #[command(flatten)]
     pub params: CurveParamArgs,
     #[command(flatten)]
@@ -892,10 +978,26 @@ pub fn lagrange<T: LiteralScalar>(
 ) -> Result<Outcome, CliError> {
     let nodes: Vec<T> = load_params(limits, "--nodes", &cmd.nodes)?;
     check_degree(limits, "--nodes", nodes.len().saturating_sub(1))?;
-    let basis = Lagrange::new(nodes.clone())
+    // Any order of distinct nodes (the lecture notes' Příklad 1 takes 0, 1/2, 1/4, 1): the
+    // barycentric basis is built on the sorted nodes and read back in the order given.
+    let mut order: Vec<usize> = (0..nodes.len()).collect();
+    order.sort_by(|&a, &b| {
+        nodes[a]
+            .partial_cmp(&nodes[b])
+            .unwrap_or(std::cmp::Ordering::Equal)
+    });
+    let sorted: Vec<T> = order.iter().map(|&k| nodes[k].clone()).collect();
+    let basis = Lagrange::new(sorted.clone())
         .map_err(lib("--nodes", "distinct finite nodes, at least one"))?;
     let ts: Vec<T> =
         params_or_samples(limits, "--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
+    crate::slips::outside(
+        "--t",
+        &ts,
+        &sorted[0],
+        &sorted[sorted.len() - 1],
+        "the polynomial is extrapolated beyond its nodes",
+    );
     // The weights (Lagrange::weights_cost), then per parameter the barycentric basis
     // (Lagrange::basis_cost) or, with values, the interpolant (Lagrange::interpolation_cost).
     // Without values the m+1 basis values of every parameter are written out: about 100
@@ -921,21 +1023,79 @@ pub fn lagrange<T: LiteralScalar>(
             .saturating_add(weigh::<T>(per_param.times(k)))
             .saturating_add(written),
     )?;
+    if cmd.linear {
+        let values = values.unwrap_or_else(|| DMatrix::zeros(0, 0));
+        let mut rows = Vec::with_capacity(values.nrows());
+        for r in 0..values.nrows() {
+            let f = cagd::interpolation::PiecewiseLinear::new(
+                nodes.clone(),
+                values.row(r).iter().cloned().collect(),
+            )
+            .map_err(lib(
+                "--nodes/--points",
+                "increasing nodes and one value per node (a d×(m+1) --points)",
+            ))?;
+            rows.push(ts.iter().map(|t| f.eval(t.clone())).collect::<Vec<T>>());
+        }
+        let mut report = Report::new();
+        report.push("t", Value::Matrix(row(&ts)));
+        report.push(
+            "result",
+            Value::Matrix(DMatrix::from_fn(rows.len(), ts.len(), |r, k| {
+                rows[r][k].clone()
+            })),
+        );
+        return finish(&report, &cmd.output, PendingWrites::new(), Vec::new());
+    }
     let mut report = Report::new();
+    if cmd.coefficients {
+        let g = cagd::interpolation::blending_matrix(&nodes)
+            .map_err(lib("--nodes", "distinct finite nodes, at least one"))?;
+        if let Some(v) = &values {
+            if v.ncols() == nodes.len() {
+                report.push("polynomial", Value::Matrix(T::mat_mul(v, &g)));
+            }
+        }
+        report.push("coefficients", Value::Matrix(g));
+    }
     report.push("t", Value::Matrix(row(&ts)));
     let mut files = PendingWrites::new();
+    // Position k of the sorted nodes is node order[k] as given.
+    let unsorted = |b: Vec<T>| -> Vec<T> {
+        let mut out = b.clone();
+        for (k, v) in b.into_iter().enumerate() {
+            out[order[k]] = v;
+        }
+        out
+    };
     match values {
         None => {
-            let rows: Vec<Vec<T>> = ts.iter().map(|t| basis.basis(t)).collect();
+            let rows: Vec<Vec<T>> = ts.iter().map(|t| unsorted(basis.basis(t))).collect();
             let m = DMatrix::from_fn(ts.len(), nodes.len(), |i, j| rows[i][j].clone());
             report.push("result", Value::Matrix(m));
         }
         Some(values) => {
+            if values.ncols() == nodes.len()
+                && values.nrows() > 1
+                && order.iter().enumerate().any(|(k, &j)| k != j)
+            {
+                crate::slips::warn(
+                    "--nodes",
+                    "the nodes do not increase, so the curve passes the points in the order of their nodes, not in the order given",
+                );
+            }
+            let sorted_values = if values.ncols() == nodes.len() {
+                DMatrix::from_fn(values.nrows(), values.ncols(), |r, k| {
+                    values[(r, order[k])].clone()
+                })
+            } else {
+                values.clone()
+            };
             let mut cols = Vec::with_capacity(ts.len());
             for t in &ts {
                 cols.push(
                     basis
-                        .interpolate(&values, t)
+                        .interpolate(&sorted_values, t)
                         .map_err(lib("--points", "one column of values per node"))?,
                 );
             }

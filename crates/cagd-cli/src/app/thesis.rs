@@ -27,17 +27,17 @@ pub struct ThesisCommand {
     pub out: PathBuf,
 }
 
-type Q = BigRational;
+pub(super) type Q = BigRational;
 
-fn q(num: i64, den: i64) -> Q {
+pub(super) fn q(num: i64, den: i64) -> Q {
     Q::new(num.into(), den.into())
 }
 
-fn text<T: LiteralScalar>(report: &Report<T>) -> String {
+pub(super) fn text<T: LiteralScalar>(report: &Report<T>) -> String {
     render(report, Format::Text).unwrap_or_default()
 }
 
-fn heading(out: &mut String, title: &str) {
+pub(super) fn heading(out: &mut String, title: &str) {
     let _ = writeln!(out, "{title}\n{}\n", "=".repeat(title.chars().count()));
 }
 
@@ -72,14 +72,15 @@ P3 = [0;1;0];
 P4 = [1;1;1];
 ";
 
-struct Files<'a> {
-    dir: &'a Path,
-    pending: PendingWrites,
-    written: Vec<String>,
+/// The pictures and meshes of a worked-examples command, staged until everything is computed.
+pub(super) struct Files<'a> {
+    pub(super) dir: &'a Path,
+    pub(super) pending: PendingWrites,
+    pub(super) written: Vec<String>,
 }
 
 impl Files<'_> {
-    fn picture(&mut self, name: &str, figure: &Figure) -> Result<(), CliError> {
+    pub(super) fn picture(&mut self, name: &str, figure: &Figure) -> Result<(), CliError> {
         for ext in crate::plot::PICTURE_EXTENSIONS {
             let file = format!("{name}.{ext}");
             add_plot(&mut self.pending, "--out", &self.dir.join(&file), figure)?;
@@ -88,7 +89,7 @@ impl Files<'_> {
         Ok(())
     }
 
-    fn meshes(&mut self, name: &str, grid: &PointGrid<f64>) -> Result<(), CliError> {
+    pub(super) fn meshes(&mut self, name: &str, grid: &PointGrid<f64>) -> Result<(), CliError> {
         for ext in ["stl", "obj", "ply"] {
             let file = format!("{name}.{ext}");
             add_mesh(&mut self.pending, "--out", &self.dir.join(&file), grid)?;

@@ -253,6 +253,17 @@ impl Figure {
         self.layers.iter().any(|l| !l.label().is_empty())
     }
 
+    /// The height in pixels the legend takes at the top of the plotting area (0 without one):
+    /// a line of about 20 pixels per label and the margins of its box.
+    pub(super) fn legend_height(&self) -> f64 {
+        let labels = self.layers.iter().filter(|l| !l.label().is_empty()).count();
+        if labels == 0 {
+            0.0
+        } else {
+            24.0 + 22.0 * labels as f64
+        }
+    }
+
     /// Layers in drawing order: surfaces, nets, curves, control polygons.
     pub(super) fn ordered(&self) -> Vec<&Layer> {
         let rank = |l: &Layer| match l {

@@ -140,6 +140,9 @@ impl Figure {
             .configure_axes()
             .light_grid_style(BLACK.mix(0.12))
             .max_light_lines(4)
+            .x_formatter(&|x| tick_text(*x, by.1 - by.0))
+            .y_formatter(&|y| tick_text(*y, bz.1 - bz.0))
+            .z_formatter(&|z| tick_text(*z, bx.1 - bx.0))
             .label_style((FAMILY, 13))
             .draw()
             .map_err(drawing)?;
@@ -214,22 +217,26 @@ impl Figure {
 
     fn draw_2d<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), PlotError> {
         let [bx, by, _] = self.bounds();
-        // Equal scales on both axes, so that shapes are not distorted.
+        // Equal scales on both axes, so that shapes are not distorted; the data keeps out of a
+        // band at the top where the legend goes, so the legend never hides a point.
         let (w, h) = root.dim_in_pixel();
         let (aw, ah) = ((w as f64 - 110.0).max(50.0), (h as f64 - 120.0).max(50.0));
-        let scale = ((bx.1 - bx.0) / aw).max((by.1 - by.0) / ah);
+        let band = self.legend_height().min(ah / 2.0);
+        let scale = ((bx.1 - bx.0) / aw).max((by.1 - by.0) / (ah - band));
         let (cx, cy) = ((bx.0 + bx.1) / 2.0, (by.0 + by.1) / 2.0);
-        let (hx, hy) = (scale * aw / 2.0, scale * ah / 2.0);
+        let (hx, hy) = (scale * aw / 2.0, scale * (ah - band) / 2.0);
         let mut chart = ChartBuilder::on(root)
             .caption(&self.title, (FAMILY, 24))
             .margin(20)
             .x_label_area_size(40)
             .y_label_area_size(50)
-            .build_cartesian_2d(cx - hx..cx + hx, cy - hy..cy + hy)
+            .build_cartesian_2d(cx - hx..cx + hx, cy - hy..cy + hy + scale * band)
             .map_err(drawing)?;
         chart
             .configure_mesh()
             .light_line_style(BLACK.mix(0.08))
+            .x_label_formatter(&|x| tick_text(*x, 2.0 * hx))
+            .y_label_formatter(&|y| tick_text(*y, 2.0 * hy))
             .x_desc("x")
             .y_desc("y")
             .label_style((FAMILY, 13))
@@ -467,6 +474,24 @@ fn net_lines(grid: &PointGrid<f64>) -> Vec<Vec<[f64; 3]>> {
         lines.push((0..nu).map(|i| p(i, j)).collect());
     }
     lines
+}
+
+/// A tick label on an axis spanning `span`: at most 7 significant digits, no trailing zeros,
+/// and never `-0` (a tick at zero computed as −1e-17 is 0).
+pub(super) fn tick_text(x: f64, span: f64) -> String {
+    if !x.is_finite() {
+        return String::new();
+    }
+    let rounded: f64 = format!("{x:.6e}").parse().unwrap_or(x);
+    if rounded == 0.0 || x.abs() <= 1e-9 * span.abs() {
+        return "0".into();
+    }
+    let a = rounded.abs();
+    if (1e-4..1e7).contains(&a) {
+        format!("{rounded}")
+    } else {
+        format!("{rounded:e}")
+    }
 }
 
 /// A range with room around the data; a degenerate range is widened.

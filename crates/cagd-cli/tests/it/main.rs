@@ -4,6 +4,7 @@
 mod atomic_output;
 mod bad_inputs;
 mod cli;
+mod course;
 mod error_catalogue;
 mod hostile;
 mod limits;

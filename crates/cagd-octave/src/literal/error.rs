@@ -216,7 +216,13 @@ pub struct Warning {
 }
 
 impl fmt::Display for Warning {
+    /// `line 3, column 7: message`, or the message alone for a warning about a whole argument
+    /// (position column 0).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}: {}", self.at, self.message)
+        if self.at.column == 0 {
+            write!(f, "{}", self.message)
+        } else {
+            write!(f, "{}: {}", self.at, self.message)
+        }
     }
 }
