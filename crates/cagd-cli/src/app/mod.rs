@@ -46,6 +46,8 @@ mod nurbs_surface;
 
 mod outcome;
 
+mod lagrange;
+
 mod patches;
 
 mod ruled;
@@ -208,7 +210,7 @@ piecewise linearly instead (the lecture notes' linear interpolation; increasing 
 Examples:
   cagd lagrange --nodes \"[0 0.5 1]\" --t 0.25 --exact
   cagd lagrange --nodes 1:5 --points \"[1 2 3 2 1]\" --t 1:0.5:5")]
-    Lagrange(patches::LagrangeCommand),
+    Lagrange(lagrange::LagrangeCommand),
     /// Bernstein polynomial values B_i^n(t).
     #[command(after_help = "\
 Layout: t is k×1, result k×(n+1) (row = parameter, column = B_0^n..B_n^n), or k×1 with --i.
@@ -617,8 +619,8 @@ fn dispatch(limits: &Limits, command: &Command) -> Result<Outcome, CliError> {
         Command::DiscreteCoons(c) => patches::discrete::<f64>(limits, c),
         Command::Gordon(c) if c.output.exact => patches::gordon::<BigRational>(limits, c),
         Command::Gordon(c) => patches::gordon::<f64>(limits, c),
-        Command::Lagrange(c) if c.output.exact => patches::lagrange::<BigRational>(limits, c),
-        Command::Lagrange(c) => patches::lagrange::<f64>(limits, c),
+        Command::Lagrange(c) if c.output.exact => lagrange::lagrange::<BigRational>(limits, c),
+        Command::Lagrange(c) => lagrange::lagrange::<f64>(limits, c),
         Command::Bernstein(c) if c.output.exact => bezier::bernstein::<BigRational>(limits, c),
         Command::Bernstein(c) => bezier::bernstein::<f64>(limits, c),
         Command::Derivative(c) if c.output.exact => bezier::derivative::<BigRational>(limits, c),
