@@ -69,20 +69,22 @@ impl<T: Scalar> Lagrange<T> {
         Ok(Lagrange { nodes, weights })
     }
 
-    /// The cost of the set-up ([`new`](Self::new), the weights): `(m+1)²` operations on
-    /// numbers of [`polynomial_bits`]`(m, node_bits, 0)` bits, `node_bits` the size of the
-    /// nodes.
+    /// The cost of the set-up ([`new`](Self::new), the weights) for `count = m + 1` nodes:
+    /// `(m+1)²` operations on numbers of [`polynomial_bits`]`(m, node_bits, 0)` bits,
+    /// `node_bits` the size of the nodes. Known before the set-up, so that a caller can refuse
+    /// work it cannot afford before doing any (exact weights of a thousand nodes take minutes).
     ///
     /// ```
     /// use cagd::lagrange::Lagrange;
     /// use cagd::cost::Cost;
-    /// let l = Lagrange::new(vec![0.0, 0.5, 1.0])?;
-    /// assert_eq!(l.weights_cost(3), Cost::new(9, 8));
-    /// # Ok::<(), cagd::Error>(())
+    /// assert_eq!(Lagrange::<f64>::weights_cost(3, 3), Cost::new(9, 8));
     /// ```
-    pub fn weights_cost(&self, node_bits: u128) -> Cost {
-        let m1 = self.nodes.len() as u128;
-        Cost::new(m1 * m1, polynomial_bits(self.degree(), node_bits, 0))
+    pub fn weights_cost(count: usize, node_bits: u128) -> Cost {
+        let m1 = count as u128;
+        Cost::new(
+            m1.saturating_mul(m1),
+            polynomial_bits(count.saturating_sub(1), node_bits, 0),
+        )
     }
 
     /// The cost of the basis at one parameter of `param_bits` bits ([`basis`](Self::basis)):
@@ -92,12 +94,10 @@ impl<T: Scalar> Lagrange<T> {
     /// ```
     /// use cagd::lagrange::Lagrange;
     /// use cagd::cost::Cost;
-    /// let l = Lagrange::new(vec![0.0, 0.5, 1.0])?;
-    /// assert_eq!(l.basis_cost(2, 3), Cost::new(12, 12));
-    /// # Ok::<(), cagd::Error>(())
+    /// assert_eq!(Lagrange::<f64>::basis_cost(3, 2, 3), Cost::new(12, 12));
     /// ```
-    pub fn basis_cost(&self, param_bits: u128, node_bits: u128) -> Cost {
-        self.interpolation_cost(0, param_bits, node_bits, 0)
+    pub fn basis_cost(count: usize, param_bits: u128, node_bits: u128) -> Cost {
+        Self::interpolation_cost(count, 0, param_bits, node_bits, 0)
     }
 
     /// The cost of the interpolant of `d`-dimensional values at one parameter
@@ -108,21 +108,19 @@ impl<T: Scalar> Lagrange<T> {
     /// ```
     /// use cagd::lagrange::Lagrange;
     /// use cagd::cost::Cost;
-    /// let l = Lagrange::new(vec![0.0, 0.5, 1.0])?;
-    /// assert_eq!(l.interpolation_cost(2, 2, 3, 10), Cost::new(24, 22));
-    /// # Ok::<(), cagd::Error>(())
+    /// assert_eq!(Lagrange::<f64>::interpolation_cost(3, 2, 2, 3, 10), Cost::new(24, 22));
     /// ```
     pub fn interpolation_cost(
-        &self,
+        count: usize,
         d: usize,
         param_bits: u128,
         node_bits: u128,
         value_bits: u128,
     ) -> Cost {
         Cost::new(
-            (4 + 2 * d as u128) * self.nodes.len() as u128,
+            (4 + 2 * d as u128).saturating_mul(count as u128),
             polynomial_bits(
-                self.degree(),
+                count.saturating_sub(1),
                 param_bits.saturating_add(node_bits),
                 value_bits,
             ),
@@ -358,9 +356,15 @@ mod tests {
     #[test]
     fn costs_of_the_set_up_the_basis_and_the_interpolant() {
         let l = Lagrange::new(vec![0.0, 0.25, 0.5, 0.75, 1.0]).unwrap(); // m = 4
-        assert_eq!(l.weights_cost(0), Cost::new(25, 4));
-        assert_eq!(l.basis_cost(3, 2), Cost::new(20, 4 * 6));
-        assert_eq!(l.interpolation_cost(0, 3, 2, 0), l.basis_cost(3, 2));
-        assert_eq!(l.interpolation_cost(3, 3, 2, 9), Cost::new(50, 24 + 9));
+        assert_eq!(Lagrange::<f64>::weights_cost(5, 0), Cost::new(25, 4));
+        assert_eq!(Lagrange::<f64>::basis_cost(5, 3, 2), Cost::new(20, 4 * 6));
+        assert_eq!(
+            Lagrange::<f64>::interpolation_cost(5, 0, 3, 2, 0),
+            Lagrange::<f64>::basis_cost(5, 3, 2)
+        );
+        assert_eq!(
+            Lagrange::<f64>::interpolation_cost(5, 3, 3, 2, 9),
+            Cost::new(50, 24 + 9)
+        );
     }
 }

@@ -60,8 +60,6 @@ pub fn lagrange<T: LiteralScalar>(
             .unwrap_or(std::cmp::Ordering::Equal)
     });
     let sorted: Vec<T> = order.iter().map(|&k| nodes[k].clone()).collect();
-    let basis = Lagrange::new(sorted.clone())
-        .map_err(lib("--nodes", "distinct finite nodes, at least one"))?;
     let ts: Vec<T> =
         params_or_samples(limits, "--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
     crate::slips::outside(
@@ -84,18 +82,31 @@ pub fn lagrange<T: LiteralScalar>(
     let (node_bits, param_bits) = (bits(&nodes), bits(&ts));
     let (per_param, written) = match &values {
         Some(v) => (
-            basis.interpolation_cost(v.nrows(), param_bits, node_bits, bits(v.iter())),
+            Lagrange::<T>::interpolation_cost(
+                nodes.len(),
+                v.nrows(),
+                param_bits,
+                node_bits,
+                bits(v.iter()),
+            ),
             0,
         ),
-        None => (basis.basis_cost(param_bits, node_bits), 100 * k * m1),
+        None => (
+            Lagrange::<T>::basis_cost(nodes.len(), param_bits, node_bits),
+            100 * k * m1,
+        ),
     };
+    // Everything, the set-up (the barycentric weights) included, is charged before it runs,
+    // and a refusal names what drives it: many (exact) nodes, or many parameters.
+    let setup = weigh::<T>(Lagrange::<T>::weights_cost(nodes.len(), node_bits));
+    let per = weigh::<T>(per_param.times(k)).saturating_add(written);
     check_work(
         limits,
-        "--t",
-        weigh::<T>(basis.weights_cost(node_bits))
-            .saturating_add(weigh::<T>(per_param.times(k)))
-            .saturating_add(written),
+        if setup > per { "--nodes" } else { "--t" },
+        setup.saturating_add(per),
     )?;
+    let basis = Lagrange::new(sorted.clone())
+        .map_err(lib("--nodes", "distinct finite nodes, at least one"))?;
     if cmd.linear {
         let values = values.unwrap_or_else(|| DMatrix::zeros(0, 0));
         let mut rows = Vec::with_capacity(values.nrows());
