@@ -276,3 +276,39 @@ pub fn bspline_surface(p: usize, n: usize) -> cagd::bspline::BSplineSurface {
     ];
     cagd::bspline::BSplineSurface::new(p, p, knots.clone(), knots, coords).expect("valid surface")
 }
+
+/// The cubic 3-D B-spline curve with 10 control points on a spiral (the points of
+/// [`curve_of_degree`]`(9)`), clamped uniform knots on `[0, 1]` (7 spans).
+pub fn bspline_cubic_curve() -> cagd::bspline::BSplineCurve {
+    let control = DMatrix::from_fn(3, 10, |k, i| {
+        let a = i as f64 * 0.7;
+        [a.cos(), a.sin(), i as f64 / 9.0][k]
+    });
+    cagd::bspline::BSplineCurve::clamped(3, control).expect("valid curve")
+}
+
+/// The NURBS curve of [`bspline_cubic_curve`]'s control points with weights
+/// `1 + (i mod 4)/3`.
+pub fn nurbs_cubic_curve() -> cagd::nurbs::NurbsCurve {
+    let b = bspline_cubic_curve();
+    let w: Vec<f64> = (0..10).map(|i| 1.0 + (i % 4) as f64 / 3.0).collect();
+    cagd::nurbs::NurbsCurve::new(3, b.knots().as_slice().to_vec(), b.control().clone(), w)
+        .expect("valid curve")
+}
+
+/// The NURBS surface of [`bspline_surface`]`(p, n)`'s net with weights
+/// `1 + ((i + 2j) mod 4)/3`.
+pub fn nurbs_surface(p: usize, n: usize) -> cagd::nurbs::NurbsSurface {
+    let b = bspline_surface(p, n);
+    let w = DMatrix::from_fn(n, n, |i, j| 1.0 + ((i + 2 * j) % 4) as f64 / 3.0);
+    let (ku, kv) = b.knots();
+    cagd::nurbs::NurbsSurface::new(
+        p,
+        p,
+        ku.as_slice().to_vec(),
+        kv.as_slice().to_vec(),
+        b.coordinates().to_vec(),
+        w,
+    )
+    .expect("valid surface")
+}

@@ -9,6 +9,7 @@
 //! `BigRational` too.
 
 mod basis;
+mod batch;
 mod curve;
 mod grid;
 mod knots;
@@ -21,5 +22,6 @@ pub use surface::BSplineSurface;
 
 pub(crate) use basis::check_in_domain;
 pub(crate) use basis::clamp;
+pub(crate) use batch::curve_points_fast_into;
 pub(crate) use curve::eval_clamped;
 pub(crate) use grid::curve_points_into;

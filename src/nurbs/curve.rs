@@ -3,7 +3,9 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::{check_weights, homogenize};
-use crate::bspline::{check_in_domain, clamp, curve_points_into, eval_clamped, BSplineCurve};
+use crate::bspline::{
+    check_in_domain, clamp, curve_points_fast_into, curve_points_into, eval_clamped, BSplineCurve,
+};
 use crate::error::{Error, Result};
 use crate::param::Curve;
 use crate::scalar::Scalar;
@@ -139,10 +141,14 @@ impl<T: Scalar> NurbsCurve<T> {
     /// [`crate::grid`]). As [`Curve::eval`], a parameter outside the domain is clamped to it
     /// and a NaN parameter gives a point of NaNs.
     ///
-    /// Per parameter the homogeneous point `Σ_i N_{s−p+i,p}(u) (w P, w)_{s−p+i}` is formed as in
-    /// [`BSplineCurve::eval_many_into`] (span, `p + 1` basis values, no allocation per point,
-    /// long batches on all cores) and divided by its weight — the operations of
-    /// [`try_eval`](Self::try_eval), so the same values bit for bit.
+    /// Per parameter the homogeneous point `Σ_i N_{s−p+i,p}(u) (w P, w)_{s−p+i}` is formed by
+    /// the fast batch of [`BSplineCurve::eval_many_into`] (reciprocals of the knot differences
+    /// once per span, the points of a span four at a time, no allocation per point, long
+    /// batches on all cores) and multiplied by the reciprocal of its weight: one division per
+    /// point. The rational basis is non-negative, so the bound of the B-spline batch holds in
+    /// the projected coordinates: `|C_batch(u) − C(u)| ≤ (4p + 6) ε · max_k |P_k|`, exact for
+    /// rationals. [`eval_many_exact_order_into`](Self::eval_many_exact_order_into) does the
+    /// operations of [`try_eval`](Self::try_eval) (and octave-nurbs `nrbeval`) instead.
     ///
     /// # Errors
     /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · d`.
@@ -159,12 +165,33 @@ impl<T: Scalar> NurbsCurve<T> {
     /// # Ok::<(), cagd::Error>(())
     /// ```
     pub fn eval_many_into(&self, us: &[T], out: &mut [T]) -> Result<()> {
+        self.batch(us, out, curve_points_fast_into)
+    }
+
+    /// [`eval_many_into`](Self::eval_many_into) in the exact order of
+    /// [`try_eval`](Self::try_eval): the homogeneous point as
+    /// [`BSplineCurve::eval_many_exact_order_into`], each coordinate divided by the weight —
+    /// the values of `try_eval` bit for bit. Parameters are clamped to the domain.
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · d`.
+    pub fn eval_many_exact_order_into(&self, us: &[T], out: &mut [T]) -> Result<()> {
+        self.batch(us, out, curve_points_into)
+    }
+
+    /// Checks the buffer and runs a curve kernel on the homogeneous curve.
+    fn batch(
+        &self,
+        us: &[T],
+        out: &mut [T],
+        kernel: fn(usize, &[T], &[T], usize, bool, &[T], &mut [T]),
+    ) -> Result<()> {
         let d = self.dim();
         let len = crate::grid::grid_len("NURBS curve points", &[us.len(), d])?;
         crate::grid::check_len("NURBS curve point buffer", len, out)?;
         let h = &self.homogeneous;
         let knots = h.knots().as_slice();
-        curve_points_into(
+        kernel(
             h.degree(),
             knots,
             h.control().as_slice(),
@@ -176,8 +203,9 @@ impl<T: Scalar> NurbsCurve<T> {
         Ok(())
     }
 
-    /// [`eval_many_into`](Self::eval_many_into) for parameters that must lie in the domain,
-    /// as [`try_eval`](Self::try_eval): nothing is written unless all do.
+    /// [`eval_many_exact_order_into`](Self::eval_many_exact_order_into) for parameters that
+    /// must lie in the domain, as [`try_eval`](Self::try_eval) (the same values, bit for bit):
+    /// nothing is written unless all do.
     ///
     /// # Errors
     /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · d`;
@@ -190,7 +218,7 @@ impl<T: Scalar> NurbsCurve<T> {
         for u in us {
             check_in_domain(u, &lo, &hi)?;
         }
-        self.eval_many_into(us, out)
+        self.eval_many_exact_order_into(us, out)
     }
 
     /// The rational basis `R_{0,p}(u), …, R_{n−1,p}(u)` (the CAD notes eq. (4)).
@@ -362,7 +390,8 @@ impl<T: Scalar> Curve<T> for NurbsCurve<T> {
         self.try_eval_derivative(clamp(t, &lo, &hi)).ok()
     }
 
-    /// [`NurbsCurve::eval_many_into`]: span and basis per parameter, no allocation per point.
+    /// [`NurbsCurve::eval_many_into`]: the fast batch (reciprocals per span, one division and no
+    /// allocation per point).
     fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
         NurbsCurve::eval_many_into(self, ts, out)
     }
