@@ -312,3 +312,103 @@ pub fn nurbs_surface(p: usize, n: usize) -> cagd::nurbs::NurbsSurface {
     )
     .expect("valid surface")
 }
+
+/// The arithmetic floor: `MULS` multiplications and `ADDS` additions for each of `points`
+/// points, at the machine's vector width (four points per AVX2 vector, in the code
+/// [`f64::vectorized`] chooses), spread over twelve independent chains so that the
+/// multipliers and adders stay busy, with no memory traffic. Its time is the least any kernel
+/// doing those operations per point can take on one core. Returns a value that depends on
+/// every operation (so that none is optimised away).
+pub fn arithmetic_floor<const MULS: usize, const ADDS: usize>(points: usize) -> f64 {
+    f64::vectorized(
+        #[inline(always)]
+        || {
+            let x = std::hint::black_box(0.999_999_999_f64);
+            let y = std::hint::black_box(1e-12_f64);
+            let mut acc = [[1.0f64; 4]; 12];
+            for _ in 0..points.div_ceil(4) {
+                for i in 0..MULS.max(ADDS) {
+                    let c = &mut acc[i % 12];
+                    if i < MULS {
+                        for v in c.iter_mut() {
+                            *v *= x;
+                        }
+                    }
+                    if i < ADDS {
+                        for v in c.iter_mut() {
+                            *v += y;
+                        }
+                    }
+                }
+            }
+            acc.iter().flatten().sum()
+        },
+    )
+}
+
+/// [`arithmetic_floor`] on all threads of the current rayon pool (the points split evenly).
+pub fn arithmetic_floor_all<const MULS: usize, const ADDS: usize>(points: usize) -> f64 {
+    use rayon::prelude::*;
+    let threads = rayon::current_num_threads();
+    (0..threads)
+        .into_par_iter()
+        .map(|_| arithmetic_floor::<MULS, ADDS>(points.div_ceil(threads)))
+        .sum()
+}
+
+/// The memory floor: the buffer written once (`slice::fill`, which the C library does with
+/// streaming or `rep stos` stores that need not read the lines first), on the current thread.
+pub fn fill_floor(out: &mut [f64]) {
+    std::hint::black_box(out).fill(std::hint::black_box(0.5));
+}
+
+/// [`fill_floor`] on all threads of the current rayon pool (a few blocks per thread).
+pub fn fill_floor_all(out: &mut [f64]) {
+    use rayon::prelude::*;
+    let block = out.len().div_ceil(4 * rayon::current_num_threads()).max(1);
+    std::hint::black_box(out)
+        .par_chunks_mut(block)
+        .for_each(|c| c.fill(std::hint::black_box(0.5)));
+}
+
+/// The buffer written once with ordinary vector stores (a pattern of twelve values that the
+/// compiler cannot turn into `memset`): the stores a kernel in safe Rust makes, which read
+/// each cache line before writing it. For comparison with [`fill_floor`].
+pub fn store_floor(out: &mut [f64]) {
+    let pattern: [f64; 12] = std::hint::black_box(std::array::from_fn(|k| k as f64));
+    f64::vectorized(
+        #[inline(always)]
+        || {
+            let out = std::hint::black_box(out);
+            let mut chunks = out.chunks_exact_mut(12);
+            for c in &mut chunks {
+                c.copy_from_slice(&pattern);
+            }
+            for (o, p) in chunks.into_remainder().iter_mut().zip(pattern) {
+                *o = p;
+            }
+        },
+    )
+}
+
+/// [`store_floor`] on all threads of the current rayon pool.
+pub fn store_floor_all(out: &mut [f64]) {
+    use rayon::prelude::*;
+    let block = out
+        .len()
+        .div_ceil(4 * rayon::current_num_threads())
+        .div_ceil(12)
+        * 12;
+    out.par_chunks_mut(block.max(12)).for_each(store_floor);
+}
+
+/// The per-point operations of cagd's kernels (multiplications, additions and subtractions),
+/// counted from their inner loops, for [`arithmetic_floor`].
+pub mod ops {
+    /// Bicubic patch grid, 3-D: `Σ_j B_j^3(v) c_j`, 4 terms × 3 coordinates (the row's
+    /// `c_j` cost 48 multiply-adds per row of 1000 points, left out).
+    pub const BICUBIC: (usize, usize) = (12, 9);
+    /// Cubic 3-D curve: the basis as products (`t², t³, s = 1 − t, s², s³` and the four
+    /// binomial products: 10 multiplications, 1 subtraction), then 4 terms × 3 coordinates.
+    pub const CUBIC_CURVE: (usize, usize) = (22, 10);
+}

@@ -229,8 +229,9 @@ impl<T: Scalar> BSplineCurve<T> {
     /// four at a time in vector registers. Nothing is allocated per point and long batches
     /// are split over all cores.
     ///
-    /// Accuracy: `|C_batch(u) − C(u)| ≤ (4p + 6) ε · max_i |P_i|` (every quantity of the scheme
-    /// is non-negative), exact for rationals. For the operations of
+    /// Accuracy: `|C_batch(u) − C(u)| ≤ (4p + 1) ε · max_i |P_i|` (every quantity of the scheme
+    /// is non-negative, so relative roundings add up; derivation in the module docs of the
+    /// kernel), exact for rationals. For the operations of
     /// [`try_eval`](Self::try_eval) and octave-nurbs `bspeval`, bit for bit, use
     /// [`eval_many_exact_order_into`](Self::eval_many_exact_order_into).
     ///

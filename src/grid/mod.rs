@@ -20,6 +20,7 @@
 //! around a kernel that is inlined whole (`#[inline(always)]`) into the dispatched code:
 //! a kernel left as a separate function would be compiled for the baseline only.
 
+pub(crate) mod exact;
 mod point_grid;
 
 pub use point_grid::PointGrid;

@@ -7,6 +7,7 @@ mod coons;
 mod course_errors;
 mod course_examples;
 mod course_octave;
+mod exact_paths;
 mod gordon;
 mod grid_eval;
 mod layers;

@@ -12,7 +12,8 @@
 use std::hint::black_box;
 
 use cagd_bench::{
-    bspline_cubic_curve, bspline_surface, cubic_curve, nurbs_cubic_curve, nurbs_surface, patch,
+    arithmetic_floor, bspline_cubic_curve, bspline_surface, cubic_curve, nurbs_cubic_curve,
+    nurbs_surface, ops, patch, store_floor,
 };
 
 const CASES: &[&str] = &[
@@ -24,6 +25,9 @@ const CASES: &[&str] = &[
     "bezier_curve",
     "bspline_curve",
     "nurbs_curve",
+    "store_grid",
+    "arith_bicubic",
+    "arith_cubic",
 ];
 
 fn main() {
@@ -57,6 +61,18 @@ fn main() {
             "bezier_curve" => bc.eval_many_into(&curve_ts, &mut points).unwrap(),
             "bspline_curve" => sc.eval_many_into(&curve_ts, &mut points).unwrap(),
             "nurbs_curve" => nc.eval_many_into(&curve_ts, &mut points).unwrap(),
+            "store_grid" => store_floor(&mut grid),
+            "arith_bicubic" => {
+                black_box(arithmetic_floor::<{ ops::BICUBIC.0 }, { ops::BICUBIC.1 }>(
+                    n * n,
+                ));
+            }
+            "arith_cubic" => {
+                black_box(arithmetic_floor::<
+                    { ops::CUBIC_CURVE.0 },
+                    { ops::CUBIC_CURVE.1 },
+                >(k));
+            }
             _ => {
                 println!("cases: {}", CASES.join(" "));
                 return;
