@@ -412,3 +412,108 @@ pub mod ops {
     /// binomial products: 10 multiplications, 1 subtraction), then 4 terms × 3 coordinates.
     pub const CUBIC_CURVE: (usize, usize) = (22, 10);
 }
+
+/// One line of the accuracy study of the B-spline and NURBS curve batches.
+#[derive(Debug, Clone, Copy)]
+pub struct SplineAccuracyRow {
+    /// The degree.
+    pub degree: usize,
+    /// The fast batch of B-spline curves (`eval_many_into`), in units of `ε · max |P_i|`.
+    pub bspline_fast: f64,
+    /// The exact-order batch of B-spline curves (`eval_many_exact_order_into`, the values of
+    /// `try_eval`), in the same units.
+    pub bspline_exact_order: f64,
+    /// The fast batch of NURBS curves, in units of `ε · max |P_k|`.
+    pub nurbs_fast: f64,
+    /// The exact-order batch of NURBS curves.
+    pub nurbs_exact_order: f64,
+}
+
+/// The largest errors of the B-spline and NURBS curve batches against exact rational
+/// arithmetic at the same double parameter, in units of `ε · max |P|`: `curves` random 3-D
+/// curves per degree (10 + degree control points in `[−1, 1]³`, clamped knots with random
+/// interior knots, weights in `[1/4, 4]`), `params` random parameters each.
+pub fn spline_accuracy_study(
+    degrees: &[usize],
+    curves: usize,
+    params: usize,
+) -> Vec<SplineAccuracyRow> {
+    use cagd::bspline::BSplineCurve;
+    use cagd::nurbs::NurbsCurve;
+    let mut state = 0x9e37_79b9_7f4a_7c15u64;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let lift = |x: f64| <BigRational as Scalar>::from_f64(x).expect("finite");
+    let lift_all = |v: &[f64]| v.iter().map(|&x| lift(x)).collect::<Vec<_>>();
+    degrees
+        .iter()
+        .map(|&p| {
+            let mut row = SplineAccuracyRow {
+                degree: p,
+                bspline_fast: 0.0,
+                bspline_exact_order: 0.0,
+                nurbs_fast: 0.0,
+                nurbs_exact_order: 0.0,
+            };
+            for _ in 0..curves {
+                let n = 10 + p;
+                let mut inner: Vec<f64> = (0..n - p - 1).map(|_| next()).collect();
+                inner.sort_by(f64::total_cmp);
+                let mut knots = vec![0.0; p + 1];
+                knots.extend(inner);
+                knots.extend(vec![1.0; p + 1]);
+                let control: Vec<f64> = (0..3 * n).map(|_| 2.0 * next() - 1.0).collect();
+                let scale = control.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+                let weights: Vec<f64> = (0..n).map(|_| 0.25 + 3.75 * next()).collect();
+                let m = DMatrix::from_column_slice(3, n, &control);
+                let c = BSplineCurve::new(p, knots.clone(), m.clone()).expect("valid");
+                let r = NurbsCurve::new(p, knots.clone(), m, weights.clone()).expect("valid");
+                let mq = DMatrix::from_column_slice(3, n, &lift_all(&control));
+                let cq = BSplineCurve::new(p, lift_all(&knots), mq.clone()).expect("valid");
+                let rq =
+                    NurbsCurve::new(p, lift_all(&knots), mq, lift_all(&weights)).expect("valid");
+                let ts: Vec<f64> = (0..params).map(|_| next()).collect();
+                let mut fast = vec![0.0; 3 * params];
+                let mut exact_order = vec![0.0; 3 * params];
+                let worst =
+                    |fast: &[f64],
+                     exact_order: &[f64],
+                     eval: &dyn Fn(BigRational) -> Vec<BigRational>| {
+                        let (mut a, mut b) = (0.0f64, 0.0f64);
+                        for (k, &t) in ts.iter().enumerate() {
+                            let e = eval(lift(t));
+                            for j in 0..3 {
+                                let err = |x: f64| {
+                                    (lift(x) - e[j].clone()).to_f64().abs() / (f64::EPSILON * scale)
+                                };
+                                a = a.max(err(fast[3 * k + j]));
+                                b = b.max(err(exact_order[3 * k + j]));
+                            }
+                        }
+                        (a, b)
+                    };
+                c.eval_many_into(&ts, &mut fast).expect("sizes");
+                c.eval_many_exact_order_into(&ts, &mut exact_order)
+                    .expect("sizes");
+                let (a, b) = worst(&fast, &exact_order, &|t| {
+                    cq.try_eval(t).expect("in domain").as_slice().to_vec()
+                });
+                row.bspline_fast = row.bspline_fast.max(a);
+                row.bspline_exact_order = row.bspline_exact_order.max(b);
+                r.eval_many_into(&ts, &mut fast).expect("sizes");
+                r.eval_many_exact_order_into(&ts, &mut exact_order)
+                    .expect("sizes");
+                let (a, b) = worst(&fast, &exact_order, &|t| {
+                    rq.try_eval(t).expect("in domain").as_slice().to_vec()
+                });
+                row.nurbs_fast = row.nurbs_fast.max(a);
+                row.nurbs_exact_order = row.nurbs_exact_order.max(b);
+            }
+            row
+        })
+        .collect()
+}

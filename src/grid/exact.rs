@@ -258,7 +258,7 @@ mod tests {
                 let mut c = BigRational::one();
                 for (i, x) in fast.iter().enumerate() {
                     if i > 0 {
-                        c = c * q((n - i + 1) as i64, i as i64);
+                        c *= q((n - i + 1) as i64, i as i64);
                     }
                     let slow =
                         &c * num_traits::pow(t.clone(), i) * num_traits::pow(s.clone(), n - i);

@@ -180,12 +180,7 @@ impl<T: Scalar> NurbsCurve<T> {
     }
 
     /// Checks the buffer and runs a curve kernel on the homogeneous curve.
-    fn batch(
-        &self,
-        us: &[T],
-        out: &mut [T],
-        kernel: fn(usize, &[T], &[T], usize, bool, &[T], &mut [T]),
-    ) -> Result<()> {
+    fn batch(&self, us: &[T], out: &mut [T], kernel: CurveKernel<T>) -> Result<()> {
         let d = self.dim();
         let len = crate::grid::grid_len("NURBS curve points", &[us.len(), d])?;
         crate::grid::check_len("NURBS curve point buffer", len, out)?;
@@ -369,6 +364,10 @@ impl NurbsCurve<f64> {
         Self::arc(radius, center, 0.0, 2.0 * std::f64::consts::PI)
     }
 }
+
+/// A curve kernel of the B-spline module: degree, knots, control points, numbers per control
+/// point, whether to project, parameters, output.
+type CurveKernel<T> = fn(usize, &[T], &[T], usize, bool, &[T], &mut [T]);
 
 /// `(x_1, …, x_d, w) ↦ (x_1/w, …, x_d/w)`.
 pub(crate) fn project<T: Scalar>(h: &DVector<T>) -> DVector<T> {

@@ -81,16 +81,16 @@ fn gordon_parts_equal_the_sums_of_the_formula() {
         for k in 0..3 {
             let mut g1 = q(0, 1);
             for (l, c) in bu.iter().zip(&at_u) {
-                g1 = g1 + c.eval(v.clone())[k].clone() * l.clone();
+                g1 += c.eval(v.clone())[k].clone() * l.clone();
             }
             let mut g2 = q(0, 1);
             for (l, c) in bv.iter().zip(&at_v) {
-                g2 = g2 + c.eval(u.clone())[k].clone() * l.clone();
+                g2 += c.eval(u.clone())[k].clone() * l.clone();
             }
             let mut g12 = q(0, 1);
             for (li, ui) in bu.iter().zip(&un) {
                 for (lj, vj) in bv.iter().zip(&vn) {
-                    g12 = g12 + patch.eval(ui.clone(), vj.clone())[k].clone() * li * lj;
+                    g12 += patch.eval(ui.clone(), vj.clone())[k].clone() * li * lj;
                 }
             }
             assert_eq!((&p.g1[k], &p.g2[k], &p.g12[k]), (&g1, &g2, &g12));
