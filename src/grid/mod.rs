@@ -13,12 +13,16 @@
 //! blocks are evaluated with rayon; each block allocates its scratch once. Smaller grids run on
 //! the calling thread and never touch the thread pool.
 //!
-//! **Vectors.** The row kernels (`contract_row`, `blend_row`, and the curve kernels that
-//! call [`Scalar::vectorized`] themselves) run inside `Scalar::vectorized`: for `f64` with the
-//! default feature `simd`, in code compiled for the processor's widest vector instructions,
-//! chosen at run time; the results are the same as without it. The dispatch is made per row,
-//! around a kernel that is inlined whole (`#[inline(always)]`) into the dispatched code:
-//! a kernel left as a separate function would be compiled for the baseline only.
+//! **Vectors.** The row kernels (`contract_row`, `contract_row_planar`, `blend_row`, and the
+//! curve kernels that call [`Scalar::vectorized`] themselves) run inside `Scalar::vectorized`:
+//! for `f64` with the default feature `simd`, in code compiled for the processor's widest
+//! vector instructions, chosen at run time; the results are the same as without it. The
+//! dispatch is made per row, around a kernel that is inlined whole (`#[inline(always)]`) into
+//! the dispatched code — the closure handed to `vectorized` included: a kernel or closure left
+//! as a separate function is compiled for the baseline (SSE2) only.
+//!
+//! **Exact rationals.** The private module `exact` holds fraction-free kernels that the batch
+//! paths take when the scalar is `BigRational` (the same values, a fraction of the gcds).
 
 pub(crate) mod exact;
 mod point_grid;
