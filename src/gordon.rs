@@ -481,6 +481,28 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
             g2: DVector::from_element(dim, T::zero()),
             g12: DVector::from_element(dim, T::zero()),
         };
+        if crate::grid::exact::is_rational::<T>() {
+            // Exact: the same values from dot products over a common denominator,
+            // g12 = Σ_i L_i(u) Σ_j L_j(v) g(u_i, v_j); a fraction of the gcds.
+            for k in 0..dim {
+                let dot = |w: &[T], x: Vec<&T>| {
+                    crate::grid::exact::dot(w.iter().zip(x)).unwrap_or_else(T::zero)
+                };
+                let g1 = dot(lu, at_u.iter().map(|p| &p[k]).collect());
+                let g2 = dot(lv, at_v.iter().map(|p| &p[k]).collect());
+                let rows: Vec<T> = self
+                    .points
+                    .iter()
+                    .map(|row| dot(lv, row.iter().map(|p| &p[k]).collect()))
+                    .collect();
+                let g12 = dot(lu, rows.iter().collect());
+                out.g[k] = g1.clone() + g2.clone() - g12.clone();
+                out.g1[k] = g1;
+                out.g2[k] = g2;
+                out.g12[k] = g12;
+            }
+            return out;
+        }
         for k in 0..dim {
             let mut g1 = T::zero();
             for (l, p) in lu.iter().zip(at_u) {

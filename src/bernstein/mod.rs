@@ -96,6 +96,10 @@ pub fn bernstein_all<T: Scalar>(n: usize, t: T) -> Vec<T> {
 /// assert_eq!(b, [0.125, 0.375, 0.375, 0.125]);
 /// ```
 pub fn bernstein_all_into<T: Scalar>(t: &T, out: &mut [T]) {
+    // Exact rationals: the same values from integer products, without the recurrence's gcds.
+    if crate::grid::exact::bernstein_row(t, out) {
+        return;
+    }
     // Low degrees get the loop with its length known at compile time (fully unrolled); the
     // arithmetic, and so every bit of the result, is the same.
     match out.len() {

@@ -329,7 +329,8 @@ impl<T: Scalar> BezierCurve<T> {
     /// The points at all parameters `us`, by de Casteljau: a `d × k` matrix whose column `k`
     /// is `b^n(us[k])` (the layout of the thesis's sample matrices `T(:, k)`). Like the
     /// thesis's `deCasteljau` it takes any finite parameters, continuing the polynomial outside
-    /// the domain as [`eval`](Self::eval) does.
+    /// the domain as [`eval`](Self::eval) does. In exact rationals the same values come from the
+    /// Bernstein sums of [`eval_many_into`](Self::eval_many_into), with far fewer operations.
     ///
     /// # Errors
     /// [`Error::EmptyGrid`] for an empty list, [`Error::NonFinite`] for a NaN or infinite
@@ -346,6 +347,13 @@ impl<T: Scalar> BezierCurve<T> {
     /// ```
     pub fn eval_many(&self, us: &[T]) -> Result<DMatrix<T>> {
         check_params("Bézier curve parameters", us)?;
+        if crate::grid::exact::is_rational::<T>() {
+            // Exact: the same values from the Bernstein sums of the batch, a fraction of the
+            // operations (and gcds) of de Casteljau's triangle.
+            let mut out = DMatrix::from_element(self.dim(), us.len(), T::zero());
+            self.eval_many_into(us, out.as_mut_slice())?;
+            return Ok(out);
+        }
         let columns: Vec<DVector<T>> = us.iter().map(|u| self.eval(u.clone())).collect();
         Ok(DMatrix::from_columns(&columns))
     }
@@ -379,6 +387,10 @@ impl<T: Scalar> BezierCurve<T> {
         let d = self.dim();
         let len = crate::grid::grid_len("Bézier curve points", &[us.len(), d])?;
         crate::grid::check_len("Bézier curve point buffer", len, out)?;
+        let local = |u: &T| self.local_parameter(u.clone());
+        if crate::grid::exact::bezier_points(self.control.as_slice(), d, local, us, out) {
+            return Ok(());
+        }
         // Points per block: their basis rows fit in a small scratch buffer.
         const BLOCK: usize = 256;
         let terms = self.degree() + 1;

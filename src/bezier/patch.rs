@@ -589,7 +589,7 @@ impl<T: Scalar> BezierPatch<T> {
         let d = self.dim();
         let (rows_u, terms) = (m + 1, n + 1);
         let bu = crate::grid::rows_of(us, rows_u, |t, row| bernstein_all_into(t, row));
-        let bv = crate::grid::rows_of(vs, terms, |t, row| bernstein_all_into(t, row));
+        let bv = crate::grid::planar_rows_of(vs, terms, |t, row| bernstein_all_into(t, row));
         // The net as (m+1) blocks of (n+1)·d: net[(i·(n+1) + j)·d + k] = b_{i,j}[k].
         let mut net = Vec::with_capacity(rows_u * terms * d);
         for i in 0..rows_u {
@@ -605,7 +605,7 @@ impl<T: Scalar> BezierPatch<T> {
             || vec![T::zero(); terms * d],
             |coeffs, a, row| {
                 crate::grid::weighted_sum_into(&bu[a * rows_u..(a + 1) * rows_u], &net, coeffs);
-                crate::grid::contract_row(&bv, terms, coeffs, row);
+                crate::grid::contract_row_planar(&bv, vs.len(), 0, terms, coeffs, row);
             },
         );
     }

@@ -9,7 +9,7 @@
 //! (written `t − t`, NaN for both).
 
 use super::basis::{basis_functions_into, last_span};
-use crate::grid::{contract_row, for_each_row, weighted_sum_into};
+use crate::grid::{contract_row_planar, for_each_row, weighted_sum_into};
 use crate::scalar::Scalar;
 
 /// Points per block of a curve batch: one scratch (basis and triangle buffers) per block.
@@ -105,6 +105,31 @@ pub(crate) fn basis_rows<T: Scalar>(
         }));
     }
     (rows, spans)
+}
+
+/// [`basis_rows`] stored by term: entry `j` of the row of `ts[a]` at `j·ts.len() + a` (the
+/// layout of [`contract_row_planar`]); a NaN parameter has a row of zeros.
+pub(crate) fn planar_basis_rows<T: Scalar>(
+    f: &SpanFinder<'_, T>,
+    ts: &[T],
+) -> (Vec<T>, Vec<Option<usize>>) {
+    let w = f.p + 1;
+    let n = ts.len();
+    let mut planes = vec![T::zero(); n * w];
+    let mut spans = Vec::with_capacity(n);
+    let (mut row, mut left, mut right) =
+        (vec![T::zero(); w], vec![T::zero(); w], vec![T::zero(); w]);
+    let mut hint = f.p;
+    for (a, t) in ts.iter().enumerate() {
+        spans.push(f.locate(t, &mut hint).map(|(s, u)| {
+            basis_functions_into(f.p, f.knots, s, &u, &mut row, &mut left, &mut right);
+            for (j, x) in row.iter().enumerate() {
+                planes[j * n + a] = x.clone();
+            }
+            s
+        }));
+    }
+    (planes, spans)
 }
 
 /// Scratch of one block of curve points.
@@ -317,7 +342,8 @@ pub(crate) fn surface_grid_into<T: Scalar>(s: &Net<'_, T>, us: &[T], vs: &[T], o
     let d = dh - usize::from(s.project);
     let nv = s.v.n;
     let (bu, su) = basis_rows(&s.u, us);
-    let (bv, sv) = basis_rows(&s.v, vs);
+    let (bv, sv) = planar_basis_rows(&s.v, vs);
+    let nvs = vs.len();
     // Runs of consecutive v in the same span (one run for each span a sorted grid crosses).
     let mut runs: Vec<(usize, usize, Option<usize>)> = Vec::new();
     for (b, span) in sv.iter().enumerate() {
@@ -329,8 +355,10 @@ pub(crate) fn surface_grid_into<T: Scalar>(s: &Net<'_, T>, us: &[T], vs: &[T], o
     let fill = |coeffs: &[T], target: &mut [T]| {
         for &(b0, b1, span) in &runs {
             match span {
-                Some(t) => contract_row(
-                    &bv[b0 * (q + 1)..b1 * (q + 1)],
+                Some(t) => contract_row_planar(
+                    &bv,
+                    nvs,
+                    b0,
                     q + 1,
                     &coeffs[(t - q) * dh..(t + 1) * dh],
                     &mut target[b0 * dh..b1 * dh],
@@ -368,15 +396,15 @@ pub(crate) fn surface_grid_into<T: Scalar>(s: &Net<'_, T>, us: &[T], vs: &[T], o
         if !s.project {
             fill(coeffs, row);
         } else if (2..=4).contains(&dh) && no_nan_v {
-            // Homogeneous sums kept in registers and divided at once, no second pass.
+            // Homogeneous sums kept in registers and projected at once, no second pass.
             for &(b0, b1, span) in &runs {
                 let t = span.unwrap_or(q);
-                let (ws, c) = (&bv[b0 * (q + 1)..b1 * (q + 1)], &coeffs[(t - q) * dh..]);
+                let c = &coeffs[(t - q) * dh..];
                 let x = &mut row[b0 * d..b1 * d];
                 match dh {
-                    2 => contract_project_row::<T, 2>(ws, q + 1, c, x),
-                    3 => contract_project_row::<T, 3>(ws, q + 1, c, x),
-                    _ => contract_project_row::<T, 4>(ws, q + 1, c, x),
+                    2 => contract_project_row::<T, 2>(&bv, nvs, b0, q + 1, c, x),
+                    3 => contract_project_row::<T, 3>(&bv, nvs, b0, q + 1, c, x),
+                    _ => contract_project_row::<T, 4>(&bv, nvs, b0, q + 1, c, x),
                 }
             }
         } else {
@@ -388,25 +416,67 @@ pub(crate) fn surface_grid_into<T: Scalar>(s: &Net<'_, T>, us: &[T], vs: &[T], o
     });
 }
 
-/// For every point of a run: the homogeneous sum `h = Σ_l ws[b][l] · c_l` (`D` numbers,
-/// [`contract_row`]'s operations: from `ws[b][0] · c_0`, `l` ascending), then
-/// `x_k = h_k / h_{D−1}` into `row` (`D − 1` numbers per point).
+/// For every point of a run: the homogeneous sum `h = Σ_l w_b[l] · c_l` (`D` numbers,
+/// [`contract_row_planar`]'s operations: from `w_b[0] · c_0`, `l` ascending; the weights
+/// `w_b[l] = ws[l·stride + first + b]`), then `x_k = h_k · (1/h_{D−1})` into `row` (`D − 1`
+/// numbers per point): one division per point, vectorised across points.
 #[inline]
 fn contract_project_row<T: Scalar, const D: usize>(
     ws: &[T],
+    stride: usize,
+    first: usize,
     terms: usize,
     coeffs: &[T],
     row: &mut [T],
 ) {
-    for (w, x) in ws.chunks_exact(terms).zip(row.chunks_exact_mut(D - 1)) {
-        let mut acc: [T; D] = std::array::from_fn(|k| w[0].clone() * coeffs[k].clone());
-        for (wl, cl) in w[1..].iter().zip(coeffs[D..].chunks_exact(D)) {
+    T::vectorized(
+        #[inline(always)]
+        || match terms {
+            2 => project_const::<T, 2, D>(ws, stride, first, coeffs, row),
+            3 => project_const::<T, 3, D>(ws, stride, first, coeffs, row),
+            4 => project_const::<T, 4, D>(ws, stride, first, coeffs, row),
+            _ => {
+                for (b, x) in row.chunks_exact_mut(D - 1).enumerate() {
+                    let w = |l: usize| ws[l * stride + first + b].clone();
+                    let mut acc: [T; D] = std::array::from_fn(|k| w(0) * coeffs[k].clone());
+                    for l in 1..terms {
+                        for k in 0..D {
+                            acc[k] = acc[k].clone() + w(l) * coeffs[l * D + k].clone();
+                        }
+                    }
+                    let r = T::one() / acc[D - 1].clone();
+                    for k in 0..D - 1 {
+                        x[k] = acc[k].clone() * r.clone();
+                    }
+                }
+            }
+        },
+    );
+}
+
+/// [`contract_project_row`] with `L` terms fixed at compile time.
+#[inline(always)]
+fn project_const<T: Scalar, const L: usize, const D: usize>(
+    ws: &[T],
+    stride: usize,
+    first: usize,
+    coeffs: &[T],
+    row: &mut [T],
+) {
+    let n = row.len() / (D - 1);
+    let planes: [&[T]; L] = std::array::from_fn(|l| &ws[l * stride + first..][..n]);
+    let c: [[T; D]; L] =
+        std::array::from_fn(|l| std::array::from_fn(|k| coeffs[l * D + k].clone()));
+    for (b, x) in row.chunks_exact_mut(D - 1).enumerate() {
+        let mut acc: [T; D] = std::array::from_fn(|k| planes[0][b].clone() * c[0][k].clone());
+        for l in 1..L {
             for k in 0..D {
-                acc[k] = acc[k].clone() + wl.clone() * cl[k].clone();
+                acc[k] = acc[k].clone() + planes[l][b].clone() * c[l][k].clone();
             }
         }
+        let r = T::one() / acc[D - 1].clone();
         for k in 0..D - 1 {
-            x[k] = acc[k].clone() / acc[D - 1].clone();
+            x[k] = acc[k].clone() * r.clone();
         }
     }
 }

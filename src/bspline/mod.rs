@@ -10,6 +10,7 @@
 //! `BigRational` too.
 
 mod basis;
+mod batch;
 mod curve;
 mod de_boor_scheme;
 mod elevate;
@@ -26,5 +27,6 @@ pub use surface::BSplineSurface;
 pub use triangle::cox_de_boor_triangle;
 
 pub(crate) use basis::check_in_domain;
+pub(crate) use batch::curve_points_fast_into;
 pub(crate) use grid::curve_points_into;
 pub(crate) use surface::nan_point;

@@ -355,7 +355,6 @@ mod tests {
 
     #[test]
     fn costs_of_the_set_up_the_basis_and_the_interpolant() {
-        let l = Lagrange::new(vec![0.0, 0.25, 0.5, 0.75, 1.0]).unwrap(); // m = 4
         assert_eq!(Lagrange::<f64>::weights_cost(5, 0), Cost::new(25, 4));
         assert_eq!(Lagrange::<f64>::basis_cost(5, 3, 2), Cost::new(20, 4 * 6));
         assert_eq!(

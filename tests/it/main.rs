@@ -8,6 +8,7 @@ mod course_errors;
 mod course_examples;
 mod course_octave;
 mod domain;
+mod exact_paths;
 mod examples;
 mod gordon;
 mod grid_eval;
