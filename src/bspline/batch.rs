@@ -26,10 +26,14 @@
 //! NURBS:     |C_batch(u) − C(u)| ≤ (γ_{7p+2} + γ_{7p+3}) max_k |P_k| ≤ (7p + 3) ε · max_k |P_k|
 //! ```
 //!
-//! (NURBS: the numerator also carries the rounding of the stored `w_k P_k`, the weight sum
-//! `γ_{7p+1}`, the reciprocal and the product one each; the rational basis is non-negative,
-//! so the bound holds in the projected coordinates whatever the weights). The values are
-//! exact for rationals. The test `fast_curve_batches_are_within_the_bound_of_exact_rationals`
+//! on the domain (NURBS: the numerator also carries the rounding of the stored `w_k P_k`, the
+//! weight sum `γ_{7p+1}`, the reciprocal and the product one each; the rational basis is
+//! non-negative, so the bound holds in the projected coordinates whatever the weights).
+//! Beyond the domain the end piece continues and `u − u_{s+1−j}` or `u_{s+j} − u` changes
+//! sign; the same roundings then give the B-spline bound `(4p + 1) ε · max_i |P_i| · Σ Ñ_i`,
+//! `Ñ_i` the scheme run on the absolute values of those differences (1 on the domain). A NaN
+//! or infinite parameter gives a point of NaNs, as `eval`. The values are exact for
+//! rationals. The test `fast_curve_batches_are_within_the_bound_of_exact_rationals`
 //! checks both bounds against exact rational arithmetic.
 //!
 //! The result at a parameter does not depend on the other parameters of the batch (the
@@ -176,7 +180,7 @@ struct Curve<'a, T> {
 impl<T: Scalar> Curve<'_, T> {
     /// The points of one block: the longest run of parameters in the loaded span at once
     /// ([`run`]); a parameter outside it is located (outside the domain in the end span, whose
-    /// piece continues; NaN gives NaNs), its span
+    /// piece continues; NaN or ±∞ gives NaNs), its span
     /// loaded, and the next run starts there.
     #[inline(always)]
     fn block<const N: usize, const DH: usize, const PROJECT: bool>(
@@ -197,7 +201,8 @@ impl<T: Scalar> Curve<'_, T> {
             }
             let (t, x) = (&ts[i], &mut out[i * d..(i + 1) * d]);
             match self.finder.locate(t, hint) {
-                None => x.iter_mut().for_each(|o| *o = t.clone()),
+                // NaN or ±∞: a point of NaNs, as `eval` gives.
+                None => x.iter_mut().for_each(|o| *o = t.clone() - t.clone()),
                 Some((s, u)) => {
                     if s != sp.s {
                         sp.load(s, self.knots, self.control);
@@ -237,8 +242,8 @@ impl<T: Scalar> Curve<'_, T> {
 }
 
 /// The points of a degree-`p` spline curve at all parameters `ts` by the scheme of the
-/// module docs (the end pieces continued outside the domain, as `eval` does; a NaN parameter
-/// gives a point of NaNs), written into
+/// module docs (the end pieces continued outside the domain, as `eval` does; a NaN or
+/// infinite parameter gives a point of NaNs), written into
 /// `out` one after the other: the fast counterpart of
 /// [`curve_points_into`](super::grid::curve_points_into), with the same arguments and
 /// layout. Degrees 0…5 with up to 4 numbers per control point run four parameters at a
@@ -300,7 +305,7 @@ fn general<T: Scalar>(c: &Curve<'_, T>, p: usize, dh: usize, ts: &[T], out: &mut
     for_each_row(out, BLOCK * d, work, init, |sc, block, chunk| {
         for (t, x) in ts[block * BLOCK..].iter().zip(chunk.chunks_exact_mut(d)) {
             let Some((s, u)) = c.finder.locate(t, &mut sc.hint) else {
-                x.iter_mut().for_each(|o| *o = t.clone());
+                x.iter_mut().for_each(|o| *o = t.clone() - t.clone());
                 continue;
             };
             if s != sc.s {

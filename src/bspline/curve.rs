@@ -260,9 +260,10 @@ impl<T: Scalar> BSplineCurve<T> {
     /// four at a time in vector registers. Nothing is allocated per point and long batches
     /// are split over all cores.
     ///
-    /// Accuracy: `|C_batch(u) − C(u)| ≤ (4p + 1) ε · max_i |P_i|` (every quantity of the scheme
-    /// is non-negative, so relative roundings add up; derivation in the module docs of the
-    /// kernel), exact for rationals. For the operations of
+    /// Accuracy: `|C_batch(u) − C(u)| ≤ (4p + 1) ε · max_i |P_i|` on the domain (every
+    /// quantity of the scheme is non-negative, so relative roundings add up; derivation, and
+    /// the bound of the continued end pieces beyond the domain, in the module docs of the
+    /// kernel), exact for rationals; NaN or ±∞ gives NaNs, as [`eval`](Self::eval). For the operations of
     /// [`try_eval`](Self::try_eval) and octave-nurbs `bspeval`, bit for bit, use
     /// [`eval_many_exact_order_into`](Self::eval_many_exact_order_into).
     ///

@@ -164,8 +164,8 @@ impl<T: Scalar> NurbsCurve<T> {
     /// once per span, the points of a span four at a time, no allocation per point, long
     /// batches on all cores) and multiplied by the reciprocal of its weight: one division per
     /// point. The rational basis is non-negative, so relative roundings add up as for
-    /// B-splines, in the projected coordinates: `|C_batch(u) − C(u)| ≤ (7p + 3) ε · max_k |P_k|`,
-    /// exact for rationals. [`eval_many_exact_order_into`](Self::eval_many_exact_order_into) does the
+    /// B-splines, in the projected coordinates: on the domain
+    /// `|C_batch(u) − C(u)| ≤ (7p + 3) ε · max_k |P_k|`, exact for rationals. [`eval_many_exact_order_into`](Self::eval_many_exact_order_into) does the
     /// operations of [`try_eval`](Self::try_eval) (and octave-nurbs `nrbeval`) instead.
     ///
     /// # Errors
