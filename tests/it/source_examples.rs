@@ -213,7 +213,10 @@ fn matrix_form_notes_matrix_and_intermediate_product() {
     assert_eq!(m, printed);
     assert_eq!(bezier_to_monomial_matrix::<f64>(3), printed);
     // "Najprej lahko izračunamo produkt prvih dveh matrik": [0 3 0 0; 0 3 -6 4].
-    let product = matrix_form_notes_curve().matrix_form().coefficients().clone();
+    let product = matrix_form_notes_curve()
+        .matrix_form()
+        .coefficients()
+        .clone();
     #[rustfmt::skip]
     let expected = DMatrix::from_row_slice(2, 4, &[
         0.0, 3.0,  0.0, 0.0,
@@ -221,7 +224,8 @@ fn matrix_form_notes_matrix_and_intermediate_product() {
     ]);
     assert_eq!(product, expected);
     // Same in rationals.
-    let exact = BezierCurve::new(matrix_form_notes_curve().control().map(|x| q(x as i64, 1))).unwrap();
+    let exact =
+        BezierCurve::new(matrix_form_notes_curve().control().map(|x| q(x as i64, 1))).unwrap();
     assert_eq!(
         exact.matrix_form().coefficients(),
         &expected.map(|x| q(x as i64, 1))
@@ -257,7 +261,8 @@ fn matrix_form_notes_table_in_f64_by_all_three_forms() {
 
 #[test]
 fn matrix_form_notes_table_exact_in_rationals() {
-    let curve = BezierCurve::new(matrix_form_notes_curve().control().map(|x| q(x as i64, 1))).unwrap();
+    let curve =
+        BezierCurve::new(matrix_form_notes_curve().control().map(|x| q(x as i64, 1))).unwrap();
     let form = curve.matrix_form();
     for (t, p) in MATRIX_FORM_NOTES_TABLE {
         let t = dec(t);
@@ -273,7 +278,10 @@ fn matrix_form_notes_table_exact_in_rationals() {
 #[test]
 fn matrix_form_notes_table_through_the_basis_matrix() {
     // All six rows at once: B (6 × 4) times the control coordinates.
-    let ts: Vec<BigRational> = MATRIX_FORM_NOTES_TABLE.iter().map(|(t, _)| dec(t)).collect();
+    let ts: Vec<BigRational> = MATRIX_FORM_NOTES_TABLE
+        .iter()
+        .map(|(t, _)| dec(t))
+        .collect();
     let b = basis_matrix(3, &ts);
     let ys = nalgebra::DVector::from_vec(vec![q(0, 1), q(1, 1), q(0, 1), q(1, 1)]);
     let got = &b * &ys;
