@@ -39,9 +39,10 @@
 //! The resource limits (`cagd_limits` in Octave) are one [`cagd::Limits`] value held here for
 //! the Octave process and passed to every call.
 
+use std::cell::RefCell;
 use std::ffi::{c_char, c_int, c_void, CStr, CString};
 use std::panic::{catch_unwind, AssertUnwindSafe};
-use std::sync::{LazyLock, Mutex};
+use std::sync::{LazyLock, Mutex, Once};
 
 use cagd::Limits;
 use cagd_octave_pkg::{Kind, PkgError, Real, Sink, Value};
@@ -268,6 +269,26 @@ impl Sink for FfiSink<'_> {
     }
 }
 
+thread_local! {
+    /// Where the last panic of this thread happened (`file:line`), for the error message.
+    static PANIC_AT: RefCell<Option<String>> = const { RefCell::new(None) };
+}
+
+/// Replaces the default panic hook (which prints a backtrace into the Octave session) by one
+/// that only records where the panic happened; the message reaches Octave as the error
+/// `cagd:internal`. Installed once, on the first call.
+fn quiet_panics() {
+    static HOOK: Once = Once::new();
+    HOOK.call_once(|| {
+        std::panic::set_hook(Box::new(|info| {
+            let at = info
+                .location()
+                .map(|l| format!("{}:{}", l.file(), l.line()));
+            PANIC_AT.with(|p| *p.borrow_mut() = at);
+        }));
+    });
+}
+
 /// The text of a panic's payload.
 fn panic_message(payload: &(dyn std::any::Any + Send)) -> String {
     payload
@@ -326,15 +347,22 @@ pub unsafe extern "C" fn cagd_call(
         let nargout = usize::try_from(nargout).unwrap_or(0);
         cagd_octave_pkg::call(name, &values, nargout, &mut limits, &mut out)
     };
+    quiet_panics();
     let result = match catch_unwind(AssertUnwindSafe(run)) {
         Ok(r) => r,
-        Err(payload) => Err(PkgError::new(
-            Kind::Internal,
-            format!(
-                "__cagd__: internal error: {}; this is a bug in the cagd package",
-                panic_message(payload.as_ref())
-            ),
-        )),
+        Err(payload) => {
+            let at = PANIC_AT
+                .with(|p| p.borrow_mut().take())
+                .map(|l| format!(" ({l})"))
+                .unwrap_or_default();
+            Err(PkgError::new(
+                Kind::Internal,
+                format!(
+                    "__cagd__: internal error: {}{at}; this is a bug in the cagd package",
+                    panic_message(payload.as_ref())
+                ),
+            ))
+        }
     };
     match result {
         Ok(()) => 0,

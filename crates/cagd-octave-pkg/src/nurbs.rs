@@ -12,9 +12,20 @@
 //! vectors) are sums of the core's B-spline basis values, along `w`, then `v`, then `u`, as
 //! `nrbeval` does.
 //!
+//! A curve at non-decreasing parameters (the usual `linspace`) is evaluated piece by piece:
+//! its homogeneous B-spline is cut into Bézier pieces by knot insertion (the core's
+//! [`BSplineCurve::insert_knots`], octave-nurbs' `bspkntins`), and each piece is evaluated by
+//! the core's Bézier batch ([`BezierCurve::eval_many_into`], Bernstein sums with sizes fixed
+//! at compile time for degrees up to 3), the weighted point `(w·x, w·y, w·z)` straight into
+//! Octave's array and the weight beside it, then divided. This avoids the `p(p+1)/2` divisions
+//! per point of the triangular B-spline basis; the values agree with `nrbeval` to rounding
+//! (knot insertion and Bernstein sums are convex combinations). Other curves take the core's
+//! [`NurbsCurve::try_eval_many_into`].
+//!
 //! One deliberate difference: a parameter outside the domain `[U(p+1), U(end-p)]` is an error
 //! (`cagd:domain`) where octave-nurbs extrapolates the first or last polynomial piece.
 
+use cagd::bezier::BezierCurve;
 use cagd::bspline::{basis_functions, find_span, BSplineCurve, BSplineSurface, KnotVector};
 use cagd::nurbs::{NurbsCurve, NurbsSurface};
 use nalgebra::DMatrix;
@@ -316,13 +327,103 @@ fn nrbeval_curve(call: &Call<'_, '_>, sink: &mut dyn Sink, nurbs: &Nurbs<'_>) ->
     if call.nargout < 2 {
         let (lo, hi) = curve.domain();
         check_domain(t, lo, hi)?;
+        let pieces = bezier_pieces(curve.homogeneous())?;
         let out = sink.real(0, &p_dims)?;
-        curve.try_eval_many_into(t, out)?;
+        match pieces {
+            Some(pieces) if t.windows(2).all(|w| w[0] <= w[1]) => {
+                eval_pieces(&pieces, t, out)?;
+            }
+            _ => curve.try_eval_many_into(t, out)?,
+        }
         return Ok(());
     }
     let mut h = vec![0.0; 4 * t.len()];
     curve.homogeneous().try_eval_many_into(t, &mut h)?;
     emit_points(call, sink, &h, &p_dims, &w_dims)
+}
+
+/// One Bézier piece of a homogeneous curve: its interval, the curve of its weighted points
+/// `(w·x, w·y, w·z)` and the curve of its weights as the plane curve `(w, 0)` (plane and
+/// space curves of degree up to 3 have the core's fastest kernels).
+struct Piece {
+    a: f64,
+    b: f64,
+    weighted: BezierCurve,
+    weight: BezierCurve,
+}
+
+/// The Bézier pieces of a homogeneous (4-D) B-spline curve whose domain ends are clamped
+/// (the first and last `p + 1` knots of the domain equal): every interior knot raised to
+/// multiplicity `p` by knot insertion, then one piece per non-empty span. `None` for other
+/// knot vectors.
+fn bezier_pieces(h: &BSplineCurve) -> Result<Option<Vec<Piece>>> {
+    let p = h.degree();
+    let knots = h.knots().as_slice();
+    let n = h.control().ncols();
+    let (lo, hi) = (knots[p], knots[n]);
+    let clamped = knots[1..=p].iter().all(|&k| k == lo) && knots[n..n + p].iter().all(|&k| k == hi);
+    if !clamped {
+        return Ok(None);
+    }
+    let mut insert = Vec::new();
+    let mut k = p + 1;
+    while k < n {
+        let x = knots[k];
+        let mult = knots[k..n].iter().take_while(|&&y| y == x).count();
+        if lo < x && x < hi {
+            insert.extend(std::iter::repeat_n(x, p.saturating_sub(mult)));
+        }
+        k += mult;
+    }
+    let r = h.insert_knots(&insert)?;
+    let (rk, rc) = (r.knots().as_slice(), r.control());
+    let mut pieces = Vec::new();
+    for s in p..rc.ncols() {
+        if rk[s] < rk[s + 1] {
+            let cols = rc.columns(s - p, p + 1);
+            let weighted = DMatrix::from_fn(3, p + 1, |i, j| cols[(i, j)]);
+            let weight = DMatrix::from_fn(2, p + 1, |i, j| if i == 0 { cols[(3, j)] } else { 0.0 });
+            pieces.push(Piece {
+                a: rk[s],
+                b: rk[s + 1],
+                weighted: BezierCurve::new_on_interval(weighted, rk[s], rk[s + 1])?,
+                weight: BezierCurve::new_on_interval(weight, rk[s], rk[s + 1])?,
+            });
+        }
+    }
+    Ok(Some(pieces))
+}
+
+/// The curve at the non-decreasing parameters `t` (all in the domain) into `out` (`3` numbers
+/// per point), piece by piece: a parameter on a breakpoint belongs to the piece on its right
+/// (as `findspan`), the right end of the domain to the last piece.
+fn eval_pieces(pieces: &[Piece], t: &[f64], out: &mut [f64]) -> Result<()> {
+    let mut w = vec![0.0; 2 * t.len()];
+    let mut start = 0;
+    for (k, piece) in pieces.iter().enumerate() {
+        let last = k + 1 == pieces.len();
+        let len = t[start..]
+            .iter()
+            .take_while(|&&x| x < piece.b || (last && x <= piece.b))
+            .count();
+        let end = start + len;
+        if len > 0 {
+            debug_assert!(t[start] >= piece.a);
+            piece
+                .weighted
+                .eval_many_into(&t[start..end], &mut out[3 * start..3 * end])?;
+            piece
+                .weight
+                .eval_many_into(&t[start..end], &mut w[2 * start..2 * end])?;
+        }
+        start = end;
+    }
+    for (x, w) in out.chunks_exact_mut(3).zip(w.chunks_exact(2)) {
+        for c in x {
+            *c /= w[0];
+        }
+    }
+    Ok(())
 }
 
 /// Every parameter in `[lo, hi]`, or the core's out-of-domain error for the first that is not.

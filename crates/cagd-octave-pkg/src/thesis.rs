@@ -1,22 +1,35 @@
-//! The thesis functions, fixed, under their own names and with their own arguments: each is
-//! the twin in [`cagd_octave::compat`] (the same numbers as `octave_ref/fixed/`), with Octave's
-//! arrays passed in without a copy and the results written into the arrays Octave returns.
+//! The thesis functions, fixed, under their own names and with their own arguments: the
+//! numbers of `octave_ref/fixed/`, with Octave's arrays passed in without a copy and the
+//! results written into the arrays Octave returns.
 //!
-//! | Octave | twin |
+//! | Octave | built on |
 //! |---|---|
-//! | `T = deCasteljau (kontrolneT, N)` | [`compat::de_casteljau`] |
-//! | `P = ploskevB (kontrolneT, N)` | [`compat::ploskev_b`] |
-//! | `L = bilinearna (B, u, v, N)` | [`compat::bilinearna`] |
-//! | `A = tenzor (B)` | [`compat::tenzor`] |
-//! | `[R, P] = krpaCoons (c1, c2, d1, d2, P1, P2, P3, P4)` | [`compat::krpa_coons`] |
-//! | `[T, rc, rd, rcd] = vrednostCoons (u, v, c1, c2, d1, d2, P1, P2, P3, P4)` | [`compat::vrednost_coons`] |
-//! | `[R, P] = krpaGordon (g_u, g_v, g_uv, x_u, x_v, N)` | [`compat::krpa_gordon`] |
-//! | `v = Lagrange (x, m, u)` | [`compat::lagrange`] |
+//! | `T = deCasteljau (kontrolneT, N)` | [`BezierCurve::eval_many_into`] |
+//! | `P = ploskevB (kontrolneT, N)` | [`compat::tenzor`], [`BezierPatch::eval_grid_into`] |
+//! | `L = bilinearna (B, u, v, N)` | the twin [`compat::bilinearna`] |
+//! | `A = tenzor (B)` | the twin [`compat::tenzor`] |
+//! | `[R, P] = krpaCoons (c1, c2, d1, d2, P1, P2, P3, P4)` | [`CoonsPatch::with_corners`] of [`SampledCurve`]s, [`CoonsPatch::eval_grid_into`] |
+//! | `[T, rc, rd, rcd] = vrednostCoons (u, v, c1, c2, d1, d2, P1, P2, P3, P4)` | the twin [`compat::vrednost_coons`] |
+//! | `[R, P] = krpaGordon (g_u, g_v, g_uv, x_u, x_v, N)` | the twin [`compat::krpa_gordon`] |
+//! | `v = Lagrange (x, m, u)` | the twin [`compat::lagrange`] |
+//!
+//! The twins of `cagd_octave::compat` reproduce the fixed Octave code operation by operation
+//! (bit for bit on the reference cases) but evaluate point by point. For the three functions
+//! that sample whole curves and grids the package calls the core's grid evaluation instead:
+//! the same checks and the same constructions, evaluated by Bernstein sums (`deCasteljau`,
+//! `ploskevB`) and by the regrouped Coons formula (`krpaCoons`), one to three orders of
+//! magnitude faster. The values then agree with the fixed Octave code within a few units of
+//! rounding of the scale of the data (4 ULPs or `1e-14` relative to the largest value of the
+//! array), which `octave_pkg/tests/` checks on the thesis's examples and on random cases.
 //!
 //! The drawing the originals did when called without an output is done by the package's `.m`
 //! files with Octave's own `plot3` and `surf`.
 
+use cagd::bezier::{BezierCurve, BezierPatch};
+use cagd::coons::{CoonsPatch, Tolerance};
+use cagd::param::SampledCurve;
 use cagd_octave::compat;
+use nalgebra::{DMatrix, DVector};
 use ndarray::{ArrayView, ArrayView2, Dimension};
 
 use crate::args::Call;
@@ -92,11 +105,44 @@ pub fn de_casteljau(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     let p = net(call, 0, "kontrolneT", form)?;
     let n = call.count(1, "N")?;
     call.check_samples("N", n)?;
-    let degree = p.ncols() - 1;
-    call.check_degree("kontrolneT (degree)", degree)?;
-    call.check_work("N", n, (degree + 1) * (degree + 1) * p.nrows())?;
-    let t = twin(compat::de_casteljau(p, n), "de_casteljau")?;
-    emit_array(sink, 0, &octave_dims(t.shape()), t.view())
+    let (d, points) = p.dim();
+    call.check_degree("kontrolneT (degree)", points - 1)?;
+    call.check_work("N", n, points * (points + d))?;
+    cagd::error::check_finite("kontrolneT", p.t().iter())?;
+    let curve = BezierCurve::new(DMatrix::from_fn(d, points, |i, j| p[[i, j]]))?;
+    // `d × N` column-major is the core's `N × d` row-major: written in place.
+    let out = sink.real(0, &[d, n])?;
+    curve.eval_many_into(&cagd::linspace(0.0, 1.0, n), out)?;
+    Ok(())
+}
+
+/// Writes a grid held row-major as `(nu, nv, 3)` as Octave's `nu × nv × 3` array (the layout
+/// of `P` in `ploskevB`, `krpaCoons`, `krpaGordon`).
+fn emit_thesis_grid(
+    sink: &mut dyn Sink,
+    index: usize,
+    (nu, nv): (usize, usize),
+    grid: &[f64],
+) -> Result<()> {
+    let out = sink.real(index, &[nu, nv, 3])?;
+    for (k, x) in grid.iter().enumerate() {
+        let (point, c) = (k / 3, k % 3);
+        let (i, j) = (point / nv, point % nv);
+        out[i + nu * (j + nv * c)] = *x;
+    }
+    Ok(())
+}
+
+/// Writes a grid held row-major as `(N, N, 3)` as the packed `N × 3N` matrix `R` of
+/// `krpaCoons` and `krpaGordon`: `R(i, 3j+c) = P(i, j, c)`.
+fn emit_packed(sink: &mut dyn Sink, index: usize, n: usize, grid: &[f64]) -> Result<()> {
+    let out = sink.real(index, &[n, 3 * n])?;
+    for (k, x) in grid.iter().enumerate() {
+        let (point, c) = (k / 3, k % 3);
+        let (i, j) = (point / n, point % n);
+        out[i + n * (3 * j + c)] = *x;
+    }
+    Ok(())
 }
 
 /// `P = ploskevB (kontrolneT, N)`.
@@ -108,9 +154,17 @@ pub fn ploskev_b(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     call.check_grid("N", n, n)?;
     let (dm, dn) = net_degrees(&b);
     call.check_degree("kontrolneT (degree)", dm.max(dn))?;
-    call.check_work("N", n * n, (dm + 1) * (dn + 1) * (dm.min(dn) + 1) * 3)?;
-    let p = twin(compat::ploskev_b(b, n), "ploskev_b")?;
-    emit_array(sink, 0, &octave_dims(p.shape()), p.view())
+    call.check_work("N", n * n, (dm + dn + 2) * 3)?;
+    let a = twin(compat::tenzor(b), "tenzor")?;
+    let (rows, cols, _) = a.dim();
+    let coords = (0..3)
+        .map(|c| DMatrix::from_fn(rows, cols, |i, j| a[[i, j, c]]))
+        .collect();
+    let patch = BezierPatch::new(coords)?;
+    let t = cagd::linspace(0.0, 1.0, n);
+    let mut grid = vec![0.0; n * n * 3];
+    patch.eval_grid_into(&t, &t, &mut grid)?;
+    emit_thesis_grid(sink, 0, (n, n), &grid)
 }
 
 /// `L = bilinearna (B, u, v, N)`.
@@ -141,23 +195,57 @@ pub fn tenzor(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
 pub fn krpa_coons(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     call.nargin(8, 8, "[R, P] = krpaCoons (c1, c2, d1, d2, P1, P2, P3, P4)")?;
     call.nargout_max(2)?;
-    let names = ["c1", "c2", "d1", "d2", "P1", "P2", "P3", "P4"];
+    const NAMES: [&str; 8] = ["c1", "c2", "d1", "d2", "P1", "P2", "P3", "P4"];
     let mut views = Vec::with_capacity(8);
-    for (i, name) in names.iter().enumerate() {
+    for (i, name) in NAMES.iter().enumerate() {
         let form = if i < 4 { SAMPLED_FORM } else { POINT_FORM };
         views.push(net(call, i, name, form)?);
     }
     let n = views[0].ncols();
+    for (k, v) in views.iter().enumerate() {
+        let want = if k < 4 { (3, n) } else { (3, 1) };
+        if v.dim() != want {
+            return Err(cagd::Error::ShapeMismatch {
+                what: NAMES[k],
+                expected: format!("{}×{}", want.0, want.1),
+                found: format!("{}×{}", v.nrows(), v.ncols()),
+            }
+            .into());
+        }
+        cagd::error::check_finite(NAMES[k], v.t().iter())?;
+    }
+    if n < 2 {
+        return Err(cagd::Error::TooFewPoints {
+            what: "c1 (samples N)",
+            min: 2,
+            found: n,
+        }
+        .into());
+    }
     call.check_grid("c1 (samples N)", n, n)?;
-    let s = twin(
-        compat::krpa_coons(
-            views[0], views[1], views[2], views[3], views[4], views[5], views[6], views[7],
-        ),
-        "krpa_coons",
+    let t = cagd::linspace(0.0, 1.0, n);
+    let curve = |v: &ArrayView2<'_, f64>| {
+        SampledCurve::new(t.clone(), DMatrix::from_fn(3, n, |i, j| v[[i, j]]))
+    };
+    let corner = |v: &ArrayView2<'_, f64>| DVector::from_fn(3, |i, _| v[[i, 0]]);
+    let patch = CoonsPatch::with_corners(
+        curve(&views[0])?,
+        curve(&views[1])?,
+        curve(&views[2])?,
+        curve(&views[3])?,
+        [
+            corner(&views[4]),
+            corner(&views[5]),
+            corner(&views[6]),
+            corner(&views[7]),
+        ],
+        Tolerance::default(),
     )?;
-    emit_array(sink, 0, &octave_dims(s.r.shape()), s.r.view())?;
+    let mut grid = vec![0.0; n * n * 3];
+    patch.eval_grid_into(&t, &t, &mut grid)?;
+    emit_packed(sink, 0, n, &grid)?;
     if call.nargout > 1 {
-        emit_array(sink, 1, &octave_dims(s.p.shape()), s.p.view())?;
+        emit_thesis_grid(sink, 1, (n, n), &grid)?;
     }
     Ok(())
 }
