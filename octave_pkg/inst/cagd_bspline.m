@@ -25,6 +25,6 @@ endfunction
 %!assert (cagd_bspline (2, [0 1 2; 0 2 0], [], [0 0.5 1]), [0 1 2; 0 1 0])
 %!assert (cagd_bspline (2, [0 1 2 3], [0 0 0 0.5 1 1 1], [0 0.5 1]), [0 1.5 3])
 %!assert (cagd_bspline (2, [0 1 2 3], [0 0 0 0.5 1 1 1], 0.25, "exact"), {"7/8"})
-%!assert (cagd_bspline (2, [0 1 2 3], "[0 0 0 1/3 1 1 1]", "1/3", "exact"), {"1"})
+%!assert (cagd_bspline (2, [0 1 2 3], "[0 0 0 1/3 1 1 1]", "1/3", "exact"), {"4/3"})
 %!error <expected 7 knots> cagd_bspline (2, [0 1 2 3], [0 0 0 1 1 1], 0.5)
 %!error <outside the domain> cagd_bspline (2, [0 1 2 3], [0 0 0 0.5 1 1 1], 1.5)
