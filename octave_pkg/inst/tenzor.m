@@ -5,7 +5,7 @@
 ##
 ## @var{B} is @math{(m+1) × 3(n+1)}: row @math{k} holds the points
 ## @math{b_{k-1,0}, @dots{}, b_{k-1,n}} one after the other as x y z triples,
-## @code{B(k, 3*l-2:3*l) = b_{k-1,l-1}}.  @var{A} is @math{(m+1) × (n+1) × 3},
+## @code{B(k, 3*l-2:3*l)} = @math{b_{k-1,l-1}}.  @var{A} is @math{(m+1) × (n+1) × 3},
 ## @code{A(k,l,:) = B(k, 3*l-2:3*l)}.  The values are copied bit for bit.
 ##
 ## Fixed in the original: a number of columns that is not a multiple of 3 silently dropped
