@@ -27,7 +27,7 @@ fn emit_with_parts<T: Number>(
     }
     // The point and its parts from one evaluation, so that x = part1 + part2 − part3 holds
     // in the numbers returned.
-    let mut out: Vec<Vec<T>> = vec![Vec::with_capacity(nu * nv * d); 4];
+    let mut out: Vec<Vec<T>> = (0..4).map(|_| Vec::with_capacity(nu * nv * d)).collect();
     for a in u {
         for b in v {
             for (o, p) in out.iter_mut().zip(parts(a.clone(), b.clone())) {
