@@ -60,7 +60,9 @@ def drop_sections(text, names):
 root = rust / "Cargo.toml"
 text = root.read_text()
 text = re.sub(r"(?ms)^members = \[.*?\]\n", "members = [\".\", " + ", ".join(f'"{c}"' for c in shipped) + "]\n", text, count=1)
-text = re.sub(r"(?m)^default-members = .*\n", "", text)
+text = re.sub(r"(?ms)^(# [^\n]*\n)*default-members = \[.*?\]\n", "", text)
+text = "# The Rust workspace of the Octave package cagd, written by octave_pkg/build.sh from the\n" \
+       "# checkout's Cargo.toml: the core and the three crates the oct-file links.\n" + text
 text = re.sub(r'(?m)^cagd-(cli|test-support) = \{ path = .*\n', "", text)
 text = drop_sections(text, {"dev-dependencies"})
 root.write_text(text)

@@ -17,7 +17,7 @@
 //! [`BSplineCurve::insert_knots`], octave-nurbs' `bspkntins`), and each piece is evaluated by
 //! the core's Bézier batch ([`BezierCurve::eval_many_into`], Bernstein sums with sizes fixed
 //! at compile time for degrees up to 3), the weighted point `(w·x, w·y, w·z)` straight into
-//! Octave's array and the weight beside it, then divided. This avoids the `p(p+1)/2` divisions
+//! Octave's array and the weight beside it, then multiplied by `1/w`. This avoids the `p(p+1)/2` divisions
 //! per point of the triangular B-spline basis; the values agree with `nrbeval` to rounding
 //! (knot insertion and Bernstein sums are convex combinations). Other curves take the core's
 //! [`NurbsCurve::try_eval_many_into`].
@@ -327,13 +327,17 @@ fn nrbeval_curve(call: &Call<'_, '_>, sink: &mut dyn Sink, nurbs: &Nurbs<'_>) ->
     if call.nargout < 2 {
         let (lo, hi) = curve.domain();
         check_domain(t, lo, hi)?;
-        let pieces = bezier_pieces(curve.homogeneous())?;
+        // Cutting the curve into pieces pays from a few hundred points on.
+        let sorted = t.len() >= PIECES_FROM && t.windows(2).all(|w| w[0] <= w[1]);
+        let pieces = if sorted {
+            bezier_pieces(curve.homogeneous())?
+        } else {
+            None
+        };
         let out = sink.real(0, &p_dims)?;
         match pieces {
-            Some(pieces) if t.windows(2).all(|w| w[0] <= w[1]) => {
-                eval_pieces(&pieces, t, out)?;
-            }
-            _ => curve.try_eval_many_into(t, out)?,
+            Some(pieces) => eval_pieces(&pieces, t, out)?,
+            None => curve.try_eval_many_into(t, out)?,
         }
         return Ok(());
     }
@@ -341,6 +345,9 @@ fn nrbeval_curve(call: &Call<'_, '_>, sink: &mut dyn Sink, nurbs: &Nurbs<'_>) ->
     curve.homogeneous().try_eval_many_into(t, &mut h)?;
     emit_points(call, sink, &h, &p_dims, &w_dims)
 }
+
+/// The number of parameters from which a curve is evaluated by its Bézier pieces.
+const PIECES_FROM: usize = 256;
 
 /// One Bézier piece of a homogeneous curve: its interval, the curve of its weighted points
 /// `(w·x, w·y, w·z)` and the curve of its weights as the plane curve `(w, 0)` (plane and
@@ -419,8 +426,9 @@ fn eval_pieces(pieces: &[Piece], t: &[f64], out: &mut [f64]) -> Result<()> {
         start = end;
     }
     for (x, w) in out.chunks_exact_mut(3).zip(w.chunks_exact(2)) {
+        let r = 1.0 / w[0];
         for c in x {
-            *c /= w[0];
+            *c *= r;
         }
     }
     Ok(())
@@ -703,4 +711,150 @@ pub fn findspan(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
         *o = s as f64;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::value::{Output, Real, VecSink};
+    use cagd::Limits;
+
+    /// A small deterministic generator (SplitMix64) for the tests.
+    struct Rng(u64);
+
+    impl Rng {
+        fn unit(&mut self) -> f64 {
+            self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+            let mut z = self.0;
+            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+            ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+        }
+    }
+
+    /// Clamped knots of degree `p` for `n` points, interior knots repeated up to `p` times.
+    fn knots(rng: &mut Rng, p: usize, n: usize) -> Vec<f64> {
+        let mut interior = Vec::new();
+        while interior.len() < n - p - 1 {
+            let x = 0.05 + 0.9 * rng.unit();
+            let m = (1 + (rng.unit() * p as f64) as usize).min(n - p - 1 - interior.len());
+            interior.extend(std::iter::repeat_n(x, m));
+        }
+        interior.sort_by(f64::total_cmp);
+        let mut k = vec![0.0; p + 1];
+        k.extend(interior);
+        k.extend(std::iter::repeat_n(1.0, p + 1));
+        k
+    }
+
+    #[test]
+    fn bezier_pieces_give_the_curve() {
+        let mut rng = Rng(7);
+        for case in 0..60 {
+            let p = 1 + case % 5;
+            let n = p + 1 + (rng.unit() * 7.0) as usize;
+            let h = DMatrix::from_fn(4, n, |r, _| {
+                if r == 3 {
+                    0.3 + 2.7 * rng.unit()
+                } else {
+                    2.0 * rng.unit() - 1.0
+                }
+            });
+            let b = BSplineCurve::new(p, knots(&mut rng, p, n), h).unwrap();
+            let curve = NurbsCurve::from_homogeneous(b).unwrap();
+            let pieces = bezier_pieces(curve.homogeneous()).unwrap().unwrap();
+            let t = cagd::linspace(0.0, 1.0, 301);
+            let (mut fast, mut slow) = (vec![0.0; 3 * t.len()], vec![0.0; 3 * t.len()]);
+            eval_pieces(&pieces, &t, &mut fast).unwrap();
+            curve.try_eval_many_into(&t, &mut slow).unwrap();
+            let scale = slow.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+            for (a, b) in fast.iter().zip(&slow) {
+                assert!(
+                    (a - b).abs() <= 1e-13 * scale,
+                    "case {case} (degree {p}): {a} vs {b}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn unclamped_knots_have_no_pieces() {
+        let h = DMatrix::from_element(4, 4, 1.0);
+        let b = BSplineCurve::new(2, vec![0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0], h).unwrap();
+        assert!(bezier_pieces(&b).unwrap().is_none());
+    }
+
+    /// `nrbmak ([0 1 3 4; 0 2 -1 1; 0 1 2 0; 1 1 1 1], [0 0 0 0 1 1 1 1])` as Octave passes it.
+    fn cubic<'a>(coefs: &'a [f64], knots: &'a [f64]) -> Value<'a> {
+        Value::Struct {
+            fields: vec![
+                (
+                    "form",
+                    Value::Char {
+                        dims: &[1, 7],
+                        bytes: b"B-NURBS",
+                    },
+                ),
+                (
+                    "coefs",
+                    Value::Real(Real {
+                        dims: &[4, 4],
+                        data: coefs,
+                    }),
+                ),
+                (
+                    "knots",
+                    Value::Real(Real {
+                        dims: &[1, 8],
+                        data: knots,
+                    }),
+                ),
+                (
+                    "order",
+                    Value::Real(Real {
+                        dims: &[1, 1],
+                        data: &[4.0],
+                    }),
+                ),
+            ],
+        }
+    }
+
+    #[test]
+    fn nrbeval_layouts() {
+        let coefs = [
+            0.0, 0.0, 0.0, 1.0, 1.0, 2.0, 1.0, 1.0, 3.0, -1.0, 2.0, 1.0, 4.0, 1.0, 0.0, 1.0,
+        ];
+        let knots = [0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0];
+        let t: Vec<f64> = cagd::linspace(0.0, 1.0, 600);
+        let mut limits = Limits::default();
+        let run = |dims: &[usize], nargout: usize, limits: &mut Limits| {
+            let args = [cubic(&coefs, &knots), Value::Real(Real { dims, data: &t })];
+            let mut out = VecSink::default();
+            crate::call("cagd_nrbeval", &args, nargout, limits, &mut out).unwrap();
+            out
+        };
+        // A row: 3 × n; a column: [3, n, 1]; two outputs: homogeneous points and weights.
+        let row = run(&[1, 600], 1, &mut limits);
+        assert_eq!(row.get(0).dims(), &[3, 600]);
+        let col = run(&[600, 1], 1, &mut limits);
+        assert_eq!(col.get(0).dims(), &[3, 600, 1]);
+        assert_eq!(row.get(0).data(), col.get(0).data());
+        let two = run(&[1, 600], 2, &mut limits);
+        assert!(
+            matches!(two.get(1), Output::Real(d, w) if d == &[1, 600] && w.iter().all(|&x| (x - 1.0).abs() < 1e-15))
+        );
+        // The Bézier-piece path (600 sorted parameters) is the cubic b(t): check t = 1/2.
+        let mid = &row.get(0).data()[3 * 299..3 * 300];
+        let b = cagd::BezierCurve::new(DMatrix::from_column_slice(
+            3,
+            4,
+            &[0.0, 0.0, 0.0, 1.0, 2.0, 1.0, 3.0, -1.0, 2.0, 4.0, 1.0, 0.0],
+        ))
+        .unwrap();
+        let want = b.eval(t[299]);
+        for c in 0..3 {
+            assert!((mid[c] - want[c]).abs() < 1e-15);
+        }
+    }
 }
