@@ -8,8 +8,11 @@
 ## @var{kontrolneT} is @math{d × (n+1)}, one control point per @strong{column} (row 1 = x,
 ## row 2 = y, @dots{}), any dimension @math{d ≥ 1}.  @var{T} is @math{d × N}: @code{T(:,k)} is
 ## the point at @code{t(k)}, @code{t = linspace (0, 1, N)}; @var{N} = 0 gives @math{d × 0}.
-## The numbers are those of @file{octave_ref/fixed/deCasteljau.m} (the same operations, bit for
-## bit on the reference cases).
+## The points are computed as Bernstein sums @math{Σ_i B_i^n(t) b_i} (the core's batch
+## evaluation, one to three orders of magnitude faster than point-by-point de Casteljau); they
+## agree with @file{octave_ref/fixed/deCasteljau.m} within 4 ULPs or 1e-14 of the largest
+## coordinate (the package's tests: about two thirds bit for bit, the rest a few units of
+## rounding of the scale).
 ##
 ## Called without an output argument it draws what the original drew: the curve and the
 ## control polygon with its points (@code{plot3}; @code{plot} for plane curves).

@@ -23,6 +23,10 @@
 ## @math{N × N × 3}: @code{P(i,j,:) = x(u(i), v(j))} (@code{tenzor (R)}).
 ## @end table
 ##
+## The grid is computed by the core's grid evaluation of the Coons patch (the formula
+## regrouped per row); it agrees with @file{octave_ref/fixed/krpaCoons.m} within 4 ULPs or
+## 1e-14 of the largest coordinate.
+##
 ## Called without an output argument it draws what the original drew: the patch
 ## (@code{surf}) and the boundary curves, @var{c1}, @var{c2} in red and @var{d1}, @var{d2} in
 ## green.
