@@ -24,19 +24,21 @@ trap 'rm -rf "$stage"' EXIT
 pkg="$stage/cagd"
 mkdir -p "$pkg/inst" "$pkg/src/rust/crates"
 
-cp "$here/DESCRIPTION" "$here/COPYING" "$here/INDEX" "$pkg/"
-cp "$here"/inst/*.m "$pkg/inst/"
-cp "$here/src/__cagd__.cc" "$here/src/Makefile" "$pkg/src/"
+# cp -p keeps the checkout's modification times, so that a build reusing a cargo target
+# directory (CARGO_TARGET_DIR, see src/Makefile) recompiles only what changed.
+cp -p "$here/DESCRIPTION" "$here/COPYING" "$here/INDEX" "$pkg/"
+cp -p "$here"/inst/*.m "$pkg/inst/"
+cp -p "$here/src/__cagd__.cc" "$here/src/Makefile" "$pkg/src/"
 
 rust="$pkg/src/rust"
-cp "$root/Cargo.toml" "$root/Cargo.lock" "$root/rustfmt.toml" "$rust/"
-cp -r "$root/src" "$rust/src"
+cp -p "$root/Cargo.toml" "$root/Cargo.lock" "$root/rustfmt.toml" "$rust/"
+cp -rp "$root/src" "$rust/src"
 for crate in cagd-octave cagd-octave-pkg cagd-octave-ffi; do
     mkdir -p "$rust/crates/$crate"
-    cp "$root/crates/$crate/Cargo.toml" "$rust/crates/$crate/"
-    cp -r "$root/crates/$crate/src" "$rust/crates/$crate/src"
+    cp -p "$root/crates/$crate/Cargo.toml" "$rust/crates/$crate/"
+    cp -rp "$root/crates/$crate/src" "$rust/crates/$crate/src"
     if [ -d "$root/crates/$crate/include" ]; then
-        cp -r "$root/crates/$crate/include" "$rust/crates/$crate/include"
+        cp -rp "$root/crates/$crate/include" "$rust/crates/$crate/include"
     fi
 done
 
