@@ -10,10 +10,12 @@
 % 2. `count` random NURBS (default 600: half curves, half surfaces; seed 2014): degrees 1-5,
 %    non-uniform knots with interior multiplicities up to the degree (a fifth of them
 %    unclamped), random weights in [0.3, 3], coordinates of scale 1e-2 to 1e2; curves at sorted,
-%    unsorted and column parameters, surfaces on grids {u, v} and at scattered points, with one
+%    unsorted and column parameters (few, and from 256 on, where sorted parameters are
+%    evaluated through Bezier pieces), surfaces on grids {u, v} and at scattered points, with one
 %    output and with the homogeneous [p, w]; plus bspeval, findspan and basisfun at the same
 %    knots.  cagd_nrbeval must equal nrbeval within 1e-13 relative to the scale of the result
-%    (bspeval likewise; findspan exactly; basisfun within 1e-13).
+%    (bspeval likewise; findspan exactly; basisfun within 1e-13).  Then 40 random volumes
+%    (three knot vectors) on grids {u, v, w} and at scattered points.
 % Prints the counts and the worst errors and "nurbs: OK".
 function cagd_test_nurbs (count, seed)
   if nargin < 1 || isempty (count), count = 600; end
@@ -133,7 +135,9 @@ function random_cases (count, seed)
       p = 1 + floor (5 * rand ()); n = p + 1 + floor (8 * rand ());
       U = random_knots (p, n);
       crv = nrbmak (random_coefs (n), U);
-      t = params (U(p + 1), U(n + 1), 1 + floor (200 * rand ()));
+      % Few points (the core's NURBS batch) or many (cut into Bezier pieces, from 256 sorted).
+      if rand () < 0.5, m = 1 + floor (200 * rand ()); else, m = 256 + floor (1500 * rand ()); end
+      t = params (U(p + 1), U(n + 1), m);
       if rand () < 0.2, t = t'; end
       if rand () < 0.3
         [p1, w1] = nrbeval (crv, t); [p2, w2] = cagd_nrbeval (crv, t);
@@ -191,8 +195,28 @@ function random_cases (count, seed)
       worst.surface = max (worst.surface, e); counts.surface += 1;
     end
   end
-  printf ("  random: %d curves (worst %.2g), %d surfaces (worst %.2g) against nrbeval;\n", ...
-          counts.curve, worst.curve, counts.surface, worst.surface);
+  worst.volume = 0;
+  for k = 1:40
+    p = 1 + floor (3 * rand (1, 3)); n = p + 1 + floor (3 * rand (1, 3));
+    U = {random_knots(p(1), n(1)), random_knots(p(2), n(2)), random_knots(p(3), n(3))};
+    vol = nrbmak (random_coefs (n(1), n(2), n(3)), U);
+    t = arrayfun (@(d) params (U{d}(p(d) + 1), U{d}(n(d) + 1), 1 + floor (8 * rand ())), 1:3, ...
+                  "UniformOutput", false);
+    if rand () < 0.5
+      tt = t;
+    else
+      m = min (cellfun (@numel, t));
+      tt = [t{1}(1:m); t{2}(1:m); t{3}(1:m)];
+    end
+    p1 = nrbeval (vol, tt); p2 = cagd_nrbeval (vol, tt);
+    e = rel (p2, p1);
+    if ! isequal (size (p1), size (p2)) || e > 1e-13
+      error ("nurbs: random volume %d: error %g", k, e);
+    end
+    worst.volume = max (worst.volume, e);
+  end
+  printf ("  random: %d curves (worst %.2g), %d surfaces (worst %.2g), 40 volumes (worst %.2g) against nrbeval;\n", ...
+          counts.curve, worst.curve, counts.surface, worst.surface, worst.volume);
   printf ("          %d bspeval (worst %.2g), %d findspan (exact), %d basisfun (worst %.2g);\n", ...
           counts.bspeval, worst.bspeval, counts.findspan, counts.basisfun, worst.basisfun);
   printf ("          errors relative to the largest value of each result; seed %d\n", seed);
