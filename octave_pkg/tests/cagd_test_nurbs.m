@@ -9,7 +9,8 @@
 %    must pass with the twins as they pass with the originals.
 % 2. `count` random NURBS (default 600: half curves, half surfaces; seed 2014): degrees 1-5,
 %    non-uniform knots with interior multiplicities up to the degree (a fifth of them
-%    unclamped), random weights in [0.3, 3], coordinates of scale 1e-2 to 1e2; curves at sorted,
+%    unclamped), random weights in [0.3, 3] (a fifth
+%    of them all 1, B-splines), coordinates of scale 1e-2 to 1e2; curves at sorted,
 %    unsorted and column parameters (few, and from 256 on, where sorted parameters are
 %    evaluated through Bezier pieces), surfaces on grids {u, v} and at scattered points, with one
 %    output and with the homogeneous [p, w]; plus bspeval, findspan and basisfun at the same
@@ -107,6 +108,9 @@ function C = random_coefs (varargin)
   sz = [varargin{:}];
   s = 10 ^ (4 * rand () - 2);
   w = exp (log (0.3) + (log (3) - log (0.3)) * rand ([1, sz]));
+  if rand () < 0.2
+    w(:) = 1;                         % a B-spline written as a NURBS
+  end
   C = zeros ([4, sz]);
   C(4, :) = w(:)';
   C(1:3, :) = s * (2 * rand (3, prod (sz)) - 1) .* repmat (w(:)', 3, 1);

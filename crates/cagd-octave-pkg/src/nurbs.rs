@@ -20,7 +20,10 @@
 //! Octave's array and the weight beside it, then multiplied by `1/w`. This avoids the `p(p+1)/2` divisions
 //! per point of the triangular B-spline basis; the values agree with `nrbeval` to rounding
 //! (knot insertion and Bernstein sums are convex combinations). Other curves take the core's
-//! [`NurbsCurve::try_eval_many_into`].
+//! [`NurbsCurve::try_eval_many_into`]. When every weight is exactly 1 (a B-spline written as a
+//! NURBS, the usual case) the weights are not evaluated and nothing is divided: curves and
+//! surface grids are the core's B-spline batches of the first three rows of `coefs` (the
+//! division by a weight sum of 1 only adds rounding).
 //!
 //! One deliberate difference: a parameter outside the domain `[U(p+1), U(end-p)]` is an error
 //! (`cagd:domain`) where octave-nurbs extrapolates the first or last polynomial piece.
@@ -29,6 +32,7 @@ use cagd::bezier::BezierCurve;
 use cagd::bspline::{basis_functions, find_span, BSplineCurve, BSplineSurface, KnotVector};
 use cagd::nurbs::{NurbsCurve, NurbsSurface};
 use nalgebra::DMatrix;
+use rayon::prelude::*;
 
 use crate::args::{nonempty_of, params_of, real_of, Call};
 use crate::error::{Kind, PkgError, Result};
@@ -169,6 +173,28 @@ impl Nurbs<'_> {
             coords,
         )?;
         Ok(NurbsSurface::from_homogeneous(b)?)
+    }
+
+    /// Whether every weight is exactly 1: then the NURBS is the B-spline of its first three
+    /// rows of coefficients, and the division by the weight (1 up to rounding) is left out.
+    fn unit_weights(&self) -> bool {
+        self.coefs.iter().skip(3).step_by(4).all(|&w| w == 1.0)
+    }
+
+    /// The B-spline surface of the first three rows of coefficients, directions swapped (for
+    /// unit weights, see [`unit_weights`](Self::unit_weights)).
+    fn swapped_bspline(&self) -> Result<BSplineSurface> {
+        let (n1, n2) = (self.counts[0], self.counts[1]);
+        let coords = (0..3)
+            .map(|k| DMatrix::from_fn(n2, n1, |j, i| self.coefs[k + 4 * (i + n1 * j)]))
+            .collect();
+        Ok(BSplineSurface::new(
+            self.degrees[1],
+            self.degrees[0],
+            self.knots[1].to_vec(),
+            self.knots[0].to_vec(),
+            coords,
+        )?)
     }
 
     /// The surface as it is, `S(u, v)`.
@@ -329,14 +355,21 @@ fn nrbeval_curve(call: &Call<'_, '_>, sink: &mut dyn Sink, nurbs: &Nurbs<'_>) ->
         check_domain(t, lo, hi)?;
         // Cutting the curve into pieces pays from a few hundred points on.
         let sorted = t.len() >= PIECES_FROM && t.windows(2).all(|w| w[0] <= w[1]);
+        let unit = nurbs.unit_weights();
         let pieces = if sorted {
-            bezier_pieces(curve.homogeneous())?
+            bezier_pieces(curve.homogeneous(), unit)?
         } else {
             None
         };
         let out = sink.real(0, &p_dims)?;
         match pieces {
             Some(pieces) => eval_pieces(&pieces, t, out)?,
+            None if unit => {
+                let h = curve.homogeneous();
+                let xyz = DMatrix::from_fn(3, h.control().ncols(), |i, j| h.control()[(i, j)]);
+                let b = BSplineCurve::new(h.degree(), h.knots().as_slice().to_vec(), xyz)?;
+                b.try_eval_many_into(t, out)?;
+            }
             None => curve.try_eval_many_into(t, out)?,
         }
         return Ok(());
@@ -351,19 +384,20 @@ const PIECES_FROM: usize = 256;
 
 /// One Bézier piece of a homogeneous curve: its interval, the curve of its weighted points
 /// `(w·x, w·y, w·z)` and the curve of its weights as the plane curve `(w, 0)` (plane and
-/// space curves of degree up to 3 have the core's fastest kernels).
+/// space curves of degree up to 3 have the core's fastest kernels); no weight curve when every
+/// weight is 1.
 struct Piece {
     a: f64,
     b: f64,
     weighted: BezierCurve,
-    weight: BezierCurve,
+    weight: Option<BezierCurve>,
 }
 
 /// The Bézier pieces of a homogeneous (4-D) B-spline curve whose domain ends are clamped
 /// (the first and last `p + 1` knots of the domain equal): every interior knot raised to
 /// multiplicity `p` by knot insertion, then one piece per non-empty span. `None` for other
-/// knot vectors.
-fn bezier_pieces(h: &BSplineCurve) -> Result<Option<Vec<Piece>>> {
+/// knot vectors. With `unit_weights` the pieces carry no weight curve.
+fn bezier_pieces(h: &BSplineCurve, unit_weights: bool) -> Result<Option<Vec<Piece>>> {
     let p = h.degree();
     let knots = h.knots().as_slice();
     let n = h.control().ncols();
@@ -390,47 +424,69 @@ fn bezier_pieces(h: &BSplineCurve) -> Result<Option<Vec<Piece>>> {
             let cols = rc.columns(s - p, p + 1);
             let weighted = DMatrix::from_fn(3, p + 1, |i, j| cols[(i, j)]);
             let weight = DMatrix::from_fn(2, p + 1, |i, j| if i == 0 { cols[(3, j)] } else { 0.0 });
+            let weight = if unit_weights {
+                None
+            } else {
+                Some(BezierCurve::new_on_interval(weight, rk[s], rk[s + 1])?)
+            };
             pieces.push(Piece {
                 a: rk[s],
                 b: rk[s + 1],
                 weighted: BezierCurve::new_on_interval(weighted, rk[s], rk[s + 1])?,
-                weight: BezierCurve::new_on_interval(weight, rk[s], rk[s + 1])?,
+                weight,
             });
         }
     }
     Ok(Some(pieces))
 }
 
+/// Parameters per block of [`eval_pieces`]: the weights of a block (`2 × BLOCK` numbers) and
+/// its points stay in the cache between the evaluation and the division.
+const BLOCK: usize = 4096;
+
 /// The curve at the non-decreasing parameters `t` (all in the domain) into `out` (`3` numbers
 /// per point), piece by piece: a parameter on a breakpoint belongs to the piece on its right
-/// (as `findspan`), the right end of the domain to the last piece.
+/// (as `findspan`), the right end of the domain to the last piece. Blocks of [`BLOCK`]
+/// parameters run on all cores.
 fn eval_pieces(pieces: &[Piece], t: &[f64], out: &mut [f64]) -> Result<()> {
-    let mut w = vec![0.0; 2 * t.len()];
-    let mut start = 0;
-    for (k, piece) in pieces.iter().enumerate() {
-        let last = k + 1 == pieces.len();
-        let len = t[start..]
-            .iter()
-            .take_while(|&&x| x < piece.b || (last && x <= piece.b))
-            .count();
-        let end = start + len;
-        if len > 0 {
-            debug_assert!(t[start] >= piece.a);
-            piece
-                .weighted
-                .eval_many_into(&t[start..end], &mut out[3 * start..3 * end])?;
-            piece
-                .weight
-                .eval_many_into(&t[start..end], &mut w[2 * start..2 * end])?;
+    let block = |(ts, out): (&[f64], &mut [f64])| -> cagd::Result<()> {
+        let mut w = [0.0; 2 * BLOCK];
+        let mut start = 0;
+        // The first piece holding ts[0]: the last whose start is at most ts[0].
+        let first = pieces.partition_point(|p| p.a <= ts[0]).saturating_sub(1);
+        for (k, piece) in pieces.iter().enumerate().skip(first) {
+            if start == ts.len() {
+                break;
+            }
+            let last = k + 1 == pieces.len();
+            let len = ts[start..]
+                .iter()
+                .take_while(|&&x| x < piece.b || (last && x <= piece.b))
+                .count();
+            let end = start + len;
+            if len > 0 {
+                piece
+                    .weighted
+                    .eval_many_into(&ts[start..end], &mut out[3 * start..3 * end])?;
+                if let Some(weight) = &piece.weight {
+                    weight.eval_many_into(&ts[start..end], &mut w[2 * start..2 * end])?;
+                }
+            }
+            start = end;
         }
-        start = end;
-    }
-    for (x, w) in out.chunks_exact_mut(3).zip(w.chunks_exact(2)) {
-        let r = 1.0 / w[0];
-        for c in x {
-            *c *= r;
+        if pieces[0].weight.is_some() {
+            for (x, w) in out.chunks_exact_mut(3).zip(w.chunks_exact(2)) {
+                let r = 1.0 / w[0];
+                for c in x {
+                    *c *= r;
+                }
+            }
         }
-    }
+        Ok(())
+    };
+    t.par_chunks(BLOCK)
+        .zip(out.par_chunks_mut(3 * BLOCK))
+        .try_for_each(block)?;
     Ok(())
 }
 
@@ -467,6 +523,11 @@ fn nrbeval_surface(call: &Call<'_, '_>, sink: &mut dyn Sink, nurbs: &Nurbs<'_>) 
         check_domain(us, u0, u1)?;
         check_domain(vs, v0, v1)?;
         let p_dims = [3, us.len(), vs.len()];
+        if call.nargout < 2 && nurbs.unit_weights() {
+            let out = sink.real(0, &p_dims)?;
+            nurbs.swapped_bspline()?.eval_grid_into(vs, us, out)?;
+            return Ok(());
+        }
         if call.nargout < 2 {
             let out = sink.real(0, &p_dims)?;
             s.eval_grid_into(vs, us, out)?;
@@ -753,16 +814,15 @@ mod tests {
         for case in 0..60 {
             let p = 1 + case % 5;
             let n = p + 1 + (rng.unit() * 7.0) as usize;
-            let h = DMatrix::from_fn(4, n, |r, _| {
-                if r == 3 {
-                    0.3 + 2.7 * rng.unit()
-                } else {
-                    2.0 * rng.unit() - 1.0
-                }
+            let unit = case % 3 == 0;
+            let h = DMatrix::from_fn(4, n, |r, _| match r {
+                3 if unit => 1.0,
+                3 => 0.3 + 2.7 * rng.unit(),
+                _ => 2.0 * rng.unit() - 1.0,
             });
             let b = BSplineCurve::new(p, knots(&mut rng, p, n), h).unwrap();
             let curve = NurbsCurve::from_homogeneous(b).unwrap();
-            let pieces = bezier_pieces(curve.homogeneous()).unwrap().unwrap();
+            let pieces = bezier_pieces(curve.homogeneous(), unit).unwrap().unwrap();
             let t = cagd::linspace(0.0, 1.0, 301);
             let (mut fast, mut slow) = (vec![0.0; 3 * t.len()], vec![0.0; 3 * t.len()]);
             eval_pieces(&pieces, &t, &mut fast).unwrap();
@@ -781,7 +841,7 @@ mod tests {
     fn unclamped_knots_have_no_pieces() {
         let h = DMatrix::from_element(4, 4, 1.0);
         let b = BSplineCurve::new(2, vec![0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0], h).unwrap();
-        assert!(bezier_pieces(&b).unwrap().is_none());
+        assert!(bezier_pieces(&b, false).unwrap().is_none());
     }
 
     /// `nrbmak ([0 1 3 4; 0 2 -1 1; 0 1 2 0; 1 1 1 1], [0 0 0 0 1 1 1 1])` as Octave passes it.
