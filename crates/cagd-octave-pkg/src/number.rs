@@ -36,6 +36,22 @@ pub trait Number: cagd::Scalar + LiteralScalar {
     /// # Errors
     /// [`Kind::Memory`].
     fn emit(sink: &mut dyn Sink, index: usize, dims: &[usize], values: &[Self]) -> Result<()>;
+
+    /// Output `index` of size `dims`, its values (column-major) written by `fill`: doubles
+    /// straight into Octave's array, rationals into a vector turned into fractions.
+    ///
+    /// # Errors
+    /// [`Kind::Memory`]; `fill`'s error.
+    fn emit_with(
+        sink: &mut dyn Sink,
+        index: usize,
+        dims: &[usize],
+        fill: &mut dyn FnMut(&mut [Self]) -> cagd::Result<()>,
+    ) -> Result<()> {
+        let mut values = vec![Self::zero(); dims.iter().product()];
+        fill(&mut values)?;
+        Self::emit(sink, index, dims, &values)
+    }
 }
 
 impl Number for f64 {
@@ -46,6 +62,15 @@ impl Number for f64 {
     fn emit(sink: &mut dyn Sink, index: usize, dims: &[usize], values: &[f64]) -> Result<()> {
         sink.real(index, dims)?.copy_from_slice(values);
         Ok(())
+    }
+
+    fn emit_with(
+        sink: &mut dyn Sink,
+        index: usize,
+        dims: &[usize],
+        fill: &mut dyn FnMut(&mut [f64]) -> cagd::Result<()>,
+    ) -> Result<()> {
+        Ok(fill(sink.real(index, dims)?)?)
     }
 }
 

@@ -338,7 +338,7 @@ fn nrbeval_curve(call: &Call<'_, '_>, sink: &mut dyn Sink, nurbs: &Nurbs<'_>) ->
         other => other,
     };
     let r = real_of(tt, "tt", "the curve parameters (a double array)")?;
-    let t = params_of(tt, "tt")?;
+    let t = r.data;
     let curve = nurbs.curve()?;
     call.check_samples("tt", t.len())?;
     call.check_work("tt", t.len(), (curve.degree() + 1) * (curve.degree() + 5))?;
@@ -350,33 +350,45 @@ fn nrbeval_curve(call: &Call<'_, '_>, sink: &mut dyn Sink, nurbs: &Nurbs<'_>) ->
         p.extend_from_slice(r.dims);
         (p, r.dims.to_vec())
     };
-    if call.nargout < 2 {
-        let (lo, hi) = curve.domain();
-        check_domain(t, lo, hi)?;
-        // Cutting the curve into pieces pays from a few hundred points on.
-        let sorted = t.len() >= PIECES_FROM && t.windows(2).all(|w| w[0] <= w[1]);
-        let unit = nurbs.unit_weights();
-        let pieces = if sorted {
-            bezier_pieces(curve.homogeneous(), unit)?
-        } else {
-            None
-        };
-        let out = sink.real(0, &p_dims)?;
-        match pieces {
-            Some(pieces) => eval_pieces(&pieces, t, out)?,
-            None if unit => {
-                let h = curve.homogeneous();
-                let xyz = DMatrix::from_fn(3, h.control().ncols(), |i, j| h.control()[(i, j)]);
-                let b = BSplineCurve::new(h.degree(), h.knots().as_slice().to_vec(), xyz)?;
-                b.try_eval_many_into(t, out)?;
+    // One pass over the parameters: finite, in the domain, and whether they are sorted.
+    let (lo, hi) = curve.domain();
+    let mut sorted = true;
+    for (k, &x) in t.iter().enumerate() {
+        if !x.is_finite() {
+            return Err(cagd::Error::NonFinite {
+                what: "tt",
+                index: k,
+                value: x,
             }
-            None => curve.try_eval_many_into(t, out)?,
+            .into());
         }
-        return Ok(());
+        check_domain(&[x], lo, hi)?;
+        sorted &= k == 0 || t[k - 1] <= x;
     }
-    let mut h = vec![0.0; 4 * t.len()];
-    curve.homogeneous().try_eval_many_into(t, &mut h)?;
-    emit_points(call, sink, &h, &p_dims, &w_dims)
+    if call.nargout >= 2 {
+        let mut h = vec![0.0; 4 * t.len()];
+        curve.homogeneous().eval_many_into(t, &mut h)?;
+        return emit_points(call, sink, &h, &p_dims, &w_dims);
+    }
+    // Cutting the curve into pieces pays from a few hundred points on.
+    let unit = nurbs.unit_weights();
+    let pieces = if sorted && t.len() >= PIECES_FROM {
+        bezier_pieces(curve.homogeneous(), unit)?
+    } else {
+        None
+    };
+    let out = sink.real(0, &p_dims)?;
+    match pieces {
+        Some(pieces) => eval_pieces(&pieces, t, out)?,
+        None if unit => {
+            let h = curve.homogeneous();
+            let xyz = DMatrix::from_fn(3, h.control().ncols(), |i, j| h.control()[(i, j)]);
+            let b = BSplineCurve::new(h.degree(), h.knots().as_slice().to_vec(), xyz)?;
+            b.eval_many_into(t, out)?;
+        }
+        None => curve.eval_many_into(t, out)?,
+    }
+    Ok(())
 }
 
 /// The number of parameters from which a curve is evaluated by its Bézier pieces.
@@ -449,44 +461,57 @@ const BLOCK: usize = 4096;
 /// (as `findspan`), the right end of the domain to the last piece. Blocks of [`BLOCK`]
 /// parameters run on all cores.
 fn eval_pieces(pieces: &[Piece], t: &[f64], out: &mut [f64]) -> Result<()> {
-    let block = |(ts, out): (&[f64], &mut [f64])| -> cagd::Result<()> {
-        let mut w = [0.0; 2 * BLOCK];
-        let mut start = 0;
-        // The first piece holding ts[0]: the last whose start is at most ts[0].
-        let first = pieces.partition_point(|p| p.a <= ts[0]).saturating_sub(1);
-        for (k, piece) in pieces.iter().enumerate().skip(first) {
-            if start == ts.len() {
-                break;
-            }
-            let last = k + 1 == pieces.len();
-            let len = ts[start..]
-                .iter()
-                .take_while(|&&x| x < piece.b || (last && x <= piece.b))
-                .count();
-            let end = start + len;
-            if len > 0 {
-                piece
-                    .weighted
-                    .eval_many_into(&ts[start..end], &mut out[3 * start..3 * end])?;
-                if let Some(weight) = &piece.weight {
-                    weight.eval_many_into(&ts[start..end], &mut w[2 * start..2 * end])?;
-                }
-            }
-            start = end;
-        }
-        if pieces[0].weight.is_some() {
+    // Unit weights: nothing to divide, each piece's run straight into the output (the core
+    // splits long runs over the cores itself).
+    if pieces[0].weight.is_none() {
+        return Ok(eval_runs(pieces, t, out, &mut [])?);
+    }
+    t.par_chunks(BLOCK)
+        .zip(out.par_chunks_mut(3 * BLOCK))
+        .try_for_each(|(ts, out)| {
+            let mut w = vec![0.0; 2 * ts.len()];
+            eval_runs(pieces, ts, out, &mut w)?;
             for (x, w) in out.chunks_exact_mut(3).zip(w.chunks_exact(2)) {
                 let r = 1.0 / w[0];
                 for c in x {
                     *c *= r;
                 }
             }
-        }
-        Ok(())
+            Ok::<(), cagd::Error>(())
+        })?;
+    Ok(())
+}
+
+/// The weighted points (into `out`, 3 per point) and, for pieces with a weight curve, the
+/// weights (into `w`, 2 per point) at the non-decreasing parameters `ts`, each run of
+/// parameters by the piece holding it.
+fn eval_runs(pieces: &[Piece], ts: &[f64], out: &mut [f64], w: &mut [f64]) -> cagd::Result<()> {
+    let Some(&t0) = ts.first() else {
+        return Ok(());
     };
-    t.par_chunks(BLOCK)
-        .zip(out.par_chunks_mut(3 * BLOCK))
-        .try_for_each(block)?;
+    let mut start = 0;
+    // The first piece holding ts[0]: the last whose start is at most ts[0].
+    let first = pieces.partition_point(|p| p.a <= t0).saturating_sub(1);
+    for (k, piece) in pieces.iter().enumerate().skip(first) {
+        if start == ts.len() {
+            break;
+        }
+        let last = k + 1 == pieces.len();
+        let len = ts[start..]
+            .iter()
+            .take_while(|&&x| x < piece.b || (last && x <= piece.b))
+            .count();
+        let end = start + len;
+        if len > 0 {
+            piece
+                .weighted
+                .eval_many_into(&ts[start..end], &mut out[3 * start..3 * end])?;
+            if let Some(weight) = &piece.weight {
+                weight.eval_many_into(&ts[start..end], &mut w[2 * start..2 * end])?;
+            }
+        }
+        start = end;
+    }
     Ok(())
 }
 

@@ -21,9 +21,9 @@ fn emit_points<T: Number>(
     let n = curve.degree();
     call.check_samples("t", t.len())?;
     call.check_work("t", t.len(), cost::<T>((n + 1) * (n + 1 + d), n + 1))?;
-    let mut out = vec![T::zero(); d * t.len()];
-    curve.eval_many_into(t, &mut out)?;
-    T::emit(sink, index, &[d, t.len()], &out)
+    T::emit_with(sink, index, &[d, t.len()], &mut |out| {
+        curve.eval_many_into(t, out)
+    })
 }
 
 native!(

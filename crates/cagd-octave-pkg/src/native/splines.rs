@@ -35,13 +35,11 @@ fn emit_curve_points<T: Number>(
     sink: &mut dyn Sink,
     (d, t): (usize, &[T]),
     per_point: usize,
-    fill: impl FnOnce(&mut [T]) -> cagd::Result<()>,
+    mut fill: impl FnMut(&mut [T]) -> cagd::Result<()>,
 ) -> Result<()> {
     call.check_samples("t", t.len())?;
     call.check_work("t", t.len(), per_point)?;
-    let mut out = vec![T::zero(); d * t.len()];
-    fill(&mut out)?;
-    T::emit(sink, 0, &[d, t.len()], &out)
+    T::emit_with(sink, 0, &[d, t.len()], &mut fill)
 }
 
 /// The knots of argument `i`, or for `[]` the clamped uniform knots on `[0, 1]`.
