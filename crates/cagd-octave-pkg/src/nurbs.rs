@@ -12,18 +12,19 @@
 //! vectors) are sums of the core's B-spline basis values, along `w`, then `v`, then `u`, as
 //! `nrbeval` does.
 //!
-//! A curve at non-decreasing parameters (the usual `linspace`) is evaluated piece by piece:
-//! its homogeneous B-spline is cut into Bézier pieces by knot insertion (the core's
-//! [`BSplineCurve::insert_knots`], octave-nurbs' `bspkntins`), and each piece is evaluated by
-//! the core's Bézier batch ([`BezierCurve::eval_many_into`], Bernstein sums with sizes fixed
-//! at compile time for degrees up to 3), the weighted point `(w·x, w·y, w·z)` straight into
-//! Octave's array and the weight beside it, then multiplied by `1/w`. This avoids the `p(p+1)/2` divisions
-//! per point of the triangular B-spline basis; the values agree with `nrbeval` to rounding
-//! (knot insertion and Bernstein sums are convex combinations). Other curves take the core's
-//! [`NurbsCurve::try_eval_many_into`]. When every weight is exactly 1 (a B-spline written as a
+//! A curve at a few hundred or more non-decreasing parameters (the usual `linspace`) is
+//! evaluated piece by piece: its homogeneous B-spline is cut into Bézier pieces by knot
+//! insertion (the core's [`BSplineCurve::insert_knots`], octave-nurbs' `bspkntins`), and each
+//! piece is evaluated by the core's Bézier batch ([`BezierCurve::eval_many_into`], Bernstein
+//! sums with sizes fixed at compile time for degrees up to 3): the weighted points
+//! `(w·x, w·y, w·z)` straight into Octave's array and the weights beside them, in blocks that
+//! stay in the cache, then multiplied by `1/w`. This avoids the `p(p+1)/2` divisions per point
+//! of the triangular B-spline basis; the values agree with `nrbeval` to rounding (knot
+//! insertion and Bernstein sums are convex combinations). Other curves take the core's
+//! [`NurbsCurve::eval_many_into`]. When every weight is exactly 1 (a B-spline written as a
 //! NURBS, the usual case) the weights are not evaluated and nothing is divided: curves and
-//! surface grids are the core's B-spline batches of the first three rows of `coefs` (the
-//! division by a weight sum of 1 only adds rounding).
+//! surface grids are the core's B-spline (or Bézier-piece) batches of the first three rows of
+//! `coefs` (a division by a weight sum of 1 would only add rounding).
 //!
 //! One deliberate difference: a parameter outside the domain `[U(p+1), U(end-p)]` is an error
 //! (`cagd:domain`) where octave-nurbs extrapolates the first or last polynomial piece.
