@@ -119,6 +119,7 @@ function bench_cagd (refdir)
     "bilinearna (B, 0.3, 0.4, 1)",              @() bilinearna (B, 0.3, 0.4, 1)
     "Lagrange ([0 0.5 1], 2, 0.3)",             @() Lagrange ([0 0.5 1], 2, 0.3)
     "for comparison: nrbeval (cubic curve, 0.5)", @() nrbeval (crv, 0.5)
+    "for comparison: Octave's builtin max (1, 2)", @() max (1, 2)
   };
   printf ("\n| one call, one point | µs per call |\n|---|---|\n");
   for k = 1:rows_ (calls)
