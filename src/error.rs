@@ -121,7 +121,8 @@ pub enum Error {
         value: f64,
     },
     /// A parameter outside the domain `[min, max]` of a curve or surface (for a B-spline,
-    /// `[u_p, u_{n+1}]` of its knot vector).
+    /// `[u_p, u_n]` of its knot vector): what every `try_eval` answers to a finite parameter
+    /// outside the domain (see [`crate::param`]).
     #[error("{what}: parameter {value} is outside the domain [{min}, {max}]")]
     ParameterOutOfRange {
         /// Which argument.
@@ -133,8 +134,20 @@ pub enum Error {
         /// End of the domain.
         max: f64,
     },
-    /// A square system that has no unique solution (repeated interpolation parameters, a
-    /// singular matrix to invert).
+    /// A curve whose domain a construction cannot reparametrise onto `[0, 1]` (an infinite end,
+    /// or a start not below the end): Coons, Gordon and ruled surfaces map each curve's domain
+    /// `[a, b]` affinely onto `[0, 1]` (see [`crate::param`]).
+    #[error("{what}: its domain [{start}, {end}] cannot be mapped onto [0, 1] (expected finite ends, start below end)")]
+    UnusableDomain {
+        /// Which curve.
+        what: &'static str,
+        /// Start of its domain.
+        start: f64,
+        /// End of its domain.
+        end: f64,
+    },
+    /// A square system that has no unique solution (a singular matrix to invert, a zero
+    /// pivot of a spline system). Repeated interpolation nodes are [`Error::DuplicateNodes`].
     #[error("{what}: the system is singular ({reason})")]
     Singular {
         /// Which argument.
@@ -156,9 +169,9 @@ pub enum Error {
     #[error("boundary curves do not meet at the corners ({tolerance}): {}", format_corner_gaps(.gaps))]
     CornerMismatch {
         /// One entry per disagreeing corner.
-        gaps: Vec<crate::coons::CornerGap>,
+        gaps: Vec<crate::tolerance::CornerGap>,
         /// The tolerance the gaps were checked against.
-        tolerance: crate::coons::Tolerance,
+        tolerance: crate::tolerance::Tolerance,
     },
     /// A Gordon curve network is not compatible: the curve `g(u_i, v)` at `v = v_j` is not the
     /// curve `g(u, v_j)` at `u = u_i`. The worst pair is reported, with the number of pairs
@@ -180,7 +193,7 @@ pub enum Error {
         /// The largest gap the tolerance allows at this pair.
         allowed: f64,
         /// The tolerance the gaps were checked against.
-        tolerance: crate::coons::Tolerance,
+        tolerance: crate::tolerance::Tolerance,
         /// How many pairs are over the tolerance.
         count: usize,
     },
@@ -289,16 +302,103 @@ pub enum Error {
         /// The limit in force.
         limit: u128,
         /// Which limit: the command line names its flag and environment variable.
-        which: crate::limits::Limit,
+        which: Limit,
     },
 }
 
+/// One of the resource limits, as [`Error::TooLarge`] names it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Limit {
+    /// [`crate::limits::Limits::max_input_bytes`].
+    InputBytes,
+    /// [`crate::limits::Limits::max_expression_bytes`].
+    ExpressionBytes,
+    /// [`crate::limits::Limits::max_depth`].
+    Depth,
+    /// [`crate::limits::Limits::max_elements`].
+    Elements,
+    /// [`crate::limits::Limits::max_iterations`].
+    Iterations,
+    /// [`crate::limits::Limits::max_samples`].
+    Samples,
+    /// [`crate::limits::Limits::max_grid_points`].
+    GridPoints,
+    /// [`crate::limits::Limits::max_degree`].
+    Degree,
+    /// [`crate::limits::Limits::max_system_entries`].
+    SystemEntries,
+    /// [`crate::limits::Limits::max_work`].
+    Work,
+}
+
+impl Limit {
+    /// Every limit, in the field order of [`crate::limits::Limits`].
+    pub const ALL: [Limit; 10] = [
+        Limit::InputBytes,
+        Limit::ExpressionBytes,
+        Limit::Depth,
+        Limit::Elements,
+        Limit::Iterations,
+        Limit::Samples,
+        Limit::GridPoints,
+        Limit::Degree,
+        Limit::SystemEntries,
+        Limit::Work,
+    ];
+
+    /// The name of the field of [`crate::limits::Limits`] that holds it, e.g. `max_grid_points`.
+    pub fn field(self) -> &'static str {
+        match self {
+            Limit::InputBytes => "max_input_bytes",
+            Limit::ExpressionBytes => "max_expression_bytes",
+            Limit::Depth => "max_depth",
+            Limit::Elements => "max_elements",
+            Limit::Iterations => "max_iterations",
+            Limit::Samples => "max_samples",
+            Limit::GridPoints => "max_grid_points",
+            Limit::Degree => "max_degree",
+            Limit::SystemEntries => "max_system_entries",
+            Limit::Work => "max_work",
+        }
+    }
+}
+
+impl std::fmt::Display for Limit {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Limits::{}", self.field())
+    }
+}
+
 /// One line per corner gap, for the message of [`Error::CornerMismatch`].
-fn format_corner_gaps(gaps: &[crate::coons::CornerGap]) -> String {
+fn format_corner_gaps(gaps: &[crate::tolerance::CornerGap]) -> String {
     gaps.iter()
         .map(|g| g.to_string())
         .collect::<Vec<_>>()
         .join("; ")
+}
+
+/// Rejects a negative or non-finite tolerance.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] naming the tolerance.
+///
+/// ```
+/// use cagd::Tolerance;
+/// assert!(cagd::error::check_tolerance(&Tolerance::Relative(1e-10)).is_ok());
+/// assert!(cagd::error::check_tolerance(&Tolerance::Absolute(-1.0)).is_err());
+/// ```
+pub fn check_tolerance(tolerance: &crate::tolerance::Tolerance) -> Result<()> {
+    match tolerance {
+        crate::tolerance::Tolerance::Relative(t) | crate::tolerance::Tolerance::Absolute(t)
+            if !tolerance.is_valid() =>
+        {
+            Err(Error::InvalidArgument {
+                what: "tolerance",
+                message: format!("expected a finite value >= 0, got {t}"),
+            })
+        }
+        _ => Ok(()),
+    }
 }
 
 /// Checks that every value is finite; reports the first one that is not.

@@ -2,7 +2,11 @@
 //!
 //! A network consists of `m+1` curves `g(u_i, v)` (functions of `v`, one per node `u_i`) and
 //! `n+1` curves `g(u, v_j)` (functions of `u`, one per node `v_j`), all over `[0, 1]`, meeting
-//! at the `(m+1)(n+1)` points `g(u_i, v_j)`. The Gordon surface
+//! at the `(m+1)(n+1)` points `g(u_i, v_j)`. A network curve on another domain `[a, b]` is
+//! reparametrised affinely onto `[0, 1]`, `s ↦ c(a + (b − a)s)`, and the nodes are parameters
+//! of `[0, 1]` (a B-spline `g(u, v_j)` on `[0, 4]` with a node `u_i = 1/2` is met at its
+//! parameter 2); a curve whose domain is not a finite interval is refused with
+//! [`Error::UnusableDomain`] (see [`crate::param`]). The Gordon surface
 //!
 //! ```text
 //! g = g1 + g2 − g12,
@@ -37,11 +41,13 @@
 
 use nalgebra::{DMatrix, DVector};
 
+use crate::bernstein::elevate;
 use crate::bezier::{BezierCurve, BezierPatch};
 use crate::coons::Tolerance;
+use crate::cost::{blended, polynomial_bits, Cost};
 use crate::error::{Error, Result};
-use crate::lagrange::{check_nodes, Lagrange, LebesgueEstimate};
-use crate::param::{Curve, Surface};
+use crate::lagrange::{bernstein_coefficients, check_nodes, Lagrange, LebesgueEstimate};
+use crate::param::{usable_domain, Curve, OnUnitInterval, Surface};
 use crate::scalar::Scalar;
 
 /// A Gordon surface (Izrek 4.4) over a compatible curve network.
@@ -74,6 +80,10 @@ pub struct GordonSurface<C, T: Scalar = f64> {
     v_basis: Lagrange<T>,
     curves_at_u: Vec<C>,
     curves_at_v: Vec<C>,
+    /// The domains of `curves_at_u`, each a finite interval `a < b`.
+    domains_at_u: Vec<(T, T)>,
+    /// The domains of `curves_at_v`.
+    domains_at_v: Vec<(T, T)>,
     /// `points[i][j] = g(u_i, v_j)`.
     points: Vec<Vec<DVector<T>>>,
     tolerance: Tolerance,
@@ -120,6 +130,7 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
     /// - [`Error::TooFewCurves`]: fewer than 2 curves in a direction;
     /// - [`Error::ShapeMismatch`]: node and curve counts differ, or curves of different
     ///   dimensions;
+    /// - [`Error::UnusableDomain`]: a curve whose domain is not a finite interval `a < b`;
     /// - [`Error::DuplicateNodes`], [`Error::UnsortedNodes`], [`Error::NonFinite`]: bad nodes;
     /// - [`Error::NetworkMismatch`]: `g(u_i, ·)` at `v_j` is not `g(·, v_j)` at `u_i`, naming
     ///   the worst pair, its gap and the tolerance.
@@ -149,17 +160,16 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
         curves_at_v: Vec<C>,
         tolerance: Tolerance,
     ) -> Result<Self> {
-        let (u_basis, v_basis) =
+        let (bases, domains) =
             Self::check(&u_nodes, &v_nodes, &curves_at_u, &curves_at_v, &tolerance)?;
-        let points: Vec<Vec<DVector<T>>> = curves_at_u
+        let points: Vec<Vec<DVector<T>>> = unit_views(&curves_at_u, &domains.0)
             .iter()
             .map(|c| v_nodes.iter().map(|v| c.eval(v.clone())).collect())
             .collect();
         Self::finish(
-            u_basis,
-            v_basis,
-            curves_at_u,
-            curves_at_v,
+            bases,
+            (curves_at_u, curves_at_v),
+            domains,
             points,
             tolerance,
         )
@@ -179,7 +189,7 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
         points: Vec<Vec<DVector<T>>>,
         tolerance: Tolerance,
     ) -> Result<Self> {
-        let (u_basis, v_basis) =
+        let (bases, domains) =
             Self::check(&u_nodes, &v_nodes, &curves_at_u, &curves_at_v, &tolerance)?;
         let dim = curves_at_u[0].dim();
         let shape_ok = points.len() == u_nodes.len()
@@ -208,12 +218,13 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
         }
         let mut worst: Option<(usize, usize, T, T)> = None;
         let mut count = 0;
+        let (at_u, at_v) = (
+            unit_views(&curves_at_u, &domains.0),
+            unit_views(&curves_at_v, &domains.1),
+        );
         for (i, u) in u_nodes.iter().enumerate() {
             for (j, v) in v_nodes.iter().enumerate() {
-                for q in [
-                    curves_at_u[i].eval(v.clone()),
-                    curves_at_v[j].eval(u.clone()),
-                ] {
+                for q in [at_u[i].eval(v.clone()), at_v[j].eval(u.clone())] {
                     let (gap, allowed) = tolerance.gap(&points[i][j], &q);
                     record(&mut worst, &mut count, i, j, gap, allowed);
                 }
@@ -223,22 +234,25 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
             return Err(e);
         }
         Self::finish(
-            u_basis,
-            v_basis,
-            curves_at_u,
-            curves_at_v,
+            bases,
+            (curves_at_u, curves_at_v),
+            domains,
             points,
             tolerance,
         )
     }
 
+    /// Checks the network: curve and node counts, nodes, tolerance, dimensions, domains
+    /// (reparametrisable onto `[0, 1]`) and the crossings; gives the Lagrange bases and the
+    /// curves' domains.
+    #[allow(clippy::type_complexity)]
     fn check(
         u_nodes: &[T],
         v_nodes: &[T],
         curves_at_u: &[C],
         curves_at_v: &[C],
         tolerance: &Tolerance,
-    ) -> Result<(Lagrange<T>, Lagrange<T>)> {
+    ) -> Result<((Lagrange<T>, Lagrange<T>), (Vec<(T, T)>, Vec<(T, T)>))> {
         for (what, curves) in [
             ("Gordon curves g(u_i, v)", curves_at_u),
             ("Gordon curves g(u, v_j)", curves_at_v),
@@ -264,7 +278,7 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
             }
             check_nodes(what, nodes, 2)?;
         }
-        tolerance.validate()?;
+        crate::error::check_tolerance(tolerance)?;
         let dim = curves_at_u[0].dim();
         for c in curves_at_u.iter().chain(curves_at_v.iter()) {
             if c.dim() != dim {
@@ -275,13 +289,25 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
                 });
             }
         }
+        let domains_at_u = curves_at_u
+            .iter()
+            .map(|c| usable_domain("Gordon curve g(u_i, v)", c))
+            .collect::<Result<Vec<_>>>()?;
+        let domains_at_v = curves_at_v
+            .iter()
+            .map(|c| usable_domain("Gordon curve g(u, v_j)", c))
+            .collect::<Result<Vec<_>>>()?;
+        let (at_u, at_v) = (
+            unit_views(curves_at_u, &domains_at_u),
+            unit_views(curves_at_v, &domains_at_v),
+        );
         // Compatibility: g(u_i, ·)(v_j) against g(·, v_j)(u_i).
         let mut worst: Option<(usize, usize, T, T)> = None;
         let mut count = 0;
         for (i, u) in u_nodes.iter().enumerate() {
             for (j, v) in v_nodes.iter().enumerate() {
-                let p = curves_at_u[i].eval(v.clone());
-                let q = curves_at_v[j].eval(u.clone());
+                let p = at_u[i].eval(v.clone());
+                let q = at_v[j].eval(u.clone());
                 if p.len() != dim || q.len() != dim {
                     return Err(Error::ShapeMismatch {
                         what: "Gordon network curves",
@@ -298,16 +324,19 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
             return Err(e);
         }
         Ok((
-            Lagrange::new(u_nodes.to_vec())?,
-            Lagrange::new(v_nodes.to_vec())?,
+            (
+                Lagrange::new(u_nodes.to_vec())?,
+                Lagrange::new(v_nodes.to_vec())?,
+            ),
+            (domains_at_u, domains_at_v),
         ))
     }
 
+    #[allow(clippy::type_complexity)]
     fn finish(
-        u_basis: Lagrange<T>,
-        v_basis: Lagrange<T>,
-        curves_at_u: Vec<C>,
-        curves_at_v: Vec<C>,
+        (u_basis, v_basis): (Lagrange<T>, Lagrange<T>),
+        (curves_at_u, curves_at_v): (Vec<C>, Vec<C>),
+        (domains_at_u, domains_at_v): (Vec<(T, T)>, Vec<(T, T)>),
         points: Vec<Vec<DVector<T>>>,
         tolerance: Tolerance,
     ) -> Result<Self> {
@@ -316,9 +345,21 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
             v_basis,
             curves_at_u,
             curves_at_v,
+            domains_at_u,
+            domains_at_v,
             points,
             tolerance,
         })
+    }
+
+    /// The curves `g(u_i, ·)` and `g(·, v_j)` as the surface uses them: reparametrised onto
+    /// `[0, 1]` (unchanged for curves on `[0, 1]`).
+    #[allow(clippy::type_complexity)]
+    pub fn unit_curves(&self) -> (Vec<OnUnitInterval<&C, T>>, Vec<OnUnitInterval<&C, T>>) {
+        (
+            unit_views(&self.curves_at_u, &self.domains_at_u),
+            unit_views(&self.curves_at_v, &self.domains_at_v),
+        )
     }
 
     /// The surface on the grid `us × vs` written into `out`, row by row:
@@ -370,12 +411,13 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
         let lv = crate::grid::rows_of(vs, mv, |v, row| self.v_basis.fill_basis(v, row));
         // at_u = one grid row per curve: g(u_i, vs[b]) at at_u[(i·nv + b)·d ..].
         let row_len = vs.len() * d;
+        let (curves_u, curves_v) = self.unit_curves();
         let mut at_u = vec![T::zero(); mu * row_len];
-        for (curve, samples) in self.curves_at_u.iter().zip(at_u.chunks_exact_mut(row_len)) {
+        for (curve, samples) in curves_u.iter().zip(at_u.chunks_exact_mut(row_len)) {
             curve.eval_many_into(vs, samples)?;
         }
         // at_v[a] = [g(us[a], v_0), …, g(us[a], v_n)]: (n+1)·d values per row a.
-        let mut at_v = Self::samples_by_point(&self.curves_at_v, us, d)?;
+        let mut at_v = samples_by_point(&curves_v, us, d)?;
         // Turn at_v[a] into r[a]: subtract Σ_i L_i(us[a]) g(u_i, v_j).
         for (a, ra) in at_v.chunks_exact_mut(mv * d).enumerate() {
             let la = &lu[a * mu..(a + 1) * mu];
@@ -407,27 +449,19 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
         Ok(())
     }
 
-    /// The samples of every curve at every parameter, grouped by parameter:
-    /// `out[(p·curves.len() + c)·d + k]` is coordinate `k` of `curves[c](ts[p])`.
-    fn samples_by_point(curves: &[C], ts: &[T], d: usize) -> Result<Vec<T>> {
-        let count = curves.len();
-        let mut out = vec![T::zero(); ts.len() * count * d];
-        let mut samples = vec![T::zero(); ts.len() * d];
-        for (c, curve) in curves.iter().enumerate() {
-            curve.eval_many_into(ts, &mut samples)?;
-            for (x, dst) in samples.chunks_exact(d).zip(out.chunks_exact_mut(count * d)) {
-                dst[c * d..(c + 1) * d].clone_from_slice(x);
-            }
-        }
-        Ok(out)
-    }
-
     /// `g(u, v)` with its parts `g1`, `g2`, `g12`.
     pub fn eval_parts(&self, u: T, v: T) -> GordonPoint<T> {
         let lu = self.u_basis.basis(&u);
         let lv = self.v_basis.basis(&v);
-        let at_u: Vec<_> = self.curves_at_u.iter().map(|c| c.eval(v.clone())).collect();
-        let at_v: Vec<_> = self.curves_at_v.iter().map(|c| c.eval(u.clone())).collect();
+        let unit = |(c, d): (&C, &(T, T)), t: &T| {
+            OnUnitInterval::from_checked(c, d.clone()).eval(t.clone())
+        };
+        let at_u: Vec<_> = (self.curves_at_u.iter().zip(&self.domains_at_u))
+            .map(|cd| unit(cd, &v))
+            .collect();
+        let at_v: Vec<_> = (self.curves_at_v.iter().zip(&self.domains_at_v))
+            .map(|cd| unit(cd, &u))
+            .collect();
         self.combine(&lu, &lv, &at_u, &at_v)
     }
 
@@ -447,6 +481,28 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
             g2: DVector::from_element(dim, T::zero()),
             g12: DVector::from_element(dim, T::zero()),
         };
+        if crate::grid::exact::is_rational::<T>() {
+            // Exact: the same values from dot products over a common denominator,
+            // g12 = Σ_i L_i(u) Σ_j L_j(v) g(u_i, v_j); a fraction of the gcds.
+            for k in 0..dim {
+                let dot = |w: &[T], x: Vec<&T>| {
+                    crate::grid::exact::dot(w.iter().zip(x)).unwrap_or_else(T::zero)
+                };
+                let g1 = dot(lu, at_u.iter().map(|p| &p[k]).collect());
+                let g2 = dot(lv, at_v.iter().map(|p| &p[k]).collect());
+                let rows: Vec<T> = self
+                    .points
+                    .iter()
+                    .map(|row| dot(lv, row.iter().map(|p| &p[k]).collect()))
+                    .collect();
+                let g12 = dot(lu, rows.iter().collect());
+                out.g[k] = g1.clone() + g2.clone() - g12.clone();
+                out.g1[k] = g1;
+                out.g2[k] = g2;
+                out.g12[k] = g12;
+            }
+            return out;
+        }
         for k in 0..dim {
             let mut g1 = T::zero();
             for (l, p) in lu.iter().zip(at_u) {
@@ -576,9 +632,41 @@ fn mismatch<T: Scalar>(
     })
 }
 
+/// The curves on their checked domains, reparametrised onto `[0, 1]`.
+fn unit_views<'a, T: Scalar, C>(
+    curves: &'a [C],
+    domains: &[(T, T)],
+) -> Vec<OnUnitInterval<&'a C, T>> {
+    curves
+        .iter()
+        .zip(domains)
+        .map(|(c, d)| OnUnitInterval::from_checked(c, d.clone()))
+        .collect()
+}
+
+/// The samples of every curve at every parameter, grouped by parameter:
+/// `out[(p·curves.len() + c)·d + k]` is coordinate `k` of `curves[c](ts[p])`.
+fn samples_by_point<T: Scalar, C: Curve<T>>(curves: &[C], ts: &[T], d: usize) -> Result<Vec<T>> {
+    let count = curves.len();
+    let mut out = vec![T::zero(); ts.len() * count * d];
+    let mut samples = vec![T::zero(); ts.len() * d];
+    for (c, curve) in curves.iter().enumerate() {
+        curve.eval_many_into(ts, &mut samples)?;
+        for (x, dst) in samples.chunks_exact(d).zip(out.chunks_exact_mut(count * d)) {
+            dst[c * d..(c + 1) * d].clone_from_slice(x);
+        }
+    }
+    Ok(out)
+}
+
 impl<T: Scalar, C: Curve<T>> Surface<T> for GordonSurface<C, T> {
     fn dim(&self) -> usize {
         self.points[0][0].len()
+    }
+
+    /// `[0, 1]²` (the network curves reparametrised onto `[0, 1]`).
+    fn domain(&self) -> ((T, T), (T, T)) {
+        ((T::zero(), T::one()), (T::zero(), T::one()))
     }
 
     fn eval(&self, u: T, v: T) -> DVector<T> {
@@ -596,13 +684,14 @@ impl<T: Scalar, C: Curve<T>> Surface<T> for GordonSurface<C, T> {
         let lu: Vec<_> = us.iter().map(|u| self.u_basis.basis(u)).collect();
         let lv: Vec<_> = vs.iter().map(|v| self.v_basis.basis(v)).collect();
         // at_u[j][i] = g(u_i, vs[j]); at_v[i][j] = g(us[i], v_j).
+        let (curves_u, curves_v) = self.unit_curves();
         let at_u: Vec<Vec<_>> = vs
             .iter()
-            .map(|v| self.curves_at_u.iter().map(|c| c.eval(v.clone())).collect())
+            .map(|v| curves_u.iter().map(|c| c.eval(v.clone())).collect())
             .collect();
         let at_v: Vec<Vec<_>> = us
             .iter()
-            .map(|u| self.curves_at_v.iter().map(|c| c.eval(u.clone())).collect())
+            .map(|u| curves_v.iter().map(|c| c.eval(u.clone())).collect())
             .collect();
         let dim = self.dim();
         let mut grid = crate::grid::PointGrid::from_elem((us.len(), vs.len(), dim), T::zero());
@@ -621,92 +710,17 @@ impl<T: Scalar, C: Curve<T>> Surface<T> for GordonSurface<C, T> {
 // ------------------------------------------------------------------------------------------
 // Gordon surfaces of Bézier networks as one Bézier patch
 
-/// `C(n, k)` in the scalar, by the product `Π (n − k + i)/i` (exact in rationals, and in `f64`
-/// while the values stay below 2^53).
-fn binomial<T: Scalar>(n: usize, k: usize) -> T {
-    let k = k.min(n - k);
-    (1..=k).fold(T::one(), |acc, i| {
-        acc * T::from_usize(n - k + i) / T::from_usize(i)
-    })
-}
-
-/// The Bernstein coefficients of the product of two polynomials given by their Bernstein
-/// coefficients (degrees `p = a.len() − 1`, `q = b.len() − 1`):
-/// `c_k = Σ_{i+j=k} C(p,i) C(q,j) / C(p+q,k) · a_i b_j`.
-fn bernstein_product<T: Scalar>(a: &[T], b: &[T]) -> Vec<T> {
-    let (p, q) = (a.len() - 1, b.len() - 1);
-    (0..=p + q)
-        .map(|k| {
-            let sum = (k.saturating_sub(q)..=k.min(p)).fold(T::zero(), |sum, i| {
-                let j = k - i;
-                sum + binomial::<T>(p, i) * binomial::<T>(q, j) * a[i].clone() * b[j].clone()
-            });
-            sum / binomial::<T>(p + q, k)
-        })
-        .collect()
-}
-
-/// Degree elevation of Bernstein coefficients from `a.len() − 1` to `to`:
-/// `c_k = Σ_i C(r,i) C(to − r, k − i) / C(to, k) · a_i`.
-fn bernstein_elevate<T: Scalar>(a: &[T], to: usize) -> Vec<T> {
-    let r = a.len() - 1;
-    if r == to {
-        return a.to_vec();
-    }
-    (0..=to)
-        .map(|k| {
-            let sum = (k.saturating_sub(to - r)..=k.min(r)).fold(T::zero(), |sum, i| {
-                sum + binomial::<T>(r, i) * binomial::<T>(to - r, k - i) * a[i].clone()
-            });
-            sum / binomial::<T>(to, k)
-        })
-        .collect()
-}
-
-/// The Bernstein coefficients, at degree `to ≥ m`, of the Lagrange basis `L_0..L_m` of `nodes`
-/// (row `i` = `L_i`), built as products of the linear factors `(t − t_j)/(t_i − t_j)`, whose
-/// Bernstein coefficients are `[−t_j, 1 − t_j]/(t_i − t_j)`.
-fn lagrange_in_bernstein_form<T: Scalar>(nodes: &[T], to: usize) -> Vec<Vec<T>> {
-    nodes
-        .iter()
-        .enumerate()
-        .map(|(i, ti)| {
-            let mut poly = vec![T::one()];
-            for (j, tj) in nodes.iter().enumerate() {
-                if j != i {
-                    let den = ti.clone() - tj.clone();
-                    let factor = [-tj.clone() / den.clone(), (T::one() - tj.clone()) / den];
-                    poly = bernstein_product(&poly, &factor);
-                }
-            }
-            bernstein_elevate(&poly, to)
-        })
-        .collect()
-}
-
-/// The control points of a Bézier curve on `[0, 1]`, elevated to degree `to`, as one vector of
-/// coefficients per coordinate.
-fn elevated_control<T: Scalar>(
-    curve: &BezierCurve<T>,
-    to: usize,
-    what: &'static str,
-) -> Result<Vec<Vec<T>>> {
-    let (a, b) = curve.interval();
-    if !(a.is_zero() && b.is_one()) {
-        return Err(Error::InvalidArgument {
-            what,
-            message: format!(
-                "the exact Bézier form needs curves over [0, 1], found one over [{a}, {b}]"
-            ),
-        });
-    }
+/// The control points of a Bézier curve elevated to degree `to`, as one vector of
+/// coefficients per coordinate. They are those of the curve reparametrised onto `[0, 1]`
+/// whatever its interval `[a, b]` (the Bernstein form is in `(u − a)/(b − a)`).
+fn elevated_control<T: Scalar>(curve: &BezierCurve<T>, to: usize) -> Vec<Vec<T>> {
     let c = curve.control();
-    Ok((0..c.nrows())
+    (0..c.nrows())
         .map(|k| {
             let row: Vec<T> = c.row(k).iter().cloned().collect();
-            bernstein_elevate(&row, to)
+            elevate(&row, to)
         })
-        .collect())
+        .collect()
 }
 
 /// The tensor-product Bézier net of `g1 + g2 − g12` for Bézier network curves: see
@@ -722,16 +736,16 @@ pub(crate) fn gordon_bezier_net<T: Scalar>(
     let p = curves_at_v.iter().map(|c| c.degree()).max().unwrap_or(0);
     let q = curves_at_u.iter().map(|c| c.degree()).max().unwrap_or(0);
     let (deg_u, deg_v) = (m.max(p), n.max(q));
-    let lu = lagrange_in_bernstein_form(u_nodes, deg_u);
-    let lv = lagrange_in_bernstein_form(v_nodes, deg_v);
-    let at_u = curves_at_u
+    let lu = bernstein_coefficients(u_nodes, deg_u);
+    let lv = bernstein_coefficients(v_nodes, deg_v);
+    let at_u: Vec<_> = curves_at_u
         .iter()
-        .map(|c| elevated_control(c, deg_v, "Gordon curves g(u_i, v)"))
-        .collect::<Result<Vec<_>>>()?;
-    let at_v = curves_at_v
+        .map(|c| elevated_control(c, deg_v))
+        .collect();
+    let at_v: Vec<_> = curves_at_v
         .iter()
-        .map(|c| elevated_control(c, deg_u, "Gordon curves g(u, v_j)"))
-        .collect::<Result<Vec<_>>>()?;
+        .map(|c| elevated_control(c, deg_u))
+        .collect();
     let dim = points[0][0].len();
     let coords = (0..dim)
         .map(|d| {
@@ -758,8 +772,9 @@ pub(crate) fn gordon_bezier_net<T: Scalar>(
 }
 
 impl<T: Scalar> GordonSurface<BezierCurve<T>, T> {
-    /// The Gordon surface of a network of Bézier curves (over `[0, 1]`), exactly, as one
-    /// tensor-product Bézier patch.
+    /// The Gordon surface of a network of Bézier curves, exactly, as one tensor-product Bézier
+    /// patch (a curve on an interval `[a, b]` enters reparametrised onto `[0, 1]`, which keeps
+    /// its control points).
     ///
     /// With `p` the largest degree of the curves `g(u, v_j)` and `q` that of the curves
     /// `g(u_i, v)`, the patch has degree `(max(m, p), max(n, q))`: each Lagrange basis function
@@ -769,7 +784,7 @@ impl<T: Scalar> GordonSurface<BezierCurve<T>, T> {
     /// [`Surface::eval`] to round-off.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] if a curve is defined over an interval other than `[0, 1]`.
+    /// [`Error::NonFinite`] if a control point overflows in `f64`.
     ///
     /// ```
     /// use cagd::bezier::BezierCurve;
@@ -798,60 +813,57 @@ impl<T: Scalar> GordonSurface<BezierCurve<T>, T> {
     }
 }
 
+/// The cost of one point of a Gordon surface of `k_u × k_v` curves in `d` coordinates,
+/// `g = g1 + g2 − g12`: every curve of the network at its parameter (`curves`, the cost of
+/// each), the `k_u k_v` points of `g12` and the Lagrange bases in `u` and `v`,
+/// `(4(k_u + k_v) + 2 k_u k_v)(1 + d)` operations, on numbers as large as the curves' values
+/// grown by the bases: products of `k − 1` factors `(u − u_j)/(u_i − u_j)`,
+/// [`polynomial_bits`]`(k_u − 1, u_bits + 2 u_node_bits, 0)` and the same in `v`
+/// ([`blended`]). `u = (u_bits, u_node_bits)` are the sizes of the parameter and of the nodes
+/// in `u`, `v` those in `v`.
+///
+/// ```
+/// use cagd::cost::Cost;
+/// use cagd::gordon::gordon_point_cost;
+/// let c = gordon_point_cost([Cost::new(1, 0); 6], (3, 3), 3, (0, 0), (0, 0));
+/// assert_eq!(c, Cost::new(6 + (24 + 18) * 4, 4));
+/// ```
+pub fn gordon_point_cost(
+    curves: impl IntoIterator<Item = Cost>,
+    (k_u, k_v): (usize, usize),
+    d: usize,
+    u: (u128, u128),
+    v: (u128, u128),
+) -> Cost {
+    let (ku, kv) = (k_u as u128, k_v as u128);
+    let basis_bits = |k: usize, (param_bits, node_bits): (u128, u128)| {
+        polynomial_bits(
+            k.saturating_sub(1),
+            param_bits.saturating_add(node_bits.saturating_mul(2)),
+            0,
+        )
+    };
+    blended(
+        curves,
+        (4 * (ku + kv) + 2 * ku * kv) * (1 + d as u128),
+        basis_bits(k_u, u).saturating_add(basis_bits(k_v, v)),
+    )
+}
+
 #[cfg(test)]
-mod tests {
+mod cost_tests {
     use super::*;
-    use num_rational::BigRational as Q;
-
-    fn q(n: i64, d: i64) -> Q {
-        <Q as Scalar>::from_ratio(n, d)
-    }
-
-    /// Evaluates Bernstein coefficients at `t` by the definition.
-    fn eval(c: &[Q], t: &Q) -> Q {
-        let n = c.len() - 1;
-        c.iter().enumerate().fold(q(0, 1), |acc, (i, ci)| {
-            let mut b = binomial::<Q>(n, i);
-            for _ in 0..i {
-                b *= t.clone();
-            }
-            for _ in i..n {
-                b *= q(1, 1) - t.clone();
-            }
-            acc + b * ci.clone()
-        })
-    }
 
     #[test]
-    fn binomials() {
-        assert_eq!(binomial::<Q>(6, 2), q(15, 1));
-        assert_eq!(binomial::<f64>(30, 15), 155117520.0);
-        assert_eq!(binomial::<Q>(4, 0), q(1, 1));
-    }
-
-    #[test]
-    fn product_and_elevation_of_bernstein_coefficients() {
-        let a = [q(1, 2), q(-3, 1), q(2, 5)];
-        let b = [q(7, 3), q(0, 1)];
-        let c = bernstein_product(&a, &b);
-        let e = bernstein_elevate(&a, 5);
-        assert_eq!(c.len(), 4);
-        for t in [q(0, 1), q(1, 3), q(4, 5), q(1, 1), q(3, 2)] {
-            assert_eq!(eval(&c, &t), eval(&a, &t) * eval(&b, &t));
-            assert_eq!(eval(&e, &t), eval(&a, &t));
-        }
-    }
-
-    #[test]
-    fn lagrange_basis_in_bernstein_form_is_the_basis() {
-        let nodes = [q(-1, 2), q(0, 1), q(2, 3), q(1, 1)];
-        let basis = Lagrange::new(nodes.to_vec()).unwrap();
-        let coeffs = lagrange_in_bernstein_form(&nodes, 5);
-        for t in [q(1, 7), q(1, 2), q(9, 10), q(-1, 3)] {
-            let want = basis.basis(&t);
-            for (i, c) in coeffs.iter().enumerate() {
-                assert_eq!(eval(c, &t), want[i]);
-            }
-        }
+    fn the_lagrange_bases_grow_the_numbers() {
+        let c = gordon_point_cost(
+            [Cost::new(5, 20), Cost::new(5, 30)],
+            (2, 4),
+            2,
+            (3, 1),
+            (0, 2),
+        );
+        assert_eq!(c.ops(), 10 + (24 + 16) * 3);
+        assert_eq!(c.bits(), 30 + (3 + 2 + 1) + 3 * (4 + 1));
     }
 }

@@ -19,37 +19,82 @@
 use nalgebra::{DMatrix, DVector};
 
 use crate::bezier::BezierCurve;
+use crate::cost::{polynomial_bits, Cost};
 use crate::error::{check_finite, Error, Result};
 use crate::param::Curve;
 use crate::scalar::Scalar;
 
-/// The Hermite basis `[f_1, f_2, f_3, f_4](u)` of the lecture notes (see the module documentation),
-/// each by Horner's rule from its row of `M_H`.
+/// The cubic Hermite basis `[f_1, f_2, f_3, f_4](u)` of the lecture notes (the rows of `M_H`,
+/// see the module documentation), in the order of the geometry `X_H = [x(0) x(1) x'(0) x'(1)]`.
+/// The thesis (§4.2–4.3) writes the same functions from the cubic Bernstein polynomials `B_i³`
+/// and names them by their place in the Coons matrix (4.5), `H0 = f_1`, `H1 = f_3`,
+/// `H2 = f_4`, `H3 = f_2`:
+///
+/// ```text
+/// f_1 = H0 = B0 + B1 = (1−u)²(1+2u)      f_3 = H1 =  B1/3 = u(1−u)²
+/// f_2 = H3 = B2 + B3 = u²(3−2u)          f_4 = H2 = −B2/3 = −u²(1−u)
+/// ```
+///
+/// The Hermite conditions (the thesis states them only partly): `f_1`, `f_2` interpolate the
+/// values (`f_1(0) = 1`, `f_1(1) = 0`, `f_2 = 1 − f_1`) and have zero derivative at both ends;
+/// `f_3`, `f_4` vanish at both ends and carry the derivatives: `f_3'(0) = 1`, `f_3'(1) = 0`,
+/// `f_4'(0) = 0`, `f_4'(1) = 1` — so the thesis's `H1 = B1/3` and `H2 = −B2/3` are right, signs
+/// included.
+///
+/// This is the crate's one cubic Hermite basis (the Ferguson cubic, the bicubically blended
+/// Coons patch and the partially bicubic blend use it). It is evaluated in the Bernstein form
+/// above: for `u ∈ [0, 1]` the values are sums of non-negative terms, so they keep their
+/// relative accuracy near both ends, where the monomial rows of `M_H` cancel.
 ///
 /// ```
 /// use cagd::hermite::hermite_basis;
 /// assert_eq!(hermite_basis(0.5), [0.5, 0.5, 0.125, -0.125]);
+/// assert_eq!(hermite_basis(0.0), [1.0, 0.0, 0.0, 0.0]);
 /// ```
 pub fn hermite_basis<T: Scalar>(u: T) -> [T; 4] {
-    let h = |c3: i64, c2: i64, c1: i64, c0: i64| {
-        let c = |k: i64| T::from_ratio(k, 1);
-        ((c(c3) * u.clone() + c(c2)) * u.clone() + c(c1)) * u.clone() + c(c0)
-    };
+    let s = T::one() - u.clone();
+    let three = T::from_usize(3);
+    let b0 = s.clone() * s.clone() * s.clone();
+    let us2 = u.clone() * s.clone() * s.clone();
+    let u2s = u.clone() * u.clone() * s;
+    let b3 = u.clone() * u.clone() * u;
     [
-        h(2, -3, 0, 1),
-        h(-2, 3, 0, 0),
-        h(1, -2, 1, 0),
-        h(1, -1, 0, 0),
+        b0 + three.clone() * us2.clone(),
+        three * u2s.clone() + b3,
+        us2,
+        -u2s,
     ]
 }
 
-/// The derivatives `[f'_1, f'_2, f'_3, f'_4](u)` of the Hermite basis.
+/// The derivatives `[f'_1, f'_2, f'_3, f'_4](u)` of [`hermite_basis`]:
+/// `f'_1 = −6u(1−u)`, `f'_2 = 6u(1−u)`, `f'_3 = (1−u)(1−3u)`, `f'_4 = u(3u−2)`.
+///
+/// ```
+/// use cagd::hermite::hermite_basis_derivative;
+/// assert_eq!(hermite_basis_derivative(0.0), [0.0, 0.0, 1.0, 0.0]);
+/// assert_eq!(hermite_basis_derivative(1.0), [0.0, 0.0, 0.0, 1.0]);
+/// ```
 pub fn hermite_basis_derivative<T: Scalar>(u: T) -> [T; 4] {
-    let h = |c2: i64, c1: i64, c0: i64| {
-        let c = |k: i64| T::from_ratio(k, 1);
-        (c(c2) * u.clone() + c(c1)) * u.clone() + c(c0)
-    };
-    [h(6, -6, 0), h(-6, 6, 0), h(3, -4, 1), h(3, -2, 0)]
+    let s = T::one() - u.clone();
+    let three = T::from_usize(3);
+    let six_us = T::from_usize(6) * u.clone() * s.clone();
+    [
+        -six_us.clone(),
+        six_us,
+        s * (T::one() - three.clone() * u.clone()),
+        u.clone() * (three * u - T::from_usize(2)),
+    ]
+}
+
+/// The cost of the four Hermite functions at one parameter of `param_bits` bits
+/// ([`hermite_basis`]): about 16 operations, on cubics in the parameter
+/// ([`polynomial_bits`]`(3, param_bits, 0)` bits).
+///
+/// ```
+/// assert_eq!(cagd::hermite::basis_cost(5), cagd::cost::Cost::new(16, 18));
+/// ```
+pub fn basis_cost(param_bits: u128) -> Cost {
+    Cost::new(16, polynomial_bits(3, param_bits, 0))
 }
 
 /// A Ferguson (Hermite) cubic over `u ∈ [0, 1]` in any dimension.
@@ -62,7 +107,7 @@ pub fn hermite_basis_derivative<T: Scalar>(u: T) -> [T; 4] {
 /// assert_eq!(c.eval(0.5).as_slice(), &[1.0, 0.25]);
 /// assert_eq!(c.eval_derivative(1.0).as_slice(), &[1.0, -1.0]);
 /// // Its Bézier points: x_1, x_1 + x'_1/3, x_2 − x'_2/3, x_2.
-/// let b = c.to_bezier();
+/// let b = c.to_bezier()?;
 /// assert_eq!(b.control_point(1).unwrap().as_slice(), &[1.0 / 3.0, 1.0 / 3.0]);
 /// # Ok::<(), cagd::Error>(())
 /// ```
@@ -121,6 +166,27 @@ impl<T: Scalar> HermiteCubic<T> {
         combine4(&self.geometry, &hermite_basis(u))
     }
 
+    /// The cost of the point at one parameter of `param_bits` bits ([`eval`](Self::eval)):
+    /// the four Hermite functions ([`basis_cost`]) and their combination, 8 operations per
+    /// coordinate, on cubics in the parameter over coefficients of `bezier_bits + 2` bits,
+    /// `bezier_bits` the size of the curve's Bézier points ([`to_bezier`](Self::to_bezier); the
+    /// 2 bits cover the factors 3 and 1/3 between the forms).
+    ///
+    /// ```
+    /// use cagd::hermite::HermiteCubic;
+    /// use cagd::cost::Cost;
+    /// use nalgebra::dvector;
+    /// let c = HermiteCubic::new(dvector![0.0, 0.0], dvector![1.0, 0.0], dvector![1.0, 1.0], dvector![1.0, -1.0])?;
+    /// assert_eq!(c.eval_cost(5, 10), Cost::new(16 + 2 * 8, 18 + 12));
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn eval_cost(&self, param_bits: u128, bezier_bits: u128) -> Cost {
+        Cost::new(
+            basis_cost(param_bits).ops() + 8 * self.dim() as u128,
+            polynomial_bits(3, param_bits, bezier_bits.saturating_add(2)),
+        )
+    }
+
     /// `x'(u)`.
     pub fn eval_derivative(&self, u: T) -> DVector<T> {
         combine4(&self.geometry, &hermite_basis_derivative(u))
@@ -153,13 +219,17 @@ impl<T: Scalar> HermiteCubic<T> {
 
     /// The same cubic in Bézier form: `b_0 = x_1`, `b_1 = x_1 + x'_1/3`, `b_2 = x_2 − x'_2/3`,
     /// `b_3 = x_2` (the lecture notes' table, "to Bézier from Hermite").
-    pub fn to_bezier(&self) -> BezierCurve<T> {
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] when an inner Bézier point overflows the range of doubles (end
+    /// points and tangents near ±1.8e308: `x_1 + x'_1/3` can exceed it).
+    pub fn to_bezier(&self) -> Result<BezierCurve<T>> {
         let g = crate::conversion::convert(
             &self.geometry,
             crate::conversion::CubicForm::Hermite,
             crate::conversion::CubicForm::Bezier,
         );
-        BezierCurve::new(g).expect("finite, d × 4")
+        BezierCurve::new(g)
     }
 
     /// The cubic Bézier curve in Hermite form, tangents taken with respect to its local
@@ -197,10 +267,61 @@ impl<T: Scalar> Curve<T> for HermiteCubic<T> {
     fn dim(&self) -> usize {
         HermiteCubic::dim(self)
     }
+    /// `[0, 1]` (the cubic continues outside it).
+    fn domain(&self) -> (T, T) {
+        (T::zero(), T::one())
+    }
     fn eval(&self, t: T) -> DVector<T> {
         HermiteCubic::eval(self, t)
     }
     fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
         Some(HermiteCubic::eval_derivative(self, t))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn costs_of_the_basis_and_of_a_point() {
+        assert_eq!(basis_cost(0), Cost::new(16, 3));
+        let c = HermiteCubic::<f64>::from_geometry(DMatrix::zeros(3, 4)).unwrap();
+        assert_eq!(c.eval_cost(0, 0), Cost::new(16 + 24, 3 + 2));
+        assert_eq!(c.eval_cost(7, 30).bits(), 3 * 8 + 32);
+    }
+    use crate::conversion::CubicForm;
+    use num_rational::BigRational;
+
+    #[test]
+    fn the_basis_is_the_matrix_form_and_its_derivative() {
+        for (n, d) in [(0, 1), (1, 7), (3, 5), (1, 1), (-2, 3)] {
+            let u = BigRational::new(n.into(), d.into());
+            assert_eq!(hermite_basis(u.clone()), CubicForm::Hermite.basis(&u));
+            // The derivative of the rows of M_H (ascending: c1 + 2 c2 u + 3 c3 u²).
+            let m: DMatrix<BigRational> = CubicForm::Hermite.matrix();
+            let d = hermite_basis_derivative(u.clone());
+            for (i, di) in d.iter().enumerate() {
+                let want = m[(i, 1)].clone()
+                    + BigRational::from_integer(2.into()) * m[(i, 2)].clone() * u.clone()
+                    + BigRational::from_integer(3.into())
+                        * m[(i, 3)].clone()
+                        * u.clone()
+                        * u.clone();
+                assert_eq!(*di, want, "f'_{} at {u}", i + 1);
+            }
+        }
+    }
+
+    #[test]
+    fn the_bernstein_form_keeps_its_accuracy_near_the_ends() {
+        // f_1(1 − 2⁻³⁰) = (2⁻³⁰)²(3 − 2⁻²⁹): the monomial rows would cancel to about 1e-16.
+        let e = 2f64.powi(-30);
+        let [f1, ..] = hermite_basis(1.0 - e);
+        let exact = e * e * (3.0 - 2.0 * e);
+        assert!(
+            (f1 - exact).abs() <= 4.0 * f64::EPSILON * exact,
+            "{f1} vs {exact}"
+        );
     }
 }

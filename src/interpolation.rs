@@ -3,75 +3,25 @@
 //! `k` points at chosen parameter values (the notes' "geometric form" `x(u) = X G u` with the
 //! blending matrix `G`).
 //!
-//! Everything is written on the plain product formula
-//! `L_{i,n}(x) = Π_{j≠i} (x − x_j)/(x_i − x_j)` (the lecture notes), generic over the scalar, so the
-//! coefficients are exact in rationals.
+//! Everything is written on the product formula `L_{i,n}(x) = Π_{j≠i} (x − x_j)/(x_i − x_j)`
+//! (the lecture notes) and its power form, both from [`crate::lagrange`] (the owner of the
+//! Lagrange basis, whose node check is used here too: repeated nodes are
+//! [`Error::DuplicateNodes`]), generic over the scalar, so the coefficients are exact in
+//! rationals.
 
 use nalgebra::{DMatrix, DVector};
 
 use crate::error::{check_finite, Error, Result};
+use crate::lagrange::{basis_product_unchecked, check_distinct_nodes, power_coefficients};
 use crate::param::Curve;
 use crate::scalar::Scalar;
 
-/// Nodes must be finite and pairwise distinct.
-fn check_nodes<T: Scalar>(what: &'static str, xs: &[T]) -> Result<()> {
-    if xs.is_empty() {
-        return Err(Error::TooFewPoints {
-            what,
-            min: 1,
-            found: 0,
-        });
-    }
-    check_finite(what, xs.iter())?;
-    for i in 0..xs.len() {
-        for j in 0..i {
-            if xs[i] == xs[j] {
-                return Err(Error::Singular {
-                    what,
-                    reason: format!("nodes {j} and {i} are equal ({})", xs[i]),
-                });
-            }
-        }
-    }
-    Ok(())
-}
-
-/// `L_{i,n}(x) = Π_{j≠i} (x − x_j)/(x_i − x_j)` over the nodes `xs` (the lecture notes).
-///
-/// ```
-/// use cagd::interpolation::lagrange_basis;
-/// let xs = [0.0, 0.5, 1.0];
-/// assert_eq!(lagrange_basis(&xs, 1, 0.5), 1.0);
-/// assert_eq!(lagrange_basis(&xs, 1, 1.0), 0.0);
-/// ```
-pub fn lagrange_basis<T: Scalar>(xs: &[T], i: usize, x: T) -> T {
-    xs.iter()
-        .enumerate()
-        .filter(|(j, _)| *j != i)
-        .fold(T::one(), |acc, (_, xj)| {
-            acc * (x.clone() - xj.clone()) / (xs[i].clone() - xj.clone())
-        })
-}
-
-/// The monomial coefficients of `L_{i,n}`, highest power first (the order of Octave's
-/// `polyfit`): `c[0] x^n + … + c[n]`.
-pub fn lagrange_basis_coefficients<T: Scalar>(xs: &[T], i: usize) -> Vec<T> {
-    let mut poly = vec![T::one()];
-    let mut denom = T::one();
-    for (j, xj) in xs.iter().enumerate() {
-        if j == i {
-            continue;
-        }
-        // poly · (x − x_j), highest power first.
-        let mut next = vec![T::zero(); poly.len() + 1];
-        for (k, c) in poly.iter().enumerate() {
-            next[k] = next[k].clone() + c.clone();
-            next[k + 1] = next[k + 1].clone() - c.clone() * xj.clone();
-        }
-        poly = next;
-        denom = denom * (xs[i].clone() - xj.clone());
-    }
-    poly.into_iter().map(|c| c / denom.clone()).collect()
+/// The coefficients of `L_{i,n}` highest power first (the lecture notes' and `polyfit`'s
+/// order): [`power_coefficients`] reversed.
+fn descending_coefficients<T: Scalar>(xs: &[T], i: usize) -> Vec<T> {
+    let mut c = power_coefficients(xs, i);
+    c.reverse();
+    c
 }
 
 /// The Lagrange interpolation polynomial `f_n(x) = Σ y_i L_{i,n}(x)` through `(x_i, y_i)`
@@ -101,7 +51,7 @@ impl<T: Scalar> LagrangePolynomial<T> {
     ///
     /// # Errors
     /// [`Error::TooFewPoints`] for no points, [`Error::ShapeMismatch`] for lengths that
-    /// differ, [`Error::NonFinite`], [`Error::Singular`] for repeated nodes.
+    /// differ, [`Error::NonFinite`], [`Error::DuplicateNodes`] for repeated nodes (any order).
     pub fn new(xs: Vec<T>, ys: Vec<T>) -> Result<Self> {
         let what = "Lagrange interpolation nodes";
         if xs.len() != ys.len() {
@@ -111,15 +61,16 @@ impl<T: Scalar> LagrangePolynomial<T> {
                 found: format!("{}", ys.len()),
             });
         }
-        check_nodes(what, &xs)?;
+        check_distinct_nodes(what, &xs, 1)?;
         check_finite("Lagrange interpolation values", ys.iter())?;
         Ok(LagrangePolynomial { xs, ys })
     }
 
-    /// `Σ y_i L_{i,n}(x)`, each `L_{i,n}` by its product formula.
+    /// `Σ y_i L_{i,n}(x)`, each `L_{i,n}` by its product formula
+    /// ([`basis_product`](crate::lagrange::basis_product)).
     pub fn eval(&self, x: T) -> T {
         self.ys.iter().enumerate().fold(T::zero(), |acc, (i, y)| {
-            acc + y.clone() * lagrange_basis(&self.xs, i, x.clone())
+            acc + y.clone() * basis_product_unchecked(&self.xs, i, &x)
         })
     }
 
@@ -129,10 +80,7 @@ impl<T: Scalar> LagrangePolynomial<T> {
         let n = self.xs.len();
         let mut c = vec![T::zero(); n];
         for (i, y) in self.ys.iter().enumerate() {
-            for (k, b) in lagrange_basis_coefficients(&self.xs, i)
-                .into_iter()
-                .enumerate()
-            {
+            for (k, b) in descending_coefficients(&self.xs, i).into_iter().enumerate() {
                 c[k] = c[k].clone() + y.clone() * b;
             }
         }
@@ -214,15 +162,17 @@ impl<T: Scalar> PiecewiseLinear<T> {
 /// `G` with rows `(−4.5, 9, −5.5, 1)`, `(13.5, −22.5, 9, 0)`, `(−13.5, 18, −4.5, 0)`,
 /// `(4.5, −4.5, 1, 0)` (both checked exactly in the tests).
 ///
+/// This is the lecture notes' printed view, highest power first; the crate's own power order
+/// is ascending ([`power_coefficients`]): `G` is those coefficients with the columns
+/// reversed.
+///
 /// # Errors
-/// [`Error::Singular`] for repeated parameters, [`Error::NonFinite`], [`Error::TooFewPoints`]
-/// for none.
+/// [`Error::DuplicateNodes`] for repeated parameters, [`Error::NonFinite`],
+/// [`Error::TooFewPoints`] for none.
 pub fn blending_matrix<T: Scalar>(params: &[T]) -> Result<DMatrix<T>> {
-    check_nodes("interpolation parameters", params)?;
+    check_distinct_nodes("interpolation parameters", params, 1)?;
     let k = params.len();
-    let rows: Vec<Vec<T>> = (0..k)
-        .map(|i| lagrange_basis_coefficients(params, i))
-        .collect();
+    let rows: Vec<Vec<T>> = (0..k).map(|i| descending_coefficients(params, i)).collect();
     Ok(DMatrix::from_fn(k, k, |i, j| rows[i][j].clone()))
 }
 
@@ -306,6 +256,21 @@ impl<T: Scalar> ParametricInterpolant<T> {
 impl<T: Scalar> Curve<T> for ParametricInterpolant<T> {
     fn dim(&self) -> usize {
         self.points.nrows()
+    }
+    /// From the smallest to the largest interpolation parameter (they need not be in order;
+    /// the polynomial continues outside).
+    fn domain(&self) -> (T, T) {
+        let mut lo = self.params[0].clone();
+        let mut hi = lo.clone();
+        for p in &self.params[1..] {
+            if *p < lo {
+                lo = p.clone();
+            }
+            if *p > hi {
+                hi = p.clone();
+            }
+        }
+        (lo, hi)
     }
     fn eval(&self, t: T) -> DVector<T> {
         ParametricInterpolant::eval(self, t)

@@ -8,8 +8,8 @@
 //! [`bezier::BezierPatch`], the Coons and Gordon constructions, and the course material of the
 //! notes: [`interpolation`] (Lagrange, piecewise linear, parametric), [`hermite`] (Ferguson
 //! cubics), [`spline`] (interpolating cubic splines), [`continuity`], [`conversion`] (matrix
-//! forms), [`bspline`], [`nurbs`] and the [`surfaces`] of the notes, all built on the
-//! [`param::Curve`] / [`param::Surface`] traits and generic over the [`scalar::Scalar`] (`f64`
+//! forms), [`bspline`], [`nurbs`], the [`surfaces`] of the notes and the [`integral`]s of the
+//! CAD notes, all built on the [`param::Curve`] / [`param::Surface`] traits and generic over the [`scalar::Scalar`] (`f64`
 //! or exact `BigRational`). Its dependencies are mathematical (nalgebra, num, thiserror; rayon
 //! and pulp behind the default features `parallel` and `simd`).
 //!
@@ -25,6 +25,12 @@
 //! [`Curve::eval_many_into`], layouts in [`grid`]) with `O(m + n)` work per point, no allocation
 //! per point, and both cores for large grids; `docs/PERFORMANCE.md` has the measurements.
 //!
+//! **Domains.** Every curve and surface knows its parameter domain ([`Curve::domain`],
+//! [`Surface::domain`]), and one rule holds for all of them: `eval` continues the curve outside
+//! the domain (nothing is clamped), `try_eval` keeps to it. Coons, Gordon and ruled surfaces
+//! reparametrise each curve's domain affinely onto `[0, 1]` (or refuse one that is not a finite
+//! interval). See [`param`].
+//!
 //! **NaN and infinity** are rejected, once and for all: every entry point (constructors,
 //! evaluations taking parameters, tolerances, the parsers of literals, expressions and data
 //! scripts, every command-line input) answers a non-finite number with a typed error
@@ -35,7 +41,12 @@
 //! **Resource limits** ([`limits`], a plain value passed to what needs it) refuse sizes that
 //! would not fit in memory with [`Error::TooLarge`]; every error variant of the workspace, with
 //! an example triggering it, is listed in `docs/ERRORS.md` (the `cagd-cli` crate's
-//! `error_catalogue`).
+//! `error_catalogue`). Each construction estimates its own work beside its code ([`cost`]), so
+//! a caller can refuse a computation above [`Limits::max_work`] before it starts.
+//!
+//! **One owner per concept**: binomials, products and degree elevation live in [`bernstein`],
+//! every form of the Lagrange basis and its node check in [`lagrange`], the cubic Hermite basis
+//! in [`hermite`], every matrix form (one power order, ascending) in [`conversion`].
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -45,10 +56,12 @@ pub mod bspline;
 pub mod continuity;
 pub mod conversion;
 pub mod coons;
+pub mod cost;
 pub mod error;
 pub mod gordon;
 pub mod grid;
 pub mod hermite;
+pub mod integral;
 pub mod interpolation;
 pub mod lagrange;
 pub mod limits;
@@ -58,6 +71,7 @@ pub mod param;
 pub mod scalar;
 pub mod spline;
 pub mod surfaces;
+pub mod tolerance;
 
 pub use bezier::{BezierCurve, BezierPatch, Edge};
 pub use bspline::{BSplineCurve, BSplineSurface, KnotVector};
@@ -68,6 +82,6 @@ pub use hermite::HermiteCubic;
 pub use limits::Limits;
 pub use linspace::linspace;
 pub use nurbs::{NurbsCurve, NurbsSurface};
-pub use param::{Curve, FnCurve, SampledCurve, Surface};
+pub use param::{Curve, FnCurve, OnUnitInterval, SampledCurve, Surface};
 pub use scalar::Scalar;
 pub use spline::{CubicSpline, EndCondition};

@@ -68,6 +68,7 @@
 //! assert!(limits.check_grid("--u/--v", 10, 10).is_ok());
 //! ```
 
+pub use crate::error::Limit;
 use crate::error::{Error, Result};
 
 /// The resource limits (see the [module documentation](self) for the defaults and why).
@@ -110,69 +111,6 @@ impl Default for Limits {
             max_system_entries: 100_000_000,
             max_work: 2_000_000_000,
         }
-    }
-}
-
-/// One of the resource limits, as [`Error::TooLarge`] names it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Limit {
-    /// [`Limits::max_input_bytes`].
-    InputBytes,
-    /// [`Limits::max_expression_bytes`].
-    ExpressionBytes,
-    /// [`Limits::max_depth`].
-    Depth,
-    /// [`Limits::max_elements`].
-    Elements,
-    /// [`Limits::max_iterations`].
-    Iterations,
-    /// [`Limits::max_samples`].
-    Samples,
-    /// [`Limits::max_grid_points`].
-    GridPoints,
-    /// [`Limits::max_degree`].
-    Degree,
-    /// [`Limits::max_system_entries`].
-    SystemEntries,
-    /// [`Limits::max_work`].
-    Work,
-}
-
-impl Limit {
-    /// Every limit, in field order.
-    pub const ALL: [Limit; 10] = [
-        Limit::InputBytes,
-        Limit::ExpressionBytes,
-        Limit::Depth,
-        Limit::Elements,
-        Limit::Iterations,
-        Limit::Samples,
-        Limit::GridPoints,
-        Limit::Degree,
-        Limit::SystemEntries,
-        Limit::Work,
-    ];
-
-    /// The name of the field of [`Limits`] that holds it, e.g. `max_grid_points`.
-    pub fn field(self) -> &'static str {
-        match self {
-            Limit::InputBytes => "max_input_bytes",
-            Limit::ExpressionBytes => "max_expression_bytes",
-            Limit::Depth => "max_depth",
-            Limit::Elements => "max_elements",
-            Limit::Iterations => "max_iterations",
-            Limit::Samples => "max_samples",
-            Limit::GridPoints => "max_grid_points",
-            Limit::Degree => "max_degree",
-            Limit::SystemEntries => "max_system_entries",
-            Limit::Work => "max_work",
-        }
-    }
-}
-
-impl std::fmt::Display for Limit {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "Limits::{}", self.field())
     }
 }
 

@@ -9,7 +9,7 @@ use std::fmt::{Debug, Display};
 use std::ops::Neg;
 
 use nalgebra::DMatrix;
-use num_bigint::BigInt;
+use num_bigint::{BigInt, BigUint};
 use num_rational::BigRational;
 use num_traits::{FromPrimitive, Num, Signed, ToPrimitive};
 
@@ -44,6 +44,31 @@ pub trait Scalar:
     /// `n` as a scalar.
     fn from_usize(n: usize) -> Self {
         Self::from_ratio(n as i64, 1)
+    }
+    /// A non-negative integer of any size (a binomial coefficient beyond `i64`): exact for
+    /// rationals, correctly rounded (`f64::INFINITY` above `f64::MAX`) for `f64`. The default
+    /// is exact in any field: Horner's rule in base 2³².
+    ///
+    /// ```
+    /// use cagd::Scalar;
+    /// use num_bigint::BigUint;
+    /// use num_rational::BigRational;
+    /// let big = BigUint::from(3u32).pow(50); // 717897987691852588770249, beyond i64
+    /// assert_eq!(<BigRational as Scalar>::from_biguint(&big).to_string(), big.to_string());
+    /// assert_eq!(f64::from_biguint(&big), 7.178979876918526e23);
+    /// ```
+    fn from_biguint(value: &BigUint) -> Self {
+        if let Some(small) = value.to_i64() {
+            return Self::from_ratio(small, 1);
+        }
+        let base = Self::from_ratio(1 << 32, 1);
+        value
+            .to_u32_digits()
+            .iter()
+            .rev()
+            .fold(Self::zero(), |acc, &digit| {
+                acc * base.clone() + Self::from_ratio(i64::from(digit), 1)
+            })
     }
     /// The matrix product `a · b` (`a.ncols()` must equal `b.nrows()`). The default is the
     /// plain triple loop `Σ_k a[i,k] b[k,j]`, `k` ascending, exact for rationals; `f64`
@@ -108,6 +133,13 @@ impl Scalar for f64 {
     #[inline]
     fn from_usize(n: usize) -> Self {
         n as f64
+    }
+    /// One correctly rounded conversion (a rounding per digit of Horner's rule would drift).
+    fn from_biguint(value: &BigUint) -> Self {
+        match value.to_i64() {
+            Some(small) => small as f64,
+            None => ToPrimitive::to_f64(value).unwrap_or(f64::INFINITY),
+        }
     }
     fn mat_mul(a: &DMatrix<Self>, b: &DMatrix<Self>) -> DMatrix<Self> {
         a * b

@@ -276,3 +276,244 @@ pub fn bspline_surface(p: usize, n: usize) -> cagd::bspline::BSplineSurface {
     ];
     cagd::bspline::BSplineSurface::new(p, p, knots.clone(), knots, coords).expect("valid surface")
 }
+
+/// The cubic 3-D B-spline curve with 10 control points on a spiral (the points of
+/// [`curve_of_degree`]`(9)`), clamped uniform knots on `[0, 1]` (7 spans).
+pub fn bspline_cubic_curve() -> cagd::bspline::BSplineCurve {
+    let control = DMatrix::from_fn(3, 10, |k, i| {
+        let a = i as f64 * 0.7;
+        [a.cos(), a.sin(), i as f64 / 9.0][k]
+    });
+    cagd::bspline::BSplineCurve::clamped(3, control).expect("valid curve")
+}
+
+/// The NURBS curve of [`bspline_cubic_curve`]'s control points with weights
+/// `1 + (i mod 4)/3`.
+pub fn nurbs_cubic_curve() -> cagd::nurbs::NurbsCurve {
+    let b = bspline_cubic_curve();
+    let w: Vec<f64> = (0..10).map(|i| 1.0 + (i % 4) as f64 / 3.0).collect();
+    cagd::nurbs::NurbsCurve::new(3, b.knots().as_slice().to_vec(), b.control().clone(), w)
+        .expect("valid curve")
+}
+
+/// The NURBS surface of [`bspline_surface`]`(p, n)`'s net with weights
+/// `1 + ((i + 2j) mod 4)/3`.
+pub fn nurbs_surface(p: usize, n: usize) -> cagd::nurbs::NurbsSurface {
+    let b = bspline_surface(p, n);
+    let w = DMatrix::from_fn(n, n, |i, j| 1.0 + ((i + 2 * j) % 4) as f64 / 3.0);
+    let (ku, kv) = b.knots();
+    cagd::nurbs::NurbsSurface::new(
+        p,
+        p,
+        ku.as_slice().to_vec(),
+        kv.as_slice().to_vec(),
+        b.coordinates().to_vec(),
+        w,
+    )
+    .expect("valid surface")
+}
+
+/// The arithmetic floor: `MULS` multiplications and `ADDS` additions for each of `points`
+/// points, at the machine's vector width (four points per AVX2 vector, in the code
+/// [`f64::vectorized`] chooses), spread over twelve independent chains so that the
+/// multipliers and adders stay busy, with no memory traffic. Its time is the least any kernel
+/// doing those operations per point can take on one core. Returns a value that depends on
+/// every operation (so that none is optimised away).
+pub fn arithmetic_floor<const MULS: usize, const ADDS: usize>(points: usize) -> f64 {
+    f64::vectorized(
+        #[inline(always)]
+        || {
+            let x = std::hint::black_box(0.999_999_999_f64);
+            let y = std::hint::black_box(1e-12_f64);
+            let mut acc = [[1.0f64; 4]; 12];
+            for _ in 0..points.div_ceil(4) {
+                for i in 0..MULS.max(ADDS) {
+                    let c = &mut acc[i % 12];
+                    if i < MULS {
+                        for v in c.iter_mut() {
+                            *v *= x;
+                        }
+                    }
+                    if i < ADDS {
+                        for v in c.iter_mut() {
+                            *v += y;
+                        }
+                    }
+                }
+            }
+            acc.iter().flatten().sum()
+        },
+    )
+}
+
+/// [`arithmetic_floor`] on all threads of the current rayon pool (the points split evenly).
+pub fn arithmetic_floor_all<const MULS: usize, const ADDS: usize>(points: usize) -> f64 {
+    use rayon::prelude::*;
+    let threads = rayon::current_num_threads();
+    (0..threads)
+        .into_par_iter()
+        .map(|_| arithmetic_floor::<MULS, ADDS>(points.div_ceil(threads)))
+        .sum()
+}
+
+/// The memory floor: the buffer written once (`slice::fill`, which the C library does with
+/// streaming or `rep stos` stores that need not read the lines first), on the current thread.
+pub fn fill_floor(out: &mut [f64]) {
+    std::hint::black_box(out).fill(std::hint::black_box(0.5));
+}
+
+/// [`fill_floor`] on all threads of the current rayon pool (a few blocks per thread).
+pub fn fill_floor_all(out: &mut [f64]) {
+    use rayon::prelude::*;
+    let block = out.len().div_ceil(4 * rayon::current_num_threads()).max(1);
+    std::hint::black_box(out)
+        .par_chunks_mut(block)
+        .for_each(|c| c.fill(std::hint::black_box(0.5)));
+}
+
+/// The buffer written once with ordinary vector stores (a pattern of twelve values that the
+/// compiler cannot turn into `memset`): the stores a kernel in safe Rust makes, which read
+/// each cache line before writing it. For comparison with [`fill_floor`].
+pub fn store_floor(out: &mut [f64]) {
+    let pattern: [f64; 12] = std::hint::black_box(std::array::from_fn(|k| k as f64));
+    f64::vectorized(
+        #[inline(always)]
+        || {
+            let out = std::hint::black_box(out);
+            let mut chunks = out.chunks_exact_mut(12);
+            for c in &mut chunks {
+                c.copy_from_slice(&pattern);
+            }
+            for (o, p) in chunks.into_remainder().iter_mut().zip(pattern) {
+                *o = p;
+            }
+        },
+    )
+}
+
+/// [`store_floor`] on all threads of the current rayon pool.
+pub fn store_floor_all(out: &mut [f64]) {
+    use rayon::prelude::*;
+    let block = out
+        .len()
+        .div_ceil(4 * rayon::current_num_threads())
+        .div_ceil(12)
+        * 12;
+    out.par_chunks_mut(block.max(12)).for_each(store_floor);
+}
+
+/// The per-point operations of cagd's kernels (multiplications, additions and subtractions),
+/// counted from their inner loops, for [`arithmetic_floor`].
+pub mod ops {
+    /// Bicubic patch grid, 3-D: `Σ_j B_j^3(v) c_j`, 4 terms × 3 coordinates (the row's
+    /// `c_j` cost 48 multiply-adds per row of 1000 points, left out).
+    pub const BICUBIC: (usize, usize) = (12, 9);
+    /// Cubic 3-D curve: the basis as products (`t², t³, s = 1 − t, s², s³` and the four
+    /// binomial products: 10 multiplications, 1 subtraction), then 4 terms × 3 coordinates.
+    pub const CUBIC_CURVE: (usize, usize) = (22, 10);
+}
+
+/// One line of the accuracy study of the B-spline and NURBS curve batches.
+#[derive(Debug, Clone, Copy)]
+pub struct SplineAccuracyRow {
+    /// The degree.
+    pub degree: usize,
+    /// The fast batch of B-spline curves (`eval_many_into`), in units of `ε · max |P_i|`.
+    pub bspline_fast: f64,
+    /// The exact-order batch of B-spline curves (`eval_many_exact_order_into`, the values of
+    /// `try_eval`), in the same units.
+    pub bspline_exact_order: f64,
+    /// The fast batch of NURBS curves, in units of `ε · max |P_k|`.
+    pub nurbs_fast: f64,
+    /// The exact-order batch of NURBS curves.
+    pub nurbs_exact_order: f64,
+}
+
+/// The largest errors of the B-spline and NURBS curve batches against exact rational
+/// arithmetic at the same double parameter, in units of `ε · max |P|`: `curves` random 3-D
+/// curves per degree (10 + degree control points in `[−1, 1]³`, clamped knots with random
+/// interior knots, weights in `[1/4, 4]`), `params` random parameters each.
+pub fn spline_accuracy_study(
+    degrees: &[usize],
+    curves: usize,
+    params: usize,
+) -> Vec<SplineAccuracyRow> {
+    use cagd::bspline::BSplineCurve;
+    use cagd::nurbs::NurbsCurve;
+    let mut state = 0x9e37_79b9_7f4a_7c15u64;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let lift = |x: f64| <BigRational as Scalar>::from_f64(x).expect("finite");
+    let lift_all = |v: &[f64]| v.iter().map(|&x| lift(x)).collect::<Vec<_>>();
+    degrees
+        .iter()
+        .map(|&p| {
+            let mut row = SplineAccuracyRow {
+                degree: p,
+                bspline_fast: 0.0,
+                bspline_exact_order: 0.0,
+                nurbs_fast: 0.0,
+                nurbs_exact_order: 0.0,
+            };
+            for _ in 0..curves {
+                let n = 10 + p;
+                let mut inner: Vec<f64> = (0..n - p - 1).map(|_| next()).collect();
+                inner.sort_by(f64::total_cmp);
+                let mut knots = vec![0.0; p + 1];
+                knots.extend(inner);
+                knots.extend(vec![1.0; p + 1]);
+                let control: Vec<f64> = (0..3 * n).map(|_| 2.0 * next() - 1.0).collect();
+                let scale = control.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+                let weights: Vec<f64> = (0..n).map(|_| 0.25 + 3.75 * next()).collect();
+                let m = DMatrix::from_column_slice(3, n, &control);
+                let c = BSplineCurve::new(p, knots.clone(), m.clone()).expect("valid");
+                let r = NurbsCurve::new(p, knots.clone(), m, weights.clone()).expect("valid");
+                let mq = DMatrix::from_column_slice(3, n, &lift_all(&control));
+                let cq = BSplineCurve::new(p, lift_all(&knots), mq.clone()).expect("valid");
+                let rq =
+                    NurbsCurve::new(p, lift_all(&knots), mq, lift_all(&weights)).expect("valid");
+                let ts: Vec<f64> = (0..params).map(|_| next()).collect();
+                let mut fast = vec![0.0; 3 * params];
+                let mut exact_order = vec![0.0; 3 * params];
+                let worst =
+                    |fast: &[f64],
+                     exact_order: &[f64],
+                     eval: &dyn Fn(BigRational) -> Vec<BigRational>| {
+                        let (mut a, mut b) = (0.0f64, 0.0f64);
+                        for (k, &t) in ts.iter().enumerate() {
+                            let e = eval(lift(t));
+                            for j in 0..3 {
+                                let err = |x: f64| {
+                                    (lift(x) - e[j].clone()).to_f64().abs() / (f64::EPSILON * scale)
+                                };
+                                a = a.max(err(fast[3 * k + j]));
+                                b = b.max(err(exact_order[3 * k + j]));
+                            }
+                        }
+                        (a, b)
+                    };
+                c.eval_many_into(&ts, &mut fast).expect("sizes");
+                c.eval_many_exact_order_into(&ts, &mut exact_order)
+                    .expect("sizes");
+                let (a, b) = worst(&fast, &exact_order, &|t| {
+                    cq.try_eval(t).expect("in domain").as_slice().to_vec()
+                });
+                row.bspline_fast = row.bspline_fast.max(a);
+                row.bspline_exact_order = row.bspline_exact_order.max(b);
+                r.eval_many_into(&ts, &mut fast).expect("sizes");
+                r.eval_many_exact_order_into(&ts, &mut exact_order)
+                    .expect("sizes");
+                let (a, b) = worst(&fast, &exact_order, &|t| {
+                    rq.try_eval(t).expect("in domain").as_slice().to_vec()
+                });
+                row.nurbs_fast = row.nurbs_fast.max(a);
+                row.nurbs_exact_order = row.nurbs_exact_order.max(b);
+            }
+            row
+        })
+        .collect()
+}

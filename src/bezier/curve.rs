@@ -5,7 +5,9 @@ use nalgebra::{DMatrix, DVector};
 use super::scheme::DeCasteljauScheme;
 use super::{check_param, check_params};
 use crate::bernstein::{bernstein_all, bernstein_all_into, falling_factorial, power};
+use crate::cost::{polynomial_bits, Cost};
 use crate::error::{check_finite, Error, Result};
+use crate::param::check_parameter;
 use crate::param::Curve;
 use crate::scalar::Scalar;
 
@@ -30,8 +32,10 @@ use crate::scalar::Scalar;
 /// computes what the algorithm of §2.1 describes.
 ///
 /// **Input policy.** Constructors reject empty or ragged input and NaN/∞ coordinates with a
-/// typed [`Error`]; nothing panics on user input. [`eval`](Self::eval) accepts any parameter
-/// (NaN in gives NaN out); [`try_eval`](Self::try_eval) rejects non-finite ones.
+/// typed [`Error`]; nothing panics on user input. The domain is `[a, b]`;
+/// [`eval`](Self::eval) accepts any parameter (outside `[a, b]` the polynomial continues; NaN
+/// in gives NaN out), [`try_eval`](Self::try_eval) only those in `[a, b]` (the rule of
+/// [`crate::param`]).
 ///
 /// ```
 /// use cagd::bezier::BezierCurve;
@@ -239,21 +243,30 @@ impl<T: Scalar> BezierCurve<T> {
         work.column(0).into_owned()
     }
 
-    /// [`eval`](Self::eval) with the parameter checked.
+    /// [`eval`](Self::eval) for a parameter in the domain `[a, b]`.
     ///
     /// # Errors
-    /// [`Error::NonFinite`] for a NaN or infinite `u`.
+    /// [`Error::NonFinite`] for a NaN or infinite `u`, [`Error::ParameterOutOfRange`] for a
+    /// finite `u` outside `[a, b]`.
     ///
     /// ```
     /// use cagd::bezier::BezierCurve;
+    /// use cagd::Error;
     /// let c = BezierCurve::from_points(&[[0.0], [2.0]])?;
     /// assert_eq!(c.try_eval(0.25)?.as_slice(), &[0.5]);
-    /// assert!(c.try_eval(f64::NAN).is_err());
+    /// assert_eq!(c.eval(1.5).as_slice(), &[3.0]); // eval continues the line
+    /// assert!(matches!(c.try_eval(1.5), Err(Error::ParameterOutOfRange { .. })));
+    /// assert!(matches!(c.try_eval(f64::NAN), Err(Error::NonFinite { .. })));
     /// # Ok::<(), cagd::Error>(())
     /// ```
     pub fn try_eval(&self, u: T) -> Result<DVector<T>> {
-        check_param("Bézier curve parameter", &u)?;
+        check_parameter("Bézier curve parameter", &u, &self.domain())?;
         Ok(self.eval(u))
+    }
+
+    /// The domain `[a, b]` (the interval the curve was built on, `[0, 1]` by default).
+    pub fn domain(&self) -> (T, T) {
+        (self.a.clone(), self.b.clone())
     }
 
     /// The whole de Casteljau scheme at `u` (every `b_i^r`, thesis §2.1). Its last point equals
@@ -270,6 +283,27 @@ impl<T: Scalar> BezierCurve<T> {
     pub fn scheme(&self, u: T) -> DeCasteljauScheme<T> {
         let (s, t) = self.weights(&u);
         DeCasteljauScheme::compute(&self.control, &s, &t, u)
+    }
+
+    /// The cost of the point at one parameter of `param_bits` bits by de Casteljau's scheme
+    /// ([`scheme`](Self::scheme); [`eval`](Self::eval) does no more): `d (n+1)²` operations
+    /// (`n` levels of convex combinations, two products and a sum per coordinate and point), on
+    /// numbers of [`polynomial_bits`]`(n, param_bits,
+    /// control_bits)` bits, `control_bits` the size of the control points.
+    ///
+    /// ```
+    /// use cagd::bezier::BezierCurve;
+    /// use cagd::cost::Cost;
+    /// let c = BezierCurve::from_points(&[[0.0, 0.0], [1.0, 2.0], [3.0, 1.0]])?;
+    /// assert_eq!(c.eval_cost(4, 10), Cost::new(18, 20));
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn eval_cost(&self, param_bits: u128, control_bits: u128) -> Cost {
+        let n = self.degree();
+        Cost::new(
+            self.dim() as u128 * (n as u128 + 1).pow(2),
+            polynomial_bits(n, param_bits, control_bits),
+        )
     }
 
     /// The point `Σ_i b_i B_i^n(t)`, `t = (u − a)/(b − a)`, from the Bernstein form (thesis
@@ -293,7 +327,10 @@ impl<T: Scalar> BezierCurve<T> {
     }
 
     /// The points at all parameters `us`, by de Casteljau: a `d × k` matrix whose column `k`
-    /// is `b^n(us[k])` (the layout of the thesis's sample matrices `T(:, k)`).
+    /// is `b^n(us[k])` (the layout of the thesis's sample matrices `T(:, k)`). Like the
+    /// thesis's `deCasteljau` it takes any finite parameters, continuing the polynomial outside
+    /// the domain as [`eval`](Self::eval) does. In exact rationals the same values come from the
+    /// Bernstein sums of [`eval_many_into`](Self::eval_many_into), with far fewer operations.
     ///
     /// # Errors
     /// [`Error::EmptyGrid`] for an empty list, [`Error::NonFinite`] for a NaN or infinite
@@ -310,6 +347,13 @@ impl<T: Scalar> BezierCurve<T> {
     /// ```
     pub fn eval_many(&self, us: &[T]) -> Result<DMatrix<T>> {
         check_params("Bézier curve parameters", us)?;
+        if crate::grid::exact::is_rational::<T>() {
+            // Exact: the same values from the Bernstein sums of the batch, a fraction of the
+            // operations (and gcds) of de Casteljau's triangle.
+            let mut out = DMatrix::from_element(self.dim(), us.len(), T::zero());
+            self.eval_many_into(us, out.as_mut_slice())?;
+            return Ok(out);
+        }
         let columns: Vec<DVector<T>> = us.iter().map(|u| self.eval(u.clone())).collect();
         Ok(DMatrix::from_columns(&columns))
     }
@@ -343,6 +387,10 @@ impl<T: Scalar> BezierCurve<T> {
         let d = self.dim();
         let len = crate::grid::grid_len("Bézier curve points", &[us.len(), d])?;
         crate::grid::check_len("Bézier curve point buffer", len, out)?;
+        let local = |u: &T| self.local_parameter(u.clone());
+        if crate::grid::exact::bezier_points(self.control.as_slice(), d, local, us, out) {
+            return Ok(());
+        }
         // Points per block: their basis rows fit in a small scratch buffer.
         const BLOCK: usize = 256;
         let terms = self.degree() + 1;
@@ -548,7 +596,8 @@ impl<T: Scalar> BezierCurve<T> {
         Ok((left, right))
     }
 
-    /// The same curve written with degree `n + 1` (degree elevation):
+    /// The same curve written with degree `n + 1` (degree elevation, coordinate by coordinate
+    /// [`bernstein::elevate_once`](crate::bernstein::elevate_once)):
     /// `b'_i = i/(n+1) · b_{i−1} + (1 − i/(n+1)) · b_i`, `i = 0, …, n + 1` (with the
     /// out-of-range terms dropped, so `b'_0 = b_0` and `b'_{n+1} = b_n`).
     ///
@@ -561,19 +610,12 @@ impl<T: Scalar> BezierCurve<T> {
     /// # Ok::<(), cagd::Error>(())
     /// ```
     pub fn elevate(&self) -> Self {
-        let n = self.degree();
-        let (d, m) = (self.dim(), n + 1);
-        let control = DMatrix::from_fn(d, m + 1, |c, i| {
-            if i == 0 {
-                self.control[(c, 0)].clone()
-            } else if i == m {
-                self.control[(c, n)].clone()
-            } else {
-                let alpha = T::from_ratio(i as i64, m as i64);
-                alpha.clone() * self.control[(c, i - 1)].clone()
-                    + (T::one() - alpha) * self.control[(c, i)].clone()
-            }
-        });
+        let rows: Vec<Vec<T>> = self
+            .control
+            .row_iter()
+            .map(|r| crate::bernstein::elevate_once(&r.iter().cloned().collect::<Vec<_>>()))
+            .collect();
+        let control = DMatrix::from_fn(self.dim(), self.degree() + 2, |c, i| rows[c][i].clone());
         BezierCurve::from_valid(control, self.a.clone(), self.b.clone())
     }
 
@@ -598,8 +640,16 @@ impl<T: Scalar> Curve<T> for BezierCurve<T> {
         BezierCurve::dim(self)
     }
 
+    fn domain(&self) -> (T, T) {
+        BezierCurve::domain(self)
+    }
+
     fn eval(&self, t: T) -> DVector<T> {
         BezierCurve::eval(self, t)
+    }
+
+    fn try_eval(&self, t: T) -> Result<DVector<T>> {
+        BezierCurve::try_eval(self, t)
     }
 
     fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
@@ -685,6 +735,16 @@ mod tests {
 
     fn q(n: i64, d: i64) -> BigRational {
         <BigRational as Scalar>::from_ratio(n, d)
+    }
+
+    #[test]
+    fn de_casteljau_cost_grows_with_the_degree_and_the_parameter() {
+        let c = BezierCurve::new(DMatrix::<f64>::zeros(3, 5)).unwrap();
+        assert_eq!(c.eval_cost(0, 0), Cost::new(3 * 25, 4));
+        // Each of the 4 levels multiplies by t = p/q: 10-bit parameters add 11 bits each.
+        assert_eq!(c.eval_cost(10, 7).bits(), 7 + 4 * 11);
+        let point = BezierCurve::new(DMatrix::<f64>::zeros(2, 1)).unwrap();
+        assert_eq!(point.eval_cost(10, 7), Cost::new(2, 7));
     }
 
     #[test]

@@ -11,7 +11,11 @@
 //!
 //! and `P · M_B` is computed once per curve. In general `M` is the `(n+1) × (n+1)` matrix whose
 //! row `i` holds the monomial coefficients of `B_i^n`:
-//! `M[i, j] = (−1)^(j−i) C(n, j) C(j, i)` for `j ≥ i`, zero below the diagonal.
+//! `M[i, j] = (−1)^(j−i) C(n, j) C(j, i)` for `j ≥ i`, zero below the diagonal — the matrices
+//! are owned by [`crate::conversion`] ([`bezier_to_monomial_matrix`],
+//! [`monomial_to_bezier_matrix`],
+//! [`cubic_bezier_matrix`](crate::conversion::cubic_bezier_matrix)), in its power order (ascending, as
+//! here).
 //!
 //! See [`MatrixForm`] for why de Casteljau's algorithm, not this form, is the default.
 
@@ -19,56 +23,9 @@ use nalgebra::{DMatrix, DVector};
 
 use super::curve::{check_control, BezierCurve};
 use super::mat_mul;
-use crate::bernstein::binomial_scalar;
+use crate::conversion::{bezier_to_monomial_matrix, monomial_to_bezier_matrix};
 use crate::error::Result;
 use crate::scalar::Scalar;
-
-/// The Bézier-to-monomial matrix of degree `n`, `(n+1) × (n+1)`: row `i` holds the coefficients
-/// of `1, t, …, t^n` in `B_i^n(t)`, i.e. `M[i, j] = (−1)^(j−i) C(n, j) C(j, i)` for `j ≥ i`.
-/// A curve with control points `P` (columns) is `P · M · [1, t, …, t^n]ᵀ`.
-///
-/// ```
-/// use cagd::bezier::bezier_to_monomial_matrix;
-/// use nalgebra::DMatrix;
-/// // B_0^2 = 1 − 2t + t², B_1^2 = 2t − 2t², B_2^2 = t².
-/// let m: DMatrix<f64> = bezier_to_monomial_matrix(2);
-/// assert_eq!(m, DMatrix::from_row_slice(3, 3, &[1.0, -2.0, 1.0, 0.0, 2.0, -2.0, 0.0, 0.0, 1.0]));
-/// ```
-pub fn bezier_to_monomial_matrix<T: Scalar>(n: usize) -> DMatrix<T> {
-    DMatrix::from_fn(n + 1, n + 1, |i, j| {
-        if j < i {
-            T::zero()
-        } else {
-            let c = binomial_scalar::<T>(n, j) * binomial_scalar::<T>(j, i);
-            if (j - i) % 2 == 0 {
-                c
-            } else {
-                -c
-            }
-        }
-    })
-}
-
-/// The cubic Bézier matrix `M_B` of the course notes (the matrix-form notes, §1.2):
-///
-/// ```text
-/// [1 −3  3 −1]
-/// [0  3 −6  3]
-/// [0  0  3 −3]
-/// [0  0  0  1]
-/// ```
-///
-/// (the notes print it correctly; their parametric form `p(t) = 0p_0B_0^3(t) + …` has a stray
-/// `0` in front of `p_0`).
-///
-/// ```
-/// use cagd::bezier::cubic_bezier_matrix;
-/// let m: nalgebra::DMatrix<f64> = cubic_bezier_matrix();
-/// assert_eq!(m.row(1).iter().copied().collect::<Vec<_>>(), vec![0.0, 3.0, -6.0, 3.0]);
-/// ```
-pub fn cubic_bezier_matrix<T: Scalar>() -> DMatrix<T> {
-    bezier_to_monomial_matrix(3)
-}
 
 /// A polynomial curve in monomial form, `p(u) = Σ_j a_j t^j` with `t = (u − a)/(b − a)`.
 ///
@@ -167,8 +124,9 @@ impl<T: Scalar> MatrixForm<T> {
         })
     }
 
-    /// Back to Bézier form: `b_i = Σ_{j ≤ i} C(i, j) / C(n, j) · a_j` (the inverse of
-    /// [`bezier_to_monomial_matrix`]), over the same interval.
+    /// Back to Bézier form: `b_i = Σ_{j ≤ i} C(i, j) / C(n, j) · a_j`
+    /// ([`monomial_to_bezier_matrix`], the inverse of [`bezier_to_monomial_matrix`]), over the
+    /// same interval.
     ///
     /// ```
     /// use cagd::bezier::{BezierCurve, MatrixForm};
@@ -179,14 +137,7 @@ impl<T: Scalar> MatrixForm<T> {
     /// # Ok::<(), cagd::Error>(())
     /// ```
     pub fn to_bezier(&self) -> BezierCurve<T> {
-        let n = self.degree();
-        let inverse = DMatrix::from_fn(n + 1, n + 1, |j, i| {
-            if j > i {
-                T::zero()
-            } else {
-                binomial_scalar::<T>(i, j) / binomial_scalar::<T>(n, j)
-            }
-        });
+        let inverse = monomial_to_bezier_matrix::<T>(self.degree());
         BezierCurve::from_valid(
             mat_mul(&self.coefficients, &inverse),
             self.a.clone(),
@@ -197,7 +148,8 @@ impl<T: Scalar> MatrixForm<T> {
 
 impl<T: Scalar> BezierCurve<T> {
     /// The matrix (monomial) form `P · M` of this curve, over the same interval (the matrix-form notes;
-    /// [`cubic_bezier_matrix`] for cubics, [`bezier_to_monomial_matrix`] in general).
+    /// [`cubic_bezier_matrix`](crate::conversion::cubic_bezier_matrix) for cubics,
+    /// [`bezier_to_monomial_matrix`] in general).
     pub fn matrix_form(&self) -> MatrixForm<T> {
         let m = bezier_to_monomial_matrix::<T>(self.degree());
         let (a, b) = self.interval();
@@ -221,6 +173,22 @@ impl<T: Scalar> BezierCurve<T> {
     /// ```
     pub fn eval_matrix_form(&self, u: T) -> DVector<T> {
         self.matrix_form().eval(u)
+    }
+}
+
+/// The monomial form as a [`Curve`](crate::Curve) over its interval `[a, b]` (the polynomial
+/// continues outside it, as for every curve; see [`crate::param`]).
+impl<T: Scalar> crate::param::Curve<T> for MatrixForm<T> {
+    fn dim(&self) -> usize {
+        MatrixForm::dim(self)
+    }
+
+    fn domain(&self) -> (T, T) {
+        (self.a.clone(), self.b.clone())
+    }
+
+    fn eval(&self, t: T) -> DVector<T> {
+        MatrixForm::eval(self, t)
     }
 }
 

@@ -23,14 +23,18 @@
 //! in `BigRational`.
 
 mod bilinear;
+mod bilinear_patch;
 mod curve;
 mod matrix_form;
 mod patch;
 mod scheme;
 
+/// The matrices of the matrix form, owned by [`crate::conversion`] and re-exported here beside
+/// [`MatrixForm`].
+pub use crate::conversion::{bezier_to_monomial_matrix, cubic_bezier_matrix};
 pub use bilinear::bilinear_interpolate;
 pub use curve::BezierCurve;
-pub use matrix_form::{bezier_to_monomial_matrix, cubic_bezier_matrix, MatrixForm};
+pub use matrix_form::MatrixForm;
 pub use patch::{BezierPatch, Edge};
 pub use scheme::{DeCasteljauScheme, PatchScheme, PatchStep};
 

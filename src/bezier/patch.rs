@@ -3,12 +3,13 @@
 use crate::grid::PointGrid;
 use nalgebra::{DMatrix, DVector};
 
+use super::check_params;
 use super::curve::BezierCurve;
 use super::scheme::{patch_step_in_place, patch_steps, PatchScheme};
-use super::{check_param, check_params};
 use crate::bernstein::{bernstein_all, bernstein_all_into, falling_factorial};
+use crate::cost::{polynomial_bits, Cost};
 use crate::error::{check_finite, Error, Result};
-use crate::param::Surface;
+use crate::param::{check_parameter, Surface};
 use crate::scalar::Scalar;
 
 /// One of the four boundary curves of a patch over `[0, 1]²`.
@@ -269,8 +270,8 @@ impl<T: Scalar> BezierPatch<T> {
     }
 
     /// The point `x(u, v)` by the tensor de Casteljau algorithm (see the type docs). Any
-    /// parameters are accepted (outside `[0, 1]²` the polynomial is extrapolated; NaN gives
-    /// NaN); [`try_eval`](Self::try_eval) rejects non-finite ones.
+    /// parameters are accepted (outside the domain `[0, 1]²` the polynomial continues; NaN
+    /// gives NaN); [`try_eval`](Self::try_eval) accepts only the domain.
     ///
     /// ```
     /// use cagd::bezier::BezierPatch;
@@ -287,21 +288,26 @@ impl<T: Scalar> BezierPatch<T> {
         DVector::from_iterator(work.len(), work.iter().map(|x| x[(0, 0)].clone()))
     }
 
-    /// [`eval`](Self::eval) with the parameters checked.
+    /// [`eval`](Self::eval) for parameters in the domain `[0, 1]²`.
     ///
     /// # Errors
-    /// [`Error::NonFinite`] for a NaN or infinite `u` or `v`.
+    /// [`Error::NonFinite`] for a NaN or infinite `u` or `v`, [`Error::ParameterOutOfRange`]
+    /// for a finite one outside `[0, 1]`.
     ///
     /// ```
     /// use cagd::bezier::BezierPatch;
+    /// use cagd::Error;
     /// let p: BezierPatch = BezierPatch::hyperbolic_paraboloid();
     /// assert_eq!(p.try_eval(1.0, 0.5)?.as_slice(), &[1.0, 0.5, 0.5]);
-    /// assert!(p.try_eval(f64::INFINITY, 0.5).is_err());
+    /// assert!(matches!(p.try_eval(f64::INFINITY, 0.5), Err(Error::NonFinite { .. })));
+    /// assert!(matches!(p.try_eval(0.5, 1.5), Err(Error::ParameterOutOfRange { .. })));
+    /// assert_eq!(p.eval(0.5, 1.5).as_slice(), &[0.5, 1.5, 0.75]); // eval continues
     /// # Ok::<(), cagd::Error>(())
     /// ```
     pub fn try_eval(&self, u: T, v: T) -> Result<DVector<T>> {
-        check_param("Bézier patch parameter u", &u)?;
-        check_param("Bézier patch parameter v", &v)?;
+        let unit = (T::zero(), T::one());
+        check_parameter("Bézier patch parameter u", &u, &unit)?;
+        check_parameter("Bézier patch parameter v", &v, &unit)?;
         Ok(self.eval(u, v))
     }
 
@@ -319,6 +325,37 @@ impl<T: Scalar> BezierPatch<T> {
     /// ```
     pub fn scheme(&self, u: T, v: T) -> PatchScheme<T> {
         PatchScheme::compute(&self.coords, u, v)
+    }
+
+    /// The cost of the tensor de Casteljau scheme at one point ([`scheme`](Self::scheme)):
+    /// `(m+1)(n+1)(m+n+2)` operations per coordinate (`m + n` levels over at most
+    /// `(m+1)(n+1)` points), counted for the three coordinates of a net in space, on numbers
+    /// of the size of [`grid_cost`](Self::grid_cost).
+    ///
+    /// ```
+    /// use cagd::bezier::BezierPatch;
+    /// let p: BezierPatch = BezierPatch::hyperbolic_paraboloid(); // degree (1, 1)
+    /// assert_eq!(p.scheme_cost(0, 0, 0).ops(), 3 * 4 * 4);
+    /// ```
+    pub fn scheme_cost(&self, u_bits: u128, v_bits: u128, control_bits: u128) -> Cost {
+        let (m1, n1) = self.net_size();
+        Cost::new(
+            3 * (m1 * n1) * (m1 + n1),
+            self.point_bits(u_bits, v_bits, control_bits),
+        )
+    }
+
+    /// `(m + 1, n + 1)`.
+    fn net_size(&self) -> (u128, u128) {
+        let (m, n) = self.degree();
+        (m as u128 + 1, n as u128 + 1)
+    }
+
+    /// The size the values reach: the bits of `u` at `m` levels, of `v` at `n`, over the
+    /// control points'.
+    fn point_bits(&self, u_bits: u128, v_bits: u128, control_bits: u128) -> u128 {
+        let (m, n) = self.degree();
+        polynomial_bits(m, u_bits, 0).saturating_add(polynomial_bits(n, v_bits, control_bits))
     }
 
     /// The point from the Bernstein form, eq. (3.5): `Σ_i B_i^m(u) (Σ_j B_j^n(v) b_{i,j})`, the
@@ -462,6 +499,10 @@ impl<T: Scalar> BezierPatch<T> {
     /// [`eval_grid_into`](Self::eval_grid_into) (`O(m + n)` per point). Agrees with
     /// [`eval`](Self::eval) up to rounding (exactly for rationals).
     ///
+    /// Like the thesis's `ploskevB` it takes any finite parameters: outside `[0, 1]` the
+    /// polynomial continues, as in [`eval`](Self::eval) (a grid check, not
+    /// [`try_eval`](Self::try_eval)'s domain check).
+    ///
     /// # Errors
     /// [`Error::EmptyGrid`] for an empty `us` or `vs`; [`Error::NonFinite`] for a NaN or
     /// infinite parameter.
@@ -479,6 +520,23 @@ impl<T: Scalar> BezierPatch<T> {
         check_params("Bézier patch u grid", us)?;
         check_params("Bézier patch v grid", vs)?;
         Ok(self.grid(us, vs))
+    }
+
+    /// The cost of one point of [`try_eval_grid`](Self::try_eval_grid): the basis rows in `u`
+    /// and `v`, then about `2 (m+1)(n+1)` operations per coordinate, counted for the three
+    /// coordinates of a net in space (`6 (m+1)(n+1)`), on numbers that grow by the bits of `u`
+    /// at `m` levels and of `v` at `n` over the control points' `control_bits`
+    /// ([`polynomial_bits`]).
+    ///
+    /// ```
+    /// use cagd::bezier::BezierPatch;
+    /// use cagd::cost::Cost;
+    /// let p: BezierPatch = BezierPatch::hyperbolic_paraboloid(); // degree (1, 1)
+    /// assert_eq!(p.grid_cost(3, 5, 2), Cost::new(24, 4 + 8));
+    /// ```
+    pub fn grid_cost(&self, u_bits: u128, v_bits: u128, control_bits: u128) -> Cost {
+        let (m1, n1) = self.net_size();
+        Cost::new(6 * m1 * n1, self.point_bits(u_bits, v_bits, control_bits))
     }
 
     fn grid(&self, us: &[T], vs: &[T]) -> PointGrid<T> {
@@ -531,7 +589,7 @@ impl<T: Scalar> BezierPatch<T> {
         let d = self.dim();
         let (rows_u, terms) = (m + 1, n + 1);
         let bu = crate::grid::rows_of(us, rows_u, |t, row| bernstein_all_into(t, row));
-        let bv = crate::grid::rows_of(vs, terms, |t, row| bernstein_all_into(t, row));
+        let bv = crate::grid::planar_rows_of(vs, terms, |t, row| bernstein_all_into(t, row));
         // The net as (m+1) blocks of (n+1)·d: net[(i·(n+1) + j)·d + k] = b_{i,j}[k].
         let mut net = Vec::with_capacity(rows_u * terms * d);
         for i in 0..rows_u {
@@ -547,7 +605,7 @@ impl<T: Scalar> BezierPatch<T> {
             || vec![T::zero(); terms * d],
             |coeffs, a, row| {
                 crate::grid::weighted_sum_into(&bu[a * rows_u..(a + 1) * rows_u], &net, coeffs);
-                crate::grid::contract_row(&bv, terms, coeffs, row);
+                crate::grid::contract_row_planar(&bv, vs.len(), 0, terms, coeffs, row);
             },
         );
     }
@@ -558,8 +616,17 @@ impl<T: Scalar> Surface<T> for BezierPatch<T> {
         BezierPatch::dim(self)
     }
 
+    /// `[0, 1]²`.
+    fn domain(&self) -> ((T, T), (T, T)) {
+        ((T::zero(), T::one()), (T::zero(), T::one()))
+    }
+
     fn eval(&self, u: T, v: T) -> DVector<T> {
         BezierPatch::eval(self, u, v)
+    }
+
+    fn try_eval(&self, u: T, v: T) -> Result<DVector<T>> {
+        BezierPatch::try_eval(self, u, v)
     }
 
     /// Grid evaluation through basis matrices (see [`BezierPatch::try_eval_grid`]); empty
@@ -580,6 +647,16 @@ mod tests {
 
     fn q(n: i64, d: i64) -> BigRational {
         <BigRational as Scalar>::from_ratio(n, d)
+    }
+
+    #[test]
+    fn grid_and_scheme_costs() {
+        let p = rational_patch(3, 2); // (m + 1)(n + 1) = 12
+        assert_eq!(p.grid_cost(0, 0, 0), Cost::new(72, 5));
+        assert_eq!(p.scheme_cost(0, 0, 0), Cost::new(3 * 12 * 7, 5));
+        // u at m = 3 levels, v at n = 2 over the control points.
+        assert_eq!(p.grid_cost(4, 9, 20).bits(), 3 * 5 + 2 * 10 + 20);
+        assert_eq!(p.scheme_cost(4, 9, 20).bits(), p.grid_cost(4, 9, 20).bits());
     }
 
     fn rational_patch(m: usize, n: usize) -> BezierPatch<BigRational> {

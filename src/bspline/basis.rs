@@ -1,7 +1,8 @@
 //! B-spline basis functions: the Cox–de Boor recursion (the CAD notes and the lecture notes) and the
 //! triangular scheme that evaluates the `p + 1` non-zero ones at once.
 
-use crate::error::{Error, Result};
+use crate::cost::{polynomial_bits, Cost};
+use crate::error::Result;
 use crate::scalar::Scalar;
 
 /// The index `s` of the knot span `[u_s, u_{s+1})` holding `u`, for a degree-`p` spline with
@@ -10,7 +11,8 @@ use crate::scalar::Scalar;
 /// which numbers from 0 too).
 ///
 /// # Errors
-/// [`Error::ParameterOutOfRange`] unless `u_p ≤ u ≤ u_{n_control}`.
+/// [`Error::NonFinite`](crate::Error::NonFinite) for NaN or ±∞, [`Error::ParameterOutOfRange`](crate::Error::ParameterOutOfRange) unless
+/// `u_p ≤ u ≤ u_{n_control}`.
 ///
 /// ```
 /// use cagd::bspline::find_span;
@@ -42,19 +44,34 @@ pub(crate) fn last_span<T: Scalar>(p: usize, n_control: usize, knots: &[T]) -> u
     s
 }
 
-/// `Ok` if `lo ≤ u ≤ hi` (so not NaN), else the [`Error::ParameterOutOfRange`] that
-/// [`find_span`] reports.
+/// `Ok` if `lo ≤ u ≤ hi`, else the error [`find_span`] reports: [`Error::NonFinite`](crate::Error::NonFinite) for NaN
+/// or ±∞, [`Error::ParameterOutOfRange`](crate::Error::ParameterOutOfRange) for a finite `u` outside (the `try_eval` rule of
+/// [`crate::param`]).
 pub(crate) fn check_in_domain<T: Scalar>(u: &T, lo: &T, hi: &T) -> Result<()> {
-    if u.is_finite_value() && lo <= u && u <= hi {
-        Ok(())
-    } else {
-        Err(Error::ParameterOutOfRange {
-            what: "B-spline parameter",
-            value: u.to_f64(),
-            min: lo.to_f64(),
-            max: hi.to_f64(),
-        })
+    crate::param::check_parameter("B-spline parameter", u, &(lo.clone(), hi.clone()))
+}
+
+/// The span whose polynomial piece gives the curve at `u`: [`find_span`]'s inside the domain,
+/// the first non-empty span below it and the last one above it (so the end pieces continue,
+/// the `eval` rule of [`crate::param`]); `None` for NaN or ±∞.
+pub(crate) fn extended_span<T: Scalar>(
+    p: usize,
+    n_control: usize,
+    knots: &[T],
+    u: &T,
+) -> Option<usize> {
+    if !u.is_finite_value() {
+        return None;
     }
+    let (lo, hi) = (&knots[p], &knots[n_control]);
+    let at = if u < lo {
+        lo
+    } else if u > hi {
+        hi
+    } else {
+        u
+    };
+    find_span(p, n_control, knots, at).ok()
 }
 
 /// The non-zero basis functions `N_{s−p,p}(u), …, N_{s,p}(u)` on the span `s`
@@ -160,7 +177,7 @@ pub fn cox_de_boor<T: Scalar>(i: usize, p: usize, knots: &[T], u: &T) -> T {
 /// degree-`p` spline with `n_control` control points.
 ///
 /// # Errors
-/// [`Error::ParameterOutOfRange`] outside the domain `[u_p, u_n]`.
+/// [`Error::ParameterOutOfRange`](crate::Error::ParameterOutOfRange) outside the domain `[u_p, u_n]`.
 pub fn basis_all<T: Scalar>(p: usize, n_control: usize, knots: &[T], u: &T) -> Result<Vec<T>> {
     let s = find_span(p, n_control, knots, u)?;
     let local = basis_functions(p, knots, s, u);
@@ -169,6 +186,50 @@ pub fn basis_all<T: Scalar>(p: usize, n_control: usize, knots: &[T], u: &T) -> R
         all[s - p + k] = v;
     }
     Ok(all)
+}
+
+/// The cost of the `p + 1` non-zero basis functions of degree `p` at one parameter of
+/// `param_bits` bits ([`basis_functions`], the triangular scheme): `(p+1)²` operations, on
+/// numbers of `p` levels of `(u − u_i)/(u_{i+p} − u_i)`
+/// ([`polynomial_bits`]`(p, param_bits + 3 knot_bits, 0)`, `knot_bits` the size of the knots).
+///
+/// ```
+/// assert_eq!(cagd::bspline::basis_cost(2, 4, 1), cagd::cost::Cost::new(9, 16));
+/// ```
+pub fn basis_cost(p: usize, param_bits: u128, knot_bits: u128) -> Cost {
+    Cost::new(
+        (p as u128 + 1).pow(2),
+        polynomial_bits(p, span_bits(param_bits, knot_bits), 0),
+    )
+}
+
+/// The cost of the point of a degree-`p` B-spline curve in `d` coordinates at one parameter:
+/// the basis ([`basis_cost`]) and its combination with the `p + 1` control points, `2d(p+1)`
+/// operations, on numbers of [`polynomial_bits`]`(p, param_bits + 3 knot_bits,
+/// coefficient_bits)` bits. A NURBS curve is the B-spline curve of its homogeneous points:
+/// `d + 1` coordinates, coefficients as large as its points and weights together.
+///
+/// ```
+/// use cagd::cost::Cost;
+/// // A cubic in the plane: 16 + 2·2·4 operations.
+/// assert_eq!(cagd::bspline::curve_point_cost(3, 2, 0, 0, 0), Cost::new(32, 3));
+/// ```
+pub fn curve_point_cost(
+    p: usize,
+    d: usize,
+    param_bits: u128,
+    knot_bits: u128,
+    coefficient_bits: u128,
+) -> Cost {
+    Cost::new(
+        basis_cost(p, param_bits, knot_bits).ops() + 2 * d as u128 * (p as u128 + 1),
+        polynomial_bits(p, span_bits(param_bits, knot_bits), coefficient_bits),
+    )
+}
+
+/// The bits of one level of the triangular scheme, `(u − u_i)/(u_{i+p} − u_i)`.
+fn span_bits(param_bits: u128, knot_bits: u128) -> u128 {
+    param_bits.saturating_add(knot_bits.saturating_mul(3))
 }
 
 #[cfg(test)]
@@ -188,6 +249,16 @@ mod tests {
             }
             assert!((all.iter().sum::<f64>() - 1.0).abs() < 1e-15);
         }
+    }
+
+    #[test]
+    fn costs_of_the_basis_and_of_a_point() {
+        let basis = basis_cost(3, 10, 2);
+        assert_eq!(basis, Cost::new(16, 3 * 17));
+        let point = curve_point_cost(3, 4, 10, 2, 5);
+        assert_eq!(point, Cost::new(16 + 32, 3 * 17 + 5));
+        // Degree 0: one basis function, one copy per coordinate.
+        assert_eq!(curve_point_cost(0, 3, 9, 9, 1), Cost::new(1 + 6, 1));
     }
 
     #[test]

@@ -2,7 +2,8 @@
 
 use nalgebra::{DMatrix, DVector};
 
-use super::basis::{basis_all, basis_functions, check_in_domain, find_span};
+use super::basis::{basis_all, basis_functions, check_in_domain, extended_span, find_span};
+use super::batch::curve_points_fast_into;
 use super::grid::curve_points_into;
 use super::knots::{check_knots, KnotVector};
 use crate::bezier::BezierCurve;
@@ -17,11 +18,13 @@ use crate::scalar::Scalar;
 /// for [`BezierCurve`] and octave-nurbs `coefs`), the knots `u_0 ≤ … ≤ u_{n+p}` a
 /// [`KnotVector`] of length `n + p + 1`.
 ///
-/// **Evaluation** ([`try_eval`](Self::try_eval), [`Curve::eval`]) sums the `p + 1` non-zero
-/// terms `N_{s−p+i,p}(u) P_{s−p+i}` of the span `s`, `i` ascending, exactly as octave-nurbs
-/// `bspeval`; [`de_boor`](Self::de_boor) runs de Boor's algorithm (the same point). Outside the
-/// domain `try_eval` returns [`Error::ParameterOutOfRange`]; the [`Curve`] trait clamps to the
-/// domain instead (a NaN parameter gives NaN coordinates).
+/// **Evaluation** ([`try_eval`](Self::try_eval), [`eval`](Self::eval)) sums the `p + 1`
+/// non-zero terms `N_{s−p+i,p}(u) P_{s−p+i}` of the span `s`, `i` ascending, exactly as
+/// octave-nurbs `bspeval`; [`de_boor`](Self::de_boor) runs de Boor's algorithm (the same
+/// point). The domain is `[u_p, u_n]` (the rule of [`crate::param`]): outside it `try_eval`
+/// returns [`Error::ParameterOutOfRange`] (and [`Error::NonFinite`] for NaN or ±∞), while
+/// `eval` continues the first or the last polynomial piece (a NaN or infinite parameter gives
+/// a point of NaNs).
 ///
 /// ```
 /// use cagd::bspline::BSplineCurve;
@@ -166,15 +169,43 @@ impl<T: Scalar> BSplineCurve<T> {
         basis_all(self.degree, self.control.ncols(), self.knots.as_slice(), u)
     }
 
-    /// The point `C(u)` (see the type's documentation for the operation order).
+    /// The point `C(u)` for `u` in the domain (see the type's documentation for the operation
+    /// order): [`eval`](Self::eval)'s value, bit for bit.
     ///
     /// # Errors
-    /// [`Error::ParameterOutOfRange`] outside the domain (also for NaN).
+    /// [`Error::NonFinite`] for NaN or ±∞, [`Error::ParameterOutOfRange`] outside the domain.
     pub fn try_eval(&self, u: T) -> Result<DVector<T>> {
         let (p, knots) = (self.degree, self.knots.as_slice());
         let s = find_span(p, self.control.ncols(), knots, &u)?;
         let n = basis_functions(p, knots, s, &u);
         Ok(combine(&self.control, s - p, &n))
+    }
+
+    /// The point `C(u)` for any `u`: inside the domain [`try_eval`](Self::try_eval)'s value;
+    /// below (above) it the polynomial of the first (last) non-empty span continued, by the
+    /// same operations with that span; for NaN or ±∞ a point of NaNs.
+    ///
+    /// ```
+    /// use cagd::bspline::BSplineCurve;
+    /// use nalgebra::DMatrix;
+    /// // The clamped quadratic on (0,0), (1,2), (3,2), (4,0): on its last span [1/2, 1] the
+    /// // basis is 2(1−u)², 2(1−u)(3u−1), (2u−1)²; at u = 3/2 that is 1/2, −7/2, 4, so (6, −6).
+    /// let p = DMatrix::from_column_slice(2, 4, &[0.0, 0.0, 1.0, 2.0, 3.0, 2.0, 4.0, 0.0]);
+    /// let c = BSplineCurve::new(2, vec![0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0], p)?;
+    /// assert_eq!(c.eval(1.0), c.try_eval(1.0)?);
+    /// assert_eq!(c.eval(1.5).as_slice(), &[6.0, -6.0]);
+    /// assert!(c.try_eval(1.5).is_err());
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn eval(&self, u: T) -> DVector<T> {
+        let (p, knots) = (self.degree, self.knots.as_slice());
+        match extended_span(p, self.control.ncols(), knots, &u) {
+            Some(s) => {
+                let n = basis_functions(p, knots, s, &u);
+                combine(&self.control, s - p, &n)
+            }
+            None => DVector::from_element(self.dim(), u.clone() - u),
+        }
     }
 
     /// The point `C(u)` by de Boor's algorithm: the `p + 1` control points of the span are
@@ -206,7 +237,8 @@ impl<T: Scalar> BSplineCurve<T> {
     /// [`try_eval`](Self::try_eval), bit for bit).
     ///
     /// # Errors
-    /// [`Error::ParameterOutOfRange`] for a parameter outside the domain.
+    /// [`Error::NonFinite`] or [`Error::ParameterOutOfRange`] for a parameter outside the
+    /// domain.
     pub fn eval_many(&self, us: &[T]) -> Result<DMatrix<T>> {
         let mut out = DMatrix::from_element(self.dim(), us.len(), T::zero());
         self.try_eval_many_into(us, out.as_mut_slice())?;
@@ -216,16 +248,23 @@ impl<T: Scalar> BSplineCurve<T> {
     /// The points at all parameters `us` written into `out`, one after the other:
     /// `out[k·d + c]` is coordinate `c` of `C(us[k])` (`us.len() × d` row-major, which is the
     /// storage of the `d × us.len()` matrix of [`eval_many`](Self::eval_many); see
-    /// [`crate::grid`]). As [`Curve::eval`], a parameter outside the domain `[u_p, u_n]` is
-    /// clamped to it and a NaN parameter gives a point of NaNs.
+    /// [`crate::grid`]). As [`eval`](Self::eval), outside the domain `[u_p, u_n]` the end
+    /// pieces continue and a NaN or infinite parameter gives a point of NaNs.
     ///
-    /// Per parameter: the knot span `s` (the previous parameter's span or the next one is tried
-    /// first, so sorted parameters cost `O(1)`; otherwise a binary search), the `p + 1`
-    /// non-zero basis values `N_{s−p,p}(u), …, N_{s,p}(u)` by the triangular scheme of
-    /// [`basis_functions`] (non-negative terms), then `Σ_{i=0}^{p} N_{s−p+i,p}(u) P_{s−p+i}`:
-    /// `O(p² + p·d)` operations, the same ones as [`try_eval`](Self::try_eval), so the same
-    /// values bit for bit. Nothing is allocated per point (one scratch per block of points)
-    /// and long batches are split over all cores.
+    /// The fast batch: per parameter the knot span `s` (the previous parameter's span or the
+    /// next one is tried first, so sorted parameters cost `O(1)`; otherwise a binary search),
+    /// the `p + 1` non-zero basis values by the triangular scheme of [`basis_functions`] with
+    /// its divisions by knot differences replaced by products with their reciprocals,
+    /// computed once per span, then `Σ_{i=0}^{p} N_{s−p+i,p}(u) P_{s−p+i}`: `O(p² + p·d)`
+    /// multiplications and additions and no division per point, the parameters of one span
+    /// four at a time in vector registers. Nothing is allocated per point and long batches
+    /// are split over all cores.
+    ///
+    /// Accuracy: `|C_batch(u) − C(u)| ≤ (4p + 1) ε · max_i |P_i|` (every quantity of the scheme
+    /// is non-negative, so relative roundings add up; derivation in the module docs of the
+    /// kernel), exact for rationals. For the operations of
+    /// [`try_eval`](Self::try_eval) and octave-nurbs `bspeval`, bit for bit, use
+    /// [`eval_many_exact_order_into`](Self::eval_many_exact_order_into).
     ///
     /// # Errors
     /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · d`.
@@ -236,8 +275,8 @@ impl<T: Scalar> BSplineCurve<T> {
     /// let p = DMatrix::from_column_slice(2, 4, &[0.0, 0.0, 1.0, 2.0, 3.0, 2.0, 4.0, 0.0]);
     /// let c = BSplineCurve::new(2, vec![0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0], p)?;
     /// let mut out = [0.0; 6];
-    /// c.eval_many_into(&[0.0, 0.5, 7.0], &mut out)?; // 7 is clamped to 1
-    /// assert_eq!(out, [0.0, 0.0, 2.0, 2.0, 4.0, 0.0]);
+    /// c.eval_many_into(&[0.0, 0.5, 1.5], &mut out)?; // 1.5: the last piece continued
+    /// assert_eq!(out, [0.0, 0.0, 2.0, 2.0, 6.0, -6.0]);
     /// assert!(c.eval_many_into(&[0.5], &mut out).is_err());
     /// # Ok::<(), cagd::Error>(())
     /// ```
@@ -246,16 +285,50 @@ impl<T: Scalar> BSplineCurve<T> {
         let len = crate::grid::grid_len("B-spline curve points", &[us.len(), d])?;
         crate::grid::check_len("B-spline curve point buffer", len, out)?;
         let (p, knots) = (self.degree, self.knots.as_slice());
+        curve_points_fast_into(p, knots, self.control.as_slice(), d, false, us, out);
+        Ok(())
+    }
+
+    /// [`eval_many_into`](Self::eval_many_into) in the exact order of
+    /// [`try_eval`](Self::try_eval): per parameter the span, the basis by the triangular
+    /// scheme of [`basis_functions`] with its divisions, in the operation order of
+    /// octave-nurbs `basisfun`, then the sum from zero, `i` ascending — the values of
+    /// `try_eval` (and of `bspeval`) bit for bit, at about three times the cost of the fast
+    /// batch for cubics. Outside the domain the end pieces continue, as in `eval` and
+    /// `eval_many_into`.
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · d`.
+    ///
+    /// ```
+    /// use cagd::bspline::BSplineCurve;
+    /// use nalgebra::DMatrix;
+    /// let p = DMatrix::from_column_slice(1, 4, &[0.0, 3.0, -1.0, 2.0]);
+    /// let c = BSplineCurve::new(2, vec![0.0, 0.0, 0.0, 0.3, 1.0, 1.0, 1.0], p)?;
+    /// let ts = [0.1, 0.2, 0.7, 0.9];
+    /// let mut out = [0.0; 4];
+    /// c.eval_many_exact_order_into(&ts, &mut out)?;
+    /// for (t, x) in ts.iter().zip(out) {
+    ///     assert_eq!(c.try_eval(*t)?[0], x);
+    /// }
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn eval_many_exact_order_into(&self, us: &[T], out: &mut [T]) -> Result<()> {
+        let d = self.dim();
+        let len = crate::grid::grid_len("B-spline curve points", &[us.len(), d])?;
+        crate::grid::check_len("B-spline curve point buffer", len, out)?;
+        let (p, knots) = (self.degree, self.knots.as_slice());
         curve_points_into(p, knots, self.control.as_slice(), d, false, us, out);
         Ok(())
     }
 
-    /// [`eval_many_into`](Self::eval_many_into) for parameters that must lie in the domain,
-    /// as [`try_eval`](Self::try_eval): nothing is written unless all do.
+    /// [`eval_many_exact_order_into`](Self::eval_many_exact_order_into) for parameters that
+    /// must lie in the domain, as [`try_eval`](Self::try_eval) (the same values, bit for bit):
+    /// nothing is written unless all do.
     ///
     /// # Errors
-    /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · d`;
-    /// [`Error::ParameterOutOfRange`] for the first parameter outside the domain (or NaN).
+    /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · d`; for the first parameter
+    /// outside the domain, [`Error::NonFinite`] (NaN or ±∞) or [`Error::ParameterOutOfRange`].
     pub fn try_eval_many_into(&self, us: &[T], out: &mut [T]) -> Result<()> {
         let d = self.dim();
         let len = crate::grid::grid_len("B-spline curve points", &[us.len(), d])?;
@@ -264,7 +337,7 @@ impl<T: Scalar> BSplineCurve<T> {
         for u in us {
             check_in_domain(u, &lo, &hi)?;
         }
-        self.eval_many_into(us, out)
+        self.eval_many_exact_order_into(us, out)
     }
 
     /// The derivative curve `C'(u) = Σ Q_i N_{i,p−1}(u)` with
@@ -430,45 +503,32 @@ pub(crate) fn blend<T: Scalar>(x: &DVector<T>, a: T, y: &DVector<T>, b: T) -> DV
     })
 }
 
-/// The point of a curve at `t` through the infallible [`Curve`] interface, shared by B-spline
-/// and NURBS curves: `t` is clamped to the domain `[lo, hi]`; the only parameter `try_eval` can
-/// then refuse is NaN, which gives a point of NaNs (NaN in, NaN out, as `f64` arithmetic does).
-pub(crate) fn eval_clamped<T: Scalar>(
-    dim: usize,
-    (lo, hi): (T, T),
-    t: T,
-    try_eval: impl FnOnce(T) -> Result<DVector<T>>,
-) -> DVector<T> {
-    let u = clamp(t, &lo, &hi);
-    try_eval(u.clone()).unwrap_or_else(|_| DVector::from_element(dim, u))
-}
-
-/// Clamps `u` to `[lo, hi]` (NaN stays NaN).
-pub(crate) fn clamp<T: Scalar>(u: T, lo: &T, hi: &T) -> T {
-    if &u < lo {
-        lo.clone()
-    } else if &u > hi {
-        hi.clone()
-    } else {
-        u
-    }
-}
-
 impl<T: Scalar> Curve<T> for BSplineCurve<T> {
     fn dim(&self) -> usize {
         BSplineCurve::dim(self)
     }
 
+    fn domain(&self) -> (T, T) {
+        BSplineCurve::domain(self)
+    }
+
+    /// [`BSplineCurve::eval`]: the end pieces continue outside the domain.
     fn eval(&self, t: T) -> DVector<T> {
-        eval_clamped(self.dim(), self.domain(), t, |u| self.try_eval(u))
+        BSplineCurve::eval(self, t)
     }
 
+    fn try_eval(&self, t: T) -> Result<DVector<T>> {
+        BSplineCurve::try_eval(self, t)
+    }
+
+    /// The derivative curve's [`eval`](BSplineCurve::eval) (the derivative of the continued
+    /// piece outside the domain); `None` for degree 0.
     fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
-        let (lo, hi) = self.domain();
-        self.try_eval_derivative(clamp(t, &lo, &hi)).ok()
+        self.derivative().ok().map(|d| d.eval(t))
     }
 
-    /// [`BSplineCurve::eval_many_into`]: span and basis per parameter, no allocation per point.
+    /// [`BSplineCurve::eval_many_into`]: the fast batch (reciprocals per span, no division
+    /// and no allocation per point).
     fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
         BSplineCurve::eval_many_into(self, ts, out)
     }

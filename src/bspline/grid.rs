@@ -4,12 +4,12 @@
 //! (surface rows) terms, with no allocation per point.
 //!
 //! Layouts are those of [`crate::grid`]. As the per-point [`Curve::eval`](crate::Curve::eval)
-//! and [`Surface::eval`](crate::Surface::eval) of these types do, a parameter outside the
-//! domain is clamped to it and a NaN parameter gives a point of NaNs.
+//! and [`Surface::eval`](crate::Surface::eval) of these types do, outside the domain the first
+//! or last polynomial piece continues and a NaN or infinite parameter gives a point of NaNs
+//! (written `t − t`, NaN for both).
 
 use super::basis::{basis_functions_into, last_span};
-use super::curve::clamp;
-use crate::grid::{contract_row, for_each_row, weighted_sum_into};
+use crate::grid::{contract_row_planar, for_each_row, weighted_sum_into};
 use crate::scalar::Scalar;
 
 /// Points per block of a curve batch: one scratch (basis and triangle buffers) per block.
@@ -46,18 +46,24 @@ impl<'a, T: Scalar> SpanFinder<'a, T> {
         self.p
     }
 
-    /// The span of `t` clamped to the domain, with the clamped value; `None` for NaN.
-    /// `hint` is the span found last and is updated.
+    /// The span whose polynomial piece gives the point at `t` (the span
+    /// [`extended_span`](super::basis::extended_span) gives: outside the domain the first or
+    /// the last one), with `t`; `None` for NaN or ±∞. `hint` is the span found last and is
+    /// updated.
     #[inline]
     pub(crate) fn locate(&self, t: &T, hint: &mut usize) -> Option<(usize, T)> {
-        let u = clamp(t.clone(), &self.lo, &self.hi);
-        // After clamping (±∞ to the ends) only NaN is outside the domain.
-        if !u.is_finite_value() {
+        if !t.is_finite_value() {
             return None;
         }
-        let s = self.span(&u, *hint);
+        let s = if *t < self.lo {
+            self.span(&self.lo, *hint)
+        } else if *t > self.hi {
+            self.end_span
+        } else {
+            self.span(t, *hint)
+        };
         *hint = s;
-        Some((s, u))
+        Some((s, t.clone()))
     }
 
     /// The span of `u ∈ [u_p, u_n]`.
@@ -79,9 +85,9 @@ impl<'a, T: Scalar> SpanFinder<'a, T> {
     }
 }
 
-/// The spans and the non-zero basis values of all parameters `ts` (clamped to the domain):
+/// The spans and the non-zero basis values of all parameters `ts` (end pieces continued):
 /// `rows[a·(p+1) ..][..p+1]` holds `N_{s−p,p}(t_a), …, N_{s,p}(t_a)` and `spans[a]` its span
-/// `s` (`None`, and a row of zeros, for a NaN parameter). One allocation each, `O(len·p)`
+/// `s` (`None`, and a row of zeros, for a NaN or infinite parameter). One allocation each, `O(len·p)`
 /// memory, `O(p²)` operations per parameter.
 pub(crate) fn basis_rows<T: Scalar>(
     f: &SpanFinder<'_, T>,
@@ -101,6 +107,31 @@ pub(crate) fn basis_rows<T: Scalar>(
     (rows, spans)
 }
 
+/// [`basis_rows`] stored by term: entry `j` of the row of `ts[a]` at `j·ts.len() + a` (the
+/// layout of [`contract_row_planar`]); a NaN parameter has a row of zeros.
+pub(crate) fn planar_basis_rows<T: Scalar>(
+    f: &SpanFinder<'_, T>,
+    ts: &[T],
+) -> (Vec<T>, Vec<Option<usize>>) {
+    let w = f.p + 1;
+    let n = ts.len();
+    let mut planes = vec![T::zero(); n * w];
+    let mut spans = Vec::with_capacity(n);
+    let (mut row, mut left, mut right) =
+        (vec![T::zero(); w], vec![T::zero(); w], vec![T::zero(); w]);
+    let mut hint = f.p;
+    for (a, t) in ts.iter().enumerate() {
+        spans.push(f.locate(t, &mut hint).map(|(s, u)| {
+            basis_functions_into(f.p, f.knots, s, &u, &mut row, &mut left, &mut right);
+            for (j, x) in row.iter().enumerate() {
+                planes[j * n + a] = x.clone();
+            }
+            s
+        }));
+    }
+    (planes, spans)
+}
+
 /// Scratch of one block of curve points.
 struct CurveScratch<T> {
     basis: Vec<T>,
@@ -110,8 +141,8 @@ struct CurveScratch<T> {
     hint: usize,
 }
 
-/// The points of a degree-`p` spline curve at all parameters `ts` (clamped to the domain; a
-/// NaN parameter gives a point of NaNs), written into `out` one after the other.
+/// The points of a degree-`p` spline curve at all parameters `ts` (end pieces continued; a
+/// NaN or infinite parameter gives a point of NaNs), written into `out` one after the other.
 ///
 /// `control` holds the `n` control points one after the other, `dh` numbers each (the
 /// column-major storage of a `dh × n` matrix). Each point is `Σ_j N_{s−p+j,p}(t) P_{s−p+j}`,
@@ -145,7 +176,7 @@ pub(crate) fn curve_points_into<T: Scalar>(
     };
     let point = |sc: &mut CurveScratch<T>, t: &T, x: &mut [T]| {
         let Some((s, u)) = finder.locate(t, &mut sc.hint) else {
-            x.iter_mut().for_each(|o| *o = t.clone());
+            x.iter_mut().for_each(|o| *o = t.clone() - t.clone());
             return;
         };
         basis_functions_into(p, knots, s, &u, &mut sc.basis, &mut sc.left, &mut sc.right);
@@ -179,7 +210,7 @@ pub(crate) fn curve_points_into<T: Scalar>(
                 |hint, block, chunk| {
                     for (t, x) in ts[block * BLOCK..].iter().zip(chunk.chunks_exact_mut(d)) {
                         let Some((s, u)) = finder.locate(t, hint) else {
-                            x.iter_mut().for_each(|o| *o = t.clone());
+                            x.iter_mut().for_each(|o| *o = t.clone() - t.clone());
                             continue;
                         };
                         let n = basis_fixed::<T, $n>(knots, s, &u);
@@ -290,7 +321,7 @@ pub(crate) struct Net<'a, T> {
     pub(crate) project: bool,
 }
 
-/// The surface on the grid `us × vs` (parameters clamped to the domain; a NaN parameter
+/// The surface on the grid `us × vs` (end pieces continued; a NaN or infinite parameter
 /// gives points of NaNs), written row by row into `out` (layout of [`crate::grid`], `dh − 1`
 /// numbers per point with `project`, else `dh`; `out.len()` must match).
 ///
@@ -311,7 +342,8 @@ pub(crate) fn surface_grid_into<T: Scalar>(s: &Net<'_, T>, us: &[T], vs: &[T], o
     let d = dh - usize::from(s.project);
     let nv = s.v.n;
     let (bu, su) = basis_rows(&s.u, us);
-    let (bv, sv) = basis_rows(&s.v, vs);
+    let (bv, sv) = planar_basis_rows(&s.v, vs);
+    let nvs = vs.len();
     // Runs of consecutive v in the same span (one run for each span a sorted grid crosses).
     let mut runs: Vec<(usize, usize, Option<usize>)> = Vec::new();
     for (b, span) in sv.iter().enumerate() {
@@ -323,15 +355,17 @@ pub(crate) fn surface_grid_into<T: Scalar>(s: &Net<'_, T>, us: &[T], vs: &[T], o
     let fill = |coeffs: &[T], target: &mut [T]| {
         for &(b0, b1, span) in &runs {
             match span {
-                Some(t) => contract_row(
-                    &bv[b0 * (q + 1)..b1 * (q + 1)],
+                Some(t) => contract_row_planar(
+                    &bv,
+                    nvs,
+                    b0,
                     q + 1,
                     &coeffs[(t - q) * dh..(t + 1) * dh],
                     &mut target[b0 * dh..b1 * dh],
                 ),
                 None => {
                     for (x, v) in target[b0 * dh..b1 * dh].chunks_exact_mut(dh).zip(&vs[b0..]) {
-                        x.iter_mut().for_each(|o| *o = v.clone());
+                        x.iter_mut().for_each(|o| *o = v.clone() - v.clone());
                     }
                 }
             }
@@ -349,7 +383,8 @@ pub(crate) fn surface_grid_into<T: Scalar>(s: &Net<'_, T>, us: &[T], vs: &[T], o
     };
     for_each_row(out, vs.len() * d, work, init, |(coeffs, hrow), a, row| {
         let Some(span) = su[a] else {
-            row.iter_mut().for_each(|o| *o = us[a].clone());
+            row.iter_mut()
+                .for_each(|o| *o = us[a].clone() - us[a].clone());
             return;
         };
         let block = nv * dh;
@@ -361,15 +396,15 @@ pub(crate) fn surface_grid_into<T: Scalar>(s: &Net<'_, T>, us: &[T], vs: &[T], o
         if !s.project {
             fill(coeffs, row);
         } else if (2..=4).contains(&dh) && no_nan_v {
-            // Homogeneous sums kept in registers and divided at once, no second pass.
+            // Homogeneous sums kept in registers and projected at once, no second pass.
             for &(b0, b1, span) in &runs {
                 let t = span.unwrap_or(q);
-                let (ws, c) = (&bv[b0 * (q + 1)..b1 * (q + 1)], &coeffs[(t - q) * dh..]);
+                let c = &coeffs[(t - q) * dh..];
                 let x = &mut row[b0 * d..b1 * d];
                 match dh {
-                    2 => contract_project_row::<T, 2>(ws, q + 1, c, x),
-                    3 => contract_project_row::<T, 3>(ws, q + 1, c, x),
-                    _ => contract_project_row::<T, 4>(ws, q + 1, c, x),
+                    2 => contract_project_row::<T, 2>(&bv, nvs, b0, q + 1, c, x),
+                    3 => contract_project_row::<T, 3>(&bv, nvs, b0, q + 1, c, x),
+                    _ => contract_project_row::<T, 4>(&bv, nvs, b0, q + 1, c, x),
                 }
             }
         } else {
@@ -381,25 +416,67 @@ pub(crate) fn surface_grid_into<T: Scalar>(s: &Net<'_, T>, us: &[T], vs: &[T], o
     });
 }
 
-/// For every point of a run: the homogeneous sum `h = Σ_l ws[b][l] · c_l` (`D` numbers,
-/// [`contract_row`]'s operations: from `ws[b][0] · c_0`, `l` ascending), then
-/// `x_k = h_k / h_{D−1}` into `row` (`D − 1` numbers per point).
+/// For every point of a run: the homogeneous sum `h = Σ_l w_b[l] · c_l` (`D` numbers,
+/// [`contract_row_planar`]'s operations: from `w_b[0] · c_0`, `l` ascending; the weights
+/// `w_b[l] = ws[l·stride + first + b]`), then `x_k = h_k · (1/h_{D−1})` into `row` (`D − 1`
+/// numbers per point): one division per point, vectorised across points.
 #[inline]
 fn contract_project_row<T: Scalar, const D: usize>(
     ws: &[T],
+    stride: usize,
+    first: usize,
     terms: usize,
     coeffs: &[T],
     row: &mut [T],
 ) {
-    for (w, x) in ws.chunks_exact(terms).zip(row.chunks_exact_mut(D - 1)) {
-        let mut acc: [T; D] = std::array::from_fn(|k| w[0].clone() * coeffs[k].clone());
-        for (wl, cl) in w[1..].iter().zip(coeffs[D..].chunks_exact(D)) {
+    T::vectorized(
+        #[inline(always)]
+        || match terms {
+            2 => project_const::<T, 2, D>(ws, stride, first, coeffs, row),
+            3 => project_const::<T, 3, D>(ws, stride, first, coeffs, row),
+            4 => project_const::<T, 4, D>(ws, stride, first, coeffs, row),
+            _ => {
+                for (b, x) in row.chunks_exact_mut(D - 1).enumerate() {
+                    let w = |l: usize| ws[l * stride + first + b].clone();
+                    let mut acc: [T; D] = std::array::from_fn(|k| w(0) * coeffs[k].clone());
+                    for l in 1..terms {
+                        for k in 0..D {
+                            acc[k] = acc[k].clone() + w(l) * coeffs[l * D + k].clone();
+                        }
+                    }
+                    let r = T::one() / acc[D - 1].clone();
+                    for k in 0..D - 1 {
+                        x[k] = acc[k].clone() * r.clone();
+                    }
+                }
+            }
+        },
+    );
+}
+
+/// [`contract_project_row`] with `L` terms fixed at compile time.
+#[inline(always)]
+fn project_const<T: Scalar, const L: usize, const D: usize>(
+    ws: &[T],
+    stride: usize,
+    first: usize,
+    coeffs: &[T],
+    row: &mut [T],
+) {
+    let n = row.len() / (D - 1);
+    let planes: [&[T]; L] = std::array::from_fn(|l| &ws[l * stride + first..][..n]);
+    let c: [[T; D]; L] =
+        std::array::from_fn(|l| std::array::from_fn(|k| coeffs[l * D + k].clone()));
+    for (b, x) in row.chunks_exact_mut(D - 1).enumerate() {
+        let mut acc: [T; D] = std::array::from_fn(|k| planes[0][b].clone() * c[0][k].clone());
+        for l in 1..L {
             for k in 0..D {
-                acc[k] = acc[k].clone() + wl.clone() * cl[k].clone();
+                acc[k] = acc[k].clone() + planes[l][b].clone() * c[l][k].clone();
             }
         }
+        let r = T::one() / acc[D - 1].clone();
         for k in 0..D - 1 {
-            x[k] = acc[k].clone() / acc[D - 1].clone();
+            x[k] = acc[k].clone() * r.clone();
         }
     }
 }

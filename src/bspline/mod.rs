@@ -1,5 +1,6 @@
 //! B-splines (the CAD notes §1.2 and the lecture notes, "B-spline křivky"): knot vectors with multiplicities,
-//! the Cox–de Boor basis, curves (de Boor evaluation, derivatives, knot insertion, the uniform
+//! the Cox–de Boor basis, curves (de Boor evaluation, derivatives, knot insertion, degree
+//! elevation, the uniform
 //! cubic "Coons" B-spline of the lecture notes) and tensor-product surfaces.
 //!
 //! Conventions follow octave-nurbs, the reference these are tested against: degree `p`
@@ -9,16 +10,23 @@
 //! `BigRational` too.
 
 mod basis;
+mod batch;
 mod curve;
+mod de_boor_scheme;
+mod elevate;
 mod grid;
 mod knots;
 mod surface;
+mod triangle;
 
-pub use basis::{basis_all, basis_functions, cox_de_boor, find_span};
+pub use basis::{basis_all, basis_cost, basis_functions, cox_de_boor, curve_point_cost, find_span};
 pub use curve::BSplineCurve;
+pub use de_boor_scheme::DeBoorScheme;
 pub use knots::KnotVector;
 pub use surface::BSplineSurface;
+pub use triangle::cox_de_boor_triangle;
 
 pub(crate) use basis::check_in_domain;
-pub(crate) use curve::{clamp, eval_clamped};
+pub(crate) use batch::curve_points_fast_into;
 pub(crate) use grid::curve_points_into;
+pub(crate) use surface::nan_point;

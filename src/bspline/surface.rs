@@ -3,8 +3,7 @@
 use crate::grid::PointGrid;
 use nalgebra::{DMatrix, DVector};
 
-use super::basis::{basis_functions, find_span};
-use super::curve::clamp;
+use super::basis::{basis_functions, extended_span, find_span};
 use super::grid::{surface_grid_into, Net, SpanFinder};
 use super::knots::{check_knots, KnotVector};
 use crate::error::{check_finite, Error, Result};
@@ -120,19 +119,39 @@ impl<T: Scalar> BSplineSurface<T> {
         )
     }
 
-    /// The point `S(u, v)`.
+    /// The point `S(u, v)` for `(u, v)` in the domain: [`Surface::eval`]'s value, bit for bit.
     ///
     /// # Errors
-    /// [`Error::ParameterOutOfRange`] outside the domain.
+    /// [`Error::NonFinite`] for NaN or ±∞, [`Error::ParameterOutOfRange`] outside the domain.
     pub fn try_eval(&self, u: T, v: T) -> Result<DVector<T>> {
         let (p, q) = self.degrees;
         let (nu, nv) = self.coords[0].shape();
         let (ku, kv) = (self.knots.0.as_slice(), self.knots.1.as_slice());
         let su = find_span(p, nu, ku, &u)?;
         let sv = find_span(q, nv, kv, &v)?;
-        let bu = basis_functions(p, ku, su, &u);
-        let bv = basis_functions(q, kv, sv, &v);
-        Ok(DVector::from_fn(self.coords.len(), |k, _| {
+        Ok(self.eval_on_spans(su, sv, &u, &v))
+    }
+
+    /// The point `S(u, v)` for any `(u, v)`: [`try_eval`](Self::try_eval)'s value in the
+    /// domain; outside it the first or last polynomial piece in each direction continues; a
+    /// NaN or infinite parameter gives a point of NaNs.
+    pub fn eval(&self, u: T, v: T) -> DVector<T> {
+        let (p, q) = self.degrees;
+        let (nu, nv) = self.coords[0].shape();
+        let (ku, kv) = (self.knots.0.as_slice(), self.knots.1.as_slice());
+        match (extended_span(p, nu, ku, &u), extended_span(q, nv, kv, &v)) {
+            (Some(su), Some(sv)) => self.eval_on_spans(su, sv, &u, &v),
+            _ => nan_point(self.coords.len(), u, v),
+        }
+    }
+
+    /// `Σ_a N_{su−p+a,p}(u) Σ_b N_{sv−q+b,q}(v) P_{su−p+a, sv−q+b}` on the given spans.
+    fn eval_on_spans(&self, su: usize, sv: usize, u: &T, v: &T) -> DVector<T> {
+        let (p, q) = self.degrees;
+        let (ku, kv) = (self.knots.0.as_slice(), self.knots.1.as_slice());
+        let bu = basis_functions(p, ku, su, u);
+        let bv = basis_functions(q, kv, sv, v);
+        DVector::from_fn(self.coords.len(), |k, _| {
             let c = &self.coords[k];
             bu.iter().enumerate().fold(T::zero(), |acc, (a, nu_a)| {
                 let row = su - p + a;
@@ -141,14 +160,14 @@ impl<T: Scalar> BSplineSurface<T> {
                 });
                 acc + nu_a.clone() * along_v
             })
-        }))
+        })
     }
 
     /// The surface on the grid `us × vs` written into `out`, row by row:
     /// `out[(a·nv + b)·d + c]` is coordinate `c` of `S(us[a], vs[b])` (`(nu, nv, d)` row-major,
     /// the memory layout of [`Surface::eval_grid`]; see [`crate::grid`]). As
-    /// [`Surface::eval`], parameters outside the domain are clamped to it and a NaN parameter
-    /// gives points of NaNs.
+    /// [`eval`](Self::eval), outside the domain the end pieces continue and a NaN or infinite
+    /// parameter gives points of NaNs.
     ///
     /// The algorithm: the knot span and the `p + 1` (`q + 1`) non-zero basis values of every
     /// `u` (`v`) are computed once (`O(N·(p + q))` memory for an `N × N` grid, binary search
@@ -176,8 +195,8 @@ impl<T: Scalar> BSplineSurface<T> {
     /// let k = vec![0.0, 0.0, 1.0, 1.0];
     /// let s = BSplineSurface::new(1, 1, k.clone(), k, vec![z])?;
     /// let mut out = [0.0; 6];
-    /// s.eval_grid_into(&[0.5, 1.0], &[0.0, 0.5, 2.0], &mut out)?; // v = 2 is clamped to 1
-    /// assert_eq!(out, [0.0, 0.25, 0.5, 0.0, 0.5, 1.0]);
+    /// s.eval_grid_into(&[0.5, 1.0], &[0.0, 0.5, 2.0], &mut out)?; // v = 2: z = uv continued
+    /// assert_eq!(out, [0.0, 0.25, 1.0, 0.0, 0.5, 2.0]);
     /// assert!(s.eval_grid_into(&[0.5], &[0.5], &mut [0.0; 2]).is_err());
     /// # Ok::<(), cagd::Error>(())
     /// ```
@@ -222,11 +241,11 @@ impl<T: Scalar> BSplineSurface<T> {
     }
 }
 
-/// The point of a clamped evaluation that failed: NaN in, NaN out (after clamping only a NaN
-/// parameter is outside the domain).
+/// The point of an evaluation at a NaN or infinite parameter: NaNs (`u − u` if `u` is not
+/// finite, else `v − v`), as the grid evaluation writes it.
 pub(crate) fn nan_point<T: Scalar>(dim: usize, u: T, v: T) -> DVector<T> {
-    let nan = if u.is_finite_value() { v } else { u };
-    DVector::from_element(dim, nan)
+    let bad = if u.is_finite_value() { v } else { u };
+    DVector::from_element(dim, bad.clone() - bad)
 }
 
 impl<T: Scalar> Surface<T> for BSplineSurface<T> {
@@ -234,13 +253,17 @@ impl<T: Scalar> Surface<T> for BSplineSurface<T> {
         self.coords.len()
     }
 
-    /// The point at `(u, v)` clamped to the domain (a NaN parameter gives a point of NaNs).
+    fn domain(&self) -> ((T, T), (T, T)) {
+        BSplineSurface::domain(self)
+    }
+
+    /// [`BSplineSurface::eval`]: the end pieces continue outside the domain.
     fn eval(&self, u: T, v: T) -> DVector<T> {
-        let ((a, b), (c, d)) = self.domain();
-        let u = clamp(u, &a, &b);
-        let v = clamp(v, &c, &d);
-        self.try_eval(u.clone(), v.clone())
-            .unwrap_or_else(|_| nan_point(self.coords.len(), u, v))
+        BSplineSurface::eval(self, u, v)
+    }
+
+    fn try_eval(&self, u: T, v: T) -> Result<DVector<T>> {
+        BSplineSurface::try_eval(self, u, v)
     }
 
     /// The grid by [`BSplineSurface::eval_grid_into`]'s algorithm (`O(p + q)` per point).

@@ -4,57 +4,18 @@ use nalgebra::DVector;
 
 use super::gregory::GregoryTwist;
 use super::{push_gap, CoonsBoundary, Corner};
+use crate::cost::{blended, polynomial_bits, Cost};
 use crate::error::{Error, Result};
-use crate::param::{Curve, Surface};
+use crate::hermite::{hermite_basis, hermite_basis_derivative};
+use crate::param::{usable_domain, Curve, OnUnitInterval, Surface};
 use crate::scalar::Scalar;
 
-/// The cubic Hermite basis `[H0³, H1³, H2³, H3³](t)` of thesis §4.2–4.3, from the cubic
-/// Bernstein polynomials `B_i³`:
-///
-/// ```text
-/// H0 = B0 + B1 = (1−t)²(1+2t)      H1 =  B1/3 = t(1−t)²
-/// H2 = −B2/3   = −t²(1−t)          H3 = B2 + B3 = t²(3−2t)
-/// ```
-///
-/// Checked against the Hermite conditions (the thesis states them only partly): `H0`, `H3`
-/// interpolate the values (`H0(0) = 1`, `H0(1) = 0`, `H3 = 1 − H0`) and have zero derivative at
-/// both ends; `H1`, `H2` vanish at both ends and carry the derivatives: `H1'(0) = 1`,
-/// `H1'(1) = 0`, `H2'(0) = 0`, `H2'(1) = 1`. So `H1 = B1/3` and `H2 = −B2/3` are right, signs
-/// included (the minus makes `H2'(1) = +1`).
-///
-/// ```
-/// use cagd::coons::{hermite_cubic, hermite_cubic_derivative};
-/// assert_eq!(hermite_cubic(&0.5), [0.5, 0.125, -0.125, 0.5]);
-/// assert_eq!(hermite_cubic_derivative(&0.0), [0.0, 1.0, 0.0, 0.0]);
-/// assert_eq!(hermite_cubic_derivative(&1.0), [0.0, 0.0, 1.0, 0.0]);
-/// ```
-pub fn hermite_cubic<T: Scalar>(t: &T) -> [T; 4] {
-    let s = T::one() - t.clone();
-    let three = T::from_usize(3);
-    let b0 = s.clone() * s.clone() * s.clone();
-    let ts2 = t.clone() * s.clone() * s.clone();
-    let t2s = t.clone() * t.clone() * s;
-    let b3 = t.clone() * t.clone() * t.clone();
-    [
-        b0 + three.clone() * ts2.clone(),
-        ts2,
-        -t2s.clone(),
-        three * t2s + b3,
-    ]
-}
-
-/// The derivatives `[H0', H1', H2', H3'](t)` of [`hermite_cubic`]:
-/// `H0' = −6t(1−t)`, `H1' = (1−t)(1−3t)`, `H2' = t(3t−2)`, `H3' = 6t(1−t)`.
-pub fn hermite_cubic_derivative<T: Scalar>(t: &T) -> [T; 4] {
-    let s = T::one() - t.clone();
-    let three = T::from_usize(3);
-    let six_ts = T::from_usize(6) * t.clone() * s.clone();
-    [
-        -six_ts.clone(),
-        s * (T::one() - three.clone() * t.clone()),
-        t.clone() * (three * t.clone() - T::from_usize(2)),
-        six_ts,
-    ]
+/// The cubic Hermite basis in the thesis's order `[H0, H1, H2, H3](t)` (§4.2–4.3), the order of
+/// the rows and columns of the matrix (4.5): [`hermite_basis`] `[f_1, f_2, f_3, f_4]` (the
+/// crate's one Hermite basis, in the order of the Ferguson geometry) rearranged as
+/// `[f_1, f_3, f_4, f_2]`.
+fn thesis_order<T>([f1, f2, f3, f4]: [T; 4]) -> [T; 4] {
+    [f1, f3, f4, f2]
 }
 
 /// The four cross-boundary derivative curves of a bicubically blended Coons patch (thesis
@@ -93,6 +54,19 @@ enum TwistData<T: Scalar> {
     Gregory(GregoryTwist<T>),
 }
 
+/// A point of a bicubically blended Coons patch with the three parts of (4.5).
+#[derive(Debug, Clone, PartialEq)]
+pub struct BicubicCoonsPoint<T: Scalar = f64> {
+    /// `x = h_c + h_d − h_cd`.
+    pub x: DVector<T>,
+    /// `h_c(u,v) = H0(u) x(0,v) + H1(u) x_u(0,v) + H2(u) x_u(1,v) + H3(u) x(1,v)`.
+    pub hc: DVector<T>,
+    /// `h_d(u,v) = H0(v) x(u,0) + H1(v) x_v(u,0) + H2(v) x_v(u,1) + H3(v) x(u,1)`.
+    pub hd: DVector<T>,
+    /// `h_cd(u,v) = [H0(u) … H3(u)] M [H0(v) … H3(v)]ᵀ`.
+    pub hcd: DVector<T>,
+}
+
 /// A point with its first partial derivatives.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SurfacePartials<T: Scalar = f64> {
@@ -118,7 +92,17 @@ pub struct SurfacePartials<T: Scalar = f64> {
 ///     ⎣ x(1,0)    x_v(1,0)   x_v(1,1)   x(1,1)  ⎦
 /// ```
 ///
-/// with the Hermite basis of [`hermite_cubic`]. The positions in `M` are the corners of the
+/// with the Hermite basis `H0 … H3` of [`hermite_basis`](crate::hermite::hermite_basis).
+///
+/// **Domains.** The patch is over `[0, 1]²`. The boundary curves are reparametrised onto
+/// `[0, 1]` as for every Coons patch ([`CoonsBoundary`]); so are the cross-boundary curves in
+/// their own parameter (`x_u(0, ·)` runs along `d1`, so it may share `d1`'s domain). Their
+/// *values* are derivatives with respect to the patch parameters `u, v ∈ [0, 1]` and are used
+/// as given; the boundary tangents they are checked against, `c1'(0)` etc., are those of the
+/// reparametrised boundary curves (`(b − a) c1'(a)` for `c1` on `[a, b]`), and Gregory's twist
+/// uses the derivatives of the reparametrised cross-boundary curves likewise.
+///
+/// The positions in `M` are the corners of the
 /// [`CoonsBoundary`]; `x_u(i, j)` is taken from the cross-boundary curve `x_u(i, ·)` at `v = j`
 /// and `x_v(i, j)` from `x_v(·, j)` at `u = i`. With that choice the patch interpolates the four
 /// boundary curves whatever the derivative data. It also interpolates the four cross-boundary
@@ -149,6 +133,8 @@ pub struct SurfacePartials<T: Scalar = f64> {
 pub struct BicubicCoonsPatch<C, D, T: Scalar = f64> {
     boundary: CoonsBoundary<C, T>,
     cross: CrossDerivatives<D>,
+    /// The domains of `du0, du1, dv0, dv1`, each a finite interval `a < b`.
+    cross_domains: [(T, T); 4],
     /// `x_u` at `P1..P4`.
     xu: [DVector<T>; 4],
     /// `x_v` at `P1..P4`.
@@ -162,6 +148,8 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
     ///
     /// # Errors
     /// - [`Error::ShapeMismatch`]: a cross-boundary curve or given twist of the wrong dimension;
+    /// - [`Error::UnusableDomain`]: a cross-boundary curve whose domain is not a finite
+    ///   interval `a < b` (it is reparametrised onto `[0, 1]` as the boundary curves are);
     /// - [`Error::NonFinite`]: non-finite derivative data at a corner;
     /// - [`Error::CornerMismatch`]: where a boundary curve provides its derivative, its tangent
     ///   at a corner disagrees with the cross-boundary curve there (e.g. `c1'(0)` against
@@ -198,25 +186,32 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
                 });
             }
         }
+        let cross_domains = [
+            usable_domain("cross-boundary curve x_u(0,v)", &cross.du0)?,
+            usable_domain("cross-boundary curve x_u(1,v)", &cross.du1)?,
+            usable_domain("cross-boundary curve x_v(u,0)", &cross.dv0)?,
+            usable_domain("cross-boundary curve x_v(u,1)", &cross.dv1)?,
+        ];
+        let [du0, du1, dv0, dv1] = unit_cross(&cross, &cross_domains);
         let (zero, one) = (T::zero(), T::one());
         let xu = [
-            cross.du0.eval(zero.clone()),
-            cross.du1.eval(zero.clone()),
-            cross.du0.eval(one.clone()),
-            cross.du1.eval(one.clone()),
+            du0.eval(zero.clone()),
+            du1.eval(zero.clone()),
+            du0.eval(one.clone()),
+            du1.eval(one.clone()),
         ];
         let xv = [
-            cross.dv0.eval(zero.clone()),
-            cross.dv0.eval(one.clone()),
-            cross.dv1.eval(zero.clone()),
-            cross.dv1.eval(one.clone()),
+            dv0.eval(zero.clone()),
+            dv0.eval(one.clone()),
+            dv1.eval(zero.clone()),
+            dv1.eval(one.clone()),
         ];
         for p in xu.iter().chain(xv.iter()) {
             check("cross-boundary derivative at a corner", p)?;
         }
 
         // Boundary tangents against the cross-boundary curves, where the tangents are known.
-        let (c1, c2, d1, d2) = boundary.curves();
+        let [c1, c2, d1, d2] = boundary.unit_curves();
         let tolerance = boundary.tolerance();
         type Pair<'a, T> = (
             Corner,
@@ -313,25 +308,26 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
                 TwistData::Constant(t)
             }
             Twist::Gregory => {
-                let deriv = |c: &D, what: &'static str, t: T| -> Result<DVector<T>> {
-                    let d = c
-                        .eval_derivative(t)
-                        .ok_or(Error::MissingDerivative { what })?;
-                    check(what, &d)?;
-                    Ok(d)
-                };
+                let deriv =
+                    |c: &OnUnitInterval<&D, T>, what: &'static str, t: T| -> Result<DVector<T>> {
+                        let d = c
+                            .eval_derivative(t)
+                            .ok_or(Error::MissingDerivative { what })?;
+                        check(what, &d)?;
+                        Ok(d)
+                    };
                 // a = ∂/∂v x_u(i, v) at v = j; b = ∂/∂u x_v(u, j) at u = i.
                 let along_v = [
-                    deriv(&cross.du0, "x_u(0,v)", zero.clone())?,
-                    deriv(&cross.du1, "x_u(1,v)", zero.clone())?,
-                    deriv(&cross.du0, "x_u(0,v)", one.clone())?,
-                    deriv(&cross.du1, "x_u(1,v)", one.clone())?,
+                    deriv(&du0, "x_u(0,v)", zero.clone())?,
+                    deriv(&du1, "x_u(1,v)", zero.clone())?,
+                    deriv(&du0, "x_u(0,v)", one.clone())?,
+                    deriv(&du1, "x_u(1,v)", one.clone())?,
                 ];
                 let along_u = [
-                    deriv(&cross.dv0, "x_v(u,0)", zero.clone())?,
-                    deriv(&cross.dv0, "x_v(u,0)", one.clone())?,
-                    deriv(&cross.dv1, "x_v(u,1)", zero.clone())?,
-                    deriv(&cross.dv1, "x_v(u,1)", one)?,
+                    deriv(&dv0, "x_v(u,0)", zero.clone())?,
+                    deriv(&dv0, "x_v(u,0)", one.clone())?,
+                    deriv(&dv1, "x_v(u,1)", zero.clone())?,
+                    deriv(&dv1, "x_v(u,1)", one)?,
                 ];
                 TwistData::Gregory(GregoryTwist::new(along_v, along_u))
             }
@@ -339,6 +335,7 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
         Ok(BicubicCoonsPatch {
             boundary,
             cross,
+            cross_domains,
             xu,
             xv,
             twist,
@@ -378,8 +375,8 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
     /// `x(u, v)` from the curve values at `u` (`[c1, dv0, dv1, c2]`) and at `v`
     /// (`[d1, du0, du1, d2]`).
     fn combine(&self, u: &T, v: &T, at_u: &[DVector<T>; 4], at_v: &[DVector<T>; 4]) -> DVector<T> {
-        let hu = hermite_cubic(u);
-        let hv = hermite_cubic(v);
+        let hu = thesis_order(hermite_basis(u.clone()));
+        let hv = thesis_order(hermite_basis(v.clone()));
         let tw = self.twists(u, v);
         DVector::from_fn(self.boundary.dim(), |k, _| {
             let hc = dot(&hu, at_v, k);
@@ -388,25 +385,52 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
         })
     }
 
+    /// The three parts of (4.5) at `(u, v)`: `h_c` (the curves `x(0,v)`, `x_u(0,v)`,
+    /// `x_u(1,v)`, `x(1,v)` blended along `u`), `h_d` (the curves in `u` blended along `v`),
+    /// `h_cd` (the corner data `M`) and `x = h_c + h_d − h_cd`, the point [`Surface::eval`]
+    /// gives (the same operations).
+    pub fn eval_parts(&self, u: T, v: T) -> BicubicCoonsPoint<T> {
+        let (at_u, at_v) = (self.values_at_u(&u), self.values_at_v(&v));
+        let (hu, hv) = (
+            thesis_order(hermite_basis(u.clone())),
+            thesis_order(hermite_basis(v.clone())),
+        );
+        let tw = self.twists(&u, &v);
+        let dim = self.boundary.dim();
+        let hc = DVector::from_fn(dim, |k, _| dot(&hu, &at_v, k));
+        let hd = DVector::from_fn(dim, |k, _| dot(&hv, &at_u, k));
+        let hcd = DVector::from_fn(dim, |k, _| self.corner_blend(&hu, &hv, &tw, k));
+        let x = DVector::from_fn(dim, |k, _| hc[k].clone() + hd[k].clone() - hcd[k].clone());
+        BicubicCoonsPoint { x, hc, hd, hcd }
+    }
+
     /// The curve values `[c1(u), x_v(u,0), x_v(u,1), c2(u)]` and `[d1(v), x_u(0,v), x_u(1,v), d2(v)]`.
     fn values_at_u(&self, u: &T) -> [DVector<T>; 4] {
-        let (c1, c2, _, _) = self.boundary.curves();
+        let [c1, c2, _, _] = self.boundary.unit_curves();
+        let [_, _, dv0, dv1] = self.unit_cross();
         [
             c1.eval(u.clone()),
-            self.cross.dv0.eval(u.clone()),
-            self.cross.dv1.eval(u.clone()),
+            dv0.eval(u.clone()),
+            dv1.eval(u.clone()),
             c2.eval(u.clone()),
         ]
     }
 
     fn values_at_v(&self, v: &T) -> [DVector<T>; 4] {
-        let (_, _, d1, d2) = self.boundary.curves();
+        let [_, _, d1, d2] = self.boundary.unit_curves();
+        let [du0, du1, _, _] = self.unit_cross();
         [
             d1.eval(v.clone()),
-            self.cross.du0.eval(v.clone()),
-            self.cross.du1.eval(v.clone()),
+            du0.eval(v.clone()),
+            du1.eval(v.clone()),
             d2.eval(v.clone()),
         ]
+    }
+
+    /// The cross-boundary curves `[x_u(0,·), x_u(1,·), x_v(·,0), x_v(·,1)]` reparametrised onto
+    /// `[0, 1]`.
+    fn unit_cross(&self) -> [OnUnitInterval<&D, T>; 4] {
+        unit_cross(&self.cross, &self.cross_domains)
     }
 
     /// `x(u, v)` with its first partial derivatives `x_u`, `x_v`, in closed form (the Gregory
@@ -416,7 +440,8 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
     /// [`Error::MissingDerivative`] if a boundary or cross-boundary curve provides no
     /// derivative.
     pub fn eval_partials(&self, u: T, v: T) -> Result<SurfacePartials<T>> {
-        let (c1, c2, d1, d2) = self.boundary.curves();
+        let [c1, c2, d1, d2] = self.boundary.unit_curves();
+        let [du0, du1, dv0, dv1] = self.unit_cross();
         let deriv = |c: &dyn Fn(T) -> Option<DVector<T>>, what: &'static str, t: &T| {
             c(t.clone()).ok_or(Error::MissingDerivative { what })
         };
@@ -424,20 +449,20 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
         let at_v = self.values_at_v(&v);
         let at_u_d = [
             deriv(&|t| c1.eval_derivative(t), "c1", &u)?,
-            deriv(&|t| self.cross.dv0.eval_derivative(t), "x_v(u,0)", &u)?,
-            deriv(&|t| self.cross.dv1.eval_derivative(t), "x_v(u,1)", &u)?,
+            deriv(&|t| dv0.eval_derivative(t), "x_v(u,0)", &u)?,
+            deriv(&|t| dv1.eval_derivative(t), "x_v(u,1)", &u)?,
             deriv(&|t| c2.eval_derivative(t), "c2", &u)?,
         ];
         let at_v_d = [
             deriv(&|t| d1.eval_derivative(t), "d1", &v)?,
-            deriv(&|t| self.cross.du0.eval_derivative(t), "x_u(0,v)", &v)?,
-            deriv(&|t| self.cross.du1.eval_derivative(t), "x_u(1,v)", &v)?,
+            deriv(&|t| du0.eval_derivative(t), "x_u(0,v)", &v)?,
+            deriv(&|t| du1.eval_derivative(t), "x_u(1,v)", &v)?,
             deriv(&|t| d2.eval_derivative(t), "d2", &v)?,
         ];
-        let hu = hermite_cubic(&u);
-        let hv = hermite_cubic(&v);
-        let hu_d = hermite_cubic_derivative(&u);
-        let hv_d = hermite_cubic_derivative(&v);
+        let hu = thesis_order(hermite_basis(u.clone()));
+        let hv = thesis_order(hermite_basis(v.clone()));
+        let hu_d = thesis_order(hermite_basis_derivative(u.clone()));
+        let hv_d = thesis_order(hermite_basis_derivative(v.clone()));
         let tw = self.twists(&u, &v);
         let (tw_u, tw_v): ([DVector<T>; 4], [DVector<T>; 4]) = match &self.twist {
             TwistData::Constant(_) => {
@@ -502,6 +527,16 @@ impl<T: Scalar, C, D> BicubicCoonsPatch<C, D, T> {
     }
 }
 
+/// The cross-boundary curves `[du0, du1, dv0, dv1]` on their checked domains, reparametrised
+/// onto `[0, 1]`.
+fn unit_cross<'a, T: Scalar, D>(
+    cross: &'a CrossDerivatives<D>,
+    domains: &[(T, T); 4],
+) -> [OnUnitInterval<&'a D, T>; 4] {
+    let curves = [&cross.du0, &cross.du1, &cross.dv0, &cross.dv1];
+    [0, 1, 2, 3].map(|k| OnUnitInterval::from_checked(curves[k], domains[k].clone()))
+}
+
 /// `Σ_i h[i] · values[i][k]`.
 fn dot<T: Scalar>(h: &[T; 4], values: &[DVector<T>; 4], k: usize) -> T {
     h.iter()
@@ -512,6 +547,11 @@ fn dot<T: Scalar>(h: &[T; 4], values: &[DVector<T>; 4], k: usize) -> T {
 impl<T: Scalar, C: Curve<T>, D: Curve<T>> Surface<T> for BicubicCoonsPatch<C, D, T> {
     fn dim(&self) -> usize {
         self.boundary.dim()
+    }
+
+    /// `[0, 1]²`.
+    fn domain(&self) -> ((T, T), (T, T)) {
+        ((T::zero(), T::one()), (T::zero(), T::one()))
     }
 
     fn eval(&self, u: T, v: T) -> DVector<T> {
@@ -536,5 +576,45 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> Surface<T> for BicubicCoonsPatch<C, D,
             }
         }
         grid
+    }
+}
+
+/// The cost of one point of a bicubically blended Coons patch in `d` coordinates: the eight
+/// curves at their parameters (`curves`, the cost of each: the four boundary curves and the
+/// four cross-boundary derivatives) and about 64 operations per coordinate for the blend, on
+/// numbers as large as the curves' values grown by the cubic Hermite functions of `u` and `v`
+/// ([`polynomial_bits`]`(3, u_bits, 0) + polynomial_bits(3, v_bits, 0)`;
+/// [`blended`](crate::cost::blended)).
+///
+/// ```
+/// use cagd::coons::bicubic_point_cost;
+/// use cagd::cost::Cost;
+/// assert_eq!(bicubic_point_cost([Cost::new(2, 10); 8], 3, 1, 1), Cost::new(16 + 192, 10 + 12));
+/// ```
+pub fn bicubic_point_cost(
+    curves: impl IntoIterator<Item = Cost>,
+    d: usize,
+    u_bits: u128,
+    v_bits: u128,
+) -> Cost {
+    blended(
+        curves,
+        64 * d as u128,
+        polynomial_bits(3, u_bits, 0).saturating_add(polynomial_bits(3, v_bits, 0)),
+    )
+}
+
+#[cfg(test)]
+mod cost_tests {
+    use super::*;
+
+    #[test]
+    fn the_hermite_blend_grows_by_cubics_in_u_and_v() {
+        let c = bicubic_point_cost([Cost::new(1, 0); 8], 1, 0, 0);
+        assert_eq!(c, Cost::new(8 + 64, 6));
+        assert_eq!(
+            bicubic_point_cost([Cost::new(1, 100); 8], 1, 10, 0).bits(),
+            100 + 33 + 3
+        );
     }
 }

@@ -3,6 +3,7 @@
 use nalgebra::DVector;
 
 use super::{CoonsBoundary, CoonsPoint, Tolerance};
+use crate::cost::{blended, Cost};
 use crate::error::Result;
 use crate::param::{Curve, Surface};
 use crate::scalar::Scalar;
@@ -18,7 +19,27 @@ use crate::scalar::Scalar;
 ///
 /// with `c1 = x(·,0)`, `c2 = x(·,1)`, `d1 = x(0,·)`, `d2 = x(1,·)` over `[0, 1]` and the corners
 /// `P1..P4 = x(0,0), x(1,0), x(0,1), x(1,1)` (see the [module docs](super)). It interpolates the
-/// four curves: `x(u,0) = c1(u)` because `r_d(u,0) = r_cd(u,0)` when the corners agree.
+/// four curves: `x(u,0) = c1(u)` because `r_d(u,0) = r_cd(u,0)` when the corners agree. A curve
+/// on another domain `[a, b]` is reparametrised onto `[0, 1]` first (so the patch's domain is
+/// `[0, 1]²` whatever the curves'), e.g. four B-spline boundaries of which one runs over
+/// `[0, 4]`:
+///
+/// ```
+/// use cagd::bspline::BSplineCurve;
+/// use cagd::coons::CoonsPatch;
+/// use cagd::{Curve, Surface};
+/// use nalgebra::DMatrix;
+/// let pts = |p: &[[f64; 3]]| DMatrix::from_fn(3, p.len(), |r, c| p[c][r]);
+/// // c1: the uniform cubic on [0, 4] through (0,0,0) … (1,0,0); the others on [0, 1].
+/// let c1 = BSplineCurve::uniform_cubic(&pts(&[[0.0, 0.0, 0.0], [0.5, 0.0, 1.0], [1.0, 0.0, 0.0]]), true)?;
+/// assert_eq!(c1.domain(), (0.0, 4.0));
+/// let c2 = BSplineCurve::clamped(1, pts(&[[0.0, 1.0, 0.0], [1.0, 1.0, 0.0]]))?;
+/// let d1 = BSplineCurve::clamped(1, pts(&[[0.0, 0.0, 0.0], [0.0, 1.0, 0.0]]))?;
+/// let d2 = BSplineCurve::clamped(1, pts(&[[1.0, 0.0, 0.0], [1.0, 1.0, 0.0]]))?;
+/// let patch = CoonsPatch::new(c1.clone(), c2, d1, d2)?;
+/// assert_eq!(patch.eval(0.5, 0.0), c1.eval(2.0)); // x(u, 0) = c1(4u)
+/// # Ok::<(), cagd::Error>(())
+/// ```
 ///
 /// The boundary curves may be of any kind implementing [`Curve`] (Bézier, sampled polyline,
 /// closure, …; mix kinds with `Box<dyn Curve<T>>`). The sums are formed in the order of the
@@ -68,8 +89,9 @@ impl<T: Scalar, C: Curve<T>> CoonsPatch<C, T> {
     /// `c1`, `c2`.
     ///
     /// # Errors
-    /// See [`CoonsBoundary::new`]: curves of different dimensions, non-finite corners, and
-    /// [`crate::Error::CornerMismatch`] naming every corner where the curves disagree.
+    /// See [`CoonsBoundary::new`]: curves of different dimensions, a domain that cannot be
+    /// reparametrised onto `[0, 1]` ([`crate::Error::UnusableDomain`]), non-finite corners,
+    /// and [`crate::Error::CornerMismatch`] naming every corner where the curves disagree.
     pub fn new(c1: C, c2: C, d1: C, d2: C) -> Result<Self> {
         Self::with_tolerance(c1, c2, d1, d2, Tolerance::default())
     }
@@ -148,12 +170,12 @@ impl<T: Scalar, C: Curve<T>> CoonsPatch<C, T> {
         if len == 0 {
             return Ok(());
         }
-        let (c1, c2, d1, d2) = self.boundary.curves();
+        let [c1, c2, d1, d2] = self.boundary.unit_curves();
         let [p1, p2, p3, p4] = self.boundary.corners();
         // e[a] = [e1(us[a]), e2(us[a])], 2d values per row; g[b] = [1 − v, v].
         let mut e = vec![T::zero(); 2 * us.len() * d];
         let mut samples = vec![T::zero(); us.len() * d];
-        for (curve, (first, second), offset) in [(c1, (p1, p2), 0), (c2, (p3, p4), d)] {
+        for (curve, (first, second), offset) in [(&c1, (p1, p2), 0), (&c2, (p3, p4), d)] {
             curve.eval_many_into(us, &mut samples)?;
             for ((u, x), ea) in us
                 .iter()
@@ -218,6 +240,11 @@ impl<T: Scalar, C: Curve<T>> Surface<T> for CoonsPatch<C, T> {
         self.boundary.dim()
     }
 
+    /// `[0, 1]²` (the boundary curves reparametrised onto `[0, 1]`).
+    fn domain(&self) -> ((T, T), (T, T)) {
+        ((T::zero(), T::one()), (T::zero(), T::one()))
+    }
+
     fn eval(&self, u: T, v: T) -> DVector<T> {
         self.eval_parts(u, v).x
     }
@@ -243,14 +270,15 @@ impl<T: Scalar, C: Curve<T>> Surface<T> for CoonsPatch<C, T> {
 }
 
 impl<T: Scalar> CoonsPatch<crate::bezier::BezierCurve<T>, T> {
-    /// The Coons patch of four Bézier curves (over `[0, 1]`), exactly, as one tensor-product
-    /// Bézier patch of degree `(max(1, deg c1, deg c2), max(1, deg d1, deg d2))`: the Gordon
-    /// surface with nodes `{0, 1}` in both directions (its Lagrange basis is `1 − t, t`), see
+    /// The Coons patch of four Bézier curves, exactly, as one tensor-product Bézier patch of
+    /// degree `(max(1, deg c1, deg c2), max(1, deg d1, deg d2))`: the Gordon surface with nodes
+    /// `{0, 1}` in both directions (its Lagrange basis is `1 − t, t`), see
     /// [`crate::gordon::GordonSurface::to_bezier`]. The corners used are the patch's `P1..P4`.
+    /// A curve on another interval `[a, b]` enters reparametrised onto `[0, 1]`, which keeps
+    /// its control points.
     ///
     /// # Errors
-    /// [`crate::Error::InvalidArgument`] if a curve is defined over an interval other than
-    /// `[0, 1]`.
+    /// [`crate::Error::NonFinite`] if a control point overflows in `f64`.
     ///
     /// ```
     /// use cagd::bezier::BezierCurve;
@@ -280,5 +308,47 @@ impl<T: Scalar> CoonsPatch<crate::bezier::BezierCurve<T>, T> {
                 vec![p[1].clone(), p[3].clone()],
             ],
         )
+    }
+}
+
+/// The cost of one point of a bilinearly blended Coons patch in `d` coordinates,
+/// `x = r_c + r_d − r_cd`: the four boundary curves at their parameters (`curves`, the cost of
+/// each: `c1`, `c2` at `u`, `d1`, `d2` at `v`) and about 16 operations per coordinate for the
+/// blend, on numbers as large as the curves' values grown by the bits of `u` and `v` (and 2 for
+/// `1 − u`, `1 − v`; [`blended`](crate::cost::blended)).
+///
+/// ```
+/// use cagd::coons::coons_point_cost;
+/// use cagd::cost::Cost;
+/// let line = Cost::new(3, 10);
+/// assert_eq!(coons_point_cost([line; 4], 3, 4, 5), Cost::new(12 + 48, 10 + 11));
+/// ```
+pub fn coons_point_cost(
+    curves: impl IntoIterator<Item = Cost>,
+    d: usize,
+    u_bits: u128,
+    v_bits: u128,
+) -> Cost {
+    blended(
+        curves,
+        16 * d as u128,
+        u_bits.saturating_add(v_bits).saturating_add(2),
+    )
+}
+
+#[cfg(test)]
+mod cost_tests {
+    use super::*;
+
+    #[test]
+    fn the_blend_adds_to_the_curves_and_grows_their_largest_value() {
+        let curves = [
+            Cost::new(10, 5),
+            Cost::new(20, 50),
+            Cost::new(1, 0),
+            Cost::new(1, 0),
+        ];
+        assert_eq!(coons_point_cost(curves, 2, 0, 0), Cost::new(32 + 32, 52));
+        assert_eq!(coons_point_cost(curves, 2, 7, 8).bits(), 50 + 17);
     }
 }

@@ -6,9 +6,9 @@ use std::sync::Arc;
 
 use nalgebra::DVector;
 
-use super::bicubic::hermite_cubic;
 use super::{CoonsBoundary, CoonsPoint, Tolerance};
 use crate::error::{Error, Result};
+use crate::hermite::hermite_basis;
 use crate::param::{Curve, Surface};
 use crate::scalar::Scalar;
 
@@ -60,7 +60,8 @@ impl<T: Scalar> BlendingPair<T> {
     }
 
     /// The cubic Hermite pair `(H0³, H3³) = (B0³ + B1³, B2³ + B3³)` of the partially bicubic
-    /// patch (§4.2). Both have zero derivative at 0 and 1, so the cross-boundary derivative
+    /// patch (§4.2), the value functions `f_1`, `f_2` of
+    /// [`hermite_basis`](crate::hermite::hermite_basis). Both have zero derivative at 0 and 1, so the cross-boundary derivative
     /// along an edge depends only on the derivatives at its two ends.
     ///
     /// ```
@@ -73,11 +74,11 @@ impl<T: Scalar> BlendingPair<T> {
         Self::new(
             "Hermite cubic (H0, H3)",
             |t: T| {
-                let [h0, ..] = hermite_cubic(&t);
+                let [h0, ..] = hermite_basis(t);
                 h0
             },
             |t: T| {
-                let [.., h3] = hermite_cubic(&t);
+                let [_, h3, ..] = hermite_basis(t);
                 h3
             },
         )
@@ -259,6 +260,11 @@ impl<T: Scalar, C> GeneralizedCoonsPatch<C, T> {
 impl<T: Scalar, C: Curve<T>> Surface<T> for GeneralizedCoonsPatch<C, T> {
     fn dim(&self) -> usize {
         self.boundary.dim()
+    }
+
+    /// `[0, 1]²` (the boundary curves reparametrised onto `[0, 1]`).
+    fn domain(&self) -> ((T, T), (T, T)) {
+        ((T::zero(), T::one()), (T::zero(), T::one()))
     }
 
     fn eval(&self, u: T, v: T) -> DVector<T> {

@@ -1,8 +1,11 @@
 //! Coons patches: surfaces that fill four boundary curves (thesis chapter 4, notes §2.1).
 //!
 //! The four boundary curves are named as in the thesis: `c1(u) = x(u, 0)`, `c2(u) = x(u, 1)`,
-//! `d1(v) = x(0, v)`, `d2(v) = x(1, v)`, all over `[0, 1]`. They must meet at the four corners
-//! (the *compatibility condition* of thesis §4.4):
+//! `d1(v) = x(0, v)`, `d2(v) = x(1, v)`, all over `[0, 1]`. A curve given on another domain
+//! `[a, b]` is reparametrised affinely onto `[0, 1]`, `s ↦ c(a + (b − a)s)` (see
+//! [`crate::param`]: a boundary `BSplineCurve::uniform_cubic(…)` on `[0, 4]` is used whole), and
+//! one whose domain is not a finite interval is refused with [`Error::UnusableDomain`]. The
+//! curves must meet at the four corners (the *compatibility condition* of thesis §4.4):
 //!
 //! ```text
 //!   v ↑        c2
@@ -34,12 +37,10 @@
 //! All of it is generic over the [`Scalar`]: in `BigRational` the thesis's Primer 4.3 comes out
 //! exactly.
 
-use std::fmt;
-
 use nalgebra::DVector;
 
 use crate::error::{Error, Result};
-use crate::param::Curve;
+use crate::param::{usable_domain, Curve, OnUnitInterval};
 use crate::scalar::Scalar;
 
 mod bicubic;
@@ -49,161 +50,16 @@ mod generalized;
 mod gregory;
 mod mask;
 
+pub use crate::tolerance::{Corner, CornerGap, Tolerance};
 pub use bicubic::{
-    hermite_cubic, hermite_cubic_derivative, BicubicCoonsPatch, CrossDerivatives, SurfacePartials,
+    bicubic_point_cost, BicubicCoonsPatch, BicubicCoonsPoint, CrossDerivatives, SurfacePartials,
     Twist,
 };
-pub use bilinear::CoonsPatch;
+pub use bilinear::{coons_point_cost, CoonsPatch};
 pub use discrete::discrete_coons;
 pub use generalized::{BlendingPair, GeneralizedCoonsPatch, BLEND_TOLERANCE};
 pub use gregory::GregoryTwist;
 pub use mask::{solve_mask, Mask};
-
-/// How far apart two points that should coincide may be (corners of a Coons patch, crossings
-/// of a Gordon network).
-///
-/// The gap between two points is the largest coordinate difference (the max norm, as
-/// octave-nurbs `nrbcoons` measures it).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Tolerance {
-    /// `gap ≤ tol · max(1, largest |coordinate| of the two points)`: relative for large
-    /// coordinates, absolute near the origin. The default is `Relative(1e-10)`; for data of
-    /// size at most 1 this is exactly octave-nurbs `nrbcoons`'s test (absolute `1e-10`).
-    Relative(f64),
-    /// `gap ≤ tol`.
-    Absolute(f64),
-    /// The points must be equal (the natural choice in exact rational arithmetic).
-    Exact,
-}
-
-impl Default for Tolerance {
-    fn default() -> Self {
-        Tolerance::Relative(1e-10)
-    }
-}
-
-impl fmt::Display for Tolerance {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Tolerance::Relative(t) => write!(f, "relative tolerance {t:e}"),
-            Tolerance::Absolute(t) => write!(f, "absolute tolerance {t:e}"),
-            Tolerance::Exact => write!(f, "exact equality"),
-        }
-    }
-}
-
-impl Tolerance {
-    /// The gap between `p` and `q` (max norm) and the largest gap this tolerance allows for
-    /// them; the points pass when `gap <= allowed`.
-    ///
-    /// ```
-    /// use cagd::coons::Tolerance;
-    /// use nalgebra::dvector;
-    /// let (gap, allowed) = Tolerance::Relative(1e-10).gap(&dvector![100.0, 0.0], &dvector![100.0, 1e-9]);
-    /// assert_eq!(gap, 1e-9);
-    /// assert!((allowed - 1e-8).abs() < 1e-20); // 1e-10 · 100
-    /// ```
-    pub fn gap<T: Scalar>(&self, p: &DVector<T>, q: &DVector<T>) -> (T, T) {
-        let mut gap = T::zero();
-        let mut scale = T::one();
-        for (a, b) in p.iter().zip(q.iter()) {
-            let d = (a.clone() - b.clone()).abs();
-            if d > gap {
-                gap = d;
-            }
-            for s in [a.abs(), b.abs()] {
-                if s > scale {
-                    scale = s;
-                }
-            }
-        }
-        let allowed = match self {
-            Tolerance::Relative(t) => T::from_f64(*t).unwrap_or_else(T::zero) * scale,
-            Tolerance::Absolute(t) => T::from_f64(*t).unwrap_or_else(T::zero),
-            Tolerance::Exact => T::zero(),
-        };
-        (gap, allowed)
-    }
-
-    /// Rejects a negative or non-finite tolerance ([`Error::InvalidArgument`]).
-    pub(crate) fn validate(&self) -> Result<()> {
-        match self {
-            Tolerance::Relative(t) | Tolerance::Absolute(t) if !(t.is_finite() && *t >= 0.0) => {
-                Err(Error::InvalidArgument {
-                    what: "tolerance",
-                    message: format!("expected a finite value >= 0, got {t}"),
-                })
-            }
-            _ => Ok(()),
-        }
-    }
-}
-
-/// A corner of the parameter square, in the order of the thesis's `P1..P4`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum Corner {
-    /// `P1 = x(0,0)`.
-    U0V0,
-    /// `P2 = x(1,0)`.
-    U1V0,
-    /// `P3 = x(0,1)`.
-    U0V1,
-    /// `P4 = x(1,1)`.
-    U1V1,
-}
-
-impl Corner {
-    /// The four corners in the order `P1, P2, P3, P4`.
-    pub const ALL: [Corner; 4] = [Corner::U0V0, Corner::U1V0, Corner::U0V1, Corner::U1V1];
-
-    /// `(u, v)` of the corner as `(0|1, 0|1)`.
-    pub fn uv(self) -> (usize, usize) {
-        match self {
-            Corner::U0V0 => (0, 0),
-            Corner::U1V0 => (1, 0),
-            Corner::U0V1 => (0, 1),
-            Corner::U1V1 => (1, 1),
-        }
-    }
-
-    /// Position `0..4` in `P1..P4`.
-    pub fn index(self) -> usize {
-        let (i, j) = self.uv();
-        i + 2 * j
-    }
-}
-
-impl fmt::Display for Corner {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let (i, j) = self.uv();
-        write!(f, "x({i},{j}) (P{})", self.index() + 1)
-    }
-}
-
-/// One disagreement found by a corner check: two quantities that should be equal at a corner.
-#[derive(Debug, Clone, PartialEq)]
-pub struct CornerGap {
-    /// The corner.
-    pub corner: Corner,
-    /// The first quantity, e.g. `"c1(0)"`.
-    pub first: &'static str,
-    /// The second quantity, e.g. `"d1(0)"`.
-    pub second: &'static str,
-    /// The gap (max norm).
-    pub gap: f64,
-    /// The largest gap the tolerance allows here.
-    pub allowed: f64,
-}
-
-impl fmt::Display for CornerGap {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "at {} {} and {} differ by {:e} (allowed {:e})",
-            self.corner, self.first, self.second, self.gap, self.allowed
-        )
-    }
-}
 
 /// The value of a Coons patch at one parameter pair with its three parts
 /// (what the thesis function `vrednostCoons` computes): `x = r_c + r_d − r_cd`.
@@ -221,15 +77,20 @@ pub struct CoonsPoint<T: Scalar = f64> {
 
 /// Four boundary curves checked for compatibility, with the four corner points `P1..P4`.
 ///
-/// The corner points are taken from `c1` and `c2` (`P1 = c1(0)`, `P2 = c1(1)`, `P3 = c2(0)`,
-/// `P4 = c2(1)`, as octave-nurbs `nrbcoons` does) unless given explicitly with
-/// [`CoonsBoundary::with_corners`] (as the thesis code passes `P1..P4`).
+/// Each curve is used reparametrised onto `[0, 1]` ([`CoonsBoundary::unit_curves`]; a curve
+/// on `[a, b]` enters as `s ↦ c(a + (b − a)s)`, one on `[0, 1]` unchanged). The corner points
+/// are taken from `c1` and `c2` (`P1 = c1(0)`, `P2 = c1(1)`, `P3 = c2(0)`, `P4 = c2(1)` of
+/// the reparametrised curves, i.e. the ends of their domains, as octave-nurbs `nrbcoons` does)
+/// unless given explicitly with [`CoonsBoundary::with_corners`] (as the thesis code passes
+/// `P1..P4`).
 #[derive(Debug, Clone)]
 pub struct CoonsBoundary<C, T: Scalar = f64> {
     c1: C,
     c2: C,
     d1: C,
     d2: C,
+    /// The domains of `c1, c2, d1, d2`, each a finite interval `a < b`.
+    domains: [(T, T); 4],
     corners: [DVector<T>; 4],
     tolerance: Tolerance,
 }
@@ -247,11 +108,13 @@ const CURVE_ENDS: [(Corner, [CurveEnd; 2]); 4] = [
 
 impl<T: Scalar, C: Curve<T>> CoonsBoundary<C, T> {
     /// Checks that the curves `c1 = x(·,0)`, `c2 = x(·,1)`, `d1 = x(0,·)`, `d2 = x(1,·)` share
-    /// one dimension and meet at the corners within `tolerance`.
+    /// one dimension, have domains that can be reparametrised onto `[0, 1]`, and meet at the
+    /// corners (the ends of their domains) within `tolerance`.
     ///
     /// # Errors
     /// [`Error::ShapeMismatch`] for curves of different dimensions,
-    /// [`Error::NonFinite`] for a non-finite corner, [`Error::CornerMismatch`] listing every
+    /// [`Error::UnusableDomain`] for a curve whose domain is not a finite interval `a < b`
+    /// (naming the curve), [`Error::NonFinite`] for a non-finite corner, [`Error::CornerMismatch`] listing every
     /// corner where the two curves disagree, [`Error::InvalidArgument`] for a negative or
     /// non-finite tolerance.
     ///
@@ -275,8 +138,8 @@ impl<T: Scalar, C: Curve<T>> CoonsBoundary<C, T> {
     /// }
     /// ```
     pub fn new(c1: C, c2: C, d1: C, d2: C, tolerance: Tolerance) -> Result<Self> {
-        let ends = Self::ends(&c1, &c2, &d1, &d2)?;
-        tolerance.validate()?;
+        let (domains, ends) = Self::ends(&c1, &c2, &d1, &d2)?;
+        crate::error::check_tolerance(&tolerance)?;
         let mut gaps = Vec::new();
         for (corner, [(na, ia, ea), (nb, ib, eb)]) in CURVE_ENDS {
             let (p, q) = (&ends[ia][ea], &ends[ib][eb]);
@@ -296,6 +159,7 @@ impl<T: Scalar, C: Curve<T>> CoonsBoundary<C, T> {
             c2,
             d1,
             d2,
+            domains,
             corners,
             tolerance,
         })
@@ -316,8 +180,8 @@ impl<T: Scalar, C: Curve<T>> CoonsBoundary<C, T> {
         corners: [DVector<T>; 4],
         tolerance: Tolerance,
     ) -> Result<Self> {
-        let ends = Self::ends(&c1, &c2, &d1, &d2)?;
-        tolerance.validate()?;
+        let (domains, ends) = Self::ends(&c1, &c2, &d1, &d2)?;
+        crate::error::check_tolerance(&tolerance)?;
         let dim = c1.dim();
         for p in &corners {
             if p.len() != dim {
@@ -353,13 +217,16 @@ impl<T: Scalar, C: Curve<T>> CoonsBoundary<C, T> {
             c2,
             d1,
             d2,
+            domains,
             corners,
             tolerance,
         })
     }
 
-    /// The values of the four curves at 0 and 1, after checking dimensions and finiteness.
-    fn ends(c1: &C, c2: &C, d1: &C, d2: &C) -> Result<[[DVector<T>; 2]; 4]> {
+    /// The domains of the four curves and their values at the ends of them (the
+    /// reparametrised curves at 0 and 1), after checking dimensions, domains and finiteness.
+    #[allow(clippy::type_complexity)]
+    fn ends(c1: &C, c2: &C, d1: &C, d2: &C) -> Result<([(T, T); 4], [[DVector<T>; 2]; 4])> {
         let dim = c1.dim();
         const NAMES: [&str; 4] = ["c1", "c2", "d1", "d2"];
         let curves = [c1, c2, d1, d2];
@@ -372,7 +239,16 @@ impl<T: Scalar, C: Curve<T>> CoonsBoundary<C, T> {
                 });
             }
         }
-        let ends = curves.map(|c| [c.eval(T::zero()), c.eval(T::one())]);
+        let domains = [
+            usable_domain("Coons boundary curve c1", c1)?,
+            usable_domain("Coons boundary curve c2", c2)?,
+            usable_domain("Coons boundary curve d1", d1)?,
+            usable_domain("Coons boundary curve d2", d2)?,
+        ];
+        let ends = [0, 1, 2, 3].map(|k| {
+            let (a, b) = domains[k].clone();
+            [curves[k].eval(a), curves[k].eval(b)]
+        });
         for (k, pair) in ends.iter().enumerate() {
             for p in pair {
                 if p.len() != dim {
@@ -385,14 +261,21 @@ impl<T: Scalar, C: Curve<T>> CoonsBoundary<C, T> {
                 crate::error::check_finite("Coons boundary curve end", p.iter())?;
             }
         }
-        Ok(ends)
+        Ok((domains, ends))
     }
 }
 
 impl<T: Scalar, C> CoonsBoundary<C, T> {
-    /// The curves `(c1, c2, d1, d2)`.
+    /// The curves `(c1, c2, d1, d2)`, each in its own parameter.
     pub fn curves(&self) -> (&C, &C, &C, &C) {
         (&self.c1, &self.c2, &self.d1, &self.d2)
+    }
+
+    /// The curves `[c1, c2, d1, d2]` as the patch uses them: reparametrised onto `[0, 1]`
+    /// (unchanged for a curve on `[0, 1]`).
+    pub fn unit_curves(&self) -> [OnUnitInterval<&C, T>; 4] {
+        let curves = [&self.c1, &self.c2, &self.d1, &self.d2];
+        [0, 1, 2, 3].map(|k| OnUnitInterval::from_checked(curves[k], self.domains[k].clone()))
     }
 
     /// The corner points `[P1, P2, P3, P4] = [x(0,0), x(1,0), x(0,1), x(1,1)]`.
@@ -416,10 +299,9 @@ impl<T: Scalar, C: Curve<T>> CoonsBoundary<C, T> {
     /// in the term order of the thesis code (`vrednostCoons`), so that `f64` results agree with
     /// Octave bit for bit.
     pub(crate) fn blend(&self, u: &T, v: &T, f: &(T, T), g: &(T, T)) -> CoonsPoint<T> {
-        let c1 = self.c1.eval(u.clone());
-        let c2 = self.c2.eval(u.clone());
-        let d1 = self.d1.eval(v.clone());
-        let d2 = self.d2.eval(v.clone());
+        let [c1, c2, d1, d2] = self.unit_curves();
+        let (c1, c2) = (c1.eval(u.clone()), c2.eval(u.clone()));
+        let (d1, d2) = (d1.eval(v.clone()), d2.eval(v.clone()));
         let w = corner_weights(f, g);
         let dim = self.dim();
         let mut point = CoonsPoint {
@@ -449,10 +331,11 @@ impl<T: Scalar, C: Curve<T>> CoonsBoundary<C, T> {
         g: &[(T, T)],
     ) -> crate::grid::PointGrid<T> {
         let dim = self.dim();
-        let c1: Vec<_> = us.iter().map(|u| self.c1.eval(u.clone())).collect();
-        let c2: Vec<_> = us.iter().map(|u| self.c2.eval(u.clone())).collect();
-        let d1: Vec<_> = vs.iter().map(|v| self.d1.eval(v.clone())).collect();
-        let d2: Vec<_> = vs.iter().map(|v| self.d2.eval(v.clone())).collect();
+        let [c1, c2, d1, d2] = self.unit_curves();
+        let c1: Vec<_> = us.iter().map(|u| c1.eval(u.clone())).collect();
+        let c2: Vec<_> = us.iter().map(|u| c2.eval(u.clone())).collect();
+        let d1: Vec<_> = vs.iter().map(|v| d1.eval(v.clone())).collect();
+        let d2: Vec<_> = vs.iter().map(|v| d2.eval(v.clone())).collect();
         let mut grid = crate::grid::PointGrid::from_elem((us.len(), vs.len(), dim), T::zero());
         for i in 0..us.len() {
             for j in 0..vs.len() {

@@ -13,13 +13,18 @@
 //! blocks are evaluated with rayon; each block allocates its scratch once. Smaller grids run on
 //! the calling thread and never touch the thread pool.
 //!
-//! **Vectors.** The row kernels (`contract_row`, `blend_row`, and the curve kernels that
-//! call [`Scalar::vectorized`] themselves) run inside `Scalar::vectorized`: for `f64` with the
-//! default feature `simd`, in code compiled for the processor's widest vector instructions,
-//! chosen at run time; the results are the same as without it. The dispatch is made per row,
-//! around a kernel that is inlined whole (`#[inline(always)]`) into the dispatched code:
-//! a kernel left as a separate function would be compiled for the baseline only.
+//! **Vectors.** The row kernels (`contract_row`, `contract_row_planar`, `blend_row`, and the
+//! curve kernels that call [`Scalar::vectorized`] themselves) run inside `Scalar::vectorized`:
+//! for `f64` with the default feature `simd`, in code compiled for the processor's widest
+//! vector instructions, chosen at run time; the results are the same as without it. The
+//! dispatch is made per row, around a kernel that is inlined whole (`#[inline(always)]`) into
+//! the dispatched code — the closure handed to `vectorized` included: a kernel or closure left
+//! as a separate function is compiled for the baseline (SSE2) only.
+//!
+//! **Exact rationals.** The private module `exact` holds fraction-free kernels that the batch
+//! paths take when the scalar is `BigRational` (the same values, a fraction of the gcds).
 
+pub(crate) mod exact;
 mod point_grid;
 
 pub use point_grid::PointGrid;
@@ -132,7 +137,10 @@ pub(crate) fn weighted_sum_into<T: Scalar>(w: &[T], xs: &[T], out: &mut [T]) {
 /// at compile time for `d ≤ 4`, so that the sums stay in registers.
 #[inline]
 pub(crate) fn contract_row<T: Scalar>(ws: &[T], terms: usize, coeffs: &[T], row: &mut [T]) {
-    T::vectorized(|| contract_row_inline(ws, terms, coeffs, row));
+    T::vectorized(
+        #[inline(always)]
+        || contract_row_inline(ws, terms, coeffs, row),
+    );
 }
 
 /// [`contract_row`] without the dispatch, inlined into its callers' dispatched code.
@@ -207,6 +215,115 @@ fn contract_row_fixed<T: Scalar, const D: usize>(
     }
 }
 
+/// [`contract_row`] with the weights stored by term ("planar"): the weight `j` of point `b`
+/// of the row is `ws[j·stride + first + b]`, for `b` from 0 to `row.len()/d`, `d =
+/// coeffs.len()/terms`. Every point is `Σ_j w_b[j] · c_j`, from `w_b[0] · c_0`, `j`
+/// ascending — [`contract_row`]'s operations, so its values bit for bit. The weights of
+/// consecutive points lie side by side, so they load as vectors without being transposed.
+#[inline]
+pub(crate) fn contract_row_planar<T: Scalar>(
+    ws: &[T],
+    stride: usize,
+    first: usize,
+    terms: usize,
+    coeffs: &[T],
+    row: &mut [T],
+) {
+    T::vectorized(
+        #[inline(always)]
+        || contract_row_planar_inline(ws, stride, first, terms, coeffs, row),
+    );
+}
+
+#[inline(always)]
+fn contract_row_planar_inline<T: Scalar>(
+    ws: &[T],
+    stride: usize,
+    first: usize,
+    terms: usize,
+    coeffs: &[T],
+    row: &mut [T],
+) {
+    let d = coeffs.len() / terms.max(1);
+    if terms == 0 || d == 0 {
+        row.iter_mut().for_each(|o| *o = T::zero());
+        return;
+    }
+    let n = row.len() / d;
+    macro_rules! fixed {
+        ($l:literal, $d:literal) => {
+            planar_const::<T, $l, $d>(
+                std::array::from_fn(|j| &ws[j * stride + first..][..n]),
+                coeffs,
+                row,
+            )
+        };
+    }
+    match (terms, d) {
+        (2, 2) => fixed!(2, 2),
+        (2, 3) => fixed!(2, 3),
+        (3, 2) => fixed!(3, 2),
+        (3, 3) => fixed!(3, 3),
+        (4, 2) => fixed!(4, 2),
+        (4, 3) => fixed!(4, 3),
+        (4, 4) => fixed!(4, 4),
+        (5, 3) => fixed!(5, 3),
+        (6, 3) => fixed!(6, 3),
+        _ => {
+            for (b, p) in row.chunks_exact_mut(d).enumerate() {
+                for (k, o) in p.iter_mut().enumerate() {
+                    let mut acc = ws[first + b].clone() * coeffs[k].clone();
+                    for j in 1..terms {
+                        acc = acc + ws[j * stride + first + b].clone() * coeffs[j * d + k].clone();
+                    }
+                    *o = acc;
+                }
+            }
+        }
+    }
+}
+
+#[inline(always)]
+fn planar_const<T: Scalar, const L: usize, const D: usize>(
+    planes: [&[T]; L],
+    coeffs: &[T],
+    row: &mut [T],
+) {
+    let c: [[T; D]; L] =
+        std::array::from_fn(|j| std::array::from_fn(|k| coeffs[j * D + k].clone()));
+    for (b, p) in row.chunks_exact_mut(D).enumerate() {
+        let mut acc: [T; D] = std::array::from_fn(|k| planes[0][b].clone() * c[0][k].clone());
+        for j in 1..L {
+            for k in 0..D {
+                acc[k] = acc[k].clone() + planes[j][b].clone() * c[j][k].clone();
+            }
+        }
+        for (o, a) in p.iter_mut().zip(acc) {
+            *o = a;
+        }
+    }
+}
+
+/// The rows `f(t)` for every `t` in `ts`, each of length `width`, stored by term: entry `j`
+/// of the row of `ts[b]` at `j·ts.len() + b` (the layout [`contract_row_planar`] reads, with
+/// `stride = ts.len()`). One allocation for all of them and one for a row of scratch.
+pub(crate) fn planar_rows_of<T: Scalar>(
+    ts: &[T],
+    width: usize,
+    f: impl Fn(&T, &mut [T]),
+) -> Vec<T> {
+    let n = ts.len();
+    let mut planes = vec![T::zero(); n * width];
+    let mut row = vec![T::zero(); width];
+    for (b, t) in ts.iter().enumerate() {
+        f(t, &mut row);
+        for (j, x) in row.iter().enumerate() {
+            planes[j * n + b] = x.clone();
+        }
+    }
+    planes
+}
+
 /// One grid row of a blended surface: point `b` of `row` (`d` values each) becomes
 ///
 /// ```text
@@ -228,7 +345,10 @@ pub(crate) fn blend_row<T: Scalar>(
     xs: &[T],
     row: &mut [T],
 ) {
-    T::vectorized(|| blend_row_inline(ws, terms, coeffs, w, xs, row));
+    T::vectorized(
+        #[inline(always)]
+        || blend_row_inline(ws, terms, coeffs, w, xs, row),
+    );
 }
 
 /// [`blend_row`] without the dispatch.

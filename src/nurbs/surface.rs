@@ -150,18 +150,34 @@ impl<T: Scalar> NurbsSurface<T> {
         self.homogeneous.coordinates().len() - 1
     }
 
-    /// The point `S(u, v)`.
+    /// The domain `([u_p, u_nu], [v_q, v_nv])` of the knots.
+    pub fn domain(&self) -> ((T, T), (T, T)) {
+        self.homogeneous.domain()
+    }
+
+    /// The point `S(u, v)` for `(u, v)` in the domain: [`eval`](Self::eval)'s value, bit for
+    /// bit.
     ///
     /// # Errors
-    /// [`Error::ParameterOutOfRange`] outside the domain.
+    /// [`Error::NonFinite`] for NaN or ±∞, [`Error::ParameterOutOfRange`] outside the domain.
     pub fn try_eval(&self, u: T, v: T) -> Result<DVector<T>> {
         Ok(project(&self.homogeneous.try_eval(u, v)?))
     }
 
+    /// The point `S(u, v)` for any `(u, v)`: [`try_eval`](Self::try_eval)'s value in the
+    /// domain, outside it the end pieces continued (the weight may vanish there); a NaN or
+    /// infinite parameter gives a point of NaNs.
+    pub fn eval(&self, u: T, v: T) -> DVector<T> {
+        if !(u.is_finite_value() && v.is_finite_value()) {
+            return crate::bspline::nan_point(self.dim(), u, v);
+        }
+        project(&self.homogeneous.eval(u, v))
+    }
+
     /// The surface on the grid `us × vs` written into `out`, row by row:
     /// `out[(a·nv + b)·d + c]` is coordinate `c` of `S(us[a], vs[b])` (`(nu, nv, d)`
-    /// row-major; see [`crate::grid`]). As [`Surface::eval`], parameters outside the domain
-    /// are clamped to it and a NaN parameter gives points of NaNs.
+    /// row-major; see [`crate::grid`]). As [`eval`](Self::eval), outside the domain the end
+    /// pieces continue and a NaN or infinite parameter gives points of NaNs.
     ///
     /// The homogeneous surface (weighted points and weights, `d + 1` coordinates) is evaluated
     /// row by row as in [`BSplineSurface::eval_grid_into`] (`O(p + q)` per point, nothing
@@ -203,9 +219,17 @@ impl<T: Scalar> Surface<T> for NurbsSurface<T> {
         NurbsSurface::dim(self)
     }
 
-    /// The point at `(u, v)` clamped to the domain.
+    fn domain(&self) -> ((T, T), (T, T)) {
+        NurbsSurface::domain(self)
+    }
+
+    /// [`NurbsSurface::eval`]: the end pieces continue outside the domain.
     fn eval(&self, u: T, v: T) -> DVector<T> {
-        project(&Surface::eval(&self.homogeneous, u, v))
+        NurbsSurface::eval(self, u, v)
+    }
+
+    fn try_eval(&self, u: T, v: T) -> Result<DVector<T>> {
+        NurbsSurface::try_eval(self, u, v)
     }
 
     /// The grid by [`NurbsSurface::eval_grid_into`]'s algorithm (`O(p + q)` per point).

@@ -106,6 +106,10 @@ impl<T: Scalar> Surface<T> for FergusonPatch<T> {
     fn dim(&self) -> usize {
         self.patch.dim()
     }
+    /// `[0, 1]²`.
+    fn domain(&self) -> ((T, T), (T, T)) {
+        self.patch.domain()
+    }
     fn eval(&self, u: T, v: T) -> DVector<T> {
         self.patch.eval(u, v)
     }

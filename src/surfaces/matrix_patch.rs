@@ -2,29 +2,13 @@
 
 use nalgebra::{DMatrix, DVector};
 
-use crate::conversion::{basis_matrix, CubicForm};
+use crate::conversion::CubicForm;
 use crate::error::{check_finite, Error, Result};
 use crate::param::Surface;
 use crate::scalar::Scalar;
 
-/// The four basis functions of a cubic form at `u`: `M · [u³, u², u, 1]ᵀ`.
-pub(crate) fn form_basis<T: Scalar>(form: CubicForm, u: &T) -> [T; 4] {
-    let m = basis_matrix::<T>(form);
-    let powers = [
-        u.clone() * u.clone() * u.clone(),
-        u.clone() * u.clone(),
-        u.clone(),
-        T::one(),
-    ];
-    std::array::from_fn(|i| {
-        (0..4).fold(T::zero(), |acc, j| {
-            acc + m[(i, j)].clone() * powers[j].clone()
-        })
-    })
-}
-
 /// A bicubic patch in the matrix form of the lecture notes (and the matrix-form notes §2.2):
-/// `x(u, v) = Σ_a Σ_b f_a(u) f_b(v) X[a, b]` with `f = M [u³, u², u, 1]ᵀ`, one `4 × 4`
+/// `x(u, v) = Σ_a Σ_b f_a(u) f_b(v) X[a, b]` with `f = M [1, u, u², u³]ᵀ` ([`CubicForm::basis`]), one `4 × 4`
 /// geometry matrix `X` per coordinate, `a` along `u`, `b` along `v`.
 ///
 /// The lecture notes write it `x(u, v) = vᵀ Mᵀ X M u` with the rows of its `X` running along `v`;
@@ -88,9 +72,14 @@ impl<T: Scalar> Surface<T> for CubicMatrixPatch<T> {
         self.coords.len()
     }
 
+    /// `[0, 1]²` (the bicubic continues outside it).
+    fn domain(&self) -> ((T, T), (T, T)) {
+        ((T::zero(), T::one()), (T::zero(), T::one()))
+    }
+
     fn eval(&self, u: T, v: T) -> DVector<T> {
-        let fu = form_basis(self.form, &u);
-        let fv = form_basis(self.form, &v);
+        let fu = self.form.basis(&u);
+        let fv = self.form.basis(&v);
         DVector::from_fn(self.coords.len(), |k, _| {
             let x = &self.coords[k];
             (0..4).fold(T::zero(), |acc, a| {

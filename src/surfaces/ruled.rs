@@ -3,13 +3,16 @@
 use nalgebra::DVector;
 
 use crate::error::{Error, Result};
-use crate::param::{Curve, Surface};
+use crate::param::{to_domain, usable_domain, Curve, Surface};
 use crate::scalar::Scalar;
 
 /// The ruled surface `x(u, v) = (1 − v) ¹x(u) + v ²x(u)`, `u, v ∈ ⟨0, 1⟩` (the lecture notes: the
 /// vector `r = ²x(u) − ¹x(u)` slides along `¹x`; with a constant `r` it is a cylinder). Any
 /// [`Curve`]s — Hermite, Bézier, B-spline, NURBS, sampled. Its shape depends on how the two
-/// curves are parametrised, start points included (as the notes warn).
+/// curves are parametrised, start points included (as the notes warn). Each curve is
+/// reparametrised affinely from its domain `[a, b]` onto `u ∈ [0, 1]`,
+/// `¹x(a + (b − a)u)` (see [`crate::param`]), so the rulings join points at the same fraction
+/// of the two domains.
 ///
 /// ```
 /// use cagd::surfaces::RuledSurface;
@@ -30,12 +33,15 @@ impl<C1, C2> RuledSurface<C1, C2> {
     /// The surface between `first` (`v = 0`) and `second` (`v = 1`).
     ///
     /// # Errors
-    /// [`Error::ShapeMismatch`] if the curves have different dimensions.
+    /// [`Error::ShapeMismatch`] if the curves have different dimensions,
+    /// [`Error::UnusableDomain`] for a curve whose domain is not a finite interval `a < b`.
     pub fn new<T: Scalar>(first: C1, second: C2) -> Result<Self>
     where
         C1: Curve<T>,
         C2: Curve<T>,
     {
+        usable_domain("ruled surface curve ¹x", &first)?;
+        usable_domain("ruled surface curve ²x", &second)?;
         if first.dim() != second.dim() {
             return Err(Error::ShapeMismatch {
                 what: "ruled surface",
@@ -57,9 +63,15 @@ impl<T: Scalar, C1: Curve<T>, C2: Curve<T>> Surface<T> for RuledSurface<C1, C2> 
         self.first.dim()
     }
 
+    /// `[0, 1]²` (the curves reparametrised onto `[0, 1]`).
+    fn domain(&self) -> ((T, T), (T, T)) {
+        ((T::zero(), T::one()), (T::zero(), T::one()))
+    }
+
     fn eval(&self, u: T, v: T) -> DVector<T> {
-        let a = self.first.eval(u.clone());
-        let b = self.second.eval(u);
+        let ((a0, a1), (b0, b1)) = (self.first.domain(), self.second.domain());
+        let a = self.first.eval(to_domain(&a0, &a1, u.clone()));
+        let b = self.second.eval(to_domain(&b0, &b1, u));
         let w = T::one() - v.clone();
         DVector::from_fn(a.len(), |r, _| {
             w.clone() * a[r].clone() + v.clone() * b[r].clone()

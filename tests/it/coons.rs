@@ -198,6 +198,9 @@ impl Curve<f64> for Counting {
     fn dim(&self) -> usize {
         self.inner.dim()
     }
+    fn domain(&self) -> (f64, f64) {
+        self.inner.domain()
+    }
     fn eval(&self, t: f64) -> DVector<f64> {
         self.calls.set(self.calls.get() + 1);
         self.inner.eval(t)
@@ -435,7 +438,7 @@ fn partially_bicubic_cross_derivative_depends_only_on_the_corner_tangents() {
     let h = 1e-6;
     for v in cagd::linspace(0.0, 1.0, 11) {
         let fd = (patch.eval(h, v) - patch.eval(0.0, v)) / h;
-        let [h0, _, _, h3] = cagd::coons::hermite_cubic(&v);
+        let [h0, h3, _, _] = cagd::hermite::hermite_basis(v);
         let want = &tangent0 * h0 + &tangent1 * h3;
         assert!((fd - want).amax() < 1e-5);
     }
@@ -1296,4 +1299,18 @@ fn coons_of_bezier_curves_as_one_bezier_patch_is_exact() {
             );
         }
     }
+}
+
+/// Validation arithmetic cannot be bypassed by overflow: with α = 1e308, `4α` is infinite and
+/// `4α + 4β` NaN, which compared as "not too far from 1" before.
+#[test]
+fn mask_weights_that_overflow_are_not_affine() {
+    for (alpha, beta) in [(1e308, -1e308 + 0.25), (-1e308, 1e308), (1e308, 0.25)] {
+        let err = Mask::new(alpha, beta).unwrap_err();
+        assert!(
+            matches!(err, cagd::Error::MaskNotAffine { .. }),
+            "{alpha}, {beta}: {err:?}"
+        );
+    }
+    assert!(Mask::new(-0.25, 0.5).is_ok());
 }

@@ -294,7 +294,7 @@ fn lecture_notes_bezier_hermite_equivalence() {
             let u = q(k, 8);
             assert_eq!(h.eval(u.clone()), b.eval(u));
         }
-        assert_eq!(h.to_bezier(), b);
+        assert_eq!(h.to_bezier().unwrap(), b);
     }
     // Tangent scaling by q keeps the end points and end directions.
     let h = HermiteCubic::new(qv(&[0, 0]), qv(&[4, 0]), qv(&[1, 2]), qv(&[1, -2])).unwrap();

@@ -155,7 +155,7 @@ proptest! {
         let q = |n: i64| BigRational::from_ratio(n, den);
         let geo = DMatrix::from_fn(3, 4, |r, c| q(g[r * 4 + c]));
         let h = HermiteCubic::from_geometry(geo.clone()).unwrap();
-        let b = h.to_bezier();
+        let b = h.to_bezier().unwrap();
         let back = HermiteCubic::from_bezier(&b).unwrap();
         prop_assert_eq!(back.geometry(), &geo);
         let via_s = convert(&convert(&geo, CubicForm::Hermite, CubicForm::BSpline), CubicForm::BSpline, CubicForm::Bezier);

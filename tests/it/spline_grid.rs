@@ -1,14 +1,17 @@
 //! Batch evaluation of B-spline, NURBS and interpolating-spline curves and surfaces
 //! (`eval_many_into`, `eval_grid_into`, `eval_grid`) against their per-point `eval`.
 //!
-//! Curves do the same operations as `eval` and must agree bit for bit; surfaces sum along `u`
-//! first where `eval` sums along `v` first, so they agree to a few `(p + q) ε` times the size
-//! of the control net in `f64`. In rationals everything agrees exactly. The data are random:
+//! The exact-order curve batches (`eval_many_exact_order_into`, and the interpolating spline's
+//! `eval_many_into`) do the same operations as `eval` and must agree bit for bit; the fast
+//! curve batches (`eval_many_into` of B-spline and NURBS curves, reciprocals per span) stay
+//! within their stated bound of the exact rational value; surfaces sum along `u` first where
+//! `eval` sums along `v` first, so they agree to a few `(p + q) ε` times the size of the
+//! control net in `f64`. In rationals everything agrees exactly. The data are random:
 //! degrees 0…5, non-uniform knots with repeated interior knots (up to a discontinuity),
 //! clamped and unclamped knot vectors, parameters at every knot, at and beyond both ends of
 //! the domain, NaN and ±∞, sorted and shuffled.
 
-use cagd::bspline::{BSplineCurve, BSplineSurface};
+use cagd::bspline::{basis_functions, find_span, BSplineCurve, BSplineSurface};
 use cagd::nurbs::{NurbsCurve, NurbsSurface};
 use cagd::spline::{CubicSpline, EndCondition};
 use cagd::{Curve, Error, Scalar, Surface};
@@ -87,9 +90,19 @@ fn same(a: f64, b: f64) -> bool {
 
 /// Checks a batch of curve points against `eval` at each parameter, bit for bit.
 fn check_curve_bits<C: Curve>(what: &str, c: &C, ts: &[f64]) {
+    check_batch_bits(what, c, ts, |ts, out| c.eval_many_into(ts, out));
+}
+
+/// Checks the batch `batch` of `c` against `eval` at each parameter, bit for bit.
+fn check_batch_bits<C: Curve>(
+    what: &str,
+    c: &C,
+    ts: &[f64],
+    batch: impl Fn(&[f64], &mut [f64]) -> Result<(), Error>,
+) {
     let d = c.dim();
     let mut out = vec![f64::NAN; ts.len() * d];
-    c.eval_many_into(ts, &mut out).unwrap();
+    batch(ts, &mut out).unwrap();
     for (t, x) in ts.iter().zip(out.chunks_exact(d)) {
         let e = c.eval(*t);
         assert!(
@@ -100,14 +113,15 @@ fn check_curve_bits<C: Curve>(what: &str, c: &C, ts: &[f64]) {
     }
 }
 
-/// The largest difference between a grid and `eval`, in units of `ε · scale`; NaN must match.
+/// The largest difference between a grid and `eval`, in units of `ε · scale(u, v, eval)`;
+/// NaN must match.
 fn grid_error<S: Surface>(
     what: &str,
     s: &S,
     us: &[f64],
     vs: &[f64],
     out: &[f64],
-    scale: f64,
+    scale: impl Fn(f64, f64, &DVector<f64>) -> f64,
 ) -> f64 {
     let d = s.dim();
     let mut worst: f64 = 0.0;
@@ -124,19 +138,40 @@ fn grid_error<S: Surface>(
                     );
                     continue;
                 }
-                worst = worst.max((x[k] - e[k]).abs() / (f64::EPSILON * scale));
+                worst = worst.max((x[k] - e[k]).abs() / (f64::EPSILON * scale(*u, *v, &e)));
             }
         }
     }
     worst
 }
 
+/// `Σ_i |N_{i,p}(t)|` over the piece that gives the point at `t`: 1 in the domain (the basis
+/// is non-negative and sums to one there), more where an end piece is continued beyond it.
+fn basis_magnitude(p: usize, knots: &[f64], t: f64) -> f64 {
+    let n = knots.len() - p - 1;
+    let s = find_span(p, n, knots, &t.clamp(knots[p], knots[n])).unwrap();
+    basis_functions(p, knots, s, &t)
+        .iter()
+        .map(|x| x.abs())
+        .sum()
+}
+
 fn random_control(rng: &mut Lcg, d: usize, n: usize) -> DMatrix<f64> {
     DMatrix::from_fn(d, n, |_, _| 10.0 * rng.signed())
 }
 
+/// The exact-order batches of a B-spline curve and of a NURBS curve against `eval`.
+fn check_exact_order_bits(what: &str, c: &BSplineCurve, r: &NurbsCurve, ts: &[f64]) {
+    check_batch_bits(&format!("B-spline {what}"), c, ts, |ts, out| {
+        c.eval_many_exact_order_into(ts, out)
+    });
+    check_batch_bits(&format!("NURBS {what}"), r, ts, |ts, out| {
+        r.eval_many_exact_order_into(ts, out)
+    });
+}
+
 #[test]
-fn bspline_and_nurbs_curve_batches_equal_eval_bit_for_bit() {
+fn bspline_and_nurbs_exact_order_batches_equal_eval_bit_for_bit() {
     let mut rng = Lcg(11);
     let mut cases = 0;
     for p in 0..=5 {
@@ -149,13 +184,11 @@ fn bspline_and_nurbs_curve_batches_equal_eval_bit_for_bit() {
                         .unwrap();
                     let (lo, hi) = c.domain();
                     let mut ts = params_for(&mut rng, &knots, lo, hi, true);
-                    check_curve_bits(&format!("B-spline p={p} n={n} d={d}"), &c, &ts);
                     let weights: Vec<f64> = (0..n).map(|_| 0.25 + 2.0 * rng.next()).collect();
                     let r = NurbsCurve::new(p, knots, c.control().clone(), weights).unwrap();
-                    check_curve_bits(&format!("NURBS p={p} n={n} d={d}"), &r, &ts);
+                    check_exact_order_bits(&format!("p={p} n={n} d={d}"), &c, &r, &ts);
                     rng.shuffle(&mut ts);
-                    check_curve_bits(&format!("B-spline p={p} n={n} d={d} shuffled"), &c, &ts);
-                    check_curve_bits(&format!("NURBS p={p} n={n} d={d} shuffled"), &r, &ts);
+                    check_exact_order_bits(&format!("p={p} n={n} d={d} shuffled"), &c, &r, &ts);
                     cases += 1;
                 }
             }
@@ -188,17 +221,23 @@ fn inherent_eval_many_is_try_eval_and_refuses_parameters_outside_the_domain() {
             c.try_eval_many_into(&us, &mut out).unwrap_err(),
             r.try_eval_many_into(&us, &mut out).unwrap_err(),
         ] {
-            assert!(
-                matches!(
-                    err,
-                    Error::ParameterOutOfRange {
-                        min: 0.0,
-                        max: 1.0,
-                        ..
-                    }
-                ),
-                "{bad}: {err:?}"
-            );
+            // Finite parameters outside the domain are out of range; NaN and ±∞ are refused
+            // as non-finite (the rule of cagd::param).
+            if bad.is_finite() {
+                assert!(
+                    matches!(
+                        err,
+                        Error::ParameterOutOfRange {
+                            min: 0.0,
+                            max: 1.0,
+                            ..
+                        }
+                    ),
+                    "{bad}: {err:?}"
+                );
+            } else {
+                assert!(matches!(err, Error::NonFinite { .. }), "{bad}: {err:?}");
+            }
         }
         assert_eq!(out, vec![7.0; 9], "nothing is written on error");
     }
@@ -244,7 +283,18 @@ fn bspline_and_nurbs_surface_grids_agree_with_eval() {
             let mut out = vec![f64::NAN; us.len() * vs.len() * d];
             s.eval_grid_into(&us, &vs, &mut out).unwrap();
             let what = format!("B-spline ({p},{q}) d={d}");
-            let err = grid_error(&what, &s, &us, &vs, &out, scale);
+            let inside = |u: f64, v: f64| (a..=b).contains(&u) && (c..=e).contains(&v);
+            // Beyond the domain the end pieces continue; their basis values are no longer a
+            // partition of unity, and the error grows with Σ|N_i(u)| · Σ|N_j(v)|.
+            let magnitude =
+                |u: f64, v: f64| basis_magnitude(p, &ku, u) * basis_magnitude(q, &kv, v);
+            let err = grid_error(&what, &s, &us, &vs, &out, |u, v, _| {
+                if inside(u, v) {
+                    scale
+                } else {
+                    scale * magnitude(u, v)
+                }
+            });
             // Non-negative weights summing to one in both directions.
             assert!(err <= 2.0 * (p + q + 2) as f64, "{what}: {err} ε·scale");
             worst_b = worst_b.max(err);
@@ -258,11 +308,29 @@ fn bspline_and_nurbs_surface_grids_agree_with_eval() {
             // NURBS: weights in [0.5, 2]; the homogeneous error ~ ε·max|w P| is divided by a
             // weight ≥ 0.5.
             let w = DMatrix::from_fn(nu, nv, |_, _| 0.5 + 1.5 * rng.next());
-            let r = NurbsSurface::new(p, q, ku, kv, coords, w).unwrap();
+            let r = NurbsSurface::new(p, q, ku.clone(), kv.clone(), coords, w.clone()).unwrap();
             let mut out = vec![f64::NAN; us.len() * vs.len() * d];
             r.eval_grid_into(&us, &vs, &mut out).unwrap();
             let what = format!("NURBS ({p},{q}) d={d}");
-            let err = grid_error(&what, &r, &us, &vs, &out, scale);
+            // Beyond the domain: the homogeneous sums err by 2(p+q+2) ε Σ|N|Σ|N| max|wP| (and
+            // max|w| for the weight), and dividing by the weight h_w(u, v) — no longer at least
+            // min w there — amplifies that to (max|wP| + |x| max|w|) / |h_w|.
+            let max_wp = r
+                .homogeneous()
+                .coordinates()
+                .iter()
+                .take(d)
+                .map(|c| c.amax())
+                .fold(0.0, f64::max);
+            let max_w = w.amax();
+            let err = grid_error(&what, &r, &us, &vs, &out, |u, v, x| {
+                if inside(u, v) {
+                    scale
+                } else {
+                    let h = r.homogeneous().eval(u, v);
+                    magnitude(u, v) * (max_wp + x.amax() * max_w) / (8.0 * h[d].abs())
+                }
+            });
             assert!(err <= 16.0 * (p + q + 2) as f64, "{what}: {err} ε·scale");
             worst_n = worst_n.max(err);
             let g = Surface::eval_grid(&r, &us, &vs);
@@ -295,10 +363,19 @@ fn large_batches_on_threads_agree_with_eval() {
     let ts: Vec<f64> = (0..40_000)
         .map(|_| rng.signed() * 0.1 + rng.next())
         .collect();
-    check_curve_bits("B-spline 40 000 points", &c, &ts);
     let weights: Vec<f64> = (0..12).map(|_| 0.5 + rng.next()).collect();
     let r = NurbsCurve::new(3, knots.clone(), c.control().clone(), weights).unwrap();
-    check_curve_bits("NURBS 40 000 points", &r, &ts);
+    check_exact_order_bits("40 000 points", &c, &r, &ts);
+    // The fast batch: on threads, the same values as the same parameters in small batches.
+    for curve in [&c as &dyn Curve, &r as &dyn Curve] {
+        let mut all = vec![f64::NAN; ts.len() * 3];
+        curve.eval_many_into(&ts, &mut all).unwrap();
+        for (k, chunk) in ts.chunks(7).enumerate() {
+            let mut part = vec![f64::NAN; chunk.len() * 3];
+            curve.eval_many_into(chunk, &mut part).unwrap();
+            assert_eq!(&all[k * 21..k * 21 + part.len()], &part[..]);
+        }
+    }
 
     let coords: Vec<DMatrix<f64>> = (0..3)
         .map(|_| DMatrix::from_fn(12, 9, |_, _| rng.signed()))
@@ -318,7 +395,14 @@ fn large_batches_on_threads_agree_with_eval() {
         s.eval_grid_into(&us[a..a + 1], &vs, &mut row).unwrap();
         assert_eq!(&out[a * vs.len() * 3..(a + 1) * vs.len() * 3], &row[..]);
     }
-    let err = grid_error("large surface", &s, &us[..20], &vs, &out[..20 * 3000], 1.0);
+    let err = grid_error(
+        "large surface",
+        &s,
+        &us[..20],
+        &vs,
+        &out[..20 * 3000],
+        |_, _, _| 1.0,
+    );
     assert!(err <= 20.0, "{err}");
 }
 
@@ -532,4 +616,78 @@ fn buffers_of_the_wrong_length_are_shape_errors() {
     s.eval_grid_into(&[], &ts, &mut []).unwrap();
     n.eval_grid_into(&ts, &[], &mut []).unwrap();
     sp.eval_many_into(&[], &mut []).unwrap();
+}
+
+/// The largest `|batch − exact| / (ε · max |P|)` of the fast batch of a curve over the
+/// parameters `ts`, the exact value from the same curve in rationals at the clamped
+/// parameter; a NaN parameter must give NaNs.
+fn fast_batch_error(
+    fast: &dyn Curve,
+    exact: &dyn Curve<Q>,
+    ts: &[f64],
+    (lo, hi): (f64, f64),
+    scale: f64,
+) -> f64 {
+    let d = fast.dim();
+    let mut out = vec![0.0; ts.len() * d];
+    fast.eval_many_into(ts, &mut out).unwrap();
+    let mut worst: f64 = 0.0;
+    for (t, x) in ts.iter().zip(out.chunks_exact(d)) {
+        if t.is_nan() {
+            assert!(x.iter().all(|c| c.is_nan()), "NaN gives {x:?}");
+            continue;
+        }
+        let u = t.clamp(lo, hi);
+        let e = exact.eval(Q::from_f64(u).unwrap());
+        for (a, b) in x.iter().zip(e.iter()) {
+            let diff = Scalar::to_f64(&(Q::from_f64(*a).unwrap() - b.clone())).abs();
+            worst = worst.max(diff / (f64::EPSILON * scale));
+        }
+    }
+    worst
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(40))]
+
+    /// The fast batches (reciprocals of the knot differences per span) against exact rational
+    /// arithmetic: B-spline within `(4p + 1) ε · max |P_i|`, NURBS within
+    /// `(7p + 3) ε · max |P_k|` (the bounds of `BSplineCurve::eval_many_into` and
+    /// `NurbsCurve::eval_many_into`), for degrees 0…7 (the four-lane kernels and the general
+    /// one), clamped and unclamped knots with repeated knots, parameters at every knot, beyond
+    /// the domain, NaN and ±∞, sorted and shuffled.
+    #[test]
+    fn fast_curve_batches_are_within_the_bound_of_exact_rationals(
+        seed in proptest::prelude::any::<u64>(),
+        p in 0usize..=7,
+        extra in 0usize..6,
+        d in 1usize..=4,
+        clamped in proptest::prelude::any::<bool>(),
+    ) {
+        let mut rng = Lcg(seed | 1);
+        let n = p + 1 + extra;
+        let knots = random_knots(&mut rng, p, n, clamped);
+        let control = random_control(&mut rng, d, n);
+        let weights: Vec<f64> = (0..n).map(|_| 0.25 + 4.0 * rng.next()).collect();
+        let c = BSplineCurve::new(p, knots.clone(), control.clone()).unwrap();
+        let r = NurbsCurve::new(p, knots.clone(), control.clone(), weights.clone()).unwrap();
+        let lift = |v: &[f64]| v.iter().map(|x| Q::from_f64(*x).unwrap()).collect::<Vec<Q>>();
+        let control_q = DMatrix::from_iterator(d, n, lift(control.as_slice()));
+        let cq = BSplineCurve::new(p, lift(&knots), control_q.clone()).unwrap();
+        let rq = NurbsCurve::new(p, lift(&knots), control_q, lift(&weights)).unwrap();
+        let domain = c.domain();
+        let mut ts = params_for(&mut rng, &knots, domain.0, domain.1, true);
+        ts.truncate(30);
+        ts.extend([f64::NAN, f64::INFINITY, f64::NEG_INFINITY, domain.1]);
+        let scale = control.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        for shuffled in [false, true] {
+            if shuffled {
+                rng.shuffle(&mut ts);
+            }
+            let b = fast_batch_error(&c, &cq, &ts, domain, scale);
+            proptest::prop_assert!(b <= (4 * p + 1) as f64, "B-spline p={} d={}: {} ε", p, d, b);
+            let w = fast_batch_error(&r, &rq, &ts, domain, scale);
+            proptest::prop_assert!(w <= (7 * p + 3) as f64, "NURBS p={} d={}: {} ε", p, d, w);
+        }
+    }
 }

@@ -50,6 +50,10 @@ impl<T: Scalar> Curve<T> for Poly<T> {
     fn dim(&self) -> usize {
         self.coeffs[0].len()
     }
+    /// `[0, 1]`, the domain the constructions take their curves on.
+    fn domain(&self) -> (T, T) {
+        (T::zero(), T::one())
+    }
     fn eval(&self, t: T) -> DVector<T> {
         let mut acc = self.coeffs.last().unwrap().clone();
         for c in self.coeffs.iter().rev().skip(1) {

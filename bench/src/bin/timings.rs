@@ -2,14 +2,14 @@
 //! per-call time over several batches), then the accuracy study of de Casteljau vs. the
 //! monomial form as `#`-comment lines.
 //!
-//! `cargo run --release -p cagd-bench --bin timings [--no-accuracy]`
+//! `cargo run --release -p cagd-bench --bin timings [--no-accuracy | --accuracy-only]`
 
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
 use cagd_bench::{
     accuracy_study, bicubic_net, bspline_surface, coons_of, cubic_control, cubic_curve, gordon_of,
-    hand_bicubic_grid, hand_cubic_curve, patch, per_point_grid,
+    hand_bicubic_grid, hand_cubic_curve, patch, per_point_grid, spline_accuracy_study,
 };
 
 /// The best time per call of `f`: batches of at least 30 ms (or one call), seven batches
@@ -42,6 +42,10 @@ fn report(case: &str, seconds: f64) {
 
 fn main() {
     let accuracy = !std::env::args().any(|a| a == "--no-accuracy");
+    if std::env::args().any(|a| a == "--accuracy-only") {
+        print_accuracy();
+        return;
+    }
     let bicubic = patch(3, 3);
 
     // Bézier patches (into a buffer), the buffer fill, the hand-specialised kernel.
@@ -146,14 +150,34 @@ fn main() {
     }
 
     if accuracy {
-        println!("# accuracy: max |error| against exact rationals, control values in [-1, 1]");
-        println!("# (20 random curves x 50 parameters in [0, 1] per degree)");
-        println!("# degree\tde_casteljau\tbasis_rows\tmonomial_form");
-        for row in accuracy_study(&[10, 20, 30, 40], 20, 50) {
-            println!(
-                "# {}\t{:.2e}\t{:.2e}\t{:.2e}",
-                row.degree, row.de_casteljau, row.basis_rows, row.monomial
-            );
-        }
+        print_accuracy();
+    }
+}
+
+/// The accuracy studies, as `#`-comment lines.
+fn print_accuracy() {
+    println!("# accuracy: max |error| against exact rationals, control values in [-1, 1]");
+    println!("# (20 random curves x 50 parameters in [0, 1] per degree)");
+    println!("# degree\tde_casteljau\tbasis_rows\tmonomial_form");
+    for row in accuracy_study(&[10, 20, 30, 40], 20, 50) {
+        println!(
+            "# {}\t{:.2e}\t{:.2e}\t{:.2e}",
+            row.degree, row.de_casteljau, row.basis_rows, row.monomial
+        );
+    }
+    println!("# B-spline and NURBS curve batches: max |error| against exact rationals,");
+    println!("# in units of eps * max |P| (10 random 3-D curves x 50 parameters per degree)");
+    println!("# degree\tbspline_fast\tbspline_exact_order\tnurbs_fast\tnurbs_exact_order\tbounds");
+    for row in spline_accuracy_study(&[1, 2, 3, 5, 8], 10, 50) {
+        println!(
+            "# {}\t{:.2}\t{:.2}\t{:.2}\t{:.2}\t{}, {}",
+            row.degree,
+            row.bspline_fast,
+            row.bspline_exact_order,
+            row.nurbs_fast,
+            row.nurbs_exact_order,
+            4 * row.degree + 1,
+            7 * row.degree + 3
+        );
     }
 }

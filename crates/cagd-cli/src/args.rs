@@ -19,15 +19,29 @@ pub struct OutputArgs {
     /// are read exactly: 0.2 is 1/5). Only for rational constructions and expressions.
     #[arg(long)]
     pub exact: bool,
-    /// Write the result to FILE (atomically) instead of standard output.
+    /// Write the result to FILE (atomically) instead of standard output (`-` is standard
+    /// output). An existing FILE must be a regular file: a FIFO, a device or a folder is
+    /// refused, never replaced.
     #[arg(short = 'o', long, value_name = "FILE")]
     pub output: Option<PathBuf>,
+    /// Significant digits of the numbers in the text format (1 to 17; default 15, which hides
+    /// round-off such as 0.30000000000000004). The octave, csv and json formats keep every bit.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u8).range(1..=17))]
+    pub digits: Option<u8>,
+}
+
+impl OutputArgs {
+    /// The significant digits of the text format.
+    pub fn text_digits(&self) -> usize {
+        self.digits.map_or(crate::TEXT_DIGITS, usize::from)
+    }
 }
 
 /// A picture of the result.
 #[derive(Debug, Clone, Args)]
 pub struct PlotArgs {
-    /// Draw the result into FILE.svg or FILE.png (format chosen by the extension).
+    /// Draw the result into FILE.svg or FILE.png (format chosen by the extension; `-` writes
+    /// SVG to standard output, with the result sent elsewhere by -o).
     #[arg(long, value_name = "FILE")]
     pub plot: Option<PathBuf>,
 }
@@ -36,7 +50,8 @@ pub struct PlotArgs {
 #[derive(Debug, Clone, Args)]
 pub struct MeshArgs {
     /// Write the surface as a triangle mesh to FILE.stl (binary), FILE.obj or FILE.ply
-    /// (ASCII), chosen by the extension.
+    /// (ASCII), chosen by the extension (`-` writes OBJ to standard output, with the result
+    /// sent elsewhere by -o).
     #[arg(long, value_name = "FILE")]
     pub mesh: Option<PathBuf>,
 }
@@ -87,6 +102,10 @@ pub struct SurfaceParamArgs {
     /// Sample u and v at linspace(0,1,N), like the thesis's N.
     #[arg(long, value_name = "N", allow_negative_numbers = true)]
     pub n: Option<usize>,
+    /// List the surface one point per line, `u v x y z` (a matrix with one row per grid
+    /// point, u varying slowest), instead of the nu×nv×d grid.
+    #[arg(long)]
+    pub list: bool,
 }
 
 /// Orientation of point matrices.
@@ -155,6 +174,7 @@ impl LimitArgs {
         ];
         for (limit, value) in flags {
             if let Some(v) = value {
+                crate::limits::check_cap(crate::limits::flag(limit), limit, v)?;
                 limits.set(limit, v);
             }
         }

@@ -70,7 +70,8 @@ impl PendingWrites {
         Self::default()
     }
 
-    /// Adds a file; `argument` names the option it came from, for error messages.
+    /// Adds a file; `argument` names the option it came from, for error messages. The path
+    /// `-` is standard output, written after the files.
     pub fn add(&mut self, argument: impl Into<String>, path: impl Into<PathBuf>, bytes: Vec<u8>) {
         self.files.push((argument.into(), path.into(), bytes));
     }
@@ -111,11 +112,17 @@ impl PendingWrites {
             })?;
         }
         let mut staged = Vec::with_capacity(self.files.len());
+        let mut to_stdout = Vec::new();
         for (argument, path, bytes) in &self.files {
+            if path.as_os_str() == "-" {
+                to_stdout.push((argument, bytes));
+                continue;
+            }
             // A folder in the way would only fail at the rename, after other files were
-            // renamed into place: refuse it before anything is written.
-            if path.is_dir() {
-                let e = std::io::Error::other("is a folder, not a file");
+            // renamed into place; a FIFO or a device must not become a regular file: refuse
+            // both before anything is written.
+            if let Some(kind) = crate::outputs::not_regular(path) {
+                let e = std::io::Error::other(format!("is {kind}, not a regular file"));
                 return Err(write_error(argument, path, &e));
             }
             let tmp = stage(path, bytes).map_err(|e| write_error(argument, path, &e))?;
@@ -131,6 +138,12 @@ impl PendingWrites {
                 return Err(write_error(argument, path, &e.error));
             }
             done.push((path, backup));
+        }
+        for (argument, bytes) in to_stdout {
+            let mut out = std::io::stdout().lock();
+            out.write_all(bytes)
+                .and_then(|()| out.flush())
+                .map_err(|e| write_error(argument, Path::new("-"), &e))?;
         }
         Ok(())
     }

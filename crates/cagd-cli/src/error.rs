@@ -60,7 +60,7 @@ impl CliError {
         kind: ErrorKind,
     ) -> Self {
         CliError {
-            argument: argument.into(),
+            argument: one_line(&argument.into()),
             problem: one_line(&problem.into()),
             expected: one_line(&expected.into()),
             kind,
@@ -121,8 +121,61 @@ impl CliError {
 }
 
 /// Collapses line breaks so that every message stays on one line.
+///
+/// Input quoted in a message is made safe to print: control characters (terminal escape
+/// sequences among them) are shown escaped (`\u{1b}`), and a quotation longer than
+/// [`MAX_QUOTE_CHARS`] characters is shortened to its start and end around `…`, so that an
+/// error line stays one readable line whatever the input.
 fn one_line(s: &str) -> String {
-    s.split_whitespace().collect::<Vec<_>>().join(" ")
+    let escaped: String = s
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ")
+        .chars()
+        .flat_map(|c| {
+            if c.is_control() {
+                c.escape_unicode().collect::<Vec<_>>()
+            } else {
+                vec![c]
+            }
+        })
+        .collect();
+    shorten_quotes(&escaped)
+}
+
+/// Longest input quotation (between backquotes) kept whole in a message.
+pub const MAX_QUOTE_CHARS: usize = 60;
+
+/// Shortens every backquoted quotation longer than [`MAX_QUOTE_CHARS`], and the whole text if
+/// it is longer than ten times that.
+fn shorten_quotes(s: &str) -> String {
+    let shorten = |q: &str| -> String {
+        let chars: Vec<char> = q.chars().collect();
+        if chars.len() <= MAX_QUOTE_CHARS {
+            return q.to_string();
+        }
+        let head: String = chars[..MAX_QUOTE_CHARS / 2].iter().collect();
+        let tail: String = chars[chars.len() - MAX_QUOTE_CHARS / 4..].iter().collect();
+        format!("{head}…{tail} ({} characters)", chars.len())
+    };
+    let parts: Vec<&str> = s.split('`').collect();
+    let mut out = String::with_capacity(s.len().min(4 * MAX_QUOTE_CHARS));
+    for (k, part) in parts.iter().enumerate() {
+        if k > 0 {
+            out.push('`');
+        }
+        // Odd parts lie between backquotes (an unmatched last quote leaves an odd part open).
+        if k % 2 == 1 {
+            out.push_str(&shorten(part));
+        } else {
+            out.push_str(part);
+        }
+    }
+    let limit = 10 * MAX_QUOTE_CHARS;
+    if out.chars().count() > limit {
+        out = shorten(&out);
+    }
+    out
 }
 
 impl CliError {
@@ -143,6 +196,14 @@ impl CliError {
             M::NonFinite { index } => (
                 format!("grid value {index} is not finite"),
                 "finite coordinates".to_string(),
+                ErrorKind::Shape,
+            ),
+            M::OutOfRange { index, value } => (
+                format!(
+                    "grid value {index} is {value:e}, beyond the single precision of binary STL"
+                ),
+                "coordinates within ±3.4e38 for .stl (or write .obj or .ply, which keep doubles)"
+                    .to_string(),
                 ErrorKind::Shape,
             ),
             M::TooLarge { points, limit } => (
@@ -183,6 +244,18 @@ impl CliError {
                 "finite coordinates".to_string(),
                 ErrorKind::Plot,
             ),
+            P::OutOfRange {
+                label,
+                index,
+                value,
+            } => (
+                format!("`{label}`: coordinate {index} is {value:e}, too large to draw"),
+                format!(
+                    "coordinates within ±{:e} (scale the data down to draw it)",
+                    crate::plot::MAX_COORDINATE
+                ),
+                ErrorKind::Plot,
+            ),
             P::Size { width, height } => (
                 format!("picture size {width}×{height}"),
                 "100 to 10000 pixels per side".to_string(),
@@ -201,4 +274,22 @@ impl CliError {
         };
         Self::new(argument, problem, expected, kind)
     }
+}
+
+/// A library error about `argument`.
+pub(crate) fn lib<'a>(
+    argument: &'a str,
+    expected: &'a str,
+) -> impl Fn(cagd::Error) -> CliError + 'a {
+    move |e| CliError::library(argument, e, expected)
+}
+
+/// A usage error: a required argument is missing or arguments do not fit together.
+pub(crate) fn usage(argument: &str, problem: &str, expected: &str) -> CliError {
+    CliError::new(argument, problem, expected, ErrorKind::Usage)
+}
+
+/// A shape error.
+pub(crate) fn shape(argument: &str, problem: String, expected: &str) -> CliError {
+    CliError::new(argument, problem, expected, ErrorKind::Shape)
 }

@@ -18,13 +18,12 @@
 
 use cagd::limits::Limits;
 use std::io::Read;
-use std::path::Path;
 
 use cagd::grid::PointGrid;
 use nalgebra::DMatrix;
 
 use super::{CliError, ErrorKind};
-use cagd_octave::literal::{Env, Expr, LiteralScalar, ParamExpr};
+use cagd_octave::literal::{Env, Expr, LiteralError, LiteralScalar, ParamExpr, Warning};
 use cagd_octave::script::Script;
 
 /// Largest input file or standard input accepted by default, in bytes (64 MiB); the limit in
@@ -40,6 +39,46 @@ pub const PARAMS_FORM: &str =
 /// The form of a curve expression, for error messages.
 pub const CURVE_FORM: &str = "an expression in the curve parameter such as \"[u; 0; u-u^2]\"";
 
+thread_local! {
+    /// Files given in memory by [`with_input_files`], by name.
+    static INPUT_FILES: std::cell::RefCell<Vec<(String, String)>> =
+        const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// Runs `f` (typically [`crate::run`]) with `files` (name, contents) readable as input files
+/// of that name, before the file system: so the web page, which has no file system, passes a
+/// data script typed into the page as `--script data.m`. Only on the calling thread, and only
+/// while `f` runs.
+///
+/// ```
+/// let files = vec![("data.m".to_string(), "B = [0 0; 1 2]';".to_string())];
+/// let out = cagd_cli::with_input_files(files, || cagd_cli::run(["cagd", "script", "data.m"]));
+/// assert!(out.unwrap().stdout.contains("B ="));
+/// ```
+pub fn with_input_files<R>(files: Vec<(String, String)>, f: impl FnOnce() -> R) -> R {
+    let previous = INPUT_FILES.with(|cell| cell.replace(files));
+    let result = f();
+    INPUT_FILES.with(|cell| cell.replace(previous));
+    result
+}
+
+fn input_file(path: &str) -> Option<String> {
+    INPUT_FILES.with(|cell| {
+        cell.borrow()
+            .iter()
+            .find(|(name, _)| name == path)
+            .map(|(_, text)| text.clone())
+    })
+}
+
+/// Whether `path` names an input file: one given to [`with_input_files`], or something on
+/// disk to read as a file: a regular file, or a named pipe, a device or `/dev/stdin` (anything
+/// that exists and is not a folder), so that `<(command)` and FIFOs are read rather than
+/// reported missing.
+pub(crate) fn is_file(path: &str) -> bool {
+    input_file(path).is_some() || std::fs::metadata(path).is_ok_and(|m| !m.is_dir())
+}
+
 /// Reads a file (or standard input for `-`) as text, with the size limit.
 pub fn read_text(limits: &Limits, argument: &str, path: &str) -> Result<String, CliError> {
     let limit = limits.max_input_bytes;
@@ -51,7 +90,10 @@ pub fn read_text(limits: &Limits, argument: &str, path: &str) -> Result<String, 
     let form = format!("a readable UTF-8 text file (at most {size}), or - for standard input");
     let form = form.as_str();
     let mut bytes = Vec::new();
-    let result = if path == "-" {
+    let result = if let Some(text) = input_file(path) {
+        bytes = text.into_bytes();
+        Ok(bytes.len())
+    } else if path == "-" {
         std::io::stdin()
             .lock()
             .take(limit.saturating_add(1))
@@ -125,8 +167,7 @@ pub fn load_matrix<T: LiteralScalar>(
             return parse_data_text_variable(limits, &shown, &contents, Some(variable));
         }
     }
-    if trimmed == "-" || (!is_variable && !trimmed.starts_with('[') && Path::new(trimmed).is_file())
-    {
+    if trimmed == "-" || (!is_variable && !trimmed.starts_with('[') && is_file(trimmed)) {
         let contents = read_text(limits, argument, trimmed)?;
         let shown = if trimmed == "-" {
             argument.to_string()
@@ -160,8 +201,43 @@ pub fn load_matrix<T: LiteralScalar>(
             }
         }
     }
-    expr.eval(&mut env)
-        .map_err(|e| CliError::literal(argument, e, MATRIX_FORM))
+    let before: Vec<Warning> = env.warnings().cloned().collect();
+    let value = expr
+        .eval(&mut env)
+        .map_err(|e| CliError::literal(argument, e, MATRIX_FORM))?;
+    let new = env
+        .take_warnings()
+        .into_iter()
+        .filter(|w| !before.contains(w));
+    refuse_lenient(argument, new, MATRIX_FORM)?;
+    Ok(value)
+}
+
+/// Refuses the first of `warnings`: what a data script accepts with a warning (Octave would
+/// refuse it), an argument typed on the command line must spell out (`.*` for `*`, …).
+fn refuse_lenient(
+    argument: &str,
+    warnings: impl IntoIterator<Item = Warning>,
+    form: &str,
+) -> Result<(), CliError> {
+    match warnings.into_iter().next() {
+        None => Ok(()),
+        Some(w) => {
+            // "`*` on 1×2 and 1×2 operands is an error in Octave; evaluated element-wise as
+            // `.*`": the first clause says what Octave does, the rest how a script reads it.
+            let what = w
+                .message
+                .split("; ")
+                .next()
+                .unwrap_or(&w.message)
+                .to_string();
+            let error = LiteralError::Unsupported {
+                at: w.at,
+                what: format!("{what} (a data script reads it leniently, with a warning; an argument must be valid Octave)"),
+            };
+            Err(CliError::literal(argument, error, form))
+        }
+    }
 }
 
 /// `file.txt:name` with an existing file `file.txt` and an Octave identifier `name`.
@@ -169,7 +245,7 @@ fn split_variable(text: &str) -> Option<(&str, &str)> {
     let (path, name) = text.rsplit_once(':')?;
     let valid = name.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
         && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
-    (valid && Path::new(path).is_file()).then_some((path, name))
+    (valid && is_file(path)).then_some((path, name))
 }
 
 /// The form of an Octave text file argument, for error messages.
@@ -318,7 +394,7 @@ pub fn load_net<T: LiteralScalar>(
         None
     } else if let Some((path, variable)) = split_variable(trimmed) {
         Some((path, Some(variable)))
-    } else if trimmed != "-" && Path::new(trimmed).is_file() {
+    } else if trimmed != "-" && is_file(trimmed) {
         Some((trimmed, None))
     } else {
         None
@@ -427,8 +503,10 @@ pub fn load_params<T: LiteralScalar>(
     argument: &str,
     text: &str,
 ) -> Result<Vec<T>, CliError> {
-    let values = cagd_octave::literal::parse_params_with::<T>(text, limits)
+    crate::slips::decimal_commas(argument, text);
+    let (values, warnings) = cagd_octave::literal::parse_params_warning::<T>(text, limits)
         .map_err(|e| CliError::literal(argument, e, PARAMS_FORM))?;
+    refuse_lenient(argument, warnings, PARAMS_FORM)?;
     if values.is_empty() {
         return Err(CliError::new(
             argument,

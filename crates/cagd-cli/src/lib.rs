@@ -11,6 +11,9 @@
 //! in memory; nothing touches the file system until the caller commits the files (the binary
 //! does, fuzzing and tests need not).
 //!
+//! `cagd serve` ([`serve`]) is the one subcommand that is not a computation: the binary asks
+//! [`serve_request`] first and serves the web page on localhost.
+//!
 //! Every failure is a [`CliError`]: one line `<argument>: <problem>; expected <form>`, exit
 //! code 2 (1 only for internal faults).
 
@@ -24,14 +27,35 @@ mod input;
 pub mod limits;
 pub mod mesh;
 mod output;
+pub mod outputs;
 pub mod plot;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod serve;
+#[cfg(target_arch = "wasm32")]
+mod serve {
+    //! `cagd serve` exists only in the program; in the browser its arguments still parse.
+    /// Serve the web page on localhost.
+    #[derive(Debug, Clone, clap::Args)]
+    pub struct ServeCommand {
+        /// The port on 127.0.0.1.
+        #[arg(long, value_name = "P", default_value_t = 8000)]
+        pub port: u16,
+        /// The folder of the built page.
+        #[arg(long, value_name = "DIR")]
+        pub dir: Option<std::path::PathBuf>,
+    }
+}
+pub mod slips;
 
-pub use app::{run, Outcome};
+pub use app::{run, serve_request, Outcome};
 pub use atomic::{write_atomic, PendingWrites};
 pub use error::{CliError, ErrorKind};
 pub use input::{
     load_expression, load_matrix, load_net, load_params, load_script, parse_data_text,
     parse_data_text_variable, parse_numeric_text, read_octave_array, read_text, samples,
-    scalar_from_double, unpack_net, CURVE_FORM, MATRIX_FORM, MAX_INPUT_BYTES, PARAMS_FORM,
+    scalar_from_double, unpack_net, with_input_files, CURVE_FORM, MATRIX_FORM, MAX_INPUT_BYTES,
+    PARAMS_FORM,
 };
-pub use output::{number_text, render, Format, Item, Report, Value};
+pub use output::{
+    number_text, number_text_digits, render, render_with, Format, Item, Report, Value, TEXT_DIGITS,
+};

@@ -5,6 +5,16 @@ use cagd::limits::{Limit, Limits};
 
 use crate::{CliError, ErrorKind};
 
+/// The deepest nesting `--max-depth` (or `CAGD_MAX_DEPTH`) may allow: the parsers and readers
+/// recurse once per level, and the `cagd` binary runs each command on a thread with a stack of
+/// [`COMMAND_STACK_BYTES`], which holds this many levels even in an unoptimised build (about
+/// 10–40 KB a level there, far less in a release build).
+pub const MAX_DEPTH_CAP: u64 = 1000;
+
+/// The stack of the thread the `cagd` binary runs a command on (reserved address space; only
+/// what deep nesting actually uses is ever touched).
+pub const COMMAND_STACK_BYTES: usize = 256 << 20;
+
 /// Every limit with its environment variable and flag, in field order.
 pub const SETTINGS: [(Limit, &str, &str); 10] = [
     (
@@ -66,10 +76,27 @@ pub fn from_env() -> Result<Limits, CliError> {
     let mut limits = Limits::default();
     for (limit, var, _) in SETTINGS {
         if let Ok(text) = std::env::var(var) {
-            limits.set(limit, parse_limit(var, &text)?);
+            let value = parse_limit(var, &text)?;
+            check_cap(var, limit, value)?;
+            limits.set(limit, value);
         }
     }
     Ok(limits)
+}
+
+/// Refuses a depth above [`MAX_DEPTH_CAP`], naming `argument` (the flag or the variable).
+pub(crate) fn check_cap(argument: &str, limit: Limit, value: u64) -> Result<(), CliError> {
+    if limit == Limit::Depth && value > MAX_DEPTH_CAP {
+        return Err(CliError::new(
+            argument,
+            format!(
+                "{value} is deeper than the {MAX_DEPTH_CAP} levels of nesting the parsers' stack holds"
+            ),
+            format!("a depth of at most {MAX_DEPTH_CAP}"),
+            ErrorKind::Usage,
+        ));
+    }
+    Ok(())
 }
 
 fn parse_limit(var: &str, text: &str) -> Result<u64, CliError> {

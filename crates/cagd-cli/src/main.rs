@@ -28,11 +28,35 @@ fn main() {
         );
         std::process::exit(1);
     }));
-    let code = match cagd_cli::run(std::env::args_os()).and_then(finish) {
-        Ok(()) => 0,
+    // The command runs on a thread whose stack holds the deepest nesting the limits allow
+    // (cagd_cli::limits::MAX_DEPTH_CAP levels of the recursive parsers and readers).
+    let command = std::thread::Builder::new()
+        .name("cagd".into())
+        .stack_size(cagd_cli::limits::COMMAND_STACK_BYTES)
+        .spawn(|| {
+            let args: Vec<_> = std::env::args_os().collect();
+            let result = match cagd_cli::serve_request(args.iter().cloned()) {
+                Some(serve) => cagd_cli::serve::serve(&serve),
+                None => cagd_cli::run(args).and_then(finish),
+            };
+            match result {
+                Ok(()) => 0,
+                Err(e) => {
+                    let _ = writeln!(std::io::stderr(), "cagd: error: {e}");
+                    e.exit_code()
+                }
+            }
+        });
+    let code = match command.map(|c| c.join()) {
+        Ok(Ok(code)) => code,
+        // A panic has already been reported (and exited) by the hook.
+        Ok(Err(_)) => 1,
         Err(e) => {
-            let _ = writeln!(std::io::stderr(), "cagd: error: {e}");
-            e.exit_code()
+            let _ = writeln!(
+                std::io::stderr(),
+                "cagd: internal error: cannot start the command thread: {e}"
+            );
+            1
         }
     };
     std::process::exit(code);

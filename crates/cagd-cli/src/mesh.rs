@@ -64,6 +64,18 @@ pub enum MeshError {
         /// Index in the grid's row-major order.
         index: usize,
     },
+    /// A coordinate beyond the single-precision range of binary STL (±3.4e38): it would be
+    /// written as infinite.
+    #[error(
+        "grid value at flat index {index} is {value:e}, beyond the ±{:e} of binary STL",
+        f32::MAX
+    )]
+    OutOfRange {
+        /// Index in the grid's row-major order.
+        index: usize,
+        /// The value.
+        value: f64,
+    },
     /// More triangles than a binary STL can count, or than the export allows.
     #[error("grid of {points} points is too large to export (at most {limit})")]
     TooLarge {
@@ -307,6 +319,15 @@ pub fn to_ply_binary(mesh: &TriangleMesh) -> Vec<u8> {
 /// Triangulates `grid` and encodes it in `format`.
 pub fn encode(grid: &PointGrid<f64>, format: MeshFormat) -> Result<Vec<u8>, MeshError> {
     let mesh = triangulate(grid)?;
+    if format == MeshFormat::Stl {
+        // Binary STL stores single precision: a larger coordinate would become infinite.
+        if let Some(index) = grid.iter().position(|x| x.abs() > f64::from(f32::MAX)) {
+            return Err(MeshError::OutOfRange {
+                index,
+                value: grid.as_slice()[index],
+            });
+        }
+    }
     Ok(match format {
         MeshFormat::Stl => to_stl(&mesh),
         MeshFormat::Obj => to_obj(&mesh).into_bytes(),

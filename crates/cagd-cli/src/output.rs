@@ -6,6 +6,15 @@
 //!
 //! Numbers print as the shortest decimal that reads back to the same double (`0.1`, `3`,
 //! `1e-20`), or, with `--exact`, as reduced fractions (`7/2`, `31/15`, integers without `/1`).
+//! The readable text format first rounds every double to [`TEXT_DIGITS`] significant digits
+//! (`--digits N` chooses another count), so round-off such as `0.30000000000000004` prints as
+//! `0.3`, and shows an entry below `10^−digits` times the largest of its matrix as 0 (so
+//! `cos(π/2) = 6.1e-17` beside 1 is 0, as Octave displays it); the machine formats (`octave`,
+//! `csv`, `json`) keep every bit.
+//!
+//! Steps may be structured: a [`Value::Record`] of named parts is an object in JSON and a
+//! struct in Octave's format, and a [`Value::Shown`] is printed as its text (a de Casteljau
+//! triangle, say) in the text format and as its data everywhere else.
 
 use std::fmt::Write as _;
 
@@ -38,6 +47,10 @@ pub enum Format {
     Json,
 }
 
+/// Significant digits of a double in the readable text format (at most 15: every decimal of
+/// 15 digits survives the round trip through a double, so no digit shown is round-off).
+pub const TEXT_DIGITS: usize = 15;
+
 /// The value of a report item.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Value<T: LiteralScalar> {
@@ -47,6 +60,17 @@ pub enum Value<T: LiteralScalar> {
     Grid(PointGrid<T>),
     /// A line of text.
     Text(String),
+    /// Named parts (the levels of a scheme, the pieces of a step): an object in JSON, a
+    /// struct in Octave's format, `name.part` items in text and CSV.
+    Record(Vec<Item<T>>),
+    /// Data with a readable form: the text in the text format, the data in the others (a de
+    /// Casteljau triangle for people, its levels for programs).
+    Shown {
+        /// What the text format prints.
+        text: String,
+        /// What the other formats write.
+        data: Box<Value<T>>,
+    },
 }
 
 /// One named item of a report.
@@ -85,6 +109,54 @@ impl<T: LiteralScalar> Report<T> {
         });
         self
     }
+
+    /// The first number of the report that is not finite: the item's name, the flat index
+    /// (column-major for matrices, row-major `(i, j, k)` for grids) and the value. Text items
+    /// (steps) are searched for the words `inf` and `NaN` in any case.
+    ///
+    /// ```
+    /// use cagd_cli::{Report, Value};
+    /// use nalgebra::dmatrix;
+    /// let mut r = Report::<f64>::new();
+    /// r.push("result", Value::Matrix(dmatrix![1.0, f64::INFINITY]));
+    /// assert_eq!(r.first_non_finite(), Some(("result".to_string(), 1, f64::INFINITY)));
+    /// ```
+    pub fn first_non_finite(&self) -> Option<(String, usize, f64)> {
+        self.items
+            .iter()
+            .find_map(|item| first_non_finite_in(&item.name, &item.value))
+    }
+}
+
+/// [`Report::first_non_finite`] in one value: named parts are searched as `name.part`.
+fn first_non_finite_in<T: LiteralScalar>(
+    name: &str,
+    value: &Value<T>,
+) -> Option<(String, usize, f64)> {
+    let found = match value {
+        Value::Matrix(m) => m
+            .iter()
+            .position(|x| !x.is_finite_value())
+            .map(|k| (k, m[k].to_f64())),
+        Value::Grid(g) => g
+            .iter()
+            .position(|x| !x.is_finite_value())
+            .map(|k| (k, g.as_slice()[k].to_f64())),
+        Value::Text(t) => t
+            .split(|c: char| !c.is_ascii_alphanumeric())
+            .position(|w| w.eq_ignore_ascii_case("inf") || w.eq_ignore_ascii_case("nan"))
+            .map(|k| (k, f64::NAN)),
+        Value::Record(items) => {
+            return items
+                .iter()
+                .find_map(|i| first_non_finite_in(&format!("{name}.{}", i.name), &i.value));
+        }
+        Value::Shown { text, data } => {
+            return first_non_finite_in(name, data)
+                .or_else(|| first_non_finite_in(name, &Value::<T>::Text(text.clone())));
+        }
+    };
+    found.map(|(k, x)| (name.to_string(), k, x))
 }
 
 /// The printed form of one number: shortest round-trip decimal for doubles (exponent form
@@ -104,7 +176,35 @@ pub fn number_text<T: LiteralScalar>(x: &T) -> String {
     if T::EXACT {
         return x.to_string();
     }
+    double_text(x.to_f64())
+}
+
+/// [`number_text`] of a value rounded to `digits` significant digits first (1 ≤ `digits`
+/// ≤ 17; doubles only, fractions are exact and print in full): what the readable text format
+/// prints.
+///
+/// ```
+/// use cagd_cli::number_text_digits;
+/// assert_eq!(number_text_digits(&(0.1f64 + 0.2), 15), "0.3");
+/// assert_eq!(number_text_digits(&0.6000000000000001f64, 15), "0.6");
+/// assert_eq!(number_text_digits(&(2.0f64 / 3.0), 4), "0.6667");
+/// assert_eq!(number_text_digits(&-1e-300f64, 15), "-1e-300");
+/// ```
+pub fn number_text_digits<T: LiteralScalar>(x: &T, digits: usize) -> String {
+    if T::EXACT {
+        return x.to_string();
+    }
     let v = x.to_f64();
+    if !v.is_finite() || v == 0.0 {
+        return double_text(v);
+    }
+    let digits = digits.clamp(1, 17);
+    let rounded: f64 = format!("{:.*e}", digits - 1, v).parse().unwrap_or(v);
+    double_text(rounded)
+}
+
+/// The shortest round-trip decimal of a double, in exponent form below 1e-5 and from 1e15 on.
+fn double_text(v: f64) -> String {
     if v == 0.0 {
         return "0".into();
     }
@@ -128,8 +228,28 @@ pub fn number_text<T: LiteralScalar>(x: &T) -> String {
 /// assert_eq!(render(&r, Format::Json).unwrap(), "{\"result\":[[1.0,0.25],[-3.0,10.0]]}\n");
 /// ```
 pub fn render<T: LiteralScalar>(report: &Report<T>, format: Format) -> Result<String, CliError> {
+    render_with(report, format, TEXT_DIGITS)
+}
+
+/// [`render`] with doubles rounded to `digits` significant digits in the text format (the
+/// other formats keep every bit).
+///
+/// ```
+/// use cagd_cli::{render_with, Format, Report, Value};
+/// use nalgebra::DMatrix;
+/// let mut r = Report::<f64>::new();
+/// r.push("x", Value::Matrix(DMatrix::from_element(1, 1, 0.1 + 0.2)));
+/// assert_eq!(render_with(&r, Format::Text, 15).unwrap(), "x = 0.3\n\n");
+/// assert_eq!(render_with(&r, Format::Text, 17).unwrap(), "x = 0.30000000000000004\n\n");
+/// assert_eq!(render_with(&r, Format::Csv, 15).unwrap(), "0.30000000000000004\n");
+/// ```
+pub fn render_with<T: LiteralScalar>(
+    report: &Report<T>,
+    format: Format,
+    digits: usize,
+) -> Result<String, CliError> {
     match format {
-        Format::Text => Ok(render_text(report)),
+        Format::Text => Ok(render_text(report, digits)),
         Format::Csv => Ok(render_csv(report)),
         Format::Json => render_json(report),
         Format::Octave => render_octave(report),
@@ -149,27 +269,10 @@ fn octave_name(name: &str) -> String {
 }
 
 fn render_octave<T: LiteralScalar>(report: &Report<T>) -> Result<String, CliError> {
-    use cagd_octave::text_format::{self, CharMatrix, Value as OValue, Workspace};
+    use cagd_octave::text_format::{self, Workspace};
     let mut ws = Workspace::new();
     for item in &report.items {
-        let value = match &item.value {
-            Value::Matrix(m) => {
-                let a = ndarray::Array2::from_shape_fn(m.shape(), |(i, j)| m[(i, j)].to_f64());
-                OValue::from(a)
-            }
-            Value::Grid(g) => {
-                OValue::Matrix(cagd_octave::arrays::to_array3(g.map(|x| x.to_f64())).into_dyn())
-            }
-            Value::Text(t) => {
-                // A char matrix needs rows of one length: pad with spaces, as Octave's char().
-                let lines: Vec<&str> = t.lines().collect();
-                let width = lines.iter().map(|l| l.len()).max().unwrap_or(0);
-                let mut c = CharMatrix::new("");
-                c.rows = lines.iter().map(|l| format!("{l:<width$}")).collect();
-                OValue::Str(c)
-            }
-        };
-        ws.insert(octave_name(&item.name), value);
+        ws.insert(octave_name(&item.name), octave_value(&item.value));
     }
     text_format::write_text(&ws).map_err(|e| {
         CliError::new(
@@ -179,6 +282,36 @@ fn render_octave<T: LiteralScalar>(report: &Report<T>) -> Result<String, CliErro
             ErrorKind::Internal,
         )
     })
+}
+
+/// A value as Octave stores it: matrices and grids as doubles, text as a char matrix, a
+/// record as a struct.
+fn octave_value<T: LiteralScalar>(value: &Value<T>) -> cagd_octave::text_format::Value {
+    use cagd_octave::text_format::{CharMatrix, Value as OValue};
+    match value {
+        Value::Matrix(m) => {
+            let a = ndarray::Array2::from_shape_fn(m.shape(), |(i, j)| m[(i, j)].to_f64());
+            OValue::from(a)
+        }
+        Value::Grid(g) => {
+            OValue::Matrix(cagd_octave::arrays::to_array3(g.map(|x| x.to_f64())).into_dyn())
+        }
+        Value::Text(t) => {
+            // A char matrix needs rows of one length: pad with spaces, as Octave's char().
+            let lines: Vec<&str> = t.lines().collect();
+            let width = lines.iter().map(|l| l.len()).max().unwrap_or(0);
+            let mut c = CharMatrix::new("");
+            c.rows = lines.iter().map(|l| format!("{l:<width$}")).collect();
+            OValue::Str(c)
+        }
+        Value::Record(items) => OValue::Struct(
+            items
+                .iter()
+                .map(|i| (octave_name(&i.name), octave_value(&i.value)))
+                .collect(),
+        ),
+        Value::Shown { data, .. } => octave_value(data),
+    }
 }
 
 /// Right-aligned columns with two spaces before each, indented by two more.
@@ -198,40 +331,64 @@ fn aligned(m: &DMatrix<String>) -> String {
     out
 }
 
-fn text_matrix<T: LiteralScalar>(name: &str, m: &DMatrix<T>, out: &mut String) {
+/// The entries of a matrix as the text format prints them: `digits` significant digits, and
+/// doubles below `10^−digits` times the largest magnitude of the matrix as 0 (round-off of a
+/// zero, such as cos(π/2) = 6.1e-17 next to 1); fractions in full.
+fn text_entries<T: LiteralScalar>(m: &DMatrix<T>, digits: usize) -> DMatrix<String> {
+    let scale = m.iter().map(|x| x.to_f64().abs()).fold(0.0, f64::max);
+    let floor = scale * 10f64.powi(-(digits.clamp(1, 17) as i32));
+    m.map(|x| {
+        if !T::EXACT && x.to_f64().abs() < floor {
+            "0".to_string()
+        } else {
+            number_text_digits(&x, digits)
+        }
+    })
+}
+
+fn text_matrix<T: LiteralScalar>(name: &str, m: &DMatrix<T>, digits: usize, out: &mut String) {
     if m.is_empty() {
         let _ = writeln!(out, "{name} = []({}x{})\n", m.nrows(), m.ncols());
     } else if m.len() == 1 {
-        let _ = writeln!(out, "{name} = {}\n", number_text(&m[(0, 0)]));
+        let _ = writeln!(out, "{name} = {}\n", number_text_digits(&m[(0, 0)], digits));
     } else {
         let _ = writeln!(out, "{name} =\n");
-        out.push_str(&aligned(&m.map(|x| number_text(&x))));
+        out.push_str(&aligned(&text_entries(m, digits)));
         out.push('\n');
     }
 }
 
-fn render_text<T: LiteralScalar>(report: &Report<T>) -> String {
-    let mut out = String::new();
-    for item in &report.items {
-        match &item.value {
-            Value::Matrix(m) => text_matrix(&item.name, m, &mut out),
-            Value::Grid(g) => {
-                let (nu, nv, d) = g.dim();
-                if nu * nv * d == 0 {
-                    let _ = writeln!(out, "{} = []({nu}x{nv}x{d})\n", item.name);
-                }
-                for k in 0..d {
-                    let slice = DMatrix::from_fn(nu, nv, |i, j| g[[i, j, k]].clone());
-                    text_matrix(&format!("{}(:,:,{})", item.name, k + 1), &slice, &mut out);
-                }
+fn text_item<T: LiteralScalar>(name: &str, value: &Value<T>, digits: usize, out: &mut String) {
+    match value {
+        Value::Matrix(m) => text_matrix(name, m, digits, out),
+        Value::Grid(g) => {
+            let (nu, nv, d) = g.dim();
+            if nu * nv * d == 0 {
+                let _ = writeln!(out, "{name} = []({nu}x{nv}x{d})\n");
             }
-            Value::Text(t) if t.contains('\n') => {
-                let _ = writeln!(out, "{}:\n{}\n", item.name, t.trim_end());
-            }
-            Value::Text(t) => {
-                let _ = writeln!(out, "{} = {t}\n", item.name);
+            for k in 0..d {
+                let slice = DMatrix::from_fn(nu, nv, |i, j| g[[i, j, k]].clone());
+                text_matrix(&format!("{name}(:,:,{})", k + 1), &slice, digits, out);
             }
         }
+        Value::Text(t) | Value::Shown { text: t, .. } if t.contains('\n') => {
+            let _ = writeln!(out, "{name}:\n{}\n", t.trim_end());
+        }
+        Value::Text(t) | Value::Shown { text: t, .. } => {
+            let _ = writeln!(out, "{name} = {t}\n");
+        }
+        Value::Record(items) => {
+            for i in items {
+                text_item(&format!("{name}.{}", i.name), &i.value, digits, out);
+            }
+        }
+    }
+}
+
+fn render_text<T: LiteralScalar>(report: &Report<T>, digits: usize) -> String {
+    let mut out = String::new();
+    for item in &report.items {
+        text_item(&item.name, &item.value, digits, &mut out);
     }
     out
 }
@@ -259,18 +416,41 @@ fn csv_item<T: LiteralScalar>(value: &Value<T>, out: &mut String) {
                 let _ = writeln!(out, "# {line}");
             }
         }
+        Value::Shown { data, .. } => csv_item(data, out),
+        Value::Record(_) => {}
+    }
+}
+
+/// The leaves of an item: records flattened to `name.part` items.
+fn flattened<'a, T: LiteralScalar>(
+    name: String,
+    value: &'a Value<T>,
+    out: &mut Vec<(String, &'a Value<T>)>,
+) {
+    match value {
+        Value::Record(items) => {
+            for i in items {
+                flattened(format!("{name}.{}", i.name), &i.value, out);
+            }
+        }
+        Value::Shown { data, .. } => flattened(name, data, out),
+        other => out.push((name, other)),
     }
 }
 
 fn render_csv<T: LiteralScalar>(report: &Report<T>) -> String {
+    let mut leaves = Vec::new();
+    for item in &report.items {
+        flattened(item.name.clone(), &item.value, &mut leaves);
+    }
     let mut out = String::new();
-    if let [only] = report.items.as_slice() {
-        csv_item(&only.value, &mut out);
+    if let [(_, only)] = leaves.as_slice() {
+        csv_item(*only, &mut out);
         return out;
     }
-    for item in &report.items {
-        let _ = writeln!(out, "# {}", item.name);
-        csv_item(&item.value, &mut out);
+    for (name, value) in leaves {
+        let _ = writeln!(out, "# {name}");
+        csv_item(value, &mut out);
         out.push('\n');
     }
     out
@@ -292,53 +472,66 @@ fn json_number<T: LiteralScalar>(x: &T) -> Result<serde_json::Value, CliError> {
         })
 }
 
-fn render_json<T: LiteralScalar>(report: &Report<T>) -> Result<String, CliError> {
+fn json_error(e: serde_json::Error) -> CliError {
+    CliError::new(
+        "--format json",
+        e.to_string(),
+        "serialisable results",
+        ErrorKind::Internal,
+    )
+}
+
+/// The JSON text of a value; records are objects written by hand so that their parts keep
+/// their order (serde_json's own maps sort their keys).
+fn json_text<T: LiteralScalar>(value: &Value<T>) -> Result<String, CliError> {
     use serde_json::Value as J;
-    // Built by hand so that the items keep the report's order.
-    let mut entries = Vec::with_capacity(report.items.len());
-    for item in &report.items {
-        let v = match &item.value {
-            Value::Matrix(m) => J::Array(
-                (0..m.nrows())
-                    .map(|i| {
-                        m.row(i)
-                            .iter()
-                            .map(json_number)
-                            .collect::<Result<Vec<_>, _>>()
-                            .map(J::Array)
-                    })
-                    .collect::<Result<Vec<_>, _>>()?,
-            ),
-            Value::Grid(g) => {
-                let (nu, nv, d) = g.dim();
-                let mut rows = Vec::with_capacity(nu);
-                for i in 0..nu {
-                    let mut cols = Vec::with_capacity(nv);
-                    for j in 0..nv {
-                        let p = (0..d)
-                            .map(|k| json_number(&g[[i, j, k]]))
-                            .collect::<Result<Vec<_>, _>>()?;
-                        cols.push(J::Array(p));
-                    }
-                    rows.push(J::Array(cols));
+    let v = match value {
+        Value::Matrix(m) => J::Array(
+            (0..m.nrows())
+                .map(|i| {
+                    m.row(i)
+                        .iter()
+                        .map(json_number)
+                        .collect::<Result<Vec<_>, _>>()
+                        .map(J::Array)
+                })
+                .collect::<Result<Vec<_>, _>>()?,
+        ),
+        Value::Grid(g) => {
+            let (nu, nv, d) = g.dim();
+            let mut rows = Vec::with_capacity(nu);
+            for i in 0..nu {
+                let mut cols = Vec::with_capacity(nv);
+                for j in 0..nv {
+                    let p = (0..d)
+                        .map(|k| json_number(&g[[i, j, k]]))
+                        .collect::<Result<Vec<_>, _>>()?;
+                    cols.push(J::Array(p));
                 }
-                J::Array(rows)
+                rows.push(J::Array(cols));
             }
-            Value::Text(t) => J::String(t.clone()),
-        };
-        let json_error = |e: serde_json::Error| {
-            CliError::new(
-                "--format json",
-                e.to_string(),
-                "serialisable results",
-                ErrorKind::Internal,
-            )
-        };
+            J::Array(rows)
+        }
+        Value::Text(t) => J::String(t.clone()),
+        Value::Record(items) => return json_object(items),
+        Value::Shown { data, .. } => return json_text(data),
+    };
+    serde_json::to_string(&v).map_err(json_error)
+}
+
+/// Named items as a JSON object, in order.
+fn json_object<T: LiteralScalar>(items: &[Item<T>]) -> Result<String, CliError> {
+    let mut entries = Vec::with_capacity(items.len());
+    for item in items {
         entries.push(format!(
             "{}:{}",
             serde_json::to_string(&item.name).map_err(json_error)?,
-            serde_json::to_string(&v).map_err(json_error)?
+            json_text(&item.value)?
         ));
     }
-    Ok(format!("{{{}}}\n", entries.join(",")))
+    Ok(format!("{{{}}}", entries.join(",")))
+}
+
+fn render_json<T: LiteralScalar>(report: &Report<T>) -> Result<String, CliError> {
+    Ok(format!("{}\n", json_object(&report.items)?))
 }

@@ -103,6 +103,9 @@ pub struct Script<T: LiteralScalar = f64> {
     /// Name → index of its current definition.
     functions: BTreeMap<String, usize>,
     order: Vec<String>,
+    /// The names of `order`, for constant-time lookup (a script of 10⁵ assignments must not
+    /// search a list of 10⁵ names at each).
+    named: BTreeSet<String>,
     iterations: usize,
     /// Elements of all values assigned so far, and the work of every evaluation (see
     /// [`WORK_PER_ELEMENT_LIMIT`]).
@@ -141,8 +144,10 @@ pub fn run<T: LiteralScalar>(source: &str, env: Env<T>) -> Result<Script<T>, Lit
         loop_depth: 0,
     };
     let program = reader.statements(false)?;
+    let order: Vec<String> = env.names().map(str::to_string).collect();
     let mut script = Script {
-        order: env.names().map(str::to_string).collect(),
+        named: order.iter().cloned().collect(),
+        order,
         env,
         definitions: Vec::new(),
         functions: BTreeMap::new(),
@@ -236,7 +241,8 @@ impl<T: LiteralScalar> Script<T> {
     }
 
     fn note_name(&mut self, name: &str) {
-        if !self.order.iter().any(|n| n == name) {
+        if !self.named.contains(name) {
+            self.named.insert(name.to_string());
             self.order.push(name.to_string());
         }
     }

@@ -14,7 +14,7 @@ use cagd::bezier::{BezierCurve, BezierPatch};
 use cagd_octave::literal::{Env, LiteralScalar};
 
 use super::common::*;
-use super::work::{bits, check_work, plotted, polynomial_bits, work};
+use super::work::{bits, check_work, plotted, weigh};
 use super::{prepare_script, Outcome};
 
 #[derive(Debug, Args)]
@@ -25,6 +25,10 @@ pub struct DeCasteljauCommand {
     pub control: String,
     #[command(flatten)]
     pub params: CurveParamArgs,
+    /// The parameter interval [a, b] of the curve (thesis §2.3.2), e.g. --interval 2,5: the
+    /// weights of each step are (b − t)/(b − a) and (t − a)/(b − a); --n samples [a, b].
+    #[arg(long, value_name = "A,B", allow_hyphen_values = true)]
+    pub interval: Option<String>,
     #[command(flatten)]
     pub rows: RowsArgs,
     #[command(flatten)]
@@ -35,6 +39,29 @@ pub struct DeCasteljauCommand {
     pub output: OutputArgs,
     #[command(flatten)]
     pub plot: PlotArgs,
+}
+
+/// The interval `a,b` of `--interval` (default `[0, 1]`).
+pub fn interval<T: LiteralScalar>(
+    limits: &Limits,
+    given: &Option<String>,
+) -> Result<(T, T), CliError> {
+    let Some(text) = given else {
+        return Ok((T::zero(), T::one()));
+    };
+    let form = "two numbers a,b with a < b, e.g. --interval 2,5";
+    let inner = text.trim().trim_start_matches('[').trim_end_matches(']');
+    // Not load_params: the comma between a and b is not a decimal comma.
+    let values: Vec<T> = cagd_octave::literal::parse_params_with(&format!("[{inner}]"), limits)
+        .map_err(|e| crate::CliError::literal("--interval", e, form))?;
+    match values.as_slice() {
+        [a, b] if a < b => Ok((a.clone(), b.clone())),
+        _ => Err(shape(
+            "--interval",
+            format!("`{}` is not an interval a < b", text.trim()),
+            form,
+        )),
+    }
 }
 
 /// Curve points by de Casteljau's algorithm (thesis algorithm 1, `deCasteljau`).
@@ -51,14 +78,28 @@ pub fn decasteljau<T: LiteralScalar>(
         cmd.rows.rows,
     )?;
     check_degree(limits, "CONTROL", control.ncols().saturating_sub(1))?;
-    let curve = BezierCurve::new(control).map_err(lib(
+    let (a, b) = interval::<T>(limits, &cmd.interval)?;
+    let curve = BezierCurve::new_on_interval(control, a.clone(), b.clone()).map_err(lib(
         "CONTROL",
         "control points b_0..b_n, one per column (or per row with --rows)",
     ))?;
-    let ts: Vec<T> =
-        params_or_samples(limits, "--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
-    // The picture always shows the whole curve over [0, 1], as the thesis's plot3.
-    let dense: Vec<T> = T::linspace(&T::zero(), &T::one(), 101);
+    let ts: Vec<T> = match &cmd.params.t {
+        Some(t) => crate::load_params(limits, "--t", t)?,
+        None => {
+            // --n: the thesis's linspace(0,1,N), mapped onto [a, b] if given.
+            let unit: Vec<T> = crate::samples(limits, cmd.params.n.unwrap_or(DEFAULT_SAMPLES), 2)?;
+            if cmd.interval.is_none() {
+                unit
+            } else {
+                unit.into_iter()
+                    .map(|x| a.clone() + x * (b.clone() - a.clone()))
+                    .collect()
+            }
+        }
+    };
+    crate::slips::outside("--t", &ts, &a, &b, "the curve is extrapolated there");
+    // The picture always shows the whole curve over [a, b], as the thesis's plot3.
+    let dense: Vec<T> = T::linspace(&a, &b, 101);
     check_work(
         limits,
         "--t",
@@ -75,7 +116,14 @@ pub fn decasteljau<T: LiteralScalar>(
             } else {
                 format!("scheme_{}", k + 1)
             };
-            report.push(name, Value::Text(curve.scheme(t.clone()).to_string()));
+            report.push(
+                name,
+                super::scheme::curve_scheme(
+                    &curve.scheme(t.clone()),
+                    cmd.output.text_digits(),
+                    super::scheme::Marks::None,
+                ),
+            );
         }
     }
     report.push("t", Value::Matrix(row(&ts)));
@@ -110,20 +158,22 @@ pub fn decasteljau<T: LiteralScalar>(
 /// is 6.6 GB of text) is refused up front like any other large work.
 const STEPS_FACTOR: u128 = 50;
 
-/// The work of evaluating `curve` by de Casteljau at `ts` and at `dense` (a picture): `(n+1)²`
-/// operations per coordinate and parameter, on numbers of [`polynomial_bits`] of the degree;
-/// with `steps` [`STEPS_FACTOR`] times that at `ts`.
+/// The work of evaluating `curve` by de Casteljau at `ts` and at `dense` (a picture),
+/// [`BezierCurve::eval_cost`] at each parameter; with `steps` [`STEPS_FACTOR`] times that at
+/// `ts`.
 fn curve_work<T: LiteralScalar>(
     curve: &BezierCurve<T>,
     ts: &[T],
     steps: bool,
     dense: &[T],
 ) -> u128 {
-    let per_t = curve.dim() as u128 * (curve.degree() as u128 + 1).pow(2);
     let coefficients = bits(curve.control().iter());
     let at = |params: &[T], times: u128| {
-        let size = polynomial_bits(curve.degree(), bits(params), coefficients);
-        work::<T>(params.len() as u128 * times * per_t, size)
+        weigh::<T>(
+            curve
+                .eval_cost(bits(params), coefficients)
+                .times(params.len() as u128 * times),
+        )
     };
     at(ts, if steps { STEPS_FACTOR } else { 1 }).saturating_add(at(dense, 1))
 }
@@ -134,7 +184,40 @@ pub struct BezierPatchCommand {
     /// b_in], each point's x y z side by side), or an Octave save -text file holding an
     /// (m+1)×(n+1)×3 array (FILE or FILE.txt:NAME).
     #[arg(value_name = "NET", allow_hyphen_values = true)]
-    pub net: String,
+    pub net: Option<String>,
+    /// Instead of NET: the x coordinates of the control points as an (m+1)×(n+1) matrix,
+    /// entry (i, j) of b_ij (i along u). The lecture notes' X_B, with x(u,v) = vᵀM_BᵀX_BM_Bu,
+    /// has its rows along v: pass its transpose.
+    #[arg(
+        long,
+        value_name = "MATRIX",
+        allow_hyphen_values = true,
+        conflicts_with = "net"
+    )]
+    pub x: Option<String>,
+    /// The y coordinates (with --x), as --x.
+    #[arg(
+        long,
+        value_name = "MATRIX",
+        allow_hyphen_values = true,
+        requires = "x"
+    )]
+    pub y: Option<String>,
+    /// The z coordinates (with --x and --y), as --x.
+    #[arg(
+        long,
+        value_name = "MATRIX",
+        allow_hyphen_values = true,
+        requires = "y"
+    )]
+    pub z: Option<String>,
+    /// Differentiate R times along u: the partial derivative patch (thesis Trditev 3.3),
+    /// whose net is printed as `net`.
+    #[arg(long, value_name = "R", default_value_t = 0)]
+    pub du: usize,
+    /// Differentiate S times along v (--du 1 --dv 1 is the twist x_uv).
+    #[arg(long, value_name = "S", default_value_t = 0)]
+    pub dv: usize,
     #[command(flatten)]
     pub params: SurfaceParamArgs,
     #[command(flatten)]
@@ -152,8 +235,9 @@ pub struct BezierPatchCommand {
 /// Whether `--u` and `--v` ask for one point.
 pub fn point_mode(limits: &Limits, params: &SurfaceParamArgs) -> bool {
     let single = |s: &Option<String>| {
-        s.as_ref()
-            .is_some_and(|t| crate::load_params::<f64>(limits, "", t).is_ok_and(|v| v.len() == 1))
+        s.as_ref().is_some_and(|t| {
+            cagd_octave::literal::parse_params_with::<f64>(t, limits).is_ok_and(|v| v.len() == 1)
+        })
     };
     params.n.is_none() && single(&params.u) && single(&params.v)
 }
@@ -164,33 +248,69 @@ pub fn bezier_patch<T: LiteralScalar>(
     cmd: &BezierPatchCommand,
 ) -> Result<Outcome, CliError> {
     let script = prepare_script::<T>(limits, &cmd.script, cmd.params.n)?;
-    let net = load_net::<T>(limits, "NET", &cmd.net, script.as_ref())?;
+    let net = match (&cmd.net, &cmd.x) {
+        (Some(text), _) => load_net::<T>(limits, "NET", text, script.as_ref())?,
+        (None, Some(_)) => coordinate_net(limits, [&cmd.x, &cmd.y, &cmd.z], script.as_ref())?,
+        (None, None) => {
+            return Err(usage(
+                "NET",
+                "missing",
+                "a control net NET, or its coordinate matrices --x, --y (and --z)",
+            ))
+        }
+    };
     let (m1, n1, _) = net.dim();
     check_degree(limits, "NET", m1.max(n1).saturating_sub(1))?;
     let patch = BezierPatch::from_grid(&net).map_err(lib(
         "NET",
         "a packed (m+1)×3(n+1) control net as ploskevB takes it",
     ))?;
+    let differentiated = cmd.du > 0 || cmd.dv > 0;
+    let patch = if differentiated {
+        patch.derivative(cmd.du, cmd.dv).map_err(lib(
+            "--du/--dv",
+            "orders R ≤ m and S ≤ n (the degrees of the patch)",
+        ))?
+    } else {
+        patch
+    };
+    let net = if differentiated { patch.to_grid() } else { net };
     let us: Vec<T> =
         params_or_samples(limits, "--u", &cmd.params.u, cmd.params.n, DEFAULT_SAMPLES)?;
     let vs: Vec<T> =
         params_or_samples(limits, "--v", &cmd.params.v, cmd.params.n, DEFAULT_SAMPLES)?;
     check_grid(limits, us.len(), vs.len())?;
+    crate::slips::outside(
+        "--u",
+        &us,
+        &T::zero(),
+        &T::one(),
+        "the patch is extrapolated there",
+    );
+    crate::slips::outside(
+        "--v",
+        &vs,
+        &T::zero(),
+        &T::one(),
+        "the patch is extrapolated there",
+    );
     let single = point_mode(limits, &cmd.params);
     let picture: Vec<T> = T::linspace(&T::zero(), &T::one(), 21);
-    // The grid: basis rows per u and v, then about 2(m+1)(n+1) operations per coordinate and
-    // point, on numbers that grow by the bits of u at m levels and of v at n. --steps adds a
-    // tensor de Casteljau scheme per point, (m+1)(n+1)(m+n+2) operations per coordinate,
-    // STEPS_FACTOR times for writing it out; the 21 × 21 picture of a single point is a grid.
-    let per_point = 6 * (m1 as u128 * n1 as u128);
-    let per_scheme = 3 * (m1 as u128 * n1 as u128) * (m1 + n1) as u128;
+    // The grid (BezierPatch::grid_cost per point); --steps adds a tensor de Casteljau scheme
+    // per point (BezierPatch::scheme_cost), STEPS_FACTOR times for writing it out; the
+    // 21 × 21 picture of a single point is a grid.
     let coefficients = bits(net.iter());
     let grid_work = |us: &[T], vs: &[T], steps: bool| {
-        let size = polynomial_bits(m1.saturating_sub(1), bits(us), 0)
-            .saturating_add(polynomial_bits(n1 - 1, bits(vs), coefficients));
-        let points = us.len() as u128 * vs.len() as u128;
-        let per = per_point + if steps { STEPS_FACTOR * per_scheme } else { 0 };
-        work::<T>(points * per, size)
+        let (u_bits, v_bits) = (bits(us), bits(vs));
+        let mut per = patch.grid_cost(u_bits, v_bits, coefficients);
+        if steps {
+            per = per.and(
+                patch
+                    .scheme_cost(u_bits, v_bits, coefficients)
+                    .times(STEPS_FACTOR),
+            );
+        }
+        weigh::<T>(per.times(us.len() as u128 * vs.len() as u128))
     };
     let pictures = single && (cmd.plot.plot.is_some() || cmd.mesh.mesh.is_some());
     let picture = if pictures { picture } else { Vec::new() };
@@ -215,20 +335,29 @@ pub fn bezier_patch<T: LiteralScalar>(
                 };
                 report.push(
                     name,
-                    Value::Text(patch.scheme(u.clone(), v.clone()).to_string()),
+                    super::scheme::patch_scheme(&patch.scheme(u.clone(), v.clone())),
                 );
             }
         }
     }
+    if differentiated {
+        report.push("net", Value::Grid(net.clone()));
+    }
     report.push("u", Value::Matrix(row(&us)));
     report.push("v", Value::Matrix(row(&vs)));
-    if single {
+    if single && !cmd.params.list {
         report.push(
             "result",
             Value::Matrix(column(&patch.eval(us[0].clone(), vs[0].clone()))),
         );
     } else {
-        report.push("result", Value::Grid(grid.clone()));
+        push_surface(
+            &mut report,
+            "result",
+            (&us, &vs),
+            grid.clone(),
+            cmd.params.list,
+        );
     }
     let mut files = PendingWrites::new();
     let picture_grid = if pictures {
@@ -271,6 +400,8 @@ pub struct BernsteinCommand {
     pub params: CurveParamArgs,
     #[command(flatten)]
     pub output: OutputArgs,
+    #[command(flatten)]
+    pub plot: PlotArgs,
 }
 
 /// Bernstein polynomial values.
@@ -281,16 +412,22 @@ pub fn bernstein<T: LiteralScalar>(
     check_degree(limits, "--degree", cmd.degree)?;
     let ts: Vec<T> =
         params_or_samples(limits, "--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
-    // The triangular recurrence: (n+1)² operations per parameter, on numbers of
-    // polynomial_bits of the degree.
+    // The triangular recurrence at every parameter (and at the 201 of a picture).
+    let picture = if cmd.plot.plot.is_some() { 201 } else { 0 };
     check_work(
         limits,
         "--t",
-        work::<T>(
-            ts.len() as u128 * (cmd.degree as u128 + 1).pow(2),
-            polynomial_bits(cmd.degree, bits(&ts), 0),
+        weigh::<T>(
+            cagd::bernstein::basis_cost(cmd.degree, bits(&ts)).times(ts.len() as u128 + picture),
         ),
     )?;
+    crate::slips::outside(
+        "--t",
+        &ts,
+        &T::zero(),
+        &T::one(),
+        "the polynomials are extrapolated there",
+    );
     let all = cagd::bernstein::basis_matrix(cmd.degree, &ts);
     let result = match cmd.i {
         Some(i) if i > cmd.degree => {
@@ -308,8 +445,43 @@ pub fn bernstein<T: LiteralScalar>(
         "t",
         Value::Matrix(DMatrix::from_column_slice(ts.len(), 1, &ts)),
     );
+    let mut files = PendingWrites::new();
+    if let Some(path) = &cmd.plot.plot {
+        // The functions over [0, 1], each as the plane curve (t, B_i^n(t)).
+        let dense: Vec<T> = T::linspace(&T::zero(), &T::one(), 201);
+        let values = cagd::bernstein::basis_matrix(cmd.degree, &dense);
+        let colours = [
+            Colour::Blue,
+            Colour::Red,
+            Colour::Green,
+            Colour::Orange,
+            Colour::Purple,
+            Colour::Black,
+        ];
+        let mut figure = Figure::new(format!("Bernstein polynomials of degree {}", cmd.degree));
+        let shown: Vec<usize> = match cmd.i {
+            Some(i) => vec![i],
+            None => (0..=cmd.degree).collect(),
+        };
+        for (k, &i) in shown.iter().enumerate() {
+            let line = DMatrix::from_fn(2, dense.len(), |r, c| {
+                if r == 0 {
+                    dense[c].to_f64()
+                } else {
+                    values[(c, i)].to_f64()
+                }
+            });
+            let label = match (shown.len() <= 6, k) {
+                (true, _) => format!("B_{i}^{}", cmd.degree),
+                (false, 0) => format!("B_i^{}, i = 0..{}", cmd.degree, cmd.degree),
+                _ => String::new(),
+            };
+            figure = figure.curve(line, colours[k % colours.len()], label);
+        }
+        add_plot(&mut files, "--plot", path, &figure)?;
+    }
     report.push("result", Value::Matrix(result));
-    finish(&report, &cmd.output, PendingWrites::new(), Vec::new())
+    finish(&report, &cmd.output, files, Vec::new())
 }
 
 #[derive(Debug, Args)]
@@ -365,6 +537,13 @@ pub fn derivative<T: LiteralScalar>(
         curve_work(&d, &ts, false, plotted(&cmd.plot, &dense)),
     )?;
     if cmd.t.is_some() {
+        crate::slips::outside(
+            "--t",
+            &ts,
+            &T::zero(),
+            &T::one(),
+            "the derivative is extrapolated there",
+        );
         let values = d
             .eval_many(&ts)
             .map_err(lib("--t", "finite parameter values"))?;

@@ -10,37 +10,27 @@ use nalgebra::{DMatrix, DVector};
 use crate::args::OutputArgs;
 use crate::plot::{Figure, ImageKind};
 use crate::{
-    load_expression, load_matrix, load_params, render, samples, CliError, ErrorKind, PendingWrites,
-    Report, CURVE_FORM,
+    load_expression, load_matrix, load_params, render_with, samples, CliError, ErrorKind,
+    PendingWrites, Report, CURVE_FORM,
 };
 use cagd::bezier::BezierCurve;
 use cagd::{Curve, SampledCurve};
 use cagd_octave::literal::{Env, LiteralScalar, ParamExpr, Warning};
 use cagd_octave::script::{Binding, Script};
 
+pub(crate) use super::curve::CliCurve;
+use super::outcome::Outcome;
 use super::work::{check_expression_work, Sampling};
-use super::Outcome;
+pub(crate) use crate::error::{lib, shape, usage};
+
+/// The argument of a non-finite result until `run` names the command's input.
+pub const RESULT: &str = "RESULT";
 
 /// Samples taken when neither `--t`/`--u`/`--v` nor `--n` is given: 0:0.1:1.
 pub const DEFAULT_SAMPLES: usize = 11;
 
 /// The form of a boundary or network curve argument.
 pub const CURVE_ARG_FORM: &str = "an expression in the curve parameter such as \"[u; 0; u-u^2]\", or control points (columns) of a Bézier curve such as \"[0 0 0; 1 0 1]'\"";
-
-/// A library error about `argument`.
-pub fn lib<'a>(argument: &'a str, expected: &'a str) -> impl Fn(cagd::Error) -> CliError + 'a {
-    move |e| CliError::library(argument, e, expected)
-}
-
-/// A usage error: a required argument is missing or arguments do not fit together.
-pub fn usage(argument: &str, problem: &str, expected: &str) -> CliError {
-    CliError::new(argument, problem, expected, ErrorKind::Usage)
-}
-
-/// A shape error.
-pub fn shape(argument: &str, problem: String, expected: &str) -> CliError {
-    CliError::new(argument, problem, expected, ErrorKind::Shape)
-}
 
 /// A matrix argument with points as columns (or rows with `--rows`).
 pub fn points<T: LiteralScalar>(
@@ -51,6 +41,7 @@ pub fn points<T: LiteralScalar>(
     rows: bool,
 ) -> Result<DMatrix<T>, CliError> {
     let m = load_matrix(limits, argument, text, script)?;
+    crate::slips::point_matrix(argument, &m, rows);
     Ok(if rows { m.transpose() } else { m })
 }
 
@@ -142,39 +133,6 @@ pub fn needed<T: LiteralScalar>(lists: &[&[T]]) -> Vec<T> {
     all
 }
 
-/// A curve as the command line takes it.
-#[derive(Debug, Clone)]
-pub enum CliCurve<T: LiteralScalar> {
-    /// A Bézier curve from control points.
-    Bezier(BezierCurve<T>),
-    /// Samples: an expression evaluated at every parameter the construction needs, or a
-    /// thesis-style sampled curve (a polyline between samples).
-    Sampled(SampledCurve<T>),
-}
-
-impl<T: LiteralScalar> Curve<T> for CliCurve<T> {
-    fn dim(&self) -> usize {
-        match self {
-            CliCurve::Bezier(b) => b.dim(),
-            CliCurve::Sampled(s) => s.dim(),
-        }
-    }
-
-    fn eval(&self, t: T) -> DVector<T> {
-        match self {
-            CliCurve::Bezier(b) => b.eval(t),
-            CliCurve::Sampled(s) => s.eval(t),
-        }
-    }
-
-    fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
-        match self {
-            CliCurve::Bezier(b) => Some(b.eval_derivative(t)),
-            CliCurve::Sampled(_) => None,
-        }
-    }
-}
-
 /// A curve argument before it is sampled.
 #[derive(Debug, Clone)]
 pub enum CurveSource<T: LiteralScalar> {
@@ -190,9 +148,9 @@ pub enum CurveSource<T: LiteralScalar> {
 fn is_file_arg(text: &str) -> bool {
     let t = text.trim();
     t == "-"
-        || Path::new(t).is_file()
+        || crate::input::is_file(t)
         || t.rsplit_once(':')
-            .is_some_and(|(p, _)| !p.is_empty() && Path::new(p).is_file())
+            .is_some_and(|(p, _)| !p.is_empty() && crate::input::is_file(p))
 }
 
 /// Loads a curve argument: a data file or a constant matrix gives Bézier control points; an
@@ -205,7 +163,55 @@ pub fn load_curve<T: LiteralScalar>(
     rows: bool,
     env: &Env<T>,
 ) -> Result<CurveSource<T>, CliError> {
+    load_curve_as(limits, argument, text, script, rows, env, None)
+}
+
+/// Whether a curve argument names sampled data: a data file or a matrix of the script.
+pub fn names_data<T: LiteralScalar>(text: &str, script: Option<&Script<T>>) -> bool {
+    is_file_arg(text) || script.is_some_and(|s| s.value(text.trim()).is_some())
+}
+
+/// [`load_curve`], with `samples = Some(param)` (`--samples`) reading a data file or a matrix
+/// of the script as samples of the curve, one column per parameter value (the script's
+/// `param` variable if it has one per column, else `linspace(0,1,N)`), as appendix C's data
+/// scripts sample their boundary curves. Without it such data is read as Bézier control
+/// points, and a matrix of the script gets a warning saying so.
+pub fn load_curve_as<T: LiteralScalar>(
+    limits: &Limits,
+    argument: &str,
+    text: &str,
+    script: Option<&Script<T>>,
+    rows: bool,
+    env: &Env<T>,
+    samples: Option<&str>,
+) -> Result<CurveSource<T>, CliError> {
+    if let Some(param) = samples {
+        if names_data(text, script) {
+            let m = load_matrix(limits, argument, text, script)?;
+            let m = if rows { m.transpose() } else { m };
+            let params = match script {
+                Some(s) => script_params(s, param, m.ncols()),
+                None => T::linspace(&T::zero(), &T::one(), m.ncols()),
+            };
+            return Ok(CurveSource::Samples(params, m));
+        }
+    }
+    if let Some(m) = script.and_then(|s| s.value(text.trim())) {
+        if m.ncols() > 1 && m.nrows() > 1 {
+            crate::slips::warn(
+                argument,
+                format!(
+                    "`{}` is a {}×{} matrix of the script, read as the control points of a Bézier curve of degree {}; if its columns are samples of the curve (as in the thesis's data scripts), add --samples",
+                    text.trim(),
+                    m.nrows(),
+                    m.ncols(),
+                    if rows { m.nrows() - 1 } else { m.ncols() - 1 }
+                ),
+            );
+        }
+    }
     let bezier = |m: DMatrix<T>| -> Result<CurveSource<T>, CliError> {
+        crate::slips::point_matrix(argument, &m, rows);
         let m = if rows { m.transpose() } else { m };
         BezierCurve::new(m)
             .map(CurveSource::Bezier)
@@ -280,7 +286,9 @@ impl<T: LiteralScalar> CurveSource<T> {
                 let m = e
                     .sample_curve(env, p, at)
                     .map_err(|e| CliError::literal(argument, e, CURVE_FORM))?;
+                // An expression is a curve on [0, 1], sampled also where the grid reaches beyond.
                 SampledCurve::new(at.to_vec(), m)
+                    .and_then(|c| c.with_domain(T::zero(), T::one()))
                     .map(CliCurve::Sampled)
                     .map_err(lib(argument, CURVE_ARG_FORM))
             }
@@ -314,7 +322,12 @@ pub fn add_plot(
 ) -> Result<(), CliError> {
     let plot_error =
         |e: crate::plot::PlotError| CliError::plot(format!("{argument} {}", path.display()), &e);
-    let kind = ImageKind::from_path(path).map_err(plot_error)?;
+    // Standard output gets SVG, the picture format that is text.
+    let kind = if path.as_os_str() == "-" {
+        ImageKind::Svg
+    } else {
+        ImageKind::from_path(path).map_err(plot_error)?
+    };
     let bytes = figure.render(kind).map_err(plot_error)?;
     files.add(argument, path, bytes);
     Ok(())
@@ -329,7 +342,12 @@ pub fn add_mesh(
 ) -> Result<(), CliError> {
     let mesh_error =
         |e: crate::mesh::MeshError| CliError::mesh(format!("{argument} {}", path.display()), &e);
-    let format = crate::mesh::MeshFormat::from_path(path).map_err(mesh_error)?;
+    // Standard output gets OBJ, a mesh format that is text.
+    let format = if path.as_os_str() == "-" {
+        crate::mesh::MeshFormat::Obj
+    } else {
+        crate::mesh::MeshFormat::from_path(path).map_err(mesh_error)?
+    };
     let bytes = crate::mesh::encode(grid, format).map_err(mesh_error)?;
     files.add(argument, path, bytes);
     Ok(())
@@ -344,7 +362,20 @@ pub fn finish<T: LiteralScalar>(
     mut files: PendingWrites,
     warnings: Vec<(String, Warning)>,
 ) -> Result<Outcome, CliError> {
-    let text = render(report, output.format)?;
+    if let Some((name, index, value)) = report.first_non_finite() {
+        // `run` names the command's input in place of RESULT (see `Command::input`).
+        return Err(CliError::new(
+            RESULT,
+            format!("the result overflows the range of doubles ({name}, element {index}: {value})"),
+            "inputs whose result stays within ±1.8e308 (smaller coordinates, parameters or orders)",
+            ErrorKind::Library(Box::new(cagd::Error::NonFinite {
+                what: "result",
+                index,
+                value,
+            })),
+        ));
+    }
+    let text = render_with(report, output.format, output.text_digits())?;
     let stdout = match &output.output {
         Some(path) => {
             files.add("--output", path, text.into_bytes());
@@ -373,10 +404,118 @@ pub fn warnings<T: LiteralScalar>(
             .collect(),
         _ => Vec::new(),
     };
+    // The environment starts as a copy of the script's, so it repeats the script's warnings:
+    // each is reported once, about the script.
+    let from_script: Vec<Warning> = out.iter().map(|(_, w)| w.clone()).collect();
     out.extend(
         env.take_warnings()
             .into_iter()
+            .filter(|w| !from_script.contains(w))
             .map(|w| ("expression".to_string(), w)),
     );
     out
+}
+
+/// Pushes a surface result: the grid `us × vs × d` (`result(i,j,:)` at `(us[i], vs[j])`), or
+/// with `list` (`--list`) a matrix with one row `u v x y z` per grid point, `u` varying
+/// slowest.
+pub fn push_surface<T: LiteralScalar>(
+    report: &mut Report<T>,
+    name: &str,
+    (us, vs): (&[T], &[T]),
+    grid: PointGrid<T>,
+    list: bool,
+) {
+    if !list {
+        report.push(name, crate::Value::Grid(grid));
+        return;
+    }
+    let (nu, nv, d) = grid.dim();
+    let rows = DMatrix::from_fn(nu * nv, d + 2, |k, c| {
+        let (i, j) = (k / nv, k % nv);
+        match c {
+            0 => us[i].clone(),
+            1 => vs[j].clone(),
+            _ => grid[[i, j, c - 2]].clone(),
+        }
+    });
+    report.push(name, crate::Value::Matrix(rows));
+}
+
+/// The degree `p` of a B-spline from `--degree P` or the notes' `--order K = p + 1`
+/// (`default` when neither is given).
+pub fn spline_degree(
+    degree: Option<usize>,
+    order: Option<usize>,
+    default: usize,
+) -> Result<usize, CliError> {
+    match (degree, order) {
+        (Some(_), Some(_)) => Err(usage(
+            "--order",
+            "cannot be used together with --degree",
+            "only one of them (the order k is the degree p + 1)",
+        )),
+        (None, Some(0)) => Err(shape(
+            "--order",
+            "order k = 0".to_string(),
+            "an order k ≥ 1 (the degree p = k − 1)",
+        )),
+        (None, Some(k)) => Ok(k - 1),
+        (Some(p), None) => Ok(p),
+        (None, None) => Ok(default),
+    }
+}
+
+/// Named values as a [`crate::Value::Record`].
+pub fn record<T: LiteralScalar>(parts: Vec<(&str, crate::Value<T>)>) -> crate::Value<T> {
+    crate::Value::Record(
+        parts
+            .into_iter()
+            .map(|(name, value)| crate::Item {
+                name: name.to_string(),
+                value,
+            })
+            .collect(),
+    )
+}
+
+/// The net of `--x`, `--y`, `--z` (the lecture notes' `X`, `Y`, `Z` of a patch): one
+/// `(m+1) × (n+1)` matrix per coordinate given (`--x` at least), entry `(i, j)` of point
+/// `P_ij`.
+pub fn coordinate_net<T: LiteralScalar>(
+    limits: &Limits,
+    given: [&Option<String>; 3],
+    script: Option<&Script<T>>,
+) -> Result<PointGrid<T>, CliError> {
+    let mut coords = Vec::with_capacity(3);
+    for (arg, given) in ["--x", "--y", "--z"].into_iter().zip(given) {
+        if let Some(text) = given {
+            coords.push((arg, load_matrix::<T>(limits, arg, text, script)?));
+        }
+    }
+    let Some((_, first)) = coords.first() else {
+        return Err(usage(
+            "--x",
+            "missing",
+            "the coordinate matrices --x, --y (and --z)",
+        ));
+    };
+    let shape0 = first.shape();
+    if let Some((arg, m)) = coords.iter().find(|(_, m)| m.shape() != shape0) {
+        return Err(shape(
+            arg,
+            format!(
+                "a {}×{} matrix, but --x is {}×{}",
+                m.nrows(),
+                m.ncols(),
+                shape0.0,
+                shape0.1
+            ),
+            "coordinate matrices of one shape (m+1)×(n+1)",
+        ));
+    }
+    Ok(PointGrid::from_shape_fn(
+        (shape0.0, shape0.1, coords.len()),
+        |(i, j, k)| coords[k].1[(i, j)].clone(),
+    ))
 }

@@ -11,7 +11,7 @@ use cagd::{BSplineCurve, CubicSpline, EndCondition, HermiteCubic, NurbsCurve};
 use cagd_octave::literal::LiteralScalar;
 
 use super::common::*;
-use super::work::{bits, check_work, plotted, polynomial_bits, work};
+use super::work::{bits, check_work, plotted, weigh};
 use super::Outcome;
 
 fn vector<T: LiteralScalar>(
@@ -32,11 +32,11 @@ fn vector<T: LiteralScalar>(
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum End {
-    /// Given end tangents (--start-tangent, --end-tangent).
+    /// Given end tangents (--start-tangent, --end-tangent), case a of the lecture notes.
     Clamped,
-    /// Zero second derivatives at the ends.
+    /// Zero second derivatives at the ends, case b.
     Natural,
-    /// A closed (periodic) spline.
+    /// A closed (periodic) spline, case c.
     Closed,
 }
 
@@ -45,20 +45,27 @@ pub struct SplineCommand {
     /// The points to interpolate, one per column.
     #[arg(value_name = "POINTS", allow_hyphen_values = true)]
     pub points: String,
-    /// The end condition.
-    #[arg(long, value_enum, default_value_t = End::Natural)]
-    pub end: End,
-    /// The tangent at the first point (with --end clamped).
+    /// The end condition (default: clamped when both tangents are given, else natural).
+    #[arg(long, value_enum)]
+    pub end: Option<End>,
+    /// The tangent at the first point (clamped ends).
     #[arg(long, value_name = "VECTOR", allow_hyphen_values = true)]
     pub start_tangent: Option<String>,
-    /// The tangent at the last point (with --end clamped).
+    /// The tangent at the last point (clamped ends).
     #[arg(long, value_name = "VECTOR", allow_hyphen_values = true)]
     pub end_tangent: Option<String>,
-    /// Curve parameters (segment k runs over [k, k+1]).
+    /// The parameters of the points: uniform (t_k = k, the lecture notes), chord, centripetal,
+    /// or a list of increasing values (one per point, one more for a closed spline).
+    #[arg(long, value_name = "CHOICE|VALUES", allow_hyphen_values = true)]
+    pub params: Option<String>,
+    /// Curve parameters (with uniform parameters segment k runs over [k, k+1]); a closed
+    /// spline is periodic, so any value is on the curve.
     #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
     pub t: Option<String>,
     #[command(flatten)]
     pub rows: RowsArgs,
+    #[command(flatten)]
+    pub steps: StepsArgs,
     #[command(flatten)]
     pub output: OutputArgs,
     #[command(flatten)]
@@ -68,7 +75,31 @@ pub struct SplineCommand {
 /// An interpolating cubic spline.
 pub fn spline<T: LiteralScalar>(limits: &Limits, cmd: &SplineCommand) -> Result<Outcome, CliError> {
     let pts = points(limits, "POINTS", &cmd.points, None, cmd.rows.rows)?;
-    let end = match cmd.end {
+    let tangents = cmd.start_tangent.is_some() || cmd.end_tangent.is_some();
+    let chosen = cmd
+        .end
+        .unwrap_or(if tangents { End::Clamped } else { End::Natural });
+    if chosen != End::Clamped {
+        // A tangent that the end condition ignores is a slip, not a choice.
+        let name = if chosen == End::Natural {
+            "natural"
+        } else {
+            "closed"
+        };
+        for (arg, given) in [
+            ("--start-tangent", &cmd.start_tangent),
+            ("--end-tangent", &cmd.end_tangent),
+        ] {
+            if given.is_some() {
+                return Err(usage(
+                    arg,
+                    &format!("has no effect with --end {name}"),
+                    "--end clamped with both tangents (or no --end), or no tangents",
+                ));
+            }
+        }
+    }
+    let end = match chosen {
         End::Natural => EndCondition::Natural,
         End::Closed => EndCondition::Closed,
         End::Clamped => {
@@ -88,17 +119,24 @@ pub fn spline<T: LiteralScalar>(limits: &Limits, cmd: &SplineCommand) -> Result<
             }
         }
     };
+    let closed = chosen == End::Closed;
+    let params = super::spline_steps::parameters(limits, cmd.params.as_deref(), &pts, closed)?;
     let given: Option<Vec<T>> = cmd
         .t
         .as_ref()
         .map(|t| load_params(limits, "--t", t))
         .transpose()?;
     check_work(limits, "POINTS", spline_work(&pts, &end, given.as_deref()))?;
-    let s = CubicSpline::interpolate(pts, end).map_err(lib(
+    let clamped = match &end {
+        EndCondition::Clamped { start, end } => Some((start.clone(), end.clone())),
+        _ => None,
+    };
+    let s = CubicSpline::interpolate_with_params(pts, params, end).map_err(lib(
         "POINTS",
-        "at least 2 points (3 for closed) as columns, tangents of the same dimension",
+        "at least 2 points (3 for closed) as columns, tangents of the same dimension, increasing --params",
     ))?;
     let segments = s.segment_count();
+    let (first, last) = (s.params()[0].clone(), s.params()[segments].clone());
     let ts: Vec<T> = match given {
         Some(t) => t,
         None => {
@@ -111,19 +149,45 @@ pub fn spline<T: LiteralScalar>(limits: &Limits, cmd: &SplineCommand) -> Result<
                 "fewer points (10 samples per segment), parameters --t, or a higher --max-samples",
             ))?;
             let unit: Vec<T> = samples(limits, count, 2)?;
-            let k = T::from_usize(segments);
-            unit.into_iter().map(|x| x * k.clone()).collect()
+            let span = last.clone() - first.clone();
+            unit.into_iter()
+                .map(|x| first.clone() + x * span.clone())
+                .collect()
         }
     };
+    let at: Vec<T> = if closed {
+        ts.iter()
+            .map(|t| super::spline_steps::periodic(t, s.params()))
+            .collect()
+    } else {
+        crate::slips::outside(
+            "--t",
+            &ts,
+            &first,
+            &last,
+            "the end segments are extended there",
+        );
+        ts.clone()
+    };
     let mut report = Report::new();
+    if cmd.steps.steps {
+        let (a, rhs) = super::spline_steps::system(&s, clamped.as_ref().map(|(a, b)| (a, b)));
+        report.push("params", Value::Matrix(row(s.params())));
+        report.push("system", Value::Matrix(a));
+        report.push("rhs", Value::Matrix(rhs));
+        for item in super::spline_steps::segments(&s)? {
+            report.items.push(item);
+        }
+    }
     report.push("tangents", Value::Matrix(s.tangents().clone()));
     report.push("t", Value::Matrix(row(&ts)));
-    let values = s.eval_many(&ts);
+    let values = s.eval_many(&at);
     report.push("result", Value::Matrix(values.clone()));
     let mut files = PendingWrites::new();
     if let Some(path) = &cmd.plot.plot {
+        let dense: Vec<T> = T::linspace(&first, &last, 10 * segments + 1);
         let figure = Figure::new("interpolating cubic spline")
-            .curve(to_f64(&values), Colour::Blue, "spline")
+            .curve(to_f64(&s.eval_many(&dense)), Colour::Blue, "spline")
             .control_polygon(to_f64(s.points()), "points");
         add_plot(&mut files, "--plot", path, &figure)?;
     }
@@ -131,31 +195,29 @@ pub fn spline<T: LiteralScalar>(limits: &Limits, cmd: &SplineCommand) -> Result<
 }
 
 /// The work of an interpolating spline through the columns of `pts`: the (cyclic)
-/// tridiagonal solve, about 10 operations per point and coordinate (twice when closed), then
-/// a cubic at every parameter (`ts`, else 10 per segment), about 12 operations per
-/// coordinate. In exact arithmetic the solve's pivots are continuants growing by about
-/// 4 bits per point (found by fuzzing: 2 223 points took 2 s, 1 000 points of random digits
-/// 6 s, each number of the result near 3 800 bits).
+/// tridiagonal solve ([`cagd::spline::interpolation_cost`]) on the points and end tangents,
+/// then a cubic at every parameter ([`cagd::spline::sample_cost`]; at `ts`, else 10 per
+/// segment, whose parameters `k/10s` have about twice the bits of the sample count).
 fn spline_work<T: LiteralScalar>(
     pts: &DMatrix<T>,
     end: &EndCondition<T>,
     ts: Option<&[T]>,
 ) -> u128 {
-    let (d, n) = (pts.nrows() as u128, pts.ncols() as u128);
-    let (data_bits, solves) = match end {
+    let (d, n) = (pts.nrows(), pts.ncols());
+    let data_bits = match end {
         EndCondition::Clamped { start, end } => {
-            (bits(pts.iter().chain(start.iter()).chain(end.iter())), 1)
+            bits(pts.iter().chain(start.iter()).chain(end.iter()))
         }
-        EndCondition::Closed => (bits(pts.iter()), 2),
-        EndCondition::Natural => (bits(pts.iter()), 1),
+        EndCondition::Closed | EndCondition::Natural => bits(pts.iter()),
     };
-    let solved = (4 * n).saturating_add(2 * data_bits);
-    let samples = ts.map_or(10 * n + 1, |t| t.len() as u128);
-    let param_bits = ts.map_or(2 * (128 - (10 * n + 1).leading_zeros() as u128), |t| {
+    let default_samples = 10 * n as u128 + 1;
+    let samples = ts.map_or(default_samples, |t| t.len() as u128);
+    let param_bits = ts.map_or(2 * (128 - default_samples.leading_zeros() as u128), |t| {
         bits(t)
     });
-    work::<T>(10 * solves * n * d, solved)
-        .saturating_add(work::<T>(12 * samples * d, solved + 3 * param_bits))
+    weigh::<T>(cagd::spline::interpolation_cost(n, d, end, data_bits)).saturating_add(weigh::<T>(
+        cagd::spline::sample_cost(n, d, data_bits, param_bits).times(samples),
+    ))
 }
 
 #[derive(Debug, Args)]
@@ -199,23 +261,34 @@ pub fn hermite<T: LiteralScalar>(
     ))?;
     let ts: Vec<T> =
         params_or_samples(limits, "--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
+    crate::slips::outside(
+        "--t",
+        &ts,
+        &T::zero(),
+        &T::one(),
+        "the cubic is extrapolated there",
+    );
     let dense: Vec<T> = T::linspace(&T::zero(), &T::one(), 101);
-    // Per parameter the four cubic Hermite functions (about 16 operations) and their
-    // combination (8 per coordinate), on cubics in t; --steps adds the basis rows.
-    let d = h.dim() as u128;
-    let coefficient_bits = bits(h.to_bezier().control().iter()) + 2;
-    let at = |params: &[T], per: u128| {
-        work::<T>(
-            params.len() as u128 * per,
-            polynomial_bits(3, bits(params), coefficient_bits),
-        )
+    // The Bézier form of the cubic (drawn, and printed with --steps); its inner points are
+    // x_1 ± x'/3, which overflow for end points and tangents near ±1.8e308.
+    let bezier = h.to_bezier().map_err(lib(
+        "--p0/--p1/--t0/--t1",
+        "end points and tangents whose Bézier points x ± x'/3 stay within ±1.8e308",
+    ))?;
+    // Per parameter the point (HermiteCubic::eval_cost); --steps adds the basis rows.
+    let bezier_bits = bits(bezier.control().iter());
+    let at = |params: &[T], steps: bool| {
+        let mut per = h.eval_cost(bits(params), bezier_bits);
+        if steps {
+            per = per.and(cagd::hermite::basis_cost(bits(params)));
+        }
+        weigh::<T>(per.times(params.len() as u128))
     };
     let picture = plotted(&cmd.plot, &dense);
-    let steps = if cmd.steps.steps { 16 } else { 0 };
     check_work(
         limits,
         "--t",
-        at(&ts, 16 + 8 * d + steps).saturating_add(at(picture, 16 + 8 * d)),
+        at(&ts, cmd.steps.steps).saturating_add(at(picture, false)),
     )?;
     let mut report = Report::new();
     if cmd.steps.steps {
@@ -225,10 +298,7 @@ pub fn hermite<T: LiteralScalar>(
             .collect();
         let basis = DMatrix::from_fn(ts.len(), 4, |i, j| rows[i][j].clone());
         report.push("hermite_basis", Value::Matrix(basis));
-        report.push(
-            "bezier_control",
-            Value::Matrix(h.to_bezier().control().clone()),
-        );
+        report.push("bezier_control", Value::Matrix(bezier.control().clone()));
     }
     let values = DMatrix::from_columns(&ts.iter().map(|t| h.eval(t.clone())).collect::<Vec<_>>());
     report.push("t", Value::Matrix(row(&ts)));
@@ -239,7 +309,7 @@ pub fn hermite<T: LiteralScalar>(
             DMatrix::from_columns(&dense.iter().map(|t| h.eval(t.clone())).collect::<Vec<_>>());
         let figure = Figure::new("Hermite cubic")
             .curve(to_f64(&line), Colour::Blue, "x(t)")
-            .control_polygon(to_f64(h.to_bezier().control()), "Bézier control polygon");
+            .control_polygon(to_f64(bezier.control()), "Bézier control polygon");
         add_plot(&mut files, "--plot", path, &figure)?;
     }
     finish(&report, &cmd.output, files, Vec::new())
@@ -250,9 +320,12 @@ pub struct BSplineCommand {
     /// Control points, one per column.
     #[arg(value_name = "CONTROL", allow_hyphen_values = true)]
     pub control: String,
-    /// The degree p.
-    #[arg(long, value_name = "P", default_value_t = 3)]
-    pub degree: usize,
+    /// The degree p (default 3).
+    #[arg(long, value_name = "P")]
+    pub degree: Option<usize>,
+    /// The order k = p + 1 instead of the degree (the lecture notes count B-splines by order).
+    #[arg(long, value_name = "K")]
+    pub order: Option<usize>,
     /// The knot vector (n+p+2 non-decreasing values); default clamped uniform on [0, 1].
     #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
     pub knots: Option<String>,
@@ -291,12 +364,13 @@ pub fn bspline<T: LiteralScalar>(
     limits: &Limits,
     cmd: &BSplineCommand,
 ) -> Result<Outcome, CliError> {
-    check_degree(limits, "--degree", cmd.degree)?;
+    let degree = spline_degree(cmd.degree, cmd.order, 3)?;
+    check_degree(limits, "--degree", degree)?;
     let control = points::<T>(limits, "CONTROL", &cmd.control, None, cmd.rows.rows)?;
     let form = "degree p, n+1 ≥ p+1 control points and n+p+2 non-decreasing knots";
     let curve = match &cmd.knots {
-        Some(k) => BSplineCurve::new(cmd.degree, load_params(limits, "--knots", k)?, control),
-        None => BSplineCurve::clamped(cmd.degree, control),
+        Some(k) => BSplineCurve::new(degree, load_params(limits, "--knots", k)?, control),
+        None => BSplineCurve::clamped(degree, control),
     }
     .map_err(lib("CONTROL/--degree/--knots", form))?;
     let ts = domain_params(limits, &cmd.params, curve.domain())?;
@@ -306,7 +380,7 @@ pub fn bspline<T: LiteralScalar>(
         limits,
         "--t",
         spline_basis_work(
-            (cmd.degree, curve.dim(), bits(curve.knots().as_slice())),
+            (degree, curve.dim(), bits(curve.knots().as_slice())),
             bits(curve.control().iter()),
             &ts,
             cmd.steps.steps,
@@ -331,6 +405,35 @@ pub fn bspline<T: LiteralScalar>(
             "basis",
             Value::Matrix(DMatrix::from_fn(ts.len(), n, |i, j| rows[i][j].clone())),
         );
+        // The de Boor scheme of every parameter: span, α's and levels.
+        for (k, t) in ts.iter().enumerate() {
+            let scheme = curve
+                .de_boor_scheme(t.clone())
+                .map_err(lib("--t", "parameters inside the knot span"))?;
+            let item = |name: String, value: Value<T>| crate::Item { name, value };
+            let mut parts = vec![
+                item("t".into(), Value::Matrix(row(std::slice::from_ref(t)))),
+                item(
+                    "span".into(),
+                    Value::Matrix(DMatrix::from_element(1, 1, T::from_usize(scheme.span))),
+                ),
+            ];
+            for (r, level) in scheme.levels.iter().enumerate() {
+                if r > 0 {
+                    parts.push(item(
+                        format!("alpha{r}"),
+                        Value::Matrix(row(&scheme.alphas[r - 1])),
+                    ));
+                }
+                parts.push(item(format!("d{r}"), Value::Matrix(level.clone())));
+            }
+            let name = if ts.len() == 1 {
+                "de_boor".to_string()
+            } else {
+                format!("de_boor_{}", k + 1)
+            };
+            report.push(name, Value::Record(parts));
+        }
     }
     report.push("t", Value::Matrix(row(&ts)));
     report.push("result", Value::Matrix(values));
@@ -346,9 +449,9 @@ pub fn bspline<T: LiteralScalar>(
 }
 
 /// The work of a B-spline or NURBS curve of degree p in d coordinates (`(p, d, knot bits)`)
-/// at `ts` (the basis twice with `steps`) and at `dense` (a picture): per parameter the
-/// triangular basis, `(p+1)²` operations, and the combination, `2d(p+1)`; on numbers of
-/// p levels of `(t − t_i)/(t_{i+p} − t_i)` over the coefficients' `coefficient_bits`.
+/// at `ts` (the basis twice with `steps`) and at `dense` (a picture):
+/// [`cagd::bspline::curve_point_cost`] per parameter, plus [`cagd::bspline::basis_cost`] with
+/// `steps`.
 fn spline_basis_work<T: LiteralScalar>(
     (p, d, knot_bits): (usize, usize, u128),
     coefficient_bits: u128,
@@ -356,13 +459,16 @@ fn spline_basis_work<T: LiteralScalar>(
     steps: bool,
     dense: &[T],
 ) -> u128 {
-    let basis = (p as u128 + 1).pow(2);
-    let per = basis * if steps { 2 } else { 1 } + 2 * d as u128 * (p as u128 + 1);
-    let at = |params: &[T], per: u128| {
-        let size = polynomial_bits(p, bits(params) + 3 * knot_bits, coefficient_bits);
-        work::<T>(params.len() as u128 * per, size)
+    let at = |params: &[T], steps: bool| {
+        let param_bits = bits(params);
+        let mut per =
+            cagd::bspline::curve_point_cost(p, d, param_bits, knot_bits, coefficient_bits);
+        if steps {
+            per = per.and(cagd::bspline::basis_cost(p, param_bits, knot_bits));
+        }
+        weigh::<T>(per.times(params.len() as u128))
     };
-    at(ts, per).saturating_add(at(dense, basis + 2 * d as u128 * (p as u128 + 1)))
+    at(ts, steps).saturating_add(at(dense, false))
 }
 
 #[derive(Debug, Args)]
@@ -373,9 +479,12 @@ pub struct NurbsCommand {
     /// The weights, one per control point, positive.
     #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
     pub weights: String,
-    /// The degree p.
-    #[arg(long, value_name = "P", default_value_t = 2)]
-    pub degree: usize,
+    /// The degree p (default 2).
+    #[arg(long, value_name = "P")]
+    pub degree: Option<usize>,
+    /// The order k = p + 1 instead of the degree.
+    #[arg(long, value_name = "K")]
+    pub order: Option<usize>,
     /// The knot vector; default clamped uniform on [0, 1].
     #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
     pub knots: Option<String>,
@@ -393,14 +502,15 @@ pub struct NurbsCommand {
 
 /// A NURBS curve.
 pub fn nurbs<T: LiteralScalar>(limits: &Limits, cmd: &NurbsCommand) -> Result<Outcome, CliError> {
-    check_degree(limits, "--degree", cmd.degree)?;
+    let degree = spline_degree(cmd.degree, cmd.order, 2)?;
+    check_degree(limits, "--degree", degree)?;
     let control = points(limits, "CONTROL", &cmd.control, None, cmd.rows.rows)?;
     let weights: Vec<T> = load_params(limits, "--weights", &cmd.weights)?;
     let n = control.ncols();
     let knots: Vec<T> = match &cmd.knots {
         Some(k) => load_params(limits, "--knots", k)?,
         None => {
-            let p = cmd.degree;
+            let p = degree;
             if n < p + 1 {
                 return Err(shape(
                     "CONTROL",
@@ -417,7 +527,7 @@ pub fn nurbs<T: LiteralScalar>(limits: &Limits, cmd: &NurbsCommand) -> Result<Ou
             k
         }
     };
-    let curve = NurbsCurve::new(cmd.degree, knots, control, weights).map_err(lib(
+    let curve = NurbsCurve::new(degree, knots, control, weights).map_err(lib(
         "CONTROL/--weights/--knots",
         "one positive weight per control point and n+p+2 non-decreasing knots",
     ))?;
@@ -428,7 +538,7 @@ pub fn nurbs<T: LiteralScalar>(limits: &Limits, cmd: &NurbsCommand) -> Result<Ou
         limits,
         "--t",
         spline_basis_work(
-            (cmd.degree, curve.dim() + 1, bits(curve.knots())),
+            (degree, curve.dim() + 1, bits(curve.knots())),
             bits(curve.points().iter()) + bits(&curve.weights()),
             &ts,
             cmd.steps.steps,

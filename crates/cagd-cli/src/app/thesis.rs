@@ -27,17 +27,17 @@ pub struct ThesisCommand {
     pub out: PathBuf,
 }
 
-type Q = BigRational;
+pub(super) type Q = BigRational;
 
-fn q(num: i64, den: i64) -> Q {
+pub(super) fn q(num: i64, den: i64) -> Q {
     Q::new(num.into(), den.into())
 }
 
-fn text<T: LiteralScalar>(report: &Report<T>) -> String {
+pub(super) fn text<T: LiteralScalar>(report: &Report<T>) -> String {
     render(report, Format::Text).unwrap_or_default()
 }
 
-fn heading(out: &mut String, title: &str) {
+pub(super) fn heading(out: &mut String, title: &str) {
     let _ = writeln!(out, "{title}\n{}\n", "=".repeat(title.chars().count()));
 }
 
@@ -72,15 +72,16 @@ P3 = [0;1;0];
 P4 = [1;1;1];
 ";
 
-struct Files<'a> {
-    dir: &'a Path,
-    pending: PendingWrites,
-    written: Vec<String>,
+/// The pictures and meshes of a worked-examples command, staged until everything is computed.
+pub(super) struct Files<'a> {
+    pub(super) dir: &'a Path,
+    pub(super) pending: PendingWrites,
+    pub(super) written: Vec<String>,
 }
 
 impl Files<'_> {
-    fn picture(&mut self, name: &str, figure: &Figure) -> Result<(), CliError> {
-        for ext in ["svg", "png"] {
+    pub(super) fn picture(&mut self, name: &str, figure: &Figure) -> Result<(), CliError> {
+        for ext in crate::plot::PICTURE_EXTENSIONS {
             let file = format!("{name}.{ext}");
             add_plot(&mut self.pending, "--out", &self.dir.join(&file), figure)?;
             self.written.push(file);
@@ -88,7 +89,7 @@ impl Files<'_> {
         Ok(())
     }
 
-    fn meshes(&mut self, name: &str, grid: &PointGrid<f64>) -> Result<(), CliError> {
+    pub(super) fn meshes(&mut self, name: &str, grid: &PointGrid<f64>) -> Result<(), CliError> {
         for ext in ["stl", "obj", "ply"] {
             let file = format!("{name}.{ext}");
             add_mesh(&mut self.pending, "--out", &self.dir.join(&file), grid)?;
@@ -102,7 +103,7 @@ fn expr(text: &str) -> Result<ParamExpr, CliError> {
     ParamExpr::parse(text).map_err(|e| CliError::literal("thesis", e, "a valid built-in example"))
 }
 
-/// An expression curve sampled exactly where it is needed.
+/// An expression curve on `[0, 1]` sampled exactly where it is needed.
 fn expr_curve<T: LiteralScalar>(
     text: &str,
     param: &str,
@@ -111,7 +112,9 @@ fn expr_curve<T: LiteralScalar>(
     let m = expr(text)?
         .sample_curve(&mut Env::new(), param, at)
         .map_err(|e| CliError::literal("thesis", e, "a valid built-in example"))?;
-    SampledCurve::new(at.to_vec(), m).map_err(lib("thesis", "a valid built-in example"))
+    SampledCurve::new(at.to_vec(), m)
+        .and_then(|c| c.with_domain(T::zero(), T::one()))
+        .map_err(lib("thesis", "a valid built-in example"))
 }
 
 const INTERNAL: &str = "a valid built-in example";

@@ -1,31 +1,26 @@
 //! Estimates of a command's work, made before it starts and refused above
 //! [`cagd::limits::Limits::max_work`] (`--max-work`, `CAGD_MAX_WORK`).
 //!
-//! An estimate is a number of arithmetic operations, each weighing 1 in `f64` and, with
-//! `--exact`, [`cagd::limits::exact_op_cost`] of the size its numbers reach, so that an
-//! allowed command finishes in seconds in either arithmetic. The sizes are the inputs'
-//! ([`bits`]) and the growth of the construction: a de Casteljau scheme of degree `n` at
-//! `t = p/q` multiplies denominators by `q` at each of its `n` levels ([`polynomial_bits`]),
-//! an interpolating spline's tridiagonal solve builds continuants of about 4 bits per point.
-//! A user expression is measured instead of estimated: it is evaluated once at its largest
-//! parameter values ([`check_expression_work`]).
+//! An estimate is a [`Cost`]: a number of arithmetic operations, each weighing 1 in `f64` and,
+//! with `--exact`, [`cagd::limits::exact_op_cost`] of the size its numbers reach, so that an
+//! allowed command finishes in seconds in either arithmetic. Each construction estimates
+//! itself in the library, beside its code ([`cagd::cost`] lists them); the command line
+//! measures the sizes of its inputs ([`bits`]), multiplies by the points it asks for, and
+//! weighs the result ([`weigh`]). A user expression is measured instead of estimated: it is
+//! evaluated once at its largest parameter values ([`check_expression_work`]).
 
 use crate::args::PlotArgs;
 use crate::CliError;
-use cagd::limits::{exact_op_cost, Limits};
-use cagd::Curve;
+use cagd::cost::Cost;
+use cagd::limits::Limits;
 use cagd_octave::literal::{Env, LiteralScalar, ParamExpr};
 
-use super::common::{lib, CliCurve};
+use crate::error::lib;
 
-/// The work of `ops` operations on numbers of about `bits` bits: `ops` in `f64`,
-/// `ops · exact_op_cost(bits)` in exact arithmetic.
-pub fn work<T: LiteralScalar>(ops: u128, bits: u128) -> u128 {
-    if T::EXACT {
-        ops.saturating_mul(exact_op_cost(bits))
-    } else {
-        ops
-    }
+/// The work of `cost` in the arithmetic `T`: its operations in `f64`, each weighed by
+/// [`cagd::limits::exact_op_cost`] of its size in exact arithmetic ([`Cost::weigh`]).
+pub fn weigh<T: LiteralScalar>(cost: Cost) -> u128 {
+    cost.weigh(T::EXACT)
 }
 
 /// The most bits of any of `xs` (numerator and denominator together; 0 for `f64` and for
@@ -36,17 +31,6 @@ pub fn bits<'a, T: LiteralScalar + 'a>(xs: impl IntoIterator<Item = &'a T>) -> u
     } else {
         0
     }
-}
-
-/// The size a polynomial of degree `degree` in a parameter of `param_bits` bits, with
-/// coefficients of `coefficient_bits` bits, reaches: `coefficient_bits + degree ·
-/// (param_bits + 1)` (each level of a de Casteljau scheme or Bernstein recurrence multiplies
-/// by `t = p/q` or `1 − t`, adding the bits of `p` and `q`; the `+ 1` covers binomials and
-/// carries).
-pub fn polynomial_bits(degree: usize, param_bits: u128, coefficient_bits: u128) -> u128 {
-    (degree as u128)
-        .saturating_mul(param_bits.saturating_add(1))
-        .saturating_add(coefficient_bits)
 }
 
 /// The parameters of a picture, if `--plot` asks for one (else none): what an estimate
@@ -91,7 +75,7 @@ impl<T: LiteralScalar> Sampling<'_, T> {
     /// size of the parameters, and the work of one evaluation at the largest value of each
     /// parameter, measured by the evaluator ([`ParamExpr::eval_metered`]: element
     /// operations; an exact operation on operands of `a` and `b` words counts `32 (a + b)²`,
-    /// an eighth of [`exact_op_cost`] at one word and more beyond 16 words, so in exact
+    /// an eighth of [`cagd::limits::exact_op_cost`] at one word and more beyond 16 words, so in exact
     /// arithmetic 8 times that). If that evaluation fails, the node count stands and
     /// sampling reports the error.
     fn per_sample(&self, env: &Env<T>) -> u128 {
@@ -106,7 +90,7 @@ impl<T: LiteralScalar> Sampling<'_, T> {
             return nodes;
         };
         let param_bits: u128 = bindings.iter().map(|(_, x)| x.bits()).sum();
-        let by_nodes = work::<T>(nodes, param_bits);
+        let by_nodes = weigh::<T>(Cost::new(nodes, param_bits));
         match self.expr.eval_metered(env, &bindings) {
             Ok((_, measured)) => {
                 let scale = if T::EXACT { 8 } else { 1 };
@@ -163,40 +147,4 @@ fn refuse_above(
             argument,
             "fewer samples (a smaller --n, --t, --u, --v) or a shorter expression, or a higher --max-work",
         ))
-}
-
-/// What evaluating `curve` at one of `params` costs: (operations, bits its values reach).
-/// A Bézier curve is a de Casteljau scheme (`d (n+1)²` operations on numbers of
-/// [`polynomial_bits`]); a sampled curve is looked up (a binary search, then a copy of the
-/// sample where the construction needs it).
-pub fn curve_cost<T: LiteralScalar>(curve: &CliCurve<T>, params: &[T]) -> (u128, u128) {
-    match curve {
-        CliCurve::Bezier(b) => (
-            b.dim() as u128 * (b.degree() as u128 + 1).pow(2),
-            polynomial_bits(b.degree(), bits(params), bits(b.control().iter())),
-        ),
-        CliCurve::Sampled(s) => (
-            s.dim() as u128 + (s.params().len() as u128).ilog2() as u128,
-            bits(s.samples().iter()).saturating_add(bits(params)),
-        ),
-    }
-}
-
-/// The work of a blended patch (Coons, Gordon) at `points` grid points: each point evaluates
-/// every curve of `curves` at its parameter (a `(curve, parameters)` pair) and blends them in
-/// `blend` operations, on numbers as large as the curves' values grown by `extra_bits` (the
-/// bits of the blending functions).
-pub fn blend_work<T: LiteralScalar>(
-    points: u128,
-    curves: &[(&CliCurve<T>, &[T])],
-    blend: u128,
-    extra_bits: u128,
-) -> u128 {
-    let (ops, size) = curves
-        .iter()
-        .map(|(c, params)| curve_cost(c, params))
-        .fold((blend, 0u128), |(ops, size), (o, b)| {
-            (ops.saturating_add(o), size.max(b))
-        });
-    work::<T>(points.saturating_mul(ops), size.saturating_add(extra_bits))
 }

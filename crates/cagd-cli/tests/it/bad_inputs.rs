@@ -55,12 +55,25 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
     let script_loop = file("loop.m", "for i = 1:2000000\n  x = i;\nend\n");
     let script_chain = file("chain.m", "a = b = 0;\n");
     let missing = dir.join("missing.txt").to_str().unwrap().to_string();
+    let folder = {
+        let p = dir.join("a-folder.svg");
+        std::fs::create_dir_all(&p).unwrap();
+        p.to_str().unwrap().to_string()
+    };
     let no_dir = dir
         .join("no/such/dir/out.svg")
         .to_str()
         .unwrap()
         .to_string();
     let deep = format!("{}u{}", "(".repeat(200), ")".repeat(200));
+    let nrb_bad = file(
+        "nrb_bad.txt",
+        "# name: srf\n# type: scalar struct\n# ndims: 2\n 1 1\n# length: 1\n# name: coefs\n# type: matrix\n# rows: 1\n# columns: 2\n 1 2\n\n\n",
+    );
+    let odd = cagd_test_support::data_file("appendix_d_odd.m")
+        .to_str()
+        .unwrap()
+        .to_string();
     let s = |v: &[&str]| v.iter().map(|x| x.to_string()).collect::<Vec<_>>();
     let with = |head: &[&str], tail: &[&str]| {
         let mut v = s(&["coons"]);
@@ -440,6 +453,478 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
             "--t",
             "Library::ParameterOutOfRange",
         ),
+        // the course subcommands: wrong shapes, NaN, empty input, absurd sizes, options
+        // without effect
+        (
+            s(&["convert", "[1 2 3]", "--from", "hermite", "--to", "bezier"]),
+            "GEOMETRY",
+            "Shape",
+        ),
+        (
+            s(&[
+                "convert",
+                "[1 NaN 3 4]",
+                "--from",
+                "bezier",
+                "--to",
+                "hermite",
+            ]),
+            "GEOMETRY",
+            "Literal::NonFinite",
+        ),
+        (
+            s(&["convert", "[]", "--from", "bezier", "--to", "monomial"]),
+            "GEOMETRY",
+            "Shape",
+        ),
+        (
+            s(&[
+                "convert",
+                "zeros(1, 2000)",
+                "--from",
+                "bezier",
+                "--to",
+                "monomial",
+            ]),
+            "GEOMETRY",
+            "Library::TooLarge",
+        ),
+        (
+            s(&["convert", "[1 2]", "--to", "bezier"]),
+            "--from",
+            "Usage",
+        ),
+        (
+            s(&["elevate", "[0 1]", "--by", "5000"]),
+            "--by",
+            "Library::TooLarge",
+        ),
+        (
+            s(&["elevate", "zeros(3, 900)", "--by", "99"]),
+            "--by",
+            "Library::TooLarge",
+        ),
+        (s(&["elevate", "[0 NaN]"]), "CONTROL", "Literal::NonFinite"),
+        (s(&["elevate", "[]"]), "CONTROL", "Library::TooFewPoints"),
+        (
+            s(&[
+                "elevate",
+                "[0 1 2]",
+                "--degree",
+                "1",
+                "--knots",
+                "[0 1 2 3 4]",
+            ]),
+            "--knots",
+            "Library::InvalidArgument",
+        ),
+        (
+            s(&["subdivide", CUBIC, "--t", "1"]),
+            "--t",
+            "Library::EmptyInterval",
+        ),
+        (s(&["subdivide", CUBIC, "--t", "[0.2 0.3]"]), "--t", "Shape"),
+        (
+            s(&["subdivide", "[0 NaN 1]"]),
+            "CONTROL",
+            "Literal::NonFinite",
+        ),
+        (
+            s(&["subdivide", "zeros(2, 1500)"]),
+            "CONTROL",
+            "Library::TooLarge",
+        ),
+        (
+            s(&["insert-knot", "[0 1 2 3]", "--degree", "2", "--insert", "2"]),
+            "--insert",
+            "Library::ParameterOutOfRange",
+        ),
+        (
+            s(&[
+                "insert-knot",
+                "[0 1 2 3]",
+                "--degree",
+                "2",
+                "--insert",
+                "[0.5 0.5 0.5 0.5]",
+            ]),
+            "--insert",
+            "Library::InvalidArgument",
+        ),
+        (
+            s(&[
+                "insert-knot",
+                "[0 1 2 3]",
+                "--degree",
+                "2",
+                "--insert",
+                "NaN",
+            ]),
+            "--insert",
+            "Literal::NonFinite",
+        ),
+        (
+            s(&["insert-knot", "[0 1]", "--degree", "3", "--insert", "0.5"]),
+            "CONTROL",
+            "Library::TooFewControlPoints",
+        ),
+        (
+            s(&[
+                "insert-knot",
+                "[0 1 2 3]",
+                "--insert",
+                "0.01:0.01:0.99",
+                "--max-work",
+                "100",
+            ]),
+            "--insert",
+            "Library::TooLarge",
+        ),
+        (
+            s(&["bspline-basis", "--knots", "[0 1 0.5]", "--degree", "0"]),
+            "--knots",
+            "Library::DecreasingKnots",
+        ),
+        (
+            s(&["bspline-basis", "--knots", "[0 1]", "--degree", "3"]),
+            "--knots",
+            "Shape",
+        ),
+        (
+            s(&[
+                "bspline-basis",
+                "--knots",
+                "[0 0 0 1 1 1]",
+                "--degree",
+                "2",
+                "--t",
+                "2",
+            ]),
+            "--t",
+            "Shape",
+        ),
+        (
+            s(&["bspline-basis", "--knots", "[0 NaN 1]"]),
+            "--knots",
+            "Literal::NonFinite",
+        ),
+        (
+            s(&[
+                "bspline-basis",
+                "--knots",
+                "0:1",
+                "--degree",
+                "0",
+                "--order",
+                "1",
+            ]),
+            "--order",
+            "Usage",
+        ),
+        (
+            s(&[
+                "bspline-basis",
+                "--knots",
+                "0:3000",
+                "--degree",
+                "2",
+                "--n",
+                "100000",
+            ]),
+            "--t",
+            "Library::TooLarge",
+        ),
+        (
+            s(&["continuity", "[0 1]", "[1 2; 3 4]"]),
+            "FIRST/SECOND",
+            "Shape",
+        ),
+        (
+            s(&["continuity", "[0 NaN]", "[1 2]"]),
+            "FIRST",
+            "Literal::NonFinite",
+        ),
+        (
+            s(&["continuity", "[0]", "[0 1]", "--free-point"]),
+            "FIRST",
+            "Shape",
+        ),
+        (
+            s(&["continuity", "zeros(1, 2000)", "[0 1]"]),
+            "FIRST",
+            "Library::TooLarge",
+        ),
+        (
+            s(&["continuity", "[0 1]", "[1 2]", "--k", "2"]),
+            "--k",
+            "Usage",
+        ),
+        (s(&["integrate"]), "CONTROL", "Usage"),
+        (
+            s(&["integrate", "--bernstein", "3", "--i", "4"]),
+            "--i",
+            "Shape",
+        ),
+        (s(&["integrate", "[0 1]", "--i", "1"]), "--i", "Usage"),
+        (
+            s(&["integrate", "[0 NaN]"]),
+            "CONTROL",
+            "Literal::NonFinite",
+        ),
+        (
+            s(&["integrate", "--bernstein", "5000"]),
+            "--bernstein",
+            "Library::TooLarge",
+        ),
+        (
+            s(&["integrate", "[0 1]", "--degree", "3"]),
+            "CONTROL/--degree/--knots",
+            "Library::TooFewControlPoints",
+        ),
+        (
+            s(&["ruled", "--first", "[u;0]", "--second", "[u;1;0]"]),
+            "--first/--second",
+            "Library::ShapeMismatch",
+        ),
+        (
+            s(&["ruled", "--first", "[u;NaN;0]", "--second", "[u;1;0]"]),
+            "--first",
+            "Literal::NonFinite",
+        ),
+        (
+            s(&["ruled", "--first", "[u;v;0]", "--second", "[u;1;0]"]),
+            "--first",
+            "Shape",
+        ),
+        (
+            s(&[
+                "ruled", "--first", "[u;0;0]", "--second", "[u;1;0]", "--n", "5000",
+            ]),
+            "--u/--v",
+            "Library::TooLarge",
+        ),
+        (
+            s(&[
+                "ferguson", "--points", "[0 0 0]'", "--du", "[0 0 0]'", "--dv", "[0 0 0]'",
+            ]),
+            "--points",
+            "Shape",
+        ),
+        (
+            s(&[
+                "ferguson",
+                "--points",
+                "zeros(3,4)",
+                "--du",
+                "[0 0 0 NaN; 0 0 0 0; 0 0 0 0]",
+                "--dv",
+                "zeros(3,4)",
+            ]),
+            "--du",
+            "Literal::NonFinite",
+        ),
+        (
+            s(&[
+                "ferguson",
+                "--points",
+                "zeros(3,4)",
+                "--du",
+                "zeros(3,4)",
+                "--dv",
+                "zeros(2,4)",
+            ]),
+            "--points/--du/--dv/--twists",
+            "Library::ShapeMismatch",
+        ),
+        (
+            s(&[
+                "ferguson",
+                "--points",
+                "zeros(3,4)",
+                "--du",
+                "zeros(3,4)",
+                "--dv",
+                "zeros(3,4)",
+                "--n",
+                "5000",
+            ]),
+            "--u/--v",
+            "Library::TooLarge",
+        ),
+        (s(&["bspline-surface", "[1 2]"]), "NET", "Shape"),
+        (s(&["bspline-surface"]), "NET", "Usage"),
+        (
+            s(&["bspline-surface", NET, "--degree", "5"]),
+            "NET",
+            "Library::TooFewControlPoints",
+        ),
+        (
+            s(&["bspline-surface", NET, "--degree", "2", "--u", "NaN"]),
+            "--u",
+            "Literal::NonFinite",
+        ),
+        (
+            s(&["bspline-surface", NET, "--degree", "2", "--n", "5000"]),
+            "--u/--v",
+            "Library::TooLarge",
+        ),
+        (
+            s(&["bspline-surface", NET, "--degree", "2", "--u", "2"]),
+            "--u",
+            "Shape",
+        ),
+        (
+            s(&["bspline-surface", NET, "--degree", "x"]),
+            "--degree",
+            "Literal::UnknownVariable",
+        ),
+        (
+            s(&["nurbs-surface", NET, "--degree", "2"]),
+            "--weights",
+            "Usage",
+        ),
+        (
+            s(&[
+                "nurbs-surface",
+                NET,
+                "--degree",
+                "2",
+                "--weights",
+                "[1 1 1; 1 0 1; 1 1 1]",
+            ]),
+            "NET/--weights/--uknots/--vknots",
+            "Library::NonPositiveWeight",
+        ),
+        (
+            s(&[
+                "nurbs-surface",
+                NET,
+                "--degree",
+                "2",
+                "--weights",
+                "[1 1; 1 1]",
+            ]),
+            "NET/--weights/--uknots/--vknots",
+            "Library::ShapeMismatch",
+        ),
+        (s(&["nurbs-surface", &nrb_bad]), "NET", "Data"),
+        (
+            s(&["circle", "--radius", "-1"]),
+            "--radius/--center",
+            "Library::InvalidArgument",
+        ),
+        (
+            s(&["circle", "--radius", "NaN"]),
+            "--radius",
+            "Literal::NonFinite",
+        ),
+        (
+            s(&["circle", "--center", "[0 0 0 0]"]),
+            "--radius/--center",
+            "Library::InvalidArgument",
+        ),
+        (s(&["circle", "--n", "2000000"]), "--n", "Library::TooLarge"),
+        (
+            s(&["arc", "--start", "0", "--end", "10"]),
+            "--radius/--center",
+            "Library::InvalidArgument",
+        ),
+        (
+            s(&["arc", "--start", "0", "--end", "[1 2]"]),
+            "--end",
+            "Shape",
+        ),
+        (
+            s(&["course", "--out", "/proc/cagd-cannot-be-here"]),
+            "--out /proc/cagd-cannot-be-here",
+            "Io::NotFound",
+        ),
+        // the extensions of existing subcommands
+        (
+            s(&["bezier-patch", NET, "--du", "3"]),
+            "--du/--dv",
+            "Library::DerivativeOrder",
+        ),
+        (
+            s(&["bezier-patch", "--x", "[0 1; 2 3]", "--y", "[0 1 2]"]),
+            "--y",
+            "Shape",
+        ),
+        (s(&["bezier-patch"]), "NET", "Usage"),
+        (
+            with(&COONS, &["--blend", "1-t^2/2"]),
+            "--blend",
+            "Library::BlendingCondition",
+        ),
+        (with(&COONS, &["--blend", "[t; t; t]"]), "--blend", "Shape"),
+        (
+            with(&COONS, &["--blend", "sin(t)", "--exact"]),
+            "--blend",
+            "Literal::NotRational",
+        ),
+        (with(&COONS, &["--samples"]), "--samples", "Usage"),
+        (
+            s(&["decasteljau", CUBIC, "--interval", "2,1"]),
+            "--interval",
+            "Shape",
+        ),
+        (
+            s(&["decasteljau", CUBIC, "--interval", "[0 NaN]"]),
+            "--interval",
+            "Literal::NonFinite",
+        ),
+        (
+            s(&[
+                "spline",
+                "[0 0; 1 1; 2 0]'",
+                "--end",
+                "natural",
+                "--start-tangent",
+                "[1;1]",
+            ]),
+            "--start-tangent",
+            "Usage",
+        ),
+        (
+            s(&["spline", "[0 0; 1 1; 2 0]'", "--params", "[0 1]"]),
+            "--params",
+            "Shape",
+        ),
+        (
+            s(&["spline", "[0 0; 1 1; 2 0]'", "--params", "[0 2 1]"]),
+            "POINTS",
+            "Library::InvalidArgument",
+        ),
+        (
+            s(&["spline", "[0 0; 0 0; 2 0]'", "--params", "chord"]),
+            "POINTS",
+            "Shape",
+        ),
+        (
+            s(&["bspline", "[0 0; 1 2]'", "--order", "0"]),
+            "--order",
+            "Shape",
+        ),
+        (
+            s(&["bspline", "[0 0; 1 2]'", "--order", "2", "--degree", "1"]),
+            "--order",
+            "Usage",
+        ),
+        (
+            s(&["discrete-coons", NET, "--mask=0,0.25", "--steps"]),
+            "--steps",
+            "Usage",
+        ),
+        (
+            s(&["gordon", "--script", &odd, "--u-nodes", "[0 0.5 1]"]),
+            "--u-nodes",
+            "Usage",
+        ),
+        (
+            s(&["bernstein", "--degree", "3", "--plot", "b.bmp"]),
+            "--plot b.bmp",
+            "Usage",
+        ),
         // outputs
         (
             s(&["curve", "[u;u]", "--plot", "picture.bmp"]),
@@ -465,6 +950,95 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
             s(&["thesis", "--out", "/proc/cagd-cannot-be-here"]),
             "--out /proc/cagd-cannot-be-here",
             "Io::NotFound",
+        ),
+        // Outputs that are not regular files, or two outputs on one path: before any work.
+        (
+            s(&["curve", "[u;u]", "-o", "/dev/null"]),
+            "-o /dev/null",
+            "Io::AlreadyExists",
+        ),
+        (
+            s(&["curve", "[u;u]", "--plot", &folder]),
+            "--plot",
+            "Io::AlreadyExists",
+        ),
+        (
+            s(&["curve", "[u;u]", "--plot", "x.svg", "-o", "./x.svg"]),
+            "--plot x.svg",
+            "Usage",
+        ),
+        (
+            s(&["curve", "[u;u]", "-o", "-", "--plot", "-"]),
+            "--plot -",
+            "Usage",
+        ),
+        // A depth beyond what the command thread's stack holds.
+        (
+            s(&["--max-depth", "100000000", "curve", "[u;u]"]),
+            "--max-depth",
+            "Usage",
+        ),
+        // What Octave refuses, an argument may not rely on a lenient reading of.
+        (
+            s(&["decasteljau", "[1 2]*[3 4]"]),
+            "CONTROL",
+            "Literal::Unsupported",
+        ),
+        (
+            s(&["decasteljau", CUBIC, "--t", "[0.5 1]*[1 1]"]),
+            "--t",
+            "Literal::Unsupported",
+        ),
+        // Results that overflow the range of doubles.
+        (
+            s(&["derivative", "[zeros(1,171) 1]", "--order", "171"]),
+            "CONTROL",
+            "Library::NonFinite",
+        ),
+        (
+            s(&["spline", "[1.7e308 -1.7e308 1.7e308]"]),
+            "POINTS",
+            "Library::NonFinite",
+        ),
+        (
+            s(&["lagrange", "--nodes", "[0 1e-310 1]", "--t", "0.5"]),
+            "--nodes/--points",
+            "Library::NonFinite",
+        ),
+        (
+            s(&[
+                "hermite",
+                "--p0",
+                "[1.5e308;0]",
+                "--p1",
+                "[0;0]",
+                "--t0",
+                "[1.5e308;0]",
+                "--t1",
+                "[0;0]",
+                "--t",
+                "0.5",
+            ]),
+            "--p0/--p1/--t0/--t1",
+            "Library::NonFinite",
+        ),
+        // Pictures and meshes of values too large to draw or to store.
+        (
+            s(&[
+                "decasteljau",
+                "[-1e308 1e308; 0 1]",
+                "--n",
+                "3",
+                "--plot",
+                "p.svg",
+            ]),
+            "--plot p.svg",
+            "Plot",
+        ),
+        (
+            s(&["surface", "[1e39*u; v; u]", "--n", "3", "--mesh", "m.stl"]),
+            "--mesh m.stl",
+            "Shape",
         ),
     ]
 }
@@ -496,6 +1070,20 @@ fn every_bad_input_names_its_argument_and_kind_exits_2_and_writes_nothing() {
         "curve",
         "surface",
         "script",
+        "course",
+        "convert",
+        "elevate",
+        "subdivide",
+        "insert-knot",
+        "bspline-basis",
+        "continuity",
+        "integrate",
+        "ruled",
+        "ferguson",
+        "bspline-surface",
+        "nurbs-surface",
+        "circle",
+        "arc",
     ] {
         assert!(subcommands.contains(sub), "no bad input for {sub}");
     }
@@ -524,7 +1112,9 @@ fn every_bad_input_names_its_argument_and_kind_exits_2_and_writes_nothing() {
         let work = tempfile::tempdir().unwrap();
         let mut cmd = Command::cargo_bin("cagd").unwrap();
         cmd.current_dir(work.path()).args(args);
-        if args.first().is_some_and(|a| a != "thesis") && !args.iter().any(|a| a == "-o") {
+        if args.first().is_some_and(|a| a != "thesis" && a != "course")
+            && !args.iter().any(|a| a == "-o")
+        {
             cmd.args(["-o", "result.txt"]);
         }
         refused(&mut cmd, Some(work.path()))

@@ -683,6 +683,27 @@ fn coons_point_script_and_bezier_boundaries() {
 }
 
 #[test]
+fn coons_expression_boundaries_keep_their_domain_beyond_the_unit_square() {
+    // Primer 4.3's expressions at u = 3/2: the samples reach 3/2, but the expressions' domain
+    // stays [0, 1] (a sampled expression is not reparametrised onto its sample range). From the
+    // closed forms: r_c = (3/2, 1/2, 3/8), r_d = (3/2, 5/8, 5/8), r_cd = (3/2, 1/2, 3/4).
+    let out = ok(&[
+        "coons",
+        "--script",
+        "tests/data/appendix_c_point.m",
+        "--u",
+        "1.5",
+        "--v",
+        "0.5",
+        "--exact",
+    ]);
+    assert!(
+        out.ends_with("result =\n\n    3/2\n    5/8\n    1/4\n\n"),
+        "{out}"
+    );
+}
+
+#[test]
 fn coons_bicubic_flat_square() {
     let args = [&["coons-bicubic"][..], &FLAT_SQUARE, &FLAT_SQUARE_CROSS].concat();
     insta::assert_snapshot!(ok(&with(&args, &["--n", "3", "--exact"])));
@@ -853,10 +874,30 @@ fn subcommand_help_documents_layout_and_example() {
         "hermite",
         "bspline",
         "nurbs",
+        "course",
+        "convert",
+        "elevate",
+        "subdivide",
+        "insert-knot",
+        "bspline-basis",
+        "continuity",
+        "integrate",
+        "ruled",
+        "ferguson",
+        "bspline-surface",
+        "nurbs-surface",
+        "circle",
+        "arc",
     ] {
         let out = ok(&[sub, "--help"]);
         assert!(out.contains("Example"), "{sub} --help has no example");
         assert!(out.contains("cagd "), "{sub} --help");
+        if sub != "thesis" && sub != "course" {
+            assert!(
+                out.contains("Layout"),
+                "{sub} --help says nothing of the layout"
+            );
+        }
     }
 }
 
@@ -1038,7 +1079,10 @@ fn format_octave_loads_in_live_octave() {
          assert(c.rcd, [0.2; 0.5; 0.1], 1e-15);\n\
          assert(d.result, [0 3.5 4; 0 1.5 0; 0 0.75 0]);\n\
          assert(d.t, [0 0.5 1]);\n\
-         assert(ischar(d.scheme_2) && rows(d.scheme_2) == 6);\n\
+         assert(isstruct(d.scheme_2) && isequal(fieldnames(d.scheme_2), {{'r0'; 'r1'; 'r2'; 'r3'}}));\n\
+         assert(d.scheme_2.r0, [0 0 8 4; 0 2 2 0; 0 2 0 0]);\n\
+         assert(d.scheme_2.r1, [0 4 6; 1 2 1; 1 1 0]);\n\
+         assert(d.scheme_2.r3, [3.5; 1.5; 0.75]);\n\
          assert(size(s.result), [3 3 3]);\n\
          assert(squeeze(s.result(2,2,:)), [2; 2; 1.5]);\n\
          assert(s.result(:,:,1), [0 0 0; 2 2 2; 4 4 4]);\n\
@@ -1103,6 +1147,16 @@ fn new_subcommands_reject_bad_input_cleanly() {
     let d = dir.path();
     let o = |name: &str| d.join(name).to_str().unwrap().to_string();
     let (svg, stl, txt) = (o("x.svg"), o("x.stl"), o("x.txt"));
+    // A packed network whose crossings g_uv have one row instead of one per node (in a
+    // directory of its own: `d` must stay empty).
+    let scripts = tempfile::tempdir().unwrap();
+    let bad_network = scripts.path().join("bad_network.m");
+    let bad_network = bad_network.to_str().unwrap().to_string();
+    std::fs::write(
+        &bad_network,
+        "x = [0 1];\ng_u = [0 1 0 1; 0 0 1 1; 0 1 1 2];\ng_v = [0 0 1 1; 0 1 0 1; 0 1 1 2];\ng_uv = [0 0 0 0 1 1];\n",
+    )
+    .unwrap();
     let cases: Vec<(Vec<&str>, &str)> = vec![
         (vec!["decasteljau", "[1 2; 3]", "--plot", &svg], "CONTROL: "),
         (
@@ -1188,8 +1242,8 @@ fn new_subcommands_reject_bad_input_cleanly() {
             "at least 2 curves",
         ),
         (
-            vec!["gordon", "--script", "tests/data/appendix_d.m", "-o", &txt],
-            "not among the 10 samples",
+            vec!["gordon", "--script", &bad_network, "-o", &txt],
+            "--script: `g_uv` is 1×6 for 2 × 2 nodes",
         ),
         (
             vec!["lagrange", "--nodes", "[0 0 1]", "-o", &txt],

@@ -59,7 +59,7 @@ fn every_variant_has_a_triggering_example() {
             "TextFormatError::",
         ),
         (
-            "crates/cagd-octave/src/literal/mod.rs",
+            "crates/cagd-octave/src/literal/error.rs",
             "LiteralError",
             "`LiteralError`",
             "LiteralError::",

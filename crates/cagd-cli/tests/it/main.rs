@@ -4,8 +4,12 @@
 mod atomic_output;
 mod bad_inputs;
 mod cli;
+mod course;
 mod error_catalogue;
+mod hostile;
 mod limits;
 mod mesh;
 mod non_finite;
+mod packed_network;
 mod regressions;
+mod serve;

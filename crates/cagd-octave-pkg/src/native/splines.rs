@@ -224,7 +224,7 @@ fn hermite_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> 
         Ok(())
     })?;
     if call.nargout > 1 {
-        emit_matrix(sink, 1, h.to_bezier().control())?;
+        emit_matrix(sink, 1, h.to_bezier()?.control())?;
     }
     Ok(())
 }

@@ -26,8 +26,11 @@ use cagd::error::Result;
 ///   direction whose degree remains.
 ///
 /// # Native function
-/// [`patch_from_array3`](crate::arrays::patch_from_array3) (after [`tenzor`]) and [`BezierPatch::try_eval`](cagd::bezier::BezierPatch::try_eval), the tensor de
-/// Casteljau algorithm in the term order of the fixed Octave code (bit for bit equal).
+/// [`patch_from_array3`](crate::arrays::patch_from_array3) (after [`tenzor`]) and [`BezierPatch::eval`](cagd::bezier::BezierPatch::eval), the tensor de
+/// Casteljau algorithm in the term order of the fixed Octave code (bit for bit equal). Like
+/// the Octave function it takes any finite `u`, `v` (outside `[0, 1]` the polynomial
+/// continues), where [`BezierPatch::try_eval`](cagd::bezier::BezierPatch::try_eval) would
+/// keep to the domain `[0, 1]²`.
 ///
 /// # Errors
 /// As [`tenzor`]; [`Error::TooFewPoints`](cagd::Error::TooFewPoints) for an empty net,
@@ -47,7 +50,8 @@ use cagd::error::Result;
 pub fn bilinearna(b: ArrayView2<'_, f64>, u: f64, v: f64, n: usize) -> Result<Array3<f64>> {
     let _ = n;
     let patch = crate::arrays::patch_from_array3(&tenzor(b)?)?;
-    let point = patch.try_eval(u, v)?;
+    cagd::error::check_finite("bilinearna parameters u, v", [&u, &v])?;
+    let point = patch.eval(u, v);
     Ok(Array3::from_shape_fn((1, 1, point.len()), |(_, _, c)| {
         point[c]
     }))

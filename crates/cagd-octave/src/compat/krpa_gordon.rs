@@ -1,14 +1,12 @@
 //! `krpaGordon` (thesis appendix D, Algoritem 7).
 
-use nalgebra::{DMatrix, DVector};
-use ndarray::{ArrayView2, Axis, Slice};
+use ndarray::ArrayView2;
 
 use super::lagrange::node_vector;
-use super::{check_finite_array, check_shape, untenzor, SampledPatch};
-use cagd::coons::Tolerance;
+use super::{check_finite_array, check_shape, to_dmatrix, untenzor, PackedNetwork, SampledPatch};
 use cagd::error::{Error, Result};
-use cagd::gordon::GordonSurface;
-use cagd::param::{SampledCurve, Surface};
+use cagd::linspace::linspace;
+use cagd::param::Surface;
 
 /// The Gordon surface of a sampled curve network on `linspace(0,1,N)²`: the twin of the
 /// thesis's `krpaGordon` (appendix D, Algoritem 7), as fixed in `octave_ref/fixed/krpaGordon.m`.
@@ -48,10 +46,14 @@ use cagd::param::{SampledCurve, Surface};
 ///   returned nothing and grew `R` from `zeros(N,N)`.
 ///
 /// # Native function
-/// [`GordonSurface::with_points`] and [`Surface::eval_grid`] on `linspace(0,1,N)²`. Each curve
-/// is a [`SampledCurve`] through its samples at `t` and its crossings `g_uv` at the nodes (so it
-/// returns every sample and every crossing exactly); the network is checked where a node is a
-/// sample parameter (relative tolerance `1e-10`, see [`Tolerance`]). The native surface
+/// [`PackedNetwork::unpack`] (the one unpacker of appendix D's data, also behind
+/// `cagd gordon --script`), [`PackedNetwork::surface`]
+/// ([`GordonSurface::with_points`](cagd::gordon::GordonSurface::with_points)) and
+/// [`Surface::eval_grid`] on `linspace(0,1,N)²`. Each curve is a
+/// [`SampledCurve`](cagd::param::SampledCurve) through its samples at `t` and, where a node is
+/// not a sample parameter, its crossing `g_uv` at the node (so it returns every sample and
+/// every crossing exactly); the network is checked where a node is a sample parameter
+/// (relative tolerance `1e-10`, see [`Tolerance`](cagd::coons::Tolerance)). The native surface
 /// blends with the barycentric Lagrange basis, the Octave code with products: on
 /// well-conditioned nodes (the thesis's, and every network of the differential test) the
 /// values agree within the crate's tolerance (4 ULPs or 1e-14 relative to the scale of the
@@ -110,77 +112,18 @@ pub fn krpa_gordon(
     check_finite_array("krpa_gordon: g_u", &g_u)?;
     check_finite_array("krpa_gordon: g_v", &g_v)?;
     check_finite_array("krpa_gordon: g_uv", &g_uv)?;
-    let t = cagd::linspace::linspace(0.0, 1.0, n);
-    let crossing = |i: usize, j: usize| {
-        DVector::from_iterator(3, g_uv.row(i).iter().skip(3 * j).take(3).copied())
-    };
-    let points: Vec<Vec<DVector<f64>>> = (0..mu)
-        .map(|i| (0..nv).map(|j| crossing(i, j)).collect())
-        .collect();
-    // d_i = g(u_i, ·): samples g_v(:, i*N ..), crossings g(u_i, v_j) at v_j.
-    let curves_at_u = (0..mu)
-        .map(|i| {
-            let samples = g_v.slice_axis(Axis(1), Slice::from(i * n..(i + 1) * n));
-            let at_nodes: Vec<(f64, &DVector<f64>)> = v_nodes
-                .iter()
-                .zip(&points[i])
-                .map(|(v, p)| (*v, p))
-                .collect();
-            sampled_with_crossings(&t, &samples, &at_nodes)
-        })
-        .collect::<Result<Vec<_>>>()?;
-    // c_j = g(·, v_j): samples g_u(:, j*N ..), crossings g(u_i, v_j) at u_i.
-    let curves_at_v = (0..nv)
-        .map(|j| {
-            let samples = g_u.slice_axis(Axis(1), Slice::from(j * n..(j + 1) * n));
-            let at_nodes: Vec<(f64, &DVector<f64>)> = u_nodes
-                .iter()
-                .zip(&points)
-                .map(|(u, row)| (*u, &row[j]))
-                .collect();
-            sampled_with_crossings(&t, &samples, &at_nodes)
-        })
-        .collect::<Result<Vec<_>>>()?;
-    let surface = GordonSurface::with_points(
+    let network = PackedNetwork::unpack(
+        &to_dmatrix(&g_u),
+        &to_dmatrix(&g_v),
+        &to_dmatrix(&g_uv),
         u_nodes,
         v_nodes,
-        curves_at_u,
-        curves_at_v,
-        points,
-        Tolerance::default(),
+        |_, samples| linspace(0.0, 1.0, samples),
     )?;
-    let p = crate::arrays::to_array3(surface.eval_grid(&t, &t));
+    let t = linspace(0.0, 1.0, n);
+    let p = crate::arrays::to_array3(network.surface()?.eval_grid(&t, &t));
     let r = untenzor(p.view())?;
     Ok(SampledPatch { r, p })
-}
-
-/// A network curve known by its samples at `t` and its crossings at the nodes: a
-/// [`SampledCurve`] through both, the crossings added where a node is not a sample parameter
-/// (where it is, the sample stays, and the network check compares it with the crossing).
-fn sampled_with_crossings(
-    t: &[f64],
-    samples: &ArrayView2<'_, f64>,
-    at_nodes: &[(f64, &DVector<f64>)],
-) -> Result<SampledCurve> {
-    let mut points: Vec<(f64, DVector<f64>)> = t
-        .iter()
-        .enumerate()
-        .map(|(k, &s)| {
-            (
-                s,
-                DVector::from_iterator(3, samples.column(k).iter().copied()),
-            )
-        })
-        .collect();
-    for (node, p) in at_nodes {
-        if !t.contains(node) {
-            points.push((*node, (*p).clone()));
-        }
-    }
-    points.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let params = points.iter().map(|(s, _)| *s).collect();
-    let columns: Vec<DVector<f64>> = points.into_iter().map(|(_, p)| p).collect();
-    SampledCurve::new(params, DMatrix::from_columns(&columns))
 }
 
 #[cfg(test)]

@@ -4,7 +4,7 @@ use ndarray::{Array, ArrayView, ArrayView2, Dimension};
 
 use super::{check_finite_array, shape_str};
 use cagd::error::{Error, Result};
-use cagd::lagrange::basis_product;
+use cagd::lagrange::{basis_product, check_distinct_nodes};
 
 /// The Lagrange basis polynomial `L_m` of the nodes `x` at every parameter of `u`: the twin of
 /// the thesis's `Lagrange` (appendix D, Algoritem 8), as fixed in `octave_ref/fixed/Lagrange.m`.
@@ -63,10 +63,16 @@ pub fn lagrange<D: Dimension>(
         });
     }
     check_finite_array("lagrange: u", &u)?;
-    Ok(u.mapv(|t| basis_product(&nodes, m - 1, &t)))
+    // The nodes are distinct (node_vector) and 1 ≤ m ≤ their count: the product is defined.
+    let mut out = u.to_owned();
+    for (o, t) in out.iter_mut().zip(u.iter()) {
+        *o = basis_product(&nodes, m - 1, t)?;
+    }
+    Ok(out)
 }
 
-/// A non-empty row or column of finite, pairwise distinct nodes, in Octave's order.
+/// A non-empty row or column of finite, pairwise distinct nodes, in Octave's order (the
+/// library's one node check, [`check_distinct_nodes`]).
 pub(crate) fn node_vector(what: &'static str, x: &ArrayView2<'_, f64>) -> Result<Vec<f64>> {
     if x.is_empty() || (x.nrows() != 1 && x.ncols() != 1) {
         return Err(Error::ShapeMismatch {
@@ -77,16 +83,7 @@ pub(crate) fn node_vector(what: &'static str, x: &ArrayView2<'_, f64>) -> Result
     }
     check_finite_array(what, x)?;
     let nodes: Vec<f64> = x.iter().copied().collect();
-    for (i, a) in nodes.iter().enumerate() {
-        if let Some(j) = nodes[i + 1..].iter().position(|b| b == a) {
-            return Err(Error::DuplicateNodes {
-                what,
-                first: i,
-                second: i + 1 + j,
-                value: *a,
-            });
-        }
-    }
+    check_distinct_nodes(what, &nodes, 1)?;
     Ok(nodes)
 }
 

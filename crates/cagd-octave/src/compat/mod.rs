@@ -12,11 +12,11 @@
 //! |---|---|---|
 //! | `deCasteljau(kontrolneT, N)` (A, Alg. 1) | [`de_casteljau`] | [`BezierCurve::eval_many`](cagd::bezier::BezierCurve::eval_many) |
 //! | `ploskevB(kontrolneT, N)` (B, Alg. 2) | [`ploskev_b`] | [`BezierPatch::eval`](cagd::bezier::BezierPatch::eval) on the grid |
-//! | `bilinearna(B, u, v, N)` (B, Alg. 3) | [`bilinearna`] | [`BezierPatch::try_eval`](cagd::bezier::BezierPatch::try_eval) |
+//! | `bilinearna(B, u, v, N)` (B, Alg. 3) | [`bilinearna`] | [`BezierPatch::eval`](cagd::bezier::BezierPatch::eval) |
 //! | `tenzor(B)` (B, Alg. 4) | [`tenzor`] (inverse: [`untenzor`]) | a layout conversion |
 //! | `krpaCoons(c1,c2,d1,d2,P1,P2,P3,P4)` (C, Alg. 5) | [`krpa_coons`] | [`CoonsPatch`](cagd::coons::CoonsPatch) on [`SampledCurve`](cagd::param::SampledCurve)s |
 //! | `vrednostCoons(u,v,c1,c2,d1,d2,P1,P2,P3,P4)` (C, Alg. 6) | [`vrednost_coons`] | [`CoonsPatch::eval_parts`](cagd::coons::CoonsPatch::eval_parts) |
-//! | `krpaGordon(g_u,g_v,g_uv,x,N)` (D, Alg. 7) | [`krpa_gordon`] | [`GordonSurface`](cagd::gordon::GordonSurface) on sampled curves |
+//! | `krpaGordon(g_u,g_v,g_uv,x,N)` (D, Alg. 7) | [`krpa_gordon`] | [`GordonSurface`](cagd::gordon::GordonSurface) on the sampled curves of [`PackedNetwork`] |
 //! | `Lagrange(x, m, u)` (D, Alg. 8) | [`lagrange`] | [`basis_product`](cagd::lagrange::basis_product) |
 //! | `linspace(a, b, N)` (Octave built-in) | [`linspace`] | [`cagd::linspace::linspace`] |
 //!
@@ -33,6 +33,7 @@
 //! - **Gordon networks** (appendix D): `g_u = [c_0 c_1 … c_n]` (`3 × (n+1)N`, the curves
 //!   `g(u, v_j)` sampled at `t`), `g_v = [d_0 d_1 … d_m]` (`3 × (m+1)N`, the curves
 //!   `g(u_i, v)`), `g_uv` packed `(m+1) × 3(n+1)` with `g_uv(i+1, 3j+1:3j+3) = g(u_i, v_j)`.
+//!   [`PackedNetwork`] is the one place that unpacks it (here and for `cagd gordon --script`).
 //!
 //! Indices in these docs are Octave's (from 1) where they name Octave expressions and the
 //! thesis's (from 0) where they name control points; ndarray indices are from 0.
@@ -79,6 +80,7 @@ mod krpa_coons;
 mod krpa_gordon;
 mod lagrange;
 mod linspace;
+mod packed_network;
 mod ploskev_b;
 mod tenzor;
 mod vrednost_coons;
@@ -89,6 +91,7 @@ pub use krpa_coons::{krpa_coons, SampledPatch};
 pub use krpa_gordon::krpa_gordon;
 pub use lagrange::lagrange;
 pub use linspace::linspace;
+pub use packed_network::PackedNetwork;
 pub use ploskev_b::ploskev_b;
 pub use tenzor::{tenzor, untenzor};
 pub use vrednost_coons::{vrednost_coons, VrednostCoons};

@@ -121,10 +121,10 @@ pub fn vrednost_coons(
     })
 }
 
-/// The curve known by its value `at_t` at `t` and its ends `start` (at 0) and `end` (at 1):
-/// a [`SampledCurve`] through those points, which returns each of them exactly. When `t` is 0
-/// or 1 the value given at `t` stands for that end (the corner check then compares it with the
-/// corner).
+/// The curve on `[0, 1]` known by its value `at_t` at `t` and its ends `start` (at 0) and `end`
+/// (at 1): a [`SampledCurve`] through those points, which returns each of them exactly (its
+/// domain stays `[0, 1]` when `t` lies outside). When `t` is 0 or 1 the value given at `t`
+/// stands for that end (the corner check then compares it with the corner).
 fn through(
     start: &DVector<f64>,
     t: f64,
@@ -141,7 +141,7 @@ fn through(
     points.sort_by(|a, b| a.0.total_cmp(&b.0));
     let params = points.iter().map(|(s, _)| *s).collect();
     let columns: Vec<DVector<f64>> = points.iter().map(|(_, p)| (*p).clone()).collect();
-    SampledCurve::new(params, DMatrix::from_columns(&columns))
+    SampledCurve::new(params, DMatrix::from_columns(&columns))?.with_domain(0.0, 1.0)
 }
 
 #[cfg(test)]

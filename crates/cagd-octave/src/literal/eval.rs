@@ -174,30 +174,6 @@ fn finite<T: LiteralScalar>(
     }
 }
 
-/// Work done by the evaluation in progress: nesting of `eval` calls and the number of element
-/// results (and matrix-product terms) computed since the outermost call began. Bounds the
-/// time of one evaluation to `64 × max_elements` element operations, so that a short text
-/// (`A*A*A*…` of large matrices, long chains of large sums) cannot run for minutes.
-#[derive(Debug, Clone, Copy, Default)]
-pub(crate) struct Meter {
-    depth: usize,
-    work: u128,
-}
-
-impl Meter {
-    /// The work of the last (or current) outermost evaluation.
-    pub(crate) fn work(&self) -> u128 {
-        self.work
-    }
-}
-
-/// Meters never make two environments different.
-impl PartialEq for Meter {
-    fn eq(&self, _: &Self) -> bool {
-        true
-    }
-}
-
 /// How many element operations one evaluation may do, per allowed element.
 const WORK_PER_ELEMENT: u128 = 64;
 

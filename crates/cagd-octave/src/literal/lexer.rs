@@ -141,6 +141,24 @@ pub(crate) fn lex(text: &str, multiline: bool) -> Result<Vec<Token>, LiteralErro
                 line_start = i;
             }
             '%' | '#' => {
+                if let Some(end) = block_comment_end(&chars, i, line_start) {
+                    // `%{` … `%}` (or `#{` … `#}`) on lines of their own: a block comment,
+                    // possibly nested, as in Octave. Its lines count; its text does not.
+                    let Some((end, lines)) = end else {
+                        return Err(LiteralError::Syntax {
+                            at,
+                            expected:
+                                "`%}` (or `#}`) on a line of its own to close the block comment"
+                                    .into(),
+                            found: "end of input".into(),
+                        });
+                    };
+                    i = end;
+                    line += lines;
+                    line_start = i - (chars[..i].iter().rev().take_while(|&&c| c != '\n').count());
+                    space = true;
+                    continue;
+                }
                 // A comment runs to the end of the line; the newline itself stays a token.
                 while i < chars.len() && chars[i] != '\n' {
                     i += 1;
@@ -344,6 +362,71 @@ fn lex_number(chars: &[char], start: usize, at: Position) -> Result<(Tok, usize)
         }
     }
     Ok((Tok::Num(text), i))
+}
+
+/// The characters of line `line` of `chars` around `at`: whether the text from `line_start` to
+/// `at` and after the two characters at `at` to the end of the line is white space only.
+fn alone_on_line(chars: &[char], line_start: usize, at: usize, len: usize) -> bool {
+    let blank = |c: &char| c.is_whitespace() && *c != '\n';
+    chars[line_start..at].iter().all(blank)
+        && chars[at + len..]
+            .iter()
+            .take_while(|&&c| c != '\n')
+            .all(blank)
+}
+
+/// If a block comment opens at `at` (`%{` or `#{` alone on its line), where it ends: `Some(Some((i,
+/// lines)))` with `i` the index of the newline after the closing `%}`/`#}` line (or the end of
+/// the input) and `lines` the number of line breaks skipped; `Some(None)` if it never closes.
+/// Block comments nest, as in Octave.
+fn block_comment_end(
+    chars: &[char],
+    at: usize,
+    line_start: usize,
+) -> Option<Option<(usize, usize)>> {
+    let opens = |i: usize, ls: usize| {
+        matches!(chars.get(i), Some('%' | '#'))
+            && chars.get(i + 1) == Some(&'{')
+            && alone_on_line(chars, ls, i, 2)
+    };
+    let closes = |i: usize, ls: usize| {
+        matches!(chars.get(i), Some('%' | '#'))
+            && chars.get(i + 1) == Some(&'}')
+            && alone_on_line(chars, ls, i, 2)
+    };
+    if !opens(at, line_start) {
+        return None;
+    }
+    let mut depth = 0usize;
+    let mut lines = 0usize;
+    let mut ls = line_start;
+    let mut i = at;
+    loop {
+        // `i` is at the first non-blank character of a line (or the opening mark).
+        if opens(i, ls) {
+            depth += 1;
+        } else if closes(i, ls) {
+            depth -= 1;
+            if depth == 0 {
+                let end = chars[i..]
+                    .iter()
+                    .position(|&c| c == '\n')
+                    .map_or(chars.len(), |k| i + k);
+                return Some(Some((end, lines)));
+            }
+        }
+        match chars[i..].iter().position(|&c| c == '\n') {
+            Some(k) => {
+                i += k + 1;
+                ls = i;
+                lines += 1;
+                while i < chars.len() && chars[i] != '\n' && chars[i].is_whitespace() {
+                    i += 1;
+                }
+            }
+            None => return Some(None),
+        }
+    }
 }
 
 #[cfg(test)]

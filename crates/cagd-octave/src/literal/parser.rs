@@ -7,7 +7,7 @@
 //! and unary operators, which the parser limits.
 
 use super::lexer::{Tok, Token};
-use super::{Expr, LiteralError, Position};
+use super::{LiteralError, Position};
 
 /// A binary operator.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -519,4 +519,24 @@ fn chain(first: Expr, rest: Vec<(BinOp, Position, Expr)>) -> Expr {
         },
         at,
     }
+}
+
+/// A parsed expression: a matrix literal, a range, or an expression in bound variables.
+///
+/// ```
+/// use cagd_octave::literal::{Env, Expr};
+///
+/// let e = Expr::parse("[g00 g10; g01 g11]").unwrap();
+/// let mut env = Env::<f64>::new();
+/// for (name, x) in [("g00", 0.0), ("g10", 1.0), ("g01", 2.0), ("g11", 3.0)] {
+///     env.bind_scalar(name, x);
+/// }
+/// let m = e.eval(&mut env).unwrap();
+/// assert_eq!(m.shape(), (2, 2));
+/// assert_eq!(m[(1, 0)], 2.0);
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct Expr {
+    pub(crate) node: Node,
+    pub(crate) at: Position,
 }

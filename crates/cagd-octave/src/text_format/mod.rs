@@ -138,6 +138,16 @@ pub enum TextFormatError {
         /// The type name found.
         type_name: String,
     },
+    /// Structs and cells nested deeper than the depth limit
+    /// ([`cagd::limits::Limits::max_depth`]); the reader recurses once per level, so a
+    /// hostile file must not overflow the stack.
+    #[error("line {line}: structs and cells are nested deeper than {limit} levels")]
+    TooDeep {
+        /// Line of the `# name:` header of the value that went one level too deep.
+        line: usize,
+        /// The depth limit.
+        limit: usize,
+    },
     /// A token that should be a number is not one.
     #[error("line {line}: `{token}` is not a number")]
     NotANumber {

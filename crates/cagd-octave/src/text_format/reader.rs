@@ -16,6 +16,10 @@ struct Cursor<'a> {
     line: usize,
     /// The element limit: no array length may exceed it.
     max_elements: usize,
+    /// Structs and cells being read around the current value.
+    depth: usize,
+    /// The depth limit.
+    max_depth: usize,
 }
 
 impl<'a> Cursor<'a> {
@@ -25,6 +29,8 @@ impl<'a> Cursor<'a> {
             pos: 0,
             line: 1,
             max_elements: limits.max_elements,
+            depth: 0,
+            max_depth: limits.max_depth,
         }
     }
 
@@ -437,11 +443,20 @@ fn value(cur: &mut Cursor<'_>, name: &str, type_name: &str, type_line: usize) ->
 
 /// Reads `# name:`, `# type:` and the value.
 fn named(cur: &mut Cursor<'_>) -> Result<(String, Value)> {
-    let (_, name) = cur.header("name")?;
+    let (name_line, name) = cur.header("name")?;
     let name = name.to_string();
     let (type_line, type_name) = cur.header("type")?;
-    let v = value(cur, &name, type_name, type_line)?;
-    Ok((name, v))
+    // Each struct field and cell element is read by a recursive call: bound the depth.
+    if cur.depth >= cur.max_depth {
+        return Err(TextFormatError::TooDeep {
+            line: name_line,
+            limit: cur.max_depth,
+        });
+    }
+    cur.depth += 1;
+    let v = value(cur, &name, type_name, type_line);
+    cur.depth -= 1;
+    Ok((name, v?))
 }
 
 /// Parses a file written by Octave's `save -text` (or by [`write_text`](super::write_text)).

@@ -118,7 +118,8 @@ impl Value {
     }
 
     /// The numbers of a numeric value as an N-d array (at least 2-D, like Octave): a scalar is
-    /// 1×1, a range is expanded to a row. `None` for other types.
+    /// 1×1, logical values are 1 and 0 (as in Octave arithmetic), a range is expanded to a row.
+    /// `None` for other types.
     ///
     /// A range `base:increment:limit` has `floor((limit-base)/increment) + 1` elements
     /// `base + i*increment` (with a relative allowance of a few ULPs in the count, so that
@@ -135,6 +136,19 @@ impl Value {
     pub fn to_array_with(&self, limits: &cagd::limits::Limits) -> Option<ArrayD<f64>> {
         match self {
             Value::Scalar(x) => Some(ArrayD::from_elem(IxDyn(&[1, 1]), *x)),
+            // Logical values are numbers in Octave (`true + 1` is 2): 1 and 0.
+            Value::Bool(b) => Some(ArrayD::from_elem(IxDyn(&[1, 1]), f64::from(u8::from(*b)))),
+            Value::BoolMatrix(a) => {
+                let a = a.mapv(|b| f64::from(u8::from(b)));
+                Some(match a.ndim() {
+                    0 => a.into_shape_with_order(IxDyn(&[1, 1])).ok()?,
+                    1 => {
+                        let n = a.len();
+                        a.into_shape_with_order(IxDyn(&[1, n])).ok()?
+                    }
+                    _ => a,
+                })
+            }
             Value::Matrix(a) => Some(match a.ndim() {
                 0 => a.clone().into_shape_with_order(IxDyn(&[1, 1])).ok()?,
                 1 => a.clone().into_shape_with_order(IxDyn(&[1, a.len()])).ok()?,

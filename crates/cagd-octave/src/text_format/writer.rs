@@ -99,7 +99,16 @@ fn write_array<T: Copy>(
     }
 }
 
-fn write_value(out: &mut String, name: &str, path: &str, v: &Value) -> Result<()> {
+/// Structs and cells nested deeper than this are not written: the writer recurses once per level.
+const MAX_WRITE_DEPTH: usize = 256;
+
+fn write_value(out: &mut String, name: &str, path: &str, v: &Value, depth: usize) -> Result<()> {
+    if depth > MAX_WRITE_DEPTH {
+        return Err(TextFormatError::Unwritable {
+            name: path.into(),
+            message: format!("structs and cells nested deeper than {MAX_WRITE_DEPTH} levels"),
+        });
+    }
     let _ = writeln!(out, "# name: {name}");
     match v {
         Value::Scalar(x) => {
@@ -161,7 +170,7 @@ fn write_value(out: &mut String, name: &str, path: &str, v: &Value) -> Result<()
                         message: "not a valid field name".into(),
                     });
                 }
-                write_value(out, f, &fpath, fv)?;
+                write_value(out, f, &fpath, fv, depth + 1)?;
                 out.push_str("\n\n");
             }
             out.push_str("\n\n");
@@ -183,7 +192,13 @@ fn write_value(out: &mut String, name: &str, path: &str, v: &Value) -> Result<()
                 out.push('\n');
             }
             for (k, e) in c.view().reversed_axes().iter().enumerate() {
-                write_value(out, "<cell-element>", &format!("{path}{{{}}}", k + 1), e)?;
+                write_value(
+                    out,
+                    "<cell-element>",
+                    &format!("{path}{{{}}}", k + 1),
+                    e,
+                    depth + 1,
+                )?;
                 out.push_str("\n\n");
             }
             out.push_str("\n\n");
@@ -209,7 +224,7 @@ pub fn write_text(ws: &Workspace) -> Result<String> {
                 message: "not a valid Octave variable name".into(),
             });
         }
-        write_value(&mut out, name, name, v)?;
+        write_value(&mut out, name, name, v, 0)?;
         out.push_str("\n\n");
     }
     Ok(out)

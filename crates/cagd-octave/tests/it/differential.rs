@@ -3,9 +3,9 @@
 //! `cagd_octave::compat`, compared value by value.
 //!
 //! ```sh
-//! cargo test --test differential -- --nocapture                       # default: 1200 cases
-//! CAGD_DIFF_CASES=5000 CAGD_DIFF_SEED=7 cargo test --test differential -- --nocapture
-//! CAGD_DIFF_SEED=random cargo test --test differential -- --nocapture  # a fresh seed (printed)
+//! cargo test -p cagd-octave --test it differential -- --nocapture                       # default: 1200 cases
+//! CAGD_DIFF_CASES=5000 CAGD_DIFF_SEED=7 cargo test -p cagd-octave --test it differential -- --nocapture
+//! CAGD_DIFF_SEED=random cargo test -p cagd-octave --test it differential -- --nocapture  # a fresh seed (printed)
 //! ```
 //!
 //! The cases (random degrees, dimensions, sample counts, parameters, coordinate scales from

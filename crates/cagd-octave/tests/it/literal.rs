@@ -826,3 +826,32 @@ proptest! {
         }
     }
 }
+
+// ---------------------------------------------------------------------------------------
+// Block comments (Octave's `%{ … %}` and `#{ … #}`, on lines of their own, nesting)
+
+#[test]
+fn block_comments_are_comments_in_scripts() {
+    use cagd_octave::script::run;
+    let src = "a = 1;\n%{\na = 2;\n  #{\n  a = 3;\n  #}\na = 4;\n%}\nb = a + 10;\n";
+    let s = run::<f64>(src, Env::new()).unwrap();
+    assert_eq!(s.value("a").unwrap()[(0, 0)], 1.0);
+    assert_eq!(s.value("b").unwrap()[(0, 0)], 11.0);
+    // Not alone on its line: an ordinary line comment, so the next line runs.
+    let s = run::<f64>("a = 1; %{\na = 2;\n", Env::new()).unwrap();
+    assert_eq!(s.value("a").unwrap()[(0, 0)], 2.0);
+    // Line numbers after a block comment still point at the right line.
+    let err = run::<f64>("%{\nx\n%}\ny = [1 2; 3];\n", Env::new()).unwrap_err();
+    assert!(err.to_string().starts_with("line 4"), "{err}");
+    // Never closed: an error, not commented-out code that silently vanishes.
+    let err = run::<f64>("a = 1;\n%{\na = 2;\n", Env::new()).unwrap_err();
+    assert!(matches!(err, LiteralError::Syntax { .. }), "{err:?}");
+    assert!(err.to_string().contains("close the block comment"), "{err}");
+}
+
+#[test]
+fn block_comments_in_a_literal_argument() {
+    let m = parse_matrix::<f64>("[1 2\n%{\n 9 9\n%}\n3 4]").unwrap();
+    assert_eq!(m.shape(), (2, 2));
+    assert_eq!(m[(1, 0)], 3.0);
+}

@@ -4,6 +4,7 @@
 
 mod bug_catalogue;
 mod differential;
+mod hostile;
 mod literal;
 mod octave_compat;
 mod octave_format;

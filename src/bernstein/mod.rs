@@ -7,9 +7,11 @@
 //! with `B_i^n ≡ 0` for `i > n`. Everything here is generic over [`Scalar`], so the same code
 //! gives `f64` values and exact rational ones.
 //!
-//! - [`binomial`] is exact at any size ([`BigUint`]); [`binomial_f64`] is the fast path, exact
-//!   whenever the coefficient is below 2⁵³ (up to n = 56 for every k, and much further near the
-//!   ends of a row).
+//! - [`binomial`] is exact at any size ([`BigUint`](num_bigint::BigUint)); [`binomial_scalar`]
+//!   gives it in any scalar, exact for rationals and correctly rounded for `f64` (exact
+//!   whenever the coefficient is below 2⁵³: up to n = 56 for every k, and much further near
+//!   the ends of a row); [`falling_factorial`] and [`power`] are the other integer products of
+//!   the basis (`binomial.rs`).
 //! - [`bernstein_all`] evaluates a whole degree by the triangular recurrence of Izrek 2.6,
 //!   `B_i^n = (1 − t) B_i^{n−1} + t B_{i−1}^{n−1}`. For `t ∈ [0, 1]` every term is a
 //!   non-negative multiple of a non-negative number, so there is no cancellation and the values
@@ -17,117 +19,23 @@
 //!   algorithm is stable).
 //! - [`bernstein_derivative`] uses `d^r/dt^r B_i^n = n!/(n−r)! · Σ_j (−1)^(r−j) C(r, j)
 //!   B_{i−j}^{n−r}`, the basis form of the forward-difference formula of thesis §2.4.
-
-use std::any::Any;
+//! - [`elevate`], [`elevate_once`] and [`product`] compute with polynomials in Bernstein form:
+//!   degree elevation (thesis §2.3; [`BezierCurve::elevate`](crate::BezierCurve::elevate) and
+//!   the Bézier form of a Gordon surface use it) and products (`elevation.rs`).
+//!
+//! This module is the crate's one owner of binomials, falling factorials, powers and degree
+//! elevation.
 
 use nalgebra::DMatrix;
-use num_bigint::BigUint;
-use num_traits::{One, ToPrimitive, Zero};
 
+use crate::cost::{polynomial_bits, Cost};
 use crate::scalar::Scalar;
 
-/// The binomial coefficient `C(n, k) = n! / (k! (n − k)!)`, exactly; `0` when `k > n`
-/// (thesis Definicija 2.5).
-///
-/// Computed by the multiplicative formula `C(n, k) = Π_{i=1..k} (n − k + i) / i`, where every
-/// partial product is itself a binomial coefficient, so each division is exact.
-///
-/// ```
-/// use cagd::bernstein::binomial;
-/// use num_bigint::BigUint;
-/// assert_eq!(binomial(5, 2), BigUint::from(10u32));
-/// assert_eq!(binomial(3, 4), BigUint::from(0u32));
-/// // Far beyond what a double holds exactly: C(100, 50).
-/// assert_eq!(
-///     binomial(100, 50).to_string(),
-///     "100891344545564193334812497256"
-/// );
-/// ```
-pub fn binomial(n: usize, k: usize) -> BigUint {
-    if k > n {
-        return BigUint::zero();
-    }
-    let k = k.min(n - k);
-    let mut c = BigUint::one();
-    for i in 1..=k {
-        c *= BigUint::from(n - k + i);
-        c /= BigUint::from(i);
-    }
-    c
-}
+mod binomial;
+mod elevation;
 
-/// `C(n, k)` as the nearest `f64`; exact whenever the coefficient is below 2⁵³.
-///
-/// Uses 128-bit integers while the partial products fit (the coefficient is then computed
-/// exactly and rounded once) and falls back to the exact [`binomial`] beyond. Coefficients above
-/// `f64::MAX` (from about `n = 1030` on, in the middle of the row) give `f64::INFINITY`.
-///
-/// ```
-/// use cagd::bernstein::binomial_f64;
-/// assert_eq!(binomial_f64(4, 2), 6.0);
-/// assert_eq!(binomial_f64(56, 28), 7648690600760440.0); // exact: below 2^53
-/// assert_eq!(binomial_f64(2, 3), 0.0);
-/// ```
-pub fn binomial_f64(n: usize, k: usize) -> f64 {
-    if k > n {
-        return 0.0;
-    }
-    let k = k.min(n - k);
-    let mut c: u128 = 1;
-    for i in 1..=k {
-        match c.checked_mul((n - k + i) as u128) {
-            Some(p) => c = p / i as u128,
-            None => return binomial(n, k).to_f64().unwrap_or(f64::INFINITY),
-        }
-    }
-    c as f64
-}
-
-/// A non-negative integer held in a [`BigUint`], as a scalar: exact for rationals, correctly
-/// rounded for `f64`.
-pub(crate) fn scalar_from_biguint<T: Scalar>(value: &BigUint) -> T {
-    if let Some(small) = value.to_i64() {
-        return T::from_ratio(small, 1);
-    }
-    // For f64, one correctly rounded conversion beats Horner's rule with a rounding per digit.
-    if std::any::TypeId::of::<T>() == std::any::TypeId::of::<f64>() {
-        let boxed: Box<dyn Any> = Box::new(value.to_f64().unwrap_or(f64::INFINITY));
-        if let Ok(x) = boxed.downcast::<T>() {
-            return *x;
-        }
-    }
-    // Exact for rationals: Horner's rule in base 2^32.
-    let base = T::from_ratio(1 << 32, 1);
-    value
-        .to_u32_digits()
-        .iter()
-        .rev()
-        .fold(T::zero(), |acc, &digit| {
-            acc * base.clone() + T::from_ratio(i64::from(digit), 1)
-        })
-}
-
-/// `C(n, k)` as a scalar (exact for rationals, nearest double for `f64`).
-pub(crate) fn binomial_scalar<T: Scalar>(n: usize, k: usize) -> T {
-    if std::any::TypeId::of::<T>() == std::any::TypeId::of::<f64>() {
-        let boxed: Box<dyn Any> = Box::new(binomial_f64(n, k));
-        if let Ok(x) = boxed.downcast::<T>() {
-            return *x;
-        }
-    }
-    scalar_from_biguint(&binomial(n, k))
-}
-
-/// The falling factorial `n (n − 1) ⋯ (n − r + 1) = n!/(n − r)!` as a scalar (`1` for `r = 0`),
-/// the factor of the r-th derivative of a degree-n Bézier curve (thesis §2.4).
-pub(crate) fn falling_factorial<T: Scalar>(n: usize, r: usize) -> T {
-    (0..r.min(n + 1)).fold(T::one(), |acc, k| acc * T::from_usize(n - k))
-}
-
-/// `x^k` by repeated squaring.
-pub(crate) fn power<T: Scalar>(x: &T, k: usize) -> T {
-    num_traits::pow(x.clone(), k)
-}
+pub use binomial::{binomial, binomial_f64, binomial_scalar, falling_factorial, power};
+pub use elevation::{elevate, elevate_once, product};
 
 /// One Bernstein polynomial `B_i^n(t) = C(n, i) t^i (1 − t)^(n − i)`; `0` for `i > n`.
 ///
@@ -188,6 +96,10 @@ pub fn bernstein_all<T: Scalar>(n: usize, t: T) -> Vec<T> {
 /// assert_eq!(b, [0.125, 0.375, 0.375, 0.125]);
 /// ```
 pub fn bernstein_all_into<T: Scalar>(t: &T, out: &mut [T]) {
+    // Exact rationals: the same values from integer products, without the recurrence's gcds.
+    if crate::grid::exact::bernstein_row(t, out) {
+        return;
+    }
     // Low degrees get the loop with its length known at compile time (fully unrolled); the
     // arithmetic, and so every bit of the result, is the same.
     match out.len() {
@@ -229,6 +141,18 @@ pub(crate) fn recurrence<T: Scalar>(t: &T, out: &mut [T]) {
         }
         out[k] = carry;
     }
+}
+
+/// The cost of all Bernstein polynomials of degree `n` at one parameter of `param_bits` bits
+/// by the triangular recurrence ([`bernstein_all`]): `(n+1)²` operations on numbers of
+/// [`polynomial_bits`]`(n, param_bits, 0)` bits.
+///
+/// ```
+/// use cagd::cost::Cost;
+/// assert_eq!(cagd::bernstein::basis_cost(3, 2), Cost::new(16, 9));
+/// ```
+pub fn basis_cost(n: usize, param_bits: u128) -> Cost {
+    Cost::new((n as u128 + 1).pow(2), polynomial_bits(n, param_bits, 0))
 }
 
 /// The `r`-th derivative of `B_i^n` at `t`.
@@ -365,36 +289,11 @@ mod tests {
     }
 
     #[test]
-    fn binomial_rows_sum_to_powers_of_two() {
-        for n in 0..70usize {
-            let sum = (0..=n).fold(BigUint::zero(), |acc, k| acc + binomial(n, k));
-            assert_eq!(sum, BigUint::one() << n);
-        }
-    }
-
-    #[test]
-    fn binomial_f64_is_exact_below_2_pow_53() {
-        for n in 0..=200usize {
-            for k in 0..=n {
-                let exact = binomial(n, k);
-                if exact < (BigUint::one() << 53) {
-                    assert_eq!(binomial_f64(n, k), exact.to_f64().unwrap(), "C({n},{k})");
-                }
-            }
-        }
-        // Rounded once, correctly, beyond: C(200, 100) ≈ 9.0548514656103281e58.
-        let big = binomial(200, 100).to_f64().unwrap();
-        assert_eq!(binomial_f64(200, 100), big);
-        assert!(binomial_f64(2000, 1000).is_infinite());
-    }
-
-    #[test]
-    fn scalar_conversion_of_large_binomials_is_exact_for_rationals() {
-        let c = binomial(100, 50);
-        let r: BigRational = scalar_from_biguint(&c);
-        assert_eq!(r.to_string(), "100891344545564193334812497256");
-        let f: f64 = scalar_from_biguint(&c);
-        assert_eq!(f, c.to_f64().unwrap());
+    fn basis_cost_counts_the_recurrence() {
+        // The recurrence does k multiplications and additions at level k: below (n+1)².
+        assert_eq!(basis_cost(0, 5).ops(), 1);
+        assert_eq!(basis_cost(10, 0), Cost::new(121, 10));
+        assert_eq!(basis_cost(10, 7).bits(), 80);
     }
 
     #[test]
@@ -428,12 +327,5 @@ mod tests {
         }
         // Fourth derivative of 6 t^2 (1-t)^2 = 6 t^4 + … is 144.
         assert_eq!(bernstein_derivative(2, 4, 4, q(5, 9)), q(144, 1));
-    }
-
-    #[test]
-    fn falling_factorial_values() {
-        assert_eq!(falling_factorial::<f64>(5, 0), 1.0);
-        assert_eq!(falling_factorial::<f64>(5, 2), 20.0);
-        assert_eq!(falling_factorial::<f64>(5, 5), 120.0);
     }
 }

@@ -1,155 +1,22 @@
-//! Lagrange interpolation in barycentric form (Berrut–Trefethen), the blending functions of
-//! Gordon surfaces (thesis §4.5, appendix D).
-//!
-//! The thesis defines (after (4.9))
-//!
-//! ```text
-//! L_i^m(t) = Π_{j≠i} (t − t_j) / Π_{j≠i} (t_i − t_j),   i = 0..m,
-//! ```
-//!
-//! and evaluates it as that product (appendix D, `Lagrange.m`; as printed the product starts at
-//! zero, so the function always returns 0 — the fixed Octave reference starts it at one). This
-//! module offers that product form ([`basis_product`], for comparison with the Octave code) and
-//! the barycentric form ([`Lagrange`]), which evaluates all `m+1` basis functions in `O(m)`
-//! operations after an `O(m²)` set-up and is numerically stable (J.-P. Berrut,
-//! L. N. Trefethen, *Barycentric Lagrange interpolation*, SIAM Review 46 (2004)):
+//! The barycentric form of the Lagrange basis (Berrut–Trefethen), which evaluates all `m+1`
+//! basis functions in `O(m)` operations after an `O(m²)` set-up and is numerically stable
+//! (J.-P. Berrut, L. N. Trefethen, *Barycentric Lagrange interpolation*, SIAM Review 46
+//! (2004)):
 //!
 //! ```text
 //! w_i = 1 / Π_{j≠i} (t_i − t_j),       L_i(t) = ℓ(t) · w_i / (t − t_i),   ℓ(t) = Π_j (t − t_j),
 //! ```
 //!
-//! (the first barycentric form; see [`Lagrange::basis`] for why not the second)
-//!
-//! with `L_i(t_k) = δ_ik` exactly at the nodes. Everything is generic over the [`Scalar`], so
-//! the basis is exact in rationals.
-//!
-//! Interpolation at equispaced nodes is badly conditioned for many nodes (the Lebesgue
-//! constant grows like `2^m / (e m log m)`); [`chebyshev_nodes`] places nodes at the
-//! Chebyshev–Lobatto points, where it grows like `(2/π) log m`. [`Lagrange::lebesgue_constant`]
-//! estimates it.
+//! (the first barycentric form; see [`Lagrange::basis`] for why not the second) with
+//! `L_i(t_k) = δ_ik` exactly at the nodes.
 
 use nalgebra::{DMatrix, DVector};
 
+use super::check_nodes;
+use crate::cost::{polynomial_bits, Cost};
 use crate::error::{Error, Result};
 use crate::param::Curve;
 use crate::scalar::Scalar;
-
-/// Checks interpolation nodes: at least `min`, finite, strictly increasing.
-///
-/// # Errors
-/// [`Error::TooFewPoints`], [`Error::NonFinite`], [`Error::DuplicateNodes`] (two equal
-/// neighbours), [`Error::UnsortedNodes`] (a decrease).
-pub fn check_nodes<T: Scalar>(what: &'static str, nodes: &[T], min: usize) -> Result<()> {
-    if nodes.len() < min {
-        return Err(Error::TooFewPoints {
-            what,
-            min,
-            found: nodes.len(),
-        });
-    }
-    crate::error::check_finite(what, nodes.iter())?;
-    for (k, pair) in nodes.windows(2).enumerate() {
-        if pair[0] == pair[1] {
-            return Err(Error::DuplicateNodes {
-                what,
-                first: k,
-                second: k + 1,
-                value: pair[0].to_f64(),
-            });
-        }
-        if pair[0] > pair[1] {
-            return Err(Error::UnsortedNodes {
-                what,
-                index: k,
-                value: pair[0].to_f64(),
-                next: pair[1].to_f64(),
-            });
-        }
-    }
-    Ok(())
-}
-
-/// `L_i(t)` as the thesis's product (appendix D, `Lagrange.m` with the product started at one):
-/// `v = 1; for j ≠ i: v = (t − t_j)/(t_i − t_j) · v`, in that order, so `f64` values agree
-/// with the Octave reference bit for bit. `i` counts from 0 (the Octave code from 1). Nodes are
-/// not checked; `i` must be a valid index.
-///
-/// ```
-/// use cagd::lagrange::basis_product;
-/// let x = [0.0, 0.5, 1.0];
-/// assert_eq!(basis_product(&x, 1, &0.25), 0.75); // 4t(1 − t)
-/// ```
-pub fn basis_product<T: Scalar>(nodes: &[T], i: usize, t: &T) -> T {
-    let mut v = T::one();
-    for (j, xj) in nodes.iter().enumerate() {
-        if j != i {
-            v = (t.clone() - xj.clone()) / (nodes[i].clone() - xj.clone()) * v;
-        }
-    }
-    v
-}
-
-/// The `count` Chebyshev–Lobatto points on `[0, 1]`,
-/// `t_k = (1 − cos(kπ/(count−1)))/2`, `k = 0..count` (the extrema of the Chebyshev polynomial
-/// `T_{count−1}` mapped to `[0, 1]`; they include both ends, so a Gordon network keeps its
-/// boundary curves). Computed as `(1 + sin(π(2k − M)/(2M)))/2`, `M = count − 1`, so the ends
-/// are exactly 0 and 1 and the middle of an odd count exactly 1/2. `count = 1` gives `[0.5]`.
-///
-/// ```
-/// let t = cagd::lagrange::chebyshev_nodes(5);
-/// assert_eq!((t[0], t[2], t[4]), (0.0, 0.5, 1.0));
-/// assert!((t[1] - (1.0 - 0.5f64.sqrt()) / 2.0).abs() < 1e-16);
-/// ```
-pub fn chebyshev_nodes(count: usize) -> Vec<f64> {
-    match count {
-        0 => Vec::new(),
-        1 => vec![0.5],
-        _ => {
-            let m = (count - 1) as f64;
-            (0..count)
-                .map(|k| {
-                    let s = (std::f64::consts::PI * (2.0 * k as f64 - m) / (2.0 * m)).sin();
-                    (1.0 + s) / 2.0
-                })
-                .collect()
-        }
-    }
-}
-
-/// Where to put the nodes of an interpolation (or the curves of a Gordon network).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum NodePlacement {
-    /// `t_k = k/M`, `M = count − 1` (exact in rationals); what the thesis uses
-    /// (`x = [0 0.5 1]`).
-    Uniform,
-    /// The Chebyshev–Lobatto points of [`chebyshev_nodes`] (as the nearest doubles).
-    Chebyshev,
-}
-
-impl NodePlacement {
-    /// `count` nodes on `[0, 1]`, increasing, with both ends included (for `count ≥ 2`).
-    ///
-    /// ```
-    /// use cagd::lagrange::NodePlacement;
-    /// assert_eq!(NodePlacement::Uniform.nodes::<f64>(3), vec![0.0, 0.5, 1.0]);
-    /// assert_eq!(NodePlacement::Chebyshev.nodes::<f64>(3), vec![0.0, 0.5, 1.0]);
-    /// ```
-    pub fn nodes<T: Scalar>(self, count: usize) -> Vec<T> {
-        match self {
-            NodePlacement::Uniform => match count {
-                0 => Vec::new(),
-                1 => vec![T::from_ratio(1, 2)],
-                _ => (0..count)
-                    .map(|k| T::from_ratio(k as i64, (count - 1) as i64))
-                    .collect(),
-            },
-            NodePlacement::Chebyshev => chebyshev_nodes(count)
-                .into_iter()
-                .map(|t| T::from_f64(t).unwrap_or_else(T::zero))
-                .collect(),
-        }
-    }
-}
 
 /// An estimate of the Lebesgue constant `Λ = max_t Σ_i |L_i(t)|` of a set of nodes: the
 /// factor by which interpolation can amplify errors in the data.
@@ -200,6 +67,64 @@ impl<T: Scalar> Lagrange<T> {
             })
             .collect();
         Ok(Lagrange { nodes, weights })
+    }
+
+    /// The cost of the set-up ([`new`](Self::new), the weights) for `count = m + 1` nodes:
+    /// `(m+1)²` operations on numbers of [`polynomial_bits`]`(m, node_bits, 0)` bits,
+    /// `node_bits` the size of the nodes. Known before the set-up, so that a caller can refuse
+    /// work it cannot afford before doing any (exact weights of a thousand nodes take minutes).
+    ///
+    /// ```
+    /// use cagd::lagrange::Lagrange;
+    /// use cagd::cost::Cost;
+    /// assert_eq!(Lagrange::<f64>::weights_cost(3, 3), Cost::new(9, 8));
+    /// ```
+    pub fn weights_cost(count: usize, node_bits: u128) -> Cost {
+        let m1 = count as u128;
+        Cost::new(
+            m1.saturating_mul(m1),
+            polynomial_bits(count.saturating_sub(1), node_bits, 0),
+        )
+    }
+
+    /// The cost of the basis at one parameter of `param_bits` bits ([`basis`](Self::basis)):
+    /// `4(m+1)` operations, on numbers of `m` factors `(t − t_j)`
+    /// ([`polynomial_bits`]`(m, param_bits + node_bits, 0)`).
+    ///
+    /// ```
+    /// use cagd::lagrange::Lagrange;
+    /// use cagd::cost::Cost;
+    /// assert_eq!(Lagrange::<f64>::basis_cost(3, 2, 3), Cost::new(12, 12));
+    /// ```
+    pub fn basis_cost(count: usize, param_bits: u128, node_bits: u128) -> Cost {
+        Self::interpolation_cost(count, 0, param_bits, node_bits, 0)
+    }
+
+    /// The cost of the interpolant of `d`-dimensional values at one parameter
+    /// ([`interpolate`](Self::interpolate)): the basis and its combination with the values,
+    /// `(4 + 2d)(m+1)` operations, on numbers of
+    /// [`polynomial_bits`]`(m, param_bits + node_bits, value_bits)` bits.
+    ///
+    /// ```
+    /// use cagd::lagrange::Lagrange;
+    /// use cagd::cost::Cost;
+    /// assert_eq!(Lagrange::<f64>::interpolation_cost(3, 2, 2, 3, 10), Cost::new(24, 22));
+    /// ```
+    pub fn interpolation_cost(
+        count: usize,
+        d: usize,
+        param_bits: u128,
+        node_bits: u128,
+        value_bits: u128,
+    ) -> Cost {
+        Cost::new(
+            (4 + 2 * d as u128).saturating_mul(count as u128),
+            polynomial_bits(
+                count.saturating_sub(1),
+                param_bits.saturating_add(node_bits),
+                value_bits,
+            ),
+        )
     }
 
     /// The nodes.
@@ -385,6 +310,12 @@ impl<T: Scalar> Curve<T> for LagrangeInterpolant<T> {
         self.values.nrows()
     }
 
+    /// From the first to the last node (the polynomial continues outside).
+    fn domain(&self) -> (T, T) {
+        let nodes = self.basis.nodes();
+        (nodes[0].clone(), nodes[nodes.len() - 1].clone())
+    }
+
     fn eval(&self, t: T) -> DVector<T> {
         self.basis.combine(&self.values, &self.basis.basis(&t))
     }
@@ -415,5 +346,24 @@ impl<T: Scalar> Curve<T> for LagrangeInterpolant<T> {
             }
         }
         Some(num.map(|v| v / den.clone()))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn costs_of_the_set_up_the_basis_and_the_interpolant() {
+        assert_eq!(Lagrange::<f64>::weights_cost(5, 0), Cost::new(25, 4));
+        assert_eq!(Lagrange::<f64>::basis_cost(5, 3, 2), Cost::new(20, 4 * 6));
+        assert_eq!(
+            Lagrange::<f64>::interpolation_cost(5, 0, 3, 2, 0),
+            Lagrange::<f64>::basis_cost(5, 3, 2)
+        );
+        assert_eq!(
+            Lagrange::<f64>::interpolation_cost(5, 3, 3, 2, 9),
+            Cost::new(50, 24 + 9)
+        );
     }
 }

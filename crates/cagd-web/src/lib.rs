@@ -1,0 +1,51 @@
+//! The web page's WebAssembly (`web/`, built by `bash web/build.sh`).
+//!
+//! Two kinds of export, both computing with the same library code as the `cagd` program:
+//! - [`run`]: a whole command line through [`cagd_cli::run`], answering what the program
+//!   would print and the files it would write (pictures as SVG), staged in memory;
+//! - the interactive views' constructions ([`bezier_view`], [`coons_view`], [`bspline_view`],
+//!   [`nurbs_view`]): small typed calls into the core, cheap enough to repeat on every frame of
+//!   a drag.
+//!
+//! Everything is plain Rust that also builds natively (`cargo test -p cagd-web` checks the
+//! answers); `#[wasm_bindgen]` turns the functions into JavaScript exports when the target is
+//! `wasm32-unknown-unknown`. Answers are JSON text (or `Float64Array`s for grids), errors the
+//! command line's one-line message `cagd: error: ARG: PROBLEM; expected FORM`.
+
+mod command;
+mod views;
+
+pub use command::{file_bytes, run};
+pub use views::{bezier_view, bspline_view, coons_view, nurbs_view};
+
+/// Installs the panic hook: a fault is reported to the page (`globalThis.cagdPanic`) as the
+/// program reports it, `cagd: internal error: …; this is a bug in cagd`, before the
+/// WebAssembly traps.
+#[cfg(target_arch = "wasm32")]
+#[wasm_bindgen::prelude::wasm_bindgen(start)]
+pub fn start() {
+    use wasm_bindgen::prelude::wasm_bindgen;
+
+    #[wasm_bindgen]
+    extern "C" {
+        #[wasm_bindgen(js_namespace = globalThis, js_name = cagdPanic)]
+        fn report_panic(message: &str);
+    }
+
+    std::panic::set_hook(Box::new(|info| {
+        let payload = info
+            .payload()
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| info.payload().downcast_ref::<String>().cloned())
+            .unwrap_or_else(|| "unexpected fault".to_string());
+        let place = info
+            .location()
+            .map(|l| format!(" ({}:{})", l.file(), l.line()))
+            .unwrap_or_default();
+        let message = payload.split_whitespace().collect::<Vec<_>>().join(" ");
+        report_panic(&format!(
+            "cagd: internal error: {message}{place}; this is a bug in cagd"
+        ));
+    }));
+}

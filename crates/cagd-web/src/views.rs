@@ -1,0 +1,425 @@
+//! The interactive views' constructions: what the page redraws on every frame of a drag.
+//!
+//! Points come as flat `f64` slices, one point after the other (the storage of a d×(n+1)
+//! matrix whose columns are the points, as the thesis's `kontrolneT`); answers are JSON text
+//! with points in the same layout, or, for the Coons grids, one `Float64Array`. Inputs are
+//! checked as the command line checks them (same limits, same one-line messages), so a view
+//! never panics on what a page can send.
+
+use cagd::bezier::BezierCurve;
+use cagd::bspline::{basis_all, BSplineCurve, KnotVector};
+use cagd::coons::CoonsPatch;
+use cagd::limits::Limits;
+use cagd::nurbs::NurbsCurve;
+use cagd_cli::{CliError, ErrorKind};
+use nalgebra::DMatrix;
+use serde_json::{json, Value};
+use wasm_bindgen::prelude::wasm_bindgen;
+
+/// Most samples of a view's curve or grid side (a view's picture, not a computation).
+const MAX_VIEW_SAMPLES: usize = 2000;
+
+fn error_json(e: &CliError) -> String {
+    json!({ "error": format!("cagd: error: {e}") }).to_string()
+}
+
+fn shape(argument: &str, problem: String, expected: &str) -> CliError {
+    CliError::new(argument, problem, expected, ErrorKind::Shape)
+}
+
+/// `flat` as a `dim × k` matrix of points (columns).
+fn points(argument: &str, flat: &[f64], dim: usize) -> Result<DMatrix<f64>, CliError> {
+    if dim == 0 || flat.is_empty() || flat.len() % dim != 0 {
+        return Err(shape(
+            argument,
+            format!(
+                "{} numbers do not make points of {dim} coordinates",
+                flat.len()
+            ),
+            "control points given coordinate by coordinate, one point after the other",
+        ));
+    }
+    if let Some(i) = flat.iter().position(|x| !x.is_finite()) {
+        return Err(shape(
+            argument,
+            format!("coordinate {} is not a finite number", i + 1),
+            "finite numbers",
+        ));
+    }
+    Ok(DMatrix::from_column_slice(dim, flat.len() / dim, flat))
+}
+
+fn sample_count(samples: usize) -> Result<usize, CliError> {
+    if (2..=MAX_VIEW_SAMPLES).contains(&samples) {
+        Ok(samples)
+    } else {
+        Err(shape(
+            "--n",
+            format!("{samples} samples"),
+            "between 2 and 2000 samples for a view",
+        ))
+    }
+}
+
+fn flat(m: &DMatrix<f64>) -> Value {
+    json!(m.as_slice())
+}
+
+fn lib(argument: &str, expected: &str) -> impl Fn(cagd::Error) -> CliError {
+    let (argument, expected) = (argument.to_string(), expected.to_string());
+    move |e| CliError::library(argument.as_str(), e, &expected)
+}
+
+fn check_degree(degree: usize) -> Result<(), CliError> {
+    Limits::default()
+        .check_degree("degree", degree)
+        .map_err(lib(
+            "CONTROL",
+            "a lower degree (fewer control points), or a higher --max-degree",
+        ))
+}
+
+/// The Bézier curve of the `dim`-dimensional control points `control` (thesis algorithm 1):
+/// `samples` points of the curve, the whole de Casteljau scheme at `t` (`levels[r]` holds
+/// `b_0^r(t) … b_{n−r}^r(t)`), the point `b_0^n(t)`, the control points of the two halves of
+/// the subdivision at `t` (`left`, `right`) and of the degree-elevated curve (`elevated`).
+///
+/// ```
+/// let v = cagd_web::bezier_view(vec![0., 0., 0., 2., 8., 2., 4., 0.], 2, 0.5, 3);
+/// let v: serde_json::Value = serde_json::from_str(&v).unwrap();
+/// assert_eq!(v["point"], serde_json::json!([3.5, 1.5]));
+/// assert_eq!(v["levels"].as_array().unwrap().len(), 4);
+/// ```
+#[wasm_bindgen]
+pub fn bezier_view(control: Vec<f64>, dim: usize, t: f64, samples: usize) -> String {
+    let answer = || -> Result<Value, CliError> {
+        let b = points("CONTROL", &control, dim)?;
+        check_degree(b.ncols() - 1)?;
+        let n = sample_count(samples)?;
+        if !(0.0..=1.0).contains(&t) {
+            return Err(shape("--t", format!("t = {t}"), "a parameter in [0, 1]"));
+        }
+        let curve = BezierCurve::new(b).map_err(lib("CONTROL", "control points"))?;
+        let ts = cagd::linspace(0.0, 1.0, n);
+        let sampled = curve
+            .eval_many(&ts)
+            .map_err(lib("CONTROL", "control points"))?;
+        let scheme = curve.scheme(t);
+        let levels: Vec<Value> = scheme.levels().iter().map(flat).collect();
+        let (left, right) = (scheme.left_control(), scheme.right_control());
+        Ok(json!({
+            "curve": flat(&sampled),
+            "levels": levels,
+            "point": scheme.point_on_curve().as_slice(),
+            "left": flat(&left),
+            "right": flat(&right),
+            "elevated": flat(curve.elevate().control()),
+        }))
+    };
+    answer().map_or_else(|e| error_json(&e), |v| v.to_string())
+}
+
+/// The bilinearly blended Coons patch (thesis 4.1) of four cubic (or any degree) Bézier
+/// boundaries, 3-D control points flat: `c1 = x(·,0)`, `c2 = x(·,1)`, `d1 = x(0,·)`,
+/// `d2 = x(1,·)`, on the `n × n` grid of `linspace(0,1,n)²`.
+///
+/// The answer is the grid `x` (`n·n·3` numbers, `(a·n + b)·3 + c` for coordinate `c` at
+/// `(u_a, v_b)`), followed, if `parts`, by the grids of `r_c`, `r_d` and `r_cd` (4.1–4.3).
+///
+/// # Errors
+/// The command line's one-line message: boundaries whose corners differ, a grid above the
+/// limit.
+#[wasm_bindgen]
+pub fn coons_view(
+    c1: Vec<f64>,
+    c2: Vec<f64>,
+    d1: Vec<f64>,
+    d2: Vec<f64>,
+    n: usize,
+    parts: bool,
+) -> Result<Vec<f64>, String> {
+    let answer = || -> Result<Vec<f64>, CliError> {
+        let curve = |argument: &str, flat: &[f64]| -> Result<BezierCurve<f64>, CliError> {
+            let b = points(argument, flat, 3)?;
+            check_degree(b.ncols() - 1)?;
+            BezierCurve::new(b).map_err(lib(argument, "Bézier control points"))
+        };
+        let (c1, c2) = (curve("--c1", &c1)?, curve("--c2", &c2)?);
+        let (d1, d2) = (curve("--d1", &d1)?, curve("--d2", &d2)?);
+        let n = sample_count(n)?;
+        Limits::default()
+            .check_grid("surface grid", n, n)
+            .map_err(lib("--n", "a smaller grid"))?;
+        let patch = CoonsPatch::new(c1, c2, d1, d2).map_err(lib(
+            "--c1/--c2/--d1/--d2",
+            "boundary curves meeting at the four corners",
+        ))?;
+        let us = cagd::linspace(0.0, 1.0, n);
+        let len = n * n * 3;
+        let mut out = vec![0.0; if parts { 4 * len } else { len }];
+        patch
+            .eval_grid_into(&us, &us, &mut out[..len])
+            .map_err(lib("--n", "a grid"))?;
+        if parts {
+            for (a, u) in us.iter().enumerate() {
+                for (b, v) in us.iter().enumerate() {
+                    let p = patch.eval_parts(*u, *v);
+                    for (k, part) in [&p.rc, &p.rd, &p.rcd].into_iter().enumerate() {
+                        let at = (k + 1) * len + (a * n + b) * 3;
+                        out[at..at + 3].copy_from_slice(part.as_slice());
+                    }
+                }
+            }
+        }
+        Ok(out)
+    };
+    answer().map_err(|e| format!("cagd: error: {e}"))
+}
+
+/// The knot vector given, or the clamped uniform one when `knots` is empty.
+fn knot_vector(knots: &[f64], degree: usize, count: usize) -> Result<Vec<f64>, CliError> {
+    let expected = "n+p+2 non-decreasing knots for n+1 control points of degree p";
+    let k = if knots.is_empty() {
+        KnotVector::clamped_uniform(degree, count)
+    } else {
+        KnotVector::new(knots.to_vec())
+    }
+    .map_err(lib("--knots", expected))?;
+    Ok(k.as_slice().to_vec())
+}
+
+/// Samples of a B-spline's domain, and the basis functions there, row `i` for `N_{i,p}`.
+fn sampled_basis(
+    domain: (f64, f64),
+    n: usize,
+    basis: impl Fn(&f64) -> cagd::Result<Vec<f64>>,
+    count: usize,
+) -> Result<(Vec<f64>, Vec<Vec<f64>>), CliError> {
+    let ts = cagd::linspace(domain.0, domain.1, n);
+    let mut rows = vec![Vec::with_capacity(n); count];
+    for t in &ts {
+        let values = basis(t).map_err(lib("--t", "parameters in the domain"))?;
+        for (row, v) in rows.iter_mut().zip(values) {
+            row.push(v);
+        }
+    }
+    Ok((ts, rows))
+}
+
+/// A B-spline curve of degree `degree` (de Boor; the CAD notes): `samples` parameters over its
+/// domain, the curve there and the basis functions `N_{i,p}` (row `i`), with the knot vector
+/// used (`knots` empty means clamped uniform on [0, 1]).
+///
+/// ```
+/// let v = cagd_web::bspline_view(vec![0., 0., 1., 2., 3., 2., 4., 0.], 2, 2, vec![], 5);
+/// let v: serde_json::Value = serde_json::from_str(&v).unwrap();
+/// assert_eq!(v["knots"], serde_json::json!([0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0]));
+/// assert_eq!(v["basis"].as_array().unwrap().len(), 4);
+/// ```
+#[wasm_bindgen]
+pub fn bspline_view(
+    control: Vec<f64>,
+    dim: usize,
+    degree: usize,
+    knots: Vec<f64>,
+    samples: usize,
+) -> String {
+    let answer = || -> Result<Value, CliError> {
+        let b = points("CONTROL", &control, dim)?;
+        check_degree(degree)?;
+        let n = sample_count(samples)?;
+        let count = b.ncols();
+        let knots = knot_vector(&knots, degree, count)?;
+        let curve = BSplineCurve::new(degree, knots.clone(), b).map_err(lib(
+            "--knots",
+            "n+p+2 non-decreasing knots for n+1 control points of degree p",
+        ))?;
+        let (ts, basis) = sampled_basis(
+            curve.domain(),
+            n,
+            |t| basis_all(degree, count, &knots, t),
+            count,
+        )?;
+        let sampled = curve
+            .eval_many(&ts)
+            .map_err(lib("--t", "parameters in the domain"))?;
+        Ok(json!({
+            "t": ts,
+            "curve": flat(&sampled),
+            "basis": basis,
+            "knots": knots,
+            "domain": [curve.domain().0, curve.domain().1],
+        }))
+    };
+    answer().map_or_else(|e| error_json(&e), |v| v.to_string())
+}
+
+/// A NURBS curve (the CAD notes): as [`bspline_view`], with one positive weight per control
+/// point, and the rational basis functions `R_{i,p}` (row `i`).
+///
+/// ```
+/// let w = std::f64::consts::FRAC_1_SQRT_2;
+/// let v = cagd_web::nurbs_view(vec![1., 0., 1., 1., 0., 1.], 2, vec![1., w, 1.], 2, vec![], 9);
+/// let v: serde_json::Value = serde_json::from_str(&v).unwrap();
+/// let xy: Vec<f64> = serde_json::from_value(v["curve"].clone()).unwrap();
+/// assert!(xy.chunks(2).all(|p| (p[0].hypot(p[1]) - 1.0).abs() < 1e-15)); // a quarter circle
+/// ```
+#[wasm_bindgen]
+pub fn nurbs_view(
+    control: Vec<f64>,
+    dim: usize,
+    weights: Vec<f64>,
+    degree: usize,
+    knots: Vec<f64>,
+    samples: usize,
+) -> String {
+    let answer = || -> Result<Value, CliError> {
+        let b = points("CONTROL", &control, dim)?;
+        check_degree(degree)?;
+        let n = sample_count(samples)?;
+        let count = b.ncols();
+        let knots = knot_vector(&knots, degree, count)?;
+        let curve = NurbsCurve::new(degree, knots.clone(), b, weights).map_err(lib(
+            "--weights",
+            "one positive weight per control point, and n+p+2 knots",
+        ))?;
+        let (ts, basis) = sampled_basis(curve.domain(), n, |t| curve.basis(t), count)?;
+        let mut sampled = vec![0.0; ts.len() * dim];
+        curve
+            .try_eval_many_into(&ts, &mut sampled)
+            .map_err(lib("--t", "parameters in the domain"))?;
+        Ok(json!({
+            "t": ts,
+            "curve": sampled,
+            "basis": basis,
+            "knots": knots,
+            "domain": [curve.domain().0, curve.domain().1],
+        }))
+    };
+    answer().map_or_else(|e| error_json(&e), |v| v.to_string())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse(s: &str) -> Value {
+        serde_json::from_str(s).unwrap()
+    }
+
+    #[test]
+    fn bezier_scheme_halves_and_elevation_of_primer_2_4() {
+        let control = vec![0., 0., 0., 0., 2., 2., 8., 2., 0., 4., 0., 0.];
+        let v = parse(&bezier_view(control, 3, 0.5, 11));
+        assert_eq!(v["point"], json!([3.5, 1.5, 0.75]));
+        assert_eq!(v["levels"][1], json!([0., 1., 1., 4., 2., 1., 6., 1., 0.]));
+        // The halves share the point at t; the elevated curve keeps the end points.
+        assert_eq!(
+            v["left"].as_array().unwrap()[9..],
+            v["point"].as_array().unwrap()[..]
+        );
+        assert_eq!(
+            v["right"].as_array().unwrap()[..3],
+            v["point"].as_array().unwrap()[..]
+        );
+        let e = v["elevated"].as_array().unwrap();
+        assert_eq!(e.len(), 15);
+        assert_eq!(e[3..6], [json!(0.0), json!(1.5), json!(1.5)]);
+        assert_eq!(v["curve"].as_array().unwrap().len(), 33);
+    }
+
+    #[test]
+    fn bad_view_input_is_a_one_line_message() {
+        let v = parse(&bezier_view(vec![0., 1., 2.], 2, 0.5, 10));
+        let e = v["error"].as_str().unwrap();
+        assert!(e.starts_with("cagd: error: CONTROL: 3 numbers"), "{e}");
+        let v = parse(&bezier_view(vec![0., 1., 2., 3.], 2, 1.5, 10));
+        assert!(v["error"]
+            .as_str()
+            .unwrap()
+            .starts_with("cagd: error: --t: "));
+        let v = parse(&bspline_view(
+            vec![0., 1., 2., 3.],
+            2,
+            1,
+            vec![0., 1., 0.5, 1.],
+            10,
+        ));
+        assert!(v["error"]
+            .as_str()
+            .unwrap()
+            .starts_with("cagd: error: --knots: "));
+        let v = parse(&nurbs_view(
+            vec![0., 1., 2., 3.],
+            2,
+            vec![1., -1.],
+            1,
+            vec![],
+            10,
+        ));
+        assert!(v["error"]
+            .as_str()
+            .unwrap()
+            .starts_with("cagd: error: --weights: "));
+    }
+
+    #[test]
+    fn coons_parts_add_up_at_primer_4_3_corners() {
+        // Straight boundaries of the unit square with one lifted corner: x = r_c + r_d − r_cd.
+        let line = |p: [f64; 3], q: [f64; 3]| {
+            let mut v = Vec::new();
+            for k in 0..4 {
+                let s = k as f64 / 3.0;
+                v.extend((0..3).map(|c| p[c] + s * (q[c] - p[c])));
+            }
+            v
+        };
+        let (p1, p2, p3, p4) = ([0., 0., 0.], [1., 0., 0.], [0., 1., 0.], [1., 1., 1.]);
+        let n = 5;
+        let g = coons_view(
+            line(p1, p2),
+            line(p3, p4),
+            line(p1, p3),
+            line(p2, p4),
+            n,
+            true,
+        )
+        .unwrap();
+        let len = n * n * 3;
+        assert_eq!(g.len(), 4 * len);
+        for i in 0..len {
+            let sum = g[len + i] + g[2 * len + i] - g[3 * len + i];
+            assert!((g[i] - sum).abs() < 1e-14);
+        }
+        // x(1, 1) = P4.
+        assert_eq!(g[len - 3..len], [1., 1., 1.]);
+        let bad = coons_view(
+            line(p1, p2),
+            line(p3, p4),
+            line(p1, p4),
+            line(p2, p4),
+            n,
+            false,
+        );
+        assert!(bad
+            .unwrap_err()
+            .starts_with("cagd: error: --c1/--c2/--d1/--d2: "));
+    }
+
+    #[test]
+    fn bspline_basis_is_a_partition_of_unity() {
+        let v = parse(&bspline_view(
+            vec![0., 0., 1., 2., 3., 2., 4., 0., 5., 1.],
+            2,
+            3,
+            vec![0., 0., 0., 0., 0.3, 1., 1., 1., 1.],
+            21,
+        ));
+        let basis: Vec<Vec<f64>> = serde_json::from_value(v["basis"].clone()).unwrap();
+        assert_eq!(basis.len(), 5);
+        for k in 0..21 {
+            let s: f64 = basis.iter().map(|row| row[k]).sum();
+            assert!((s - 1.0).abs() < 1e-14);
+        }
+    }
+}

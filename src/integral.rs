@@ -1,0 +1,184 @@
+//! Integrals of Bernstein polynomials, Bézier curves and B-spline curves (the CAD notes §1.1
+//! and §1.2: "for the definite integral … there are simple formulas").
+//!
+//! - Bernstein: `∫₀ᵗ B_i^n = 1/(n+1) Σ_{j=i+1}^{n+1} B_j^{n+1}(t)`, so `∫₀¹ B_i^n = 1/(n+1)`
+//!   ([`bernstein_antiderivative`]).
+//! - Bézier curve over `[a, b]` with control points `b_0 … b_n`: its antiderivative
+//!   `∫_a^u c` is the Bézier curve of degree `n + 1` over `[a, b]` with control points
+//!   `c_0 = 0`, `c_k = (b − a)/(n + 1) · (b_0 + … + b_{k−1})` ([`bezier_antiderivative`]),
+//!   and `∫_a^b c = c_{n+1}` ([`bezier_integral`]).
+//! - B-spline curve of degree `p` with knots `u_0 … u_{n+p}` and control points
+//!   `P_0 … P_{n−1}`: `∫ N_{i,p} = (u_{i+p+1} − u_i)/(p + 1) · Σ_{j>i} N_{j,p+1}` over the knots
+//!   with `u_0` and `u_{n+p}` once more, so the antiderivative is the B-spline of degree
+//!   `p + 1` over `(u_0, u_0, …, u_{n+p}, u_{n+p})` with control points `Q_0 = 0`,
+//!   `Q_i = Q_{i−1} + P_{i−1} (u_{i+p} − u_{i−1})/(p + 1)` ([`bspline_antiderivative`]); it is
+//!   `∫_{u_0}^u`, so the integral over the domain `[u_p, u_n]` is `F(u_n) − F(u_p)`
+//!   ([`bspline_integral`]; `Q_n` for a clamped knot vector).
+//!
+//! All are rational, so they are exact in `BigRational`.
+
+use nalgebra::{DMatrix, DVector};
+
+use crate::bezier::BezierCurve;
+use crate::bspline::BSplineCurve;
+use crate::error::Result;
+use crate::scalar::Scalar;
+
+/// The Bernstein coefficients (degree `n + 1`, `n + 2` values) of `∫₀ᵗ B_i^n`: `0` for
+/// `j ≤ i`, `1/(n+1)` for `j > i`. `i ≤ n` is assumed.
+///
+/// ```
+/// let c: Vec<f64> = cagd::integral::bernstein_antiderivative(2, 1);
+/// assert_eq!(c, vec![0.0, 0.0, 1.0 / 3.0, 1.0 / 3.0]);
+/// ```
+pub fn bernstein_antiderivative<T: Scalar>(n: usize, i: usize) -> Vec<T> {
+    let w = T::from_ratio(1, n as i64 + 1);
+    (0..=n + 1)
+        .map(|j| if j > i { w.clone() } else { T::zero() })
+        .collect()
+}
+
+/// The antiderivative `u ↦ ∫_a^u c` of a Bézier curve over `[a, b]`: degree `n + 1`, same
+/// interval, control points `c_0 = 0`, `c_k = (b − a)/(n+1) Σ_{j<k} b_j`.
+///
+/// ```
+/// use cagd::bezier::BezierCurve;
+/// use cagd::integral::bezier_antiderivative;
+/// // ∫₀ᵘ 2t dt = u²: the segment 0 → 2 integrates to the control points 0, 0, 1.
+/// let c = BezierCurve::from_points(&[[0.0], [2.0]])?;
+/// assert_eq!(bezier_antiderivative(&c).control().as_slice(), &[0.0, 0.0, 1.0]);
+/// # Ok::<(), cagd::Error>(())
+/// ```
+pub fn bezier_antiderivative<T: Scalar>(curve: &BezierCurve<T>) -> BezierCurve<T> {
+    let (n, d) = (curve.degree(), curve.dim());
+    let (a, b) = curve.interval();
+    let scale = (b.clone() - a.clone()) / T::from_usize(n + 1);
+    let mut control = DMatrix::from_element(d, n + 2, T::zero());
+    for k in 1..=n + 1 {
+        for r in 0..d {
+            control[(r, k)] =
+                control[(r, k - 1)].clone() + scale.clone() * curve.control()[(r, k - 1)].clone();
+        }
+    }
+    BezierCurve::new_on_interval(control, a.clone(), b.clone())
+        .expect("the control points and the interval of a valid curve")
+}
+
+/// `∫_a^b c = (b − a)/(n + 1) · Σ b_j`, one value per coordinate.
+///
+/// ```
+/// use cagd::bezier::BezierCurve;
+/// let c = BezierCurve::from_points(&[[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]])?;
+/// assert_eq!(cagd::integral::bezier_integral(&c).as_slice(), &[1.0, 2.0 / 3.0]);
+/// # Ok::<(), cagd::Error>(())
+/// ```
+pub fn bezier_integral<T: Scalar>(curve: &BezierCurve<T>) -> DVector<T> {
+    let anti = bezier_antiderivative(curve);
+    anti.control().column(curve.degree() + 1).into_owned()
+}
+
+/// The antiderivative `u ↦ ∫_{u_0}^u C` of a B-spline curve (see the
+/// [module](self) documentation): degree `p + 1`, knots `(u_0, u_0, …, u_{n+p}, u_{n+p})`,
+/// `n + 1` control points.
+///
+/// # Errors
+/// Those of [`BSplineCurve::new`] (none for a valid curve).
+///
+/// ```
+/// use cagd::bspline::BSplineCurve;
+/// use cagd::integral::bspline_antiderivative;
+/// use nalgebra::DMatrix;
+/// // The hat function N_{1,1} on the knots 0, 0, 1, 2, 2 has area 1, half of it up to 1.
+/// let c = BSplineCurve::new(1, vec![0.0, 0.0, 1.0, 2.0, 2.0], DMatrix::from_row_slice(1, 3, &[0.0, 1.0, 0.0]))?;
+/// let f = bspline_antiderivative(&c)?;
+/// assert_eq!(f.control().as_slice(), &[0.0, 0.0, 1.0, 1.0]);
+/// assert_eq!(f.try_eval(1.0)?[0], 0.5);
+/// # Ok::<(), cagd::Error>(())
+/// ```
+pub fn bspline_antiderivative<T: Scalar>(curve: &BSplineCurve<T>) -> Result<BSplineCurve<T>> {
+    let p = curve.degree();
+    let u = curve.knots().as_slice();
+    let (d, n) = (curve.dim(), curve.control().ncols());
+    let denominator = T::from_usize(p + 1);
+    let mut control = DMatrix::from_element(d, n + 1, T::zero());
+    for i in 1..=n {
+        let width = (u[i + p].clone() - u[i - 1].clone()) / denominator.clone();
+        for r in 0..d {
+            control[(r, i)] =
+                control[(r, i - 1)].clone() + width.clone() * curve.control()[(r, i - 1)].clone();
+        }
+    }
+    let mut knots = Vec::with_capacity(u.len() + 2);
+    knots.push(u[0].clone());
+    knots.extend(u.iter().cloned());
+    knots.push(u[u.len() - 1].clone());
+    BSplineCurve::new(p + 1, knots, control)
+}
+
+/// The integral over the domain `[u_p, u_n]`, one value per coordinate:
+/// `F(u_n) − F(u_p)` with `F` the [`bspline_antiderivative`].
+///
+/// # Errors
+/// Those of [`bspline_antiderivative`].
+///
+/// ```
+/// use cagd::bspline::BSplineCurve;
+/// use nalgebra::DMatrix;
+/// // Clamped quadratic on [0, 1] with knots 0,0,0,½,1,1,1: ∫ N_{i,2} = 1/6, 1/3, 1/3, 1/6.
+/// let c = BSplineCurve::new(2, vec![0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0],
+///     DMatrix::from_row_slice(1, 4, &[6.0, 0.0, 0.0, 0.0]))?;
+/// assert_eq!(cagd::integral::bspline_integral(&c)?.as_slice(), &[1.0]);
+/// # Ok::<(), cagd::Error>(())
+/// ```
+pub fn bspline_integral<T: Scalar>(curve: &BSplineCurve<T>) -> Result<DVector<T>> {
+    let f = bspline_antiderivative(curve)?;
+    let (a, b) = curve.domain();
+    let (fb, fa) = (f.try_eval(b)?, f.try_eval(a)?);
+    Ok(DVector::from_fn(fb.len(), |r, _| {
+        fb[r].clone() - fa[r].clone()
+    }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use num_rational::BigRational;
+
+    fn q(n: i64, d: i64) -> BigRational {
+        BigRational::from_ratio(n, d)
+    }
+
+    #[test]
+    fn antiderivatives_differentiate_back_exactly() {
+        let c = BezierCurve::new_on_interval(
+            DMatrix::from_row_slice(1, 4, &[q(1, 1), q(-2, 3), q(5, 2), q(0, 1)]),
+            q(1, 1),
+            q(4, 1),
+        )
+        .unwrap();
+        let f = bezier_antiderivative(&c);
+        assert_eq!(f.derivative(1).unwrap().control(), c.control());
+        let knots = vec![
+            q(0, 1),
+            q(1, 3),
+            q(1, 2),
+            q(2, 1),
+            q(5, 2),
+            q(3, 1),
+            q(4, 1),
+        ];
+        let s = BSplineCurve::new(
+            2,
+            knots,
+            DMatrix::from_row_slice(1, 4, &[q(1, 1), q(3, 1), q(-1, 1), q(2, 1)]),
+        )
+        .unwrap();
+        let g = bspline_antiderivative(&s).unwrap();
+        let dg = g.derivative().unwrap();
+        let (a, b) = s.domain();
+        for k in 0..=12 {
+            let t = a.clone() + (b.clone() - a.clone()) * q(k, 12);
+            assert_eq!(dg.try_eval(t.clone()).unwrap(), s.try_eval(t).unwrap());
+        }
+    }
+}

@@ -1,0 +1,65 @@
+//! Where to put interpolation nodes: uniformly, or at the Chebyshev–Lobatto points.
+
+use crate::scalar::Scalar;
+
+/// The `count` Chebyshev–Lobatto points on `[0, 1]`,
+/// `t_k = (1 − cos(kπ/(count−1)))/2`, `k = 0..count` (the extrema of the Chebyshev polynomial
+/// `T_{count−1}` mapped to `[0, 1]`; they include both ends, so a Gordon network keeps its
+/// boundary curves). Computed as `(1 + sin(π(2k − M)/(2M)))/2`, `M = count − 1`, so the ends
+/// are exactly 0 and 1 and the middle of an odd count exactly 1/2. `count = 1` gives `[0.5]`.
+///
+/// ```
+/// let t = cagd::lagrange::chebyshev_nodes(5);
+/// assert_eq!((t[0], t[2], t[4]), (0.0, 0.5, 1.0));
+/// assert!((t[1] - (1.0 - 0.5f64.sqrt()) / 2.0).abs() < 1e-16);
+/// ```
+pub fn chebyshev_nodes(count: usize) -> Vec<f64> {
+    match count {
+        0 => Vec::new(),
+        1 => vec![0.5],
+        _ => {
+            let m = (count - 1) as f64;
+            (0..count)
+                .map(|k| {
+                    let s = (std::f64::consts::PI * (2.0 * k as f64 - m) / (2.0 * m)).sin();
+                    (1.0 + s) / 2.0
+                })
+                .collect()
+        }
+    }
+}
+
+/// Where to put the nodes of an interpolation (or the curves of a Gordon network).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum NodePlacement {
+    /// `t_k = k/M`, `M = count − 1` (exact in rationals); what the thesis uses
+    /// (`x = [0 0.5 1]`).
+    Uniform,
+    /// The Chebyshev–Lobatto points of [`chebyshev_nodes`] (as the nearest doubles).
+    Chebyshev,
+}
+
+impl NodePlacement {
+    /// `count` nodes on `[0, 1]`, increasing, with both ends included (for `count ≥ 2`).
+    ///
+    /// ```
+    /// use cagd::lagrange::NodePlacement;
+    /// assert_eq!(NodePlacement::Uniform.nodes::<f64>(3), vec![0.0, 0.5, 1.0]);
+    /// assert_eq!(NodePlacement::Chebyshev.nodes::<f64>(3), vec![0.0, 0.5, 1.0]);
+    /// ```
+    pub fn nodes<T: Scalar>(self, count: usize) -> Vec<T> {
+        match self {
+            NodePlacement::Uniform => match count {
+                0 => Vec::new(),
+                1 => vec![T::from_ratio(1, 2)],
+                _ => (0..count)
+                    .map(|k| T::from_ratio(k as i64, (count - 1) as i64))
+                    .collect(),
+            },
+            NodePlacement::Chebyshev => chebyshev_nodes(count)
+                .into_iter()
+                .map(|t| T::from_f64(t).unwrap_or_else(T::zero))
+                .collect(),
+        }
+    }
+}

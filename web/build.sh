@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# Builds the web page into web/dist/: the WebAssembly of crates/cagd-web (the cagd library and
+# command line, profile `web`), its JavaScript glue (wasm-bindgen, ES module), and the page's
+# static files. Installs what is missing: the wasm32-unknown-unknown target (rustup) and the
+# wasm-bindgen-cli of exactly the version of the wasm-bindgen crate (cargo install). wasm-opt
+# (Debian package binaryen) shrinks the .wasm further when it is installed.
+#
+#   bash web/build.sh          then   cagd serve   (or copy web/dist/ to any static host)
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+
+if ! command -v cargo >/dev/null 2>&1 && [ -f "$HOME/.cargo/env" ]; then
+    # shellcheck disable=SC1091
+    . "$HOME/.cargo/env"
+fi
+
+# The version the workspace pins (Cargo.toml: wasm-bindgen = "=X.Y.Z").
+version=$(sed -n 's/^wasm-bindgen = "=\([0-9.]*\)"/\1/p' Cargo.toml)
+if [ -z "$version" ]; then
+    echo "web/build.sh: no pinned wasm-bindgen version in Cargo.toml" >&2
+    exit 1
+fi
+
+if command -v rustup >/dev/null 2>&1 && ! rustup target list --installed | grep -qx wasm32-unknown-unknown; then
+    echo "== rustup target add wasm32-unknown-unknown"
+    rustup target add wasm32-unknown-unknown
+fi
+
+if [ "$(wasm-bindgen --version 2>/dev/null | awk '{print $2}')" != "$version" ]; then
+    echo "== cargo install wasm-bindgen-cli $version (a few minutes, once)"
+    # --locked keeps the versions wasm-bindgen-cli was released with; should one of them be
+    # missing from the registry (yanked), resolve afresh.
+    cargo install --locked wasm-bindgen-cli --version "$version" ||
+        cargo install wasm-bindgen-cli --version "$version"
+fi
+
+echo "== cargo build -p cagd-web --target wasm32-unknown-unknown --profile web"
+cargo build -p cagd-web --target wasm32-unknown-unknown --profile web
+
+dist=web/dist
+rm -rf "$dist"
+mkdir -p "$dist/pkg"
+wasm-bindgen --target web --no-typescript --out-dir "$dist/pkg" \
+    target/wasm32-unknown-unknown/web/cagd_web.wasm
+wasm="$dist/pkg/cagd_web_bg.wasm"
+if command -v wasm-opt >/dev/null 2>&1; then
+    echo "== wasm-opt -Os"
+    if wasm-opt -Os --all-features "$wasm" -o "$wasm.opt"; then
+        mv "$wasm.opt" "$wasm"
+    else
+        echo "wasm-opt failed; keeping the unoptimised .wasm" >&2
+        rm -f "$wasm.opt"
+    fi
+fi
+cp web/index.html web/style.css "$dist/"
+cp -r web/js "$dist/js"
+
+bytes=$(wc -c <"$wasm")
+gz=$(gzip -9 -c "$wasm" | wc -c)
+echo "== built $dist: $(basename "$wasm") $bytes bytes ($gz gzipped)"

@@ -1,0 +1,42 @@
+// The command line in a Web Worker, so that a long computation never freezes the page: the
+// page posts {id, argv, files}; the worker answers {id, ok, stdout, warnings, files, error}.
+// A fault in the WebAssembly (a bug) is answered with the program's internal-error line and
+// `fatal: true`, after which the page starts a fresh worker.
+
+import "./text-shim.js";
+import init, { file_bytes, run } from "../pkg/cagd_web.js";
+
+let panicMessage = null;
+globalThis.cagdPanic = (message) => {
+  panicMessage = message;
+};
+
+const ready = init().then(
+  () => self.postMessage({ ready: true }),
+  (e) => self.postMessage({ ready: false, error: `cagd: internal error: the WebAssembly did not load (${e}); reload the page` }),
+);
+
+self.onmessage = async ({ data }) => {
+  await ready;
+  const { id, argv, files = [] } = data;
+  panicMessage = null;
+  let answer;
+  try {
+    answer = JSON.parse(
+      run(
+        argv,
+        files.map((f) => f.name),
+        files.map((f) => f.text),
+      ),
+    );
+    if (answer.ok) answer.files = answer.files.map((f, i) => ({ ...f, bytes: file_bytes(i) }));
+  } catch (e) {
+    answer = {
+      ok: false,
+      code: 1,
+      fatal: true,
+      error: panicMessage ?? `cagd: internal error: ${e}; this is a bug in cagd`,
+    };
+  }
+  self.postMessage({ id, ...answer });
+};
