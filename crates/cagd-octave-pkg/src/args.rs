@@ -1,0 +1,442 @@
+//! One call of a package function: its arguments, checked up front, and the limits in force.
+//!
+//! Every reader refuses a wrong class (`cagd:class`), an empty array where data is needed
+//! (`cagd:empty`), a wrong size (`cagd:shape`), NaN and ±Inf (`cagd:nonfinite`) and counts
+//! that are not non-negative integers (`cagd:value`) before anything is computed or allocated.
+
+use cagd::limits::Limits;
+use nalgebra::DMatrix;
+use ndarray::{ArrayView2, ArrayViewD, IxDyn, ShapeBuilder};
+
+use crate::error::{Kind, PkgError, Result};
+use crate::value::{size_str, Real, Value};
+
+/// Largest count accepted before the limits are even asked (`2^53`: every integer below is a
+/// double).
+const MAX_EXACT_INTEGER: f64 = 9_007_199_254_740_992.0;
+
+/// The call of one package function.
+#[derive(Debug)]
+pub struct Call<'c, 'a> {
+    /// The Octave name of the function (for messages).
+    pub name: &'static str,
+    /// The arguments.
+    pub args: &'c [Value<'a>],
+    /// The number of outputs asked for (at least 1: `ans`).
+    pub nargout: usize,
+    /// The resource limits of the session (`cagd_limits`).
+    pub limits: Limits,
+}
+
+/// The form of a real double array, for messages.
+pub const REAL_FORM: &str = "a real double array";
+
+impl<'c, 'a> Call<'c, 'a> {
+    /// A call of `name` with `args`, `nargout` outputs (0 counts as 1) and `limits`.
+    pub fn new(name: &'static str, args: &'c [Value<'a>], nargout: usize, limits: Limits) -> Self {
+        Call {
+            name,
+            args,
+            nargout: nargout.max(1),
+            limits,
+        }
+    }
+
+    /// Checks the number of arguments: `min..=max`; `usage` names them.
+    ///
+    /// # Errors
+    /// [`Kind::Nargin`].
+    pub fn nargin(&self, min: usize, max: usize, usage: &str) -> Result<()> {
+        let n = self.args.len();
+        if (min..=max).contains(&n) {
+            return Ok(());
+        }
+        let expected = if min == max {
+            format!("{min}")
+        } else {
+            format!("{min} to {max}")
+        };
+        Err(PkgError::new(
+            Kind::Nargin,
+            format!(
+                "called with {n} argument(s); expected {expected}: {usage} (see help {})",
+                self.name
+            ),
+        ))
+    }
+
+    /// Checks the number of outputs asked for: at most `max`.
+    ///
+    /// # Errors
+    /// [`Kind::Nargin`].
+    pub fn nargout_max(&self, max: usize) -> Result<()> {
+        if self.nargout <= max {
+            return Ok(());
+        }
+        Err(PkgError::new(
+            Kind::Nargin,
+            format!("called with {} outputs; it has at most {max}", self.nargout),
+        ))
+    }
+
+    /// Argument `i` (from 0), which [`nargin`](Self::nargin) has checked exists.
+    pub fn arg(&self, i: usize) -> &'c Value<'a> {
+        &self.args[i]
+    }
+
+    /// Whether argument `i` was given.
+    pub fn has(&self, i: usize) -> bool {
+        i < self.args.len()
+    }
+
+    /// Argument `i` as a real double array.
+    ///
+    /// # Errors
+    /// [`Kind::Class`] for any other class, naming it.
+    pub fn real(&self, i: usize, what: &str, form: &str) -> Result<Real<'a>> {
+        real_of(self.arg(i), what, form)
+    }
+
+    /// Argument `i` as a real double array with at least one element.
+    ///
+    /// # Errors
+    /// As [`real`](Self::real); [`Kind::Empty`].
+    pub fn nonempty(&self, i: usize, what: &str, form: &str) -> Result<Real<'a>> {
+        nonempty_of(self.arg(i), what, form)
+    }
+
+    /// Argument `i` as a matrix view (2-D, any size, maybe empty), without a copy.
+    ///
+    /// # Errors
+    /// As [`real`](Self::real); [`Kind::Shape`] for more than two dimensions.
+    pub fn view2(&self, i: usize, what: &str, form: &str) -> Result<ArrayView2<'a, f64>> {
+        view2_of(self.real(i, what, form)?, what, form)
+    }
+
+    /// Argument `i` as an n-d view of Octave's size, without a copy.
+    ///
+    /// # Errors
+    /// As [`real`](Self::real).
+    pub fn view_dyn(&self, i: usize, what: &str, form: &str) -> Result<ArrayViewD<'a, f64>> {
+        let r = self.real(i, what, form)?;
+        Ok(ArrayViewD::from_shape(IxDyn(r.dims).f(), r.data)
+            .expect("an Octave array holds prod(size) elements"))
+    }
+
+    /// Argument `i` as a matrix of finite values with at least one element.
+    ///
+    /// # Errors
+    /// As [`view2`](Self::view2); [`Kind::Empty`], [`Kind::NonFinite`].
+    pub fn matrix(&self, i: usize, what: &'static str, form: &str) -> Result<DMatrix<f64>> {
+        matrix_of(self.arg(i), what, form)
+    }
+
+    /// The same call without its last argument (an option such as `"exact"`).
+    pub fn without_last(&self) -> Call<'c, 'a> {
+        Call {
+            name: self.name,
+            args: &self.args[..self.args.len().saturating_sub(1)],
+            nargout: self.nargout,
+            limits: self.limits,
+        }
+    }
+
+    /// Argument `i` as a finite real scalar.
+    ///
+    /// # Errors
+    /// [`Kind::Class`], [`Kind::Shape`] unless 1 × 1, [`Kind::NonFinite`].
+    pub fn scalar(&self, i: usize, what: &'static str) -> Result<f64> {
+        scalar_of(self.arg(i), what)
+    }
+
+    /// Argument `i` as a count: a non-negative integer scalar.
+    ///
+    /// # Errors
+    /// As [`scalar`](Self::scalar); [`Kind::Value`] for a negative or fractional value.
+    pub fn count(&self, i: usize, what: &'static str) -> Result<usize> {
+        count_of(self.arg(i), what)
+    }
+
+    /// Argument `i` as finite parameters: any real array, read column-major (maybe empty).
+    ///
+    /// # Errors
+    /// [`Kind::Class`], [`Kind::NonFinite`].
+    pub fn params(&self, i: usize, what: &'static str) -> Result<&'a [f64]> {
+        params_of(self.arg(i), what)
+    }
+
+    /// Argument `i` as text (a char row).
+    ///
+    /// # Errors
+    /// [`Kind::Class`].
+    pub fn text(&self, i: usize, what: &str, form: &str) -> Result<String> {
+        text_of(self.arg(i), what, form)
+    }
+
+    /// Whether the last argument is the option `word` (case-insensitive), e.g. `"exact"`.
+    pub fn last_is_option(&self, word: &str) -> bool {
+        self.args
+            .last()
+            .and_then(Value::text)
+            .is_some_and(|t| t.eq_ignore_ascii_case(word))
+    }
+
+    /// `count` parameter values along one axis within the limits.
+    ///
+    /// # Errors
+    /// [`Kind::Limit`].
+    pub fn check_samples(&self, what: &'static str, count: usize) -> Result<()> {
+        Ok(self.limits.check_samples(what, count)?)
+    }
+
+    /// A grid of `nu × nv` points within the limits.
+    ///
+    /// # Errors
+    /// [`Kind::Limit`].
+    pub fn check_grid(&self, what: &'static str, nu: usize, nv: usize) -> Result<()> {
+        self.check_samples(what, nu)?;
+        self.check_samples(what, nv)?;
+        Ok(self.limits.check_grid(what, nu, nv)?)
+    }
+
+    /// A degree within the limits.
+    ///
+    /// # Errors
+    /// [`Kind::Limit`].
+    pub fn check_degree(&self, what: &'static str, degree: usize) -> Result<()> {
+        Ok(self.limits.check_degree(what, degree)?)
+    }
+
+    /// About `points · per_point` operations within the limits.
+    ///
+    /// # Errors
+    /// [`Kind::Limit`].
+    pub fn check_work(&self, what: &'static str, points: usize, per_point: usize) -> Result<()> {
+        Ok(self
+            .limits
+            .check_work(what, points as u128 * per_point as u128)?)
+    }
+}
+
+/// A value as a real double array.
+///
+/// # Errors
+/// [`Kind::Class`] for any other class.
+pub fn real_of<'a>(v: &Value<'a>, what: &str, form: &str) -> Result<Real<'a>> {
+    match v {
+        Value::Real(r) => Ok(*r),
+        other => Err(PkgError::arg(
+            Kind::Class,
+            what,
+            format!("{} is not accepted", describe_class(other)),
+            form,
+        )),
+    }
+}
+
+/// "a cell array", "int32", "a struct without fields": the class of a refused value in words.
+fn describe_class(v: &Value<'_>) -> String {
+    match v {
+        Value::Cell { .. } => "a cell array".into(),
+        Value::Struct { fields } if fields.is_empty() => "a struct without fields".into(),
+        Value::Struct { .. } => "a struct".into(),
+        Value::Char { .. } => "text (char)".into(),
+        other => other.class().to_string(),
+    }
+}
+
+/// A value as a real double array with at least one element.
+///
+/// # Errors
+/// [`Kind::Class`], [`Kind::Empty`].
+pub fn nonempty_of<'a>(v: &Value<'a>, what: &str, form: &str) -> Result<Real<'a>> {
+    let r = real_of(v, what, form)?;
+    if r.is_empty() {
+        return Err(PkgError::arg(
+            Kind::Empty,
+            what,
+            format!("empty ({})", r.size_str()),
+            form,
+        ));
+    }
+    Ok(r)
+}
+
+/// A real array as a 2-D view (column-major, no copy).
+///
+/// # Errors
+/// [`Kind::Shape`] for more than two dimensions.
+pub fn view2_of<'a>(r: Real<'a>, what: &str, form: &str) -> Result<ArrayView2<'a, f64>> {
+    if !r.is_matrix() {
+        return Err(PkgError::arg(
+            Kind::Shape,
+            what,
+            format!("an array of size {}", r.size_str()),
+            form,
+        ));
+    }
+    Ok(ArrayView2::from_shape((r.rows(), r.cols()).f(), r.data)
+        .expect("an Octave matrix holds rows · cols elements"))
+}
+
+/// A value as a matrix of finite values with at least one element.
+///
+/// # Errors
+/// [`Kind::Class`], [`Kind::Empty`], [`Kind::Shape`] for more than two dimensions,
+/// [`Kind::NonFinite`].
+pub fn matrix_of(v: &Value<'_>, what: &'static str, form: &str) -> Result<DMatrix<f64>> {
+    let r = nonempty_of(v, what, form)?;
+    if !r.is_matrix() {
+        return Err(PkgError::arg(
+            Kind::Shape,
+            what,
+            format!("an array of size {}", r.size_str()),
+            form,
+        ));
+    }
+    cagd::error::check_finite(what, r.data.iter())?;
+    Ok(DMatrix::from_column_slice(r.rows(), r.cols(), r.data))
+}
+
+/// A value as a finite real scalar.
+///
+/// # Errors
+/// [`Kind::Class`], [`Kind::Shape`] unless 1 × 1, [`Kind::NonFinite`].
+pub fn scalar_of(v: &Value<'_>, what: &'static str) -> Result<f64> {
+    let form = "a real scalar";
+    let r = nonempty_of(v, what, form)?;
+    if r.len() != 1 {
+        return Err(PkgError::arg(
+            Kind::Shape,
+            what,
+            format!("an array of size {}", size_str(r.dims)),
+            form,
+        ));
+    }
+    cagd::error::check_finite(what, r.data.iter())?;
+    Ok(r.data[0])
+}
+
+/// A value as a count: a non-negative integer scalar.
+///
+/// # Errors
+/// As [`scalar_of`]; [`Kind::Value`] for a negative or fractional value.
+pub fn count_of(v: &Value<'_>, what: &'static str) -> Result<usize> {
+    let x = scalar_of(v, what)?;
+    if x < 0.0 || x.fract() != 0.0 || x >= MAX_EXACT_INTEGER {
+        return Err(PkgError::arg(
+            Kind::Value,
+            what,
+            format!("{x} is not a non-negative integer"),
+            "a count 0, 1, 2, …",
+        ));
+    }
+    Ok(x as usize)
+}
+
+/// A value as finite parameters (any real array, column-major, maybe empty).
+///
+/// # Errors
+/// [`Kind::Class`], [`Kind::NonFinite`].
+pub fn params_of<'a>(v: &Value<'a>, what: &'static str) -> Result<&'a [f64]> {
+    let r = real_of(v, what, "real parameter values (a double array)")?;
+    cagd::error::check_finite(what, r.data.iter())?;
+    Ok(r.data)
+}
+
+/// A value as text.
+///
+/// # Errors
+/// [`Kind::Class`].
+pub fn text_of(v: &Value<'_>, what: &str, form: &str) -> Result<String> {
+    v.text().ok_or_else(|| {
+        PkgError::arg(
+            Kind::Class,
+            what,
+            format!("{} is not accepted", describe_class(v)),
+            form,
+        )
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn readers_refuse_up_front() {
+        let dims = [1usize, 1];
+        let two = [2.5];
+        let neg = [-1.0];
+        let nan = [f64::NAN];
+        let half = Value::Real(Real {
+            dims: &dims,
+            data: &two,
+        });
+        let e = count_of(&half, "N").unwrap_err();
+        assert_eq!(
+            (e.kind, e.message.as_str()),
+            (
+                Kind::Value,
+                "N: 2.5 is not a non-negative integer; expected a count 0, 1, 2, …"
+            )
+        );
+        let e = count_of(
+            &Value::Real(Real {
+                dims: &dims,
+                data: &neg,
+            }),
+            "N",
+        )
+        .unwrap_err();
+        assert_eq!(e.kind, Kind::Value);
+        let e = scalar_of(
+            &Value::Real(Real {
+                dims: &dims,
+                data: &nan,
+            }),
+            "u",
+        )
+        .unwrap_err();
+        assert_eq!(e.kind, Kind::NonFinite);
+        let e = scalar_of(&Value::Other { class: "int32" }, "u").unwrap_err();
+        assert_eq!(
+            e.message,
+            "u: int32 is not accepted; expected a real scalar"
+        );
+        let e = real_of(&Value::Struct { fields: vec![] }, "P", REAL_FORM).unwrap_err();
+        assert_eq!(e.kind, Kind::Class);
+        assert!(e.message.contains("a struct without fields"));
+        let empty_dims = [0usize, 3];
+        let e = nonempty_of(
+            &Value::Real(Real {
+                dims: &empty_dims,
+                data: &[],
+            }),
+            "P",
+            REAL_FORM,
+        )
+        .unwrap_err();
+        assert_eq!(
+            (e.kind, e.message.as_str()),
+            (Kind::Empty, "P: empty (0×3); expected a real double array")
+        );
+    }
+
+    #[test]
+    fn views_are_column_major() {
+        let dims = [2usize, 3];
+        let data = [1.0, 2.0, 3.0, 4.0, 5.0, 6.0];
+        let v = view2_of(
+            Real {
+                dims: &dims,
+                data: &data,
+            },
+            "A",
+            REAL_FORM,
+        )
+        .unwrap();
+        assert_eq!(v[[1, 0]], 2.0);
+        assert_eq!(v[[0, 2]], 5.0);
+    }
+}

@@ -1,0 +1,218 @@
+//! The package's errors: an Octave identifier `cagd:<kind>` and a one-line message.
+//!
+//! A library error ([`cagd::Error`]) keeps its own text, which is the text the command line
+//! prints after the argument name (`cagd: error: ARG: PROBLEM; expected FORM`); in Octave it
+//! reads `FUNCTION: PROBLEM`. Errors found by the package itself (a wrong class, an empty
+//! array, a size) read `FUNCTION: ARGUMENT: PROBLEM; expected FORM`, the command line's form.
+
+use cagd::limits::Limit;
+
+/// The kind of an error: the part after `cagd:` in its Octave identifier.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Kind {
+    /// Wrong number of arguments (`cagd:nargin`).
+    Nargin,
+    /// An argument of a class the function does not take: integer, logical, single, complex,
+    /// sparse, cell, struct, function handle… (`cagd:class`).
+    Class,
+    /// An empty array where data is needed (`cagd:empty`).
+    Empty,
+    /// A size or a count that does not fit (`cagd:shape`): library errors `ShapeMismatch`,
+    /// `TooFewPoints`, `TooFewControlPoints`, `TooFewCurves`, `EmptyGrid`.
+    Shape,
+    /// NaN or ±Inf (`cagd:nonfinite`).
+    NonFinite,
+    /// A value that is not allowed: a count that is not a non-negative integer, an index out of
+    /// range, an unknown option, a derivative order above the degree… (`cagd:value`).
+    Value,
+    /// A parameter outside the domain of a curve or surface (`cagd:domain`).
+    Domain,
+    /// A knot vector that decreases or has the wrong length (`cagd:knots`).
+    Knots,
+    /// A NURBS weight that is zero or negative (`cagd:weights`).
+    Weights,
+    /// Interpolation nodes that repeat or do not increase (`cagd:nodes`).
+    Nodes,
+    /// Coons boundary curves that do not meet at the corners (`cagd:corners`).
+    Corners,
+    /// A Gordon network whose curves do not cross where they should (`cagd:network`).
+    Network,
+    /// A singular linear system (`cagd:singular`).
+    Singular,
+    /// A struct without the fields the function needs, or not a NURBS (`cagd:struct`).
+    Struct,
+    /// A size over a resource limit (`cagd:limit`; see `cagd_limits`).
+    Limit,
+    /// An output that could not be allocated (`cagd:memory`).
+    Memory,
+    /// A fault of the package itself, such as a caught Rust panic (`cagd:internal`).
+    Internal,
+}
+
+impl Kind {
+    /// Every kind.
+    pub const ALL: [Kind; 17] = [
+        Kind::Nargin,
+        Kind::Class,
+        Kind::Empty,
+        Kind::Shape,
+        Kind::NonFinite,
+        Kind::Value,
+        Kind::Domain,
+        Kind::Knots,
+        Kind::Weights,
+        Kind::Nodes,
+        Kind::Corners,
+        Kind::Network,
+        Kind::Singular,
+        Kind::Struct,
+        Kind::Limit,
+        Kind::Memory,
+        Kind::Internal,
+    ];
+
+    /// The name after `cagd:`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::Nargin => "nargin",
+            Kind::Class => "class",
+            Kind::Empty => "empty",
+            Kind::Shape => "shape",
+            Kind::NonFinite => "nonfinite",
+            Kind::Value => "value",
+            Kind::Domain => "domain",
+            Kind::Knots => "knots",
+            Kind::Weights => "weights",
+            Kind::Nodes => "nodes",
+            Kind::Corners => "corners",
+            Kind::Network => "network",
+            Kind::Singular => "singular",
+            Kind::Struct => "struct",
+            Kind::Limit => "limit",
+            Kind::Memory => "memory",
+            Kind::Internal => "internal",
+        }
+    }
+
+    /// The kind of a library error.
+    pub fn of(error: &cagd::Error) -> Kind {
+        use cagd::Error as E;
+        match error {
+            E::TooFewPoints { .. }
+            | E::ShapeMismatch { .. }
+            | E::EmptyGrid { .. }
+            | E::TooFewControlPoints { .. }
+            | E::TooFewCurves { .. } => Kind::Shape,
+            E::NonFinite { .. } => Kind::NonFinite,
+            E::ParameterOutOfRange { .. } => Kind::Domain,
+            E::DecreasingKnots { .. } | E::KnotCount { .. } => Kind::Knots,
+            E::NonPositiveWeight { .. } => Kind::Weights,
+            E::DuplicateNodes { .. } | E::UnsortedNodes { .. } => Kind::Nodes,
+            E::CornerMismatch { .. } => Kind::Corners,
+            E::NetworkMismatch { .. } => Kind::Network,
+            E::Singular { .. } | E::SingularMask { .. } => Kind::Singular,
+            E::TooLarge { .. } => Kind::Limit,
+            _ => Kind::Value,
+        }
+    }
+}
+
+/// An error of a package function.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{message}")]
+pub struct PkgError {
+    /// The kind (`cagd:<kind>`).
+    pub kind: Kind,
+    /// The message, one line.
+    pub message: String,
+}
+
+impl PkgError {
+    /// An error of `kind` with `message`.
+    pub fn new(kind: Kind, message: impl Into<String>) -> Self {
+        let message: String = message.into();
+        PkgError {
+            kind,
+            message: message.split_whitespace().collect::<Vec<_>>().join(" "),
+        }
+    }
+
+    /// `ARGUMENT: PROBLEM; expected FORM`, the command line's form.
+    pub fn arg(kind: Kind, argument: &str, problem: impl AsRef<str>, form: &str) -> Self {
+        Self::new(
+            kind,
+            format!("{argument}: {}; expected {form}", problem.as_ref()),
+        )
+    }
+
+    /// The Octave identifier, `cagd:<kind>`.
+    pub fn identifier(&self) -> String {
+        format!("cagd:{}", self.kind.name())
+    }
+
+    /// The same error with `prefix: ` before its message.
+    pub fn prefixed(mut self, prefix: &str) -> Self {
+        self.message = format!("{prefix}: {}", self.message);
+        self
+    }
+}
+
+impl From<cagd::Error> for PkgError {
+    /// The library's own text; a resource limit also says how to raise it in Octave.
+    fn from(error: cagd::Error) -> Self {
+        let kind = Kind::of(&error);
+        let message = match &error {
+            cagd::Error::TooLarge {
+                what,
+                requested,
+                limit,
+                which,
+            } => format!(
+                "{what}: {requested} exceeds the limit of {limit} (raise it with cagd_limits (\"{}\", VALUE))",
+                which.field()
+            ),
+            other => other.to_string(),
+        };
+        PkgError::new(kind, message)
+    }
+}
+
+/// The package's result type.
+pub type Result<T, E = PkgError> = std::result::Result<T, E>;
+
+/// A [`Limit`] by its field name (`"max_grid_points"`), as `cagd_limits` takes it.
+pub fn limit_by_name(name: &str) -> Option<Limit> {
+    Limit::ALL.into_iter().find(|l| l.field() == name)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn identifiers_and_library_messages() {
+        let e: PkgError = cagd::Error::DerivativeOrder {
+            order: 4,
+            degree: 3,
+        }
+        .into();
+        assert_eq!(e.identifier(), "cagd:value");
+        assert_eq!(e.message, "derivative order 4 exceeds the degree 3");
+        let e: PkgError = cagd::Error::TooLarge {
+            what: "N",
+            requested: 20,
+            limit: 10,
+            which: Limit::Samples,
+        }
+        .into();
+        assert_eq!(e.identifier(), "cagd:limit");
+        assert!(
+            e.message.contains("cagd_limits (\"max_samples\", VALUE)"),
+            "{e}"
+        );
+        let names: std::collections::HashSet<_> = Kind::ALL.iter().map(|k| k.name()).collect();
+        assert_eq!(names.len(), Kind::ALL.len());
+        assert_eq!(limit_by_name("max_degree"), Some(Limit::Degree));
+        assert_eq!(limit_by_name("degree"), None);
+    }
+}

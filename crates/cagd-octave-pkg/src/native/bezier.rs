@@ -1,0 +1,138 @@
+//! Bézier curves and patches: values, derivatives, subdivision, degree elevation.
+
+use cagd::bezier::{BezierCurve, BezierPatch};
+use nalgebra::DMatrix;
+
+use super::{bezier_curve, cost, native};
+use crate::args::Call;
+use crate::error::{Kind, PkgError, Result};
+use crate::number::{emit_grid, emit_matrix, params, scalar, Number};
+use crate::value::Sink;
+
+/// The points of `curve` at `t` as a `d × numel(t)` output `index`.
+fn emit_points<T: Number>(
+    call: &Call<'_, '_>,
+    sink: &mut dyn Sink,
+    index: usize,
+    curve: &BezierCurve<T>,
+    t: &[T],
+) -> Result<()> {
+    let d = curve.dim();
+    let n = curve.degree();
+    call.check_samples("t", t.len())?;
+    call.check_work("t", t.len(), cost::<T>((n + 1) * (n + 1 + d), n + 1))?;
+    T::emit_with(sink, index, &[d, t.len()], &mut |out| {
+        curve.eval_many_into(t, out)
+    })
+}
+
+native!(
+    /// `X = cagd_bezier (P, t)`: the curve with control points `P` (columns) at `t`.
+    bezier => bezier_t
+);
+
+fn bezier_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
+    call.nargin(2, 2, "X = cagd_bezier (P, t [, \"exact\"])")?;
+    call.nargout_max(1)?;
+    let curve = bezier_curve::<T>(call, call.arg(0), "P")?;
+    let t = params::<T>(call, 1, "t")?;
+    emit_points(call, sink, 0, &curve, &t)
+}
+
+native!(
+    /// `[X, Q] = cagd_bezier_derivative (P, t, r)`: the `r`-th derivative (default 1) at `t`
+    /// and its control points.
+    bezier_derivative => bezier_derivative_t
+);
+
+fn bezier_derivative_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
+    call.nargin(
+        2,
+        3,
+        "[X, Q] = cagd_bezier_derivative (P, t [, r] [, \"exact\"])",
+    )?;
+    call.nargout_max(2)?;
+    let curve = bezier_curve::<T>(call, call.arg(0), "P")?;
+    let t = params::<T>(call, 1, "t")?;
+    let r = if call.has(2) { call.count(2, "r")? } else { 1 };
+    let derivative = curve.derivative(r)?;
+    emit_points(call, sink, 0, &derivative, &t)?;
+    if call.nargout > 1 {
+        emit_matrix(sink, 1, derivative.control())?;
+    }
+    Ok(())
+}
+
+native!(
+    /// `[L, R] = cagd_bezier_subdivide (P, t)`: the control points of the two pieces of the
+    /// curve split at `t` (0 < t < 1).
+    bezier_subdivide => bezier_subdivide_t
+);
+
+fn bezier_subdivide_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
+    call.nargin(2, 2, "[L, R] = cagd_bezier_subdivide (P, t [, \"exact\"])")?;
+    call.nargout_max(2)?;
+    let curve = bezier_curve::<T>(call, call.arg(0), "P")?;
+    let t = scalar::<T>(call, 1, "t")?;
+    let (left, right) = curve.subdivide(t)?;
+    emit_matrix(sink, 0, left.control())?;
+    if call.nargout > 1 {
+        emit_matrix(sink, 1, right.control())?;
+    }
+    Ok(())
+}
+
+native!(
+    /// `Q = cagd_bezier_elevate (P, r)`: the same curve with its degree raised by `r`
+    /// (default 1).
+    bezier_elevate => bezier_elevate_t
+);
+
+fn bezier_elevate_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
+    call.nargin(1, 2, "Q = cagd_bezier_elevate (P [, r] [, \"exact\"])")?;
+    call.nargout_max(1)?;
+    let mut curve = bezier_curve::<T>(call, call.arg(0), "P")?;
+    let r = if call.has(1) { call.count(1, "r")? } else { 1 };
+    call.check_degree("P (degree + r)", curve.degree().saturating_add(r))?;
+    for _ in 0..r {
+        curve = curve.elevate();
+    }
+    emit_matrix(sink, 0, curve.control())
+}
+
+/// The form of a patch net.
+const PATCH_FORM: &str = "a d × (m+1) × (n+1) array, B(:, i+1, j+1) = b_ij";
+
+native!(
+    /// `X = cagd_bezier_patch (B, u, v)`: the patch with net `B` (`d × (m+1) × (n+1)`) on the
+    /// grid `u × v`, as `d × numel(u) × numel(v)`.
+    bezier_patch => bezier_patch_t
+);
+
+fn bezier_patch_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
+    call.nargin(3, 3, "X = cagd_bezier_patch (B, u, v [, \"exact\"])")?;
+    call.nargout_max(1)?;
+    let b = call.nonempty(0, "B", PATCH_FORM)?;
+    if b.dims.iter().skip(3).any(|&k| k != 1) {
+        return Err(PkgError::arg(
+            Kind::Shape,
+            "B",
+            format!("an array of size {}", b.size_str()),
+            PATCH_FORM,
+        ));
+    }
+    cagd::error::check_finite("B", b.data.iter())?;
+    let (d, m1, n1) = (b.dims[0], b.dims[1], b.dims.get(2).copied().unwrap_or(1));
+    call.check_degree("B (degree)", m1.max(n1) - 1)?;
+    let coords = (0..d)
+        .map(|c| DMatrix::from_fn(m1, n1, |i, j| T::from_input(b.data[c + d * (i + m1 * j)])))
+        .collect();
+    let patch = BezierPatch::new(coords)?;
+    let u = params::<T>(call, 1, "u")?;
+    let v = params::<T>(call, 2, "v")?;
+    call.check_grid("u, v", u.len(), v.len())?;
+    call.check_work("u, v", u.len() * v.len(), cost::<T>((m1 + n1) * d, m1 + n1))?;
+    let mut grid = vec![T::zero(); u.len() * v.len() * d];
+    patch.eval_grid_into(&u, &v, &mut grid)?;
+    emit_grid(sink, 0, (u.len(), v.len(), d), &grid)
+}

@@ -1,0 +1,84 @@
+//! The native functions `cagd_*`: the rest of the library in Octave's own terms.
+//!
+//! | Octave | core |
+//! |---|---|
+//! | `X = cagd_bezier (P, t)` | [`BezierCurve::eval_many_into`](cagd::BezierCurve::eval_many_into) |
+//! | `[X, Q] = cagd_bezier_derivative (P, t, r)` | [`BezierCurve::derivative`](cagd::BezierCurve::derivative) |
+//! | `[L, R] = cagd_bezier_subdivide (P, t)` | [`BezierCurve::subdivide`](cagd::BezierCurve::subdivide) |
+//! | `Q = cagd_bezier_elevate (P, r)` | [`BezierCurve::elevate`](cagd::BezierCurve::elevate) |
+//! | `X = cagd_bezier_patch (B, u, v)` | [`BezierPatch::eval_grid_into`](cagd::BezierPatch::eval_grid_into) |
+//! | `[X, rc, rd, rcd] = cagd_coons (c1, c2, d1, d2, u, v)` | [`CoonsPatch`](cagd::CoonsPatch) of Bézier curves |
+//! | `[X, g1, g2, g12] = cagd_gordon (cu, cv, un, vn, u, v)` | [`GordonSurface`](cagd::GordonSurface) of Bézier curves |
+//! | `X = cagd_bspline (p, P, U, t)` | [`BSplineCurve`](cagd::BSplineCurve) |
+//! | `X = cagd_nurbs (p, P, w, U, t)` | [`NurbsCurve`](cagd::NurbsCurve) |
+//! | `[X, D] = cagd_spline (Q, t, ends)` | [`CubicSpline`](cagd::CubicSpline) |
+//! | `[X, B] = cagd_hermite (p0, p1, t0, t1, u)` | [`HermiteCubic`](cagd::HermiteCubic) |
+//! | `G = cagd_convert (G, from, to)` | [`cagd::conversion::convert`] |
+//! | `B = cagd_bernstein (n, t)` | [`cagd::bernstein::basis_matrix`] |
+//!
+//! Each takes the option `"exact"` as its last argument (see [`crate::number`]).
+
+mod bezier;
+mod splines;
+mod surfaces;
+
+pub use bezier::{bezier, bezier_derivative, bezier_elevate, bezier_patch, bezier_subdivide};
+pub use splines::{bernstein, bspline, convert, hermite, nurbs_curve, spline};
+pub use surfaces::{coons, gordon};
+
+use cagd::bezier::BezierCurve;
+use cagd::limits::exact_op_cost;
+
+use crate::args::Call;
+use crate::error::Result;
+use crate::number::{matrix_value, Number};
+use crate::value::{Sink, Value};
+
+/// A function of one arithmetic.
+type Typed = fn(&Call<'_, '_>, &mut dyn Sink) -> Result<()>;
+
+/// Runs `exact` without the trailing option `"exact"` if it is there, else `fast`.
+fn with_exact(call: &Call<'_, '_>, sink: &mut dyn Sink, fast: Typed, exact: Typed) -> Result<()> {
+    if call.last_is_option("exact") {
+        exact(&call.without_last(), sink)
+    } else {
+        fast(call, sink)
+    }
+}
+
+/// Defines the public function `$name` running `$typed::<f64>` or, with `"exact"`,
+/// `$typed::<BigRational>`.
+macro_rules! native {
+    ($(#[$doc:meta])* $name:ident => $typed:ident) => {
+        $(#[$doc])*
+        pub fn $name(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
+            super::with_exact(call, sink, $typed::<f64>, $typed::<num_rational::BigRational>)
+        }
+    };
+}
+pub(crate) use native;
+
+/// The operations of `ops` double operations in `T`: in exact arithmetic each weighs
+/// [`exact_op_cost`] of numbers of about `words` 64-bit words (they grow with the degree).
+fn cost<T: Number>(ops: usize, words: usize) -> usize {
+    if <T as cagd_octave::literal::LiteralScalar>::EXACT {
+        let per = exact_op_cost(64 * words.max(1) as u128);
+        ops.saturating_mul(usize::try_from(per).unwrap_or(usize::MAX))
+    } else {
+        ops
+    }
+}
+
+/// The form of control points.
+const CONTROL_FORM: &str = "a d × (n+1) matrix, one control point per column";
+
+/// A Bézier curve from control points given as a value (columns = points).
+fn bezier_curve<T: Number>(
+    call: &Call<'_, '_>,
+    v: &Value<'_>,
+    what: &'static str,
+) -> Result<BezierCurve<T>> {
+    let p = matrix_value::<T>(v, what, CONTROL_FORM, &call.limits)?;
+    call.check_degree(what, p.ncols() - 1)?;
+    Ok(BezierCurve::new(p)?)
+}

@@ -1,0 +1,62 @@
+## -*- texinfo -*-
+## @deftypefn  {} {[@var{X}, @var{g1}, @var{g2}, @var{g12}] =} cagd_gordon (@var{cu}, @var{cv}, @var{un}, @var{vn}, @var{u}, @var{v})
+## @deftypefnx {} {[@dots{}] =} cagd_gordon (@dots{}, "exact")
+## The Gordon surface of a network of Bézier curves on the grid @var{u} × @var{v}, with its
+## three parts (thesis §4.4, Izrek 4.4):
+##
+## @example
+## g = g1 + g2 - g12,   g1 = sum_i g(u_i, v) L_i(u),   g2 = sum_j g(u, v_j) L_j(v),
+## g12 = sum_i sum_j g(u_i, v_j) L_i(u) L_j(v)
+## @end example
+##
+## @table @var
+## @item un, vn
+## the nodes @math{u_0 < … < u_m} and @math{v_0 < … < v_n};
+## @item cu
+## a cell of @math{m+1} control point matrices (@math{d × (k+1)}, columns): the curves
+## @math{g(u_i, ·)}, functions of @math{v};
+## @item cv
+## a cell of @math{n+1} control point matrices: the curves @math{g(·, v_j)}, functions of
+## @math{u};
+## @item X, g1, g2, g12
+## @math{d × numel (u) × numel (v)}, as @code{cagd_coons}.
+## @end table
+## The crossings @math{g(u_i, v_j)} are taken from @var{cu}; each must lie on the curve of
+## @var{cv} through it (relative tolerance 1e-10, else @code{cagd:network}).  With
+## @code{"exact"}: exact fractions (see @code{cagd_bezier}).
+##
+## Example (appendix D's network, the surface (u, v, v + u - u^2)):
+## @example
+## @group
+## d = @{[0 0; 0 1; 0 1], [0.5 0.5; 0 1; 0.25 1.25], [1 1; 0 1; 0 1]@};     % g(u_i, v)
+## c = @{[0 0.5 1; 0 0 0; 0 0.5 0], [0 0.5 1; 0.5 0.5 0.5; 0.5 1 0.5], ...
+##      [0 0.5 1; 1 1 1; 1 1.5 1]@};                                         % g(u, v_j)
+## x = [0 0.5 1];
+## cagd_gordon (d, c, x, x, 0.2, 0.7)'
+##   @result{} [0.2 0.7 0.86]
+## @end group
+## @end example
+## @seealso{krpaGordon, Lagrange, cagd_coons}
+## @end deftypefn
+
+function varargout = cagd_gordon (varargin)
+  [varargout{1:max (nargout, 1)}] = __cagd__ ("cagd_gordon", varargin{:});
+endfunction
+
+%!shared d, c, x
+%! d = {[0 0; 0 1; 0 1], [0.5 0.5; 0 1; 0.25 1.25], [1 1; 0 1; 0 1]};
+%! c = {[0 0.5 1; 0 0 0; 0 0.5 0], [0 0.5 1; 0.5 0.5 0.5; 0.5 1 0.5], [0 0.5 1; 1 1 1; 1 1.5 1]};
+%! x = [0 0.5 1];
+%!test
+%! [X, g1, g2, g12] = cagd_gordon (d, c, x, x, 0.2, 0.7);
+%! assert (X, [0.2; 0.7; 0.86], 1e-15);
+%! assert (X, g1 + g2 - g12, 1e-15);
+%!assert (cagd_gordon (d, c, x, x, 0.2, 0.7, "exact"), {"1/5"; "7/10"; "43/50"})
+%!test
+%! t = linspace (0, 1, 5);
+%! X = cagd_gordon (d, c, x, x, t, t);
+%! [V, U] = meshgrid (t, t);
+%! assert (squeeze (X(3,:,:)), V + U - U.^2, 1e-15);
+%!error <network is not compatible> cagd_gordon (d, {c{1}, c{2} + 1, c{3}}, x, x, 0.5, 0.5)
+%!error <cu: double is not accepted> cagd_gordon ([0 1], c, x, x, 0.5, 0.5)
+%!error <nodes must increase> cagd_gordon (d, c, [0 1 0.5], x, 0.5, 0.5)

@@ -1,0 +1,33 @@
+## -*- texinfo -*-
+## @deftypefn  {} {@var{X} =} cagd_nurbs (@var{p}, @var{P}, @var{w}, @var{U}, @var{t})
+## @deftypefnx {} {@var{X} =} cagd_nurbs (@dots{}, "exact")
+## The NURBS curve of degree @var{p} with control points @var{P} (@math{d × n}, columns),
+## positive weights @var{w} (@math{n} values) and knots @var{U} (@math{n + p + 1}; @code{[]}
+## for the clamped uniform knots on [0, 1]) at @var{t} (in the domain):
+## @math{C(t) = Σ_k w_k N_@{k,p@}(t) P_k / Σ_k w_k N_@{k,p@}(t)}.  @var{X} is
+## @math{d × numel (t)}.  With @code{"exact"}: exact fractions (see @code{cagd_bezier}).
+## For octave-nurbs structures see @code{cagd_nrbeval}.
+##
+## Example (a quarter of the unit circle):
+## @example
+## @group
+## X = cagd_nurbs (2, [1 1 0; 0 1 1], [1 sqrt(2)/2 1], [], linspace (0, 1, 5));
+## max (abs (sqrt (sum (X.^2)) - 1))
+##   @result{} 1.1102e-16
+## @end group
+## @end example
+## @seealso{cagd_nrbeval, cagd_bspline}
+## @end deftypefn
+
+function X = cagd_nurbs (varargin)
+  X = __cagd__ ("cagd_nurbs", varargin{:});
+endfunction
+
+%!test
+%! X = cagd_nurbs (2, [1 1 0; 0 1 1], [1 sqrt(2)/2 1], [], linspace (0, 1, 9));
+%! assert (sqrt (sum (X.^2)), ones (1, 9), 2e-16);
+%! assert (X(:, [1 end]), [1 0; 0 1]);
+%!assert (cagd_nurbs (2, [0 1 2], [1 2 1], [], 0.5, "exact"), {"1"})
+%!assert (cagd_nurbs (2, [0 1 2], [1 2 1], [], "1/3", "exact"), {"10/13"})
+%!error <weight 1 is 0> cagd_nurbs (2, [0 1 2], [1 0 1], [], 0.5)
+%!error <expected 3 weights> cagd_nurbs (2, [0 1 2], [1 1], [], 0.5)

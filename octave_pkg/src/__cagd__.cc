@@ -1,0 +1,244 @@
+// __cagd__.cc -- the oct-file of the Octave package cagd: a thin gateway to the Rust library
+// cagd-octave-ffi (crates/cagd-octave-ffi, C ABI in cagd_octave_ffi.h).
+//
+//   [out1, out2, ...] = __cagd__ (NAME, arg1, arg2, ...)
+//
+// calls the package function NAME. The arguments are described to the Rust side as a tree of
+// cagd_value that borrows Octave's own arrays (no copy); the results are Octave arrays created
+// here, zero-filled, and filled by the Rust side through the sink callbacks (no copy either).
+//
+// Errors: the Rust side returns an identifier ("cagd:shape") and a message; this gateway raises
+// the Octave error with error_with_id only after cagd_call has returned, so no C++ exception
+// ever unwinds through Rust frames, and the callbacks below are noexcept. A Rust panic is caught
+// on the Rust side and comes back as the error cagd:internal.
+
+#include <cstring>
+#include <deque>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <octave/oct.h>
+#include <octave/Cell.h>
+#include <octave/oct-map.h>
+
+#include "cagd_octave_ffi.h"
+
+namespace
+{
+  // Deepest nesting of cells and structs described (as MAX_DEPTH on the Rust side).
+  const std::size_t max_depth = 64;
+
+  // Everything the argument tree points into, alive until the call returns.
+  struct arena
+  {
+    std::deque<NDArray> arrays;
+    std::deque<charNDArray> chars;
+    std::deque<std::string> texts;
+    std::deque<std::vector<std::size_t>> dims;
+    std::deque<std::vector<cagd_value>> children;
+    std::deque<std::vector<const char *>> names;
+  };
+
+  const std::size_t *
+  keep_dims (arena& a, const dim_vector& dv)
+  {
+    std::vector<std::size_t> d (dv.ndims ());
+    for (int i = 0; i < dv.ndims (); i++)
+      d[i] = static_cast<std::size_t> (dv(i));
+    a.dims.push_back (std::move (d));
+    return a.dims.back ().data ();
+  }
+
+  // The class of a refused value, as the messages name it.
+  std::string
+  class_of (const octave_value& v)
+  {
+    if (! v.is_defined ())
+      return "undefined";
+    std::string c = v.class_name ();
+    if (v.isstruct ())
+      return "struct array";
+    if (v.issparse ())
+      c = "sparse " + c;
+    if (v.iscomplex ())
+      c = "complex " + c;
+    return c;
+  }
+
+  void
+  other (cagd_value& out, arena& a, const std::string& cls)
+  {
+    a.texts.push_back (cls);
+    out.kind = CAGD_OTHER;
+    out.text = a.texts.back ().data ();
+    out.text_len = a.texts.back ().size ();
+  }
+
+  void
+  describe (const octave_value& v, cagd_value& out, arena& a, std::size_t depth)
+  {
+    std::memset (&out, 0, sizeof out);
+    if (depth > max_depth)
+      {
+        other (out, a, "cell or struct nested too deep");
+        return;
+      }
+    if (! v.is_defined ())
+      {
+        other (out, a, "undefined");
+        return;
+      }
+    const dim_vector dv = v.dims ();
+    if (v.is_double_type () && v.isreal () && ! v.issparse () && ! v.iscomplex ())
+      {
+        a.arrays.push_back (v.array_value ());
+        const NDArray& arr = a.arrays.back ();
+        out.kind = CAGD_REAL;
+        out.ndims = dv.ndims ();
+        out.dims = keep_dims (a, dv);
+        out.real = arr.data ();
+      }
+    else if (v.is_char_matrix () || v.is_string ())
+      {
+        a.chars.push_back (v.char_array_value ());
+        const charNDArray& chr = a.chars.back ();
+        out.kind = CAGD_CHAR;
+        out.ndims = dv.ndims ();
+        out.dims = keep_dims (a, dv);
+        out.text = chr.data ();
+        out.text_len = static_cast<std::size_t> (chr.numel ());
+      }
+    else if (v.iscell ())
+      {
+        const Cell c = v.cell_value ();
+        std::vector<cagd_value> items (c.numel ());
+        for (octave_idx_type i = 0; i < c.numel (); i++)
+          describe (c(i), items[i], a, depth + 1);
+        a.children.push_back (std::move (items));
+        out.kind = CAGD_CELL;
+        out.ndims = dv.ndims ();
+        out.dims = keep_dims (a, dv);
+        out.items = a.children.back ().data ();
+        out.n_items = a.children.back ().size ();
+      }
+    else if (v.isstruct () && v.numel () == 1)
+      {
+        const octave_scalar_map m = v.scalar_map_value ();
+        const string_vector keys = m.fieldnames ();
+        std::vector<cagd_value> items (keys.numel ());
+        std::vector<const char *> names (keys.numel ());
+        for (octave_idx_type i = 0; i < keys.numel (); i++)
+          {
+            a.texts.push_back (keys(i));
+            names[i] = a.texts.back ().c_str ();
+            describe (m.contents (keys(i)), items[i], a, depth + 1);
+          }
+        a.children.push_back (std::move (items));
+        a.names.push_back (std::move (names));
+        out.kind = CAGD_STRUCT;
+        out.items = a.children.back ().data ();
+        out.names = a.names.back ().data ();
+        out.n_items = a.children.back ().size ();
+      }
+    else
+      other (out, a, class_of (v));
+  }
+
+  // The outputs, created by the callbacks and returned once the Rust call is done.
+  struct outputs
+  {
+    std::deque<std::pair<std::size_t, NDArray>> reals;
+    std::deque<std::pair<std::size_t, octave_value>> others;
+  };
+
+  dim_vector
+  size_of (std::size_t ndims, const std::size_t *dims)
+  {
+    dim_vector dv;
+    dv.resize (ndims < 2 ? 2 : static_cast<int> (ndims), 1);
+    for (std::size_t i = 0; i < ndims; i++)
+      dv(i) = static_cast<octave_idx_type> (dims[i]);
+    return dv;
+  }
+
+  extern "C" double *
+  sink_real (void *ctx, std::size_t index, std::size_t ndims, const std::size_t *dims) noexcept
+  {
+    try
+      {
+        outputs& out = *static_cast<outputs *> (ctx);
+        out.reals.emplace_back (index, NDArray (size_of (ndims, dims)));
+        return out.reals.back ().second.fortran_vec ();
+      }
+    catch (...)
+      {
+        return nullptr;
+      }
+  }
+
+  extern "C" int
+  sink_strings (void *ctx, std::size_t index, std::size_t ndims, const std::size_t *dims,
+                const char *const *texts, const std::size_t *lens) noexcept
+  {
+    try
+      {
+        outputs& out = *static_cast<outputs *> (ctx);
+        Cell c (size_of (ndims, dims));
+        for (octave_idx_type i = 0; i < c.numel (); i++)
+          c(i) = octave_value (std::string (texts[i], lens[i]));
+        out.others.emplace_back (index, octave_value (c));
+        return 0;
+      }
+    catch (...)
+      {
+        return 1;
+      }
+  }
+}
+
+DEFUN_DLD (__cagd__, args, nargout,
+           "-*- texinfo -*-\n\
+@deftypefn {} {[@dots{}] =} __cagd__ (@var{name}, @dots{})\n\
+Internal gateway of the cagd package: calls the package function @var{name}.\n\
+Use the package's functions (@code{help cagd_bezier}, @code{help deCasteljau}, @dots{}).\n\
+@end deftypefn")
+{
+  if (args.length () < 1 || ! args(0).is_string ())
+    error_with_id ("cagd:nargin", "__cagd__: the first argument must be a function name");
+  const std::string name = args(0).string_value ();
+
+  arena a;
+  std::vector<cagd_value> values (args.length () - 1);
+  for (octave_idx_type i = 1; i < args.length (); i++)
+    describe (args(i), values[i - 1], a, 0);
+
+  outputs out;
+  const cagd_sink sink = { &out, sink_real, sink_strings };
+  cagd_error err = { nullptr, nullptr };
+  const int status = cagd_call (name.data (), name.size (), values.data (), values.size (),
+                                nargout, &sink, &err);
+  if (status != 0)
+    {
+      // Copy and free the Rust strings first: error_with_id does not return.
+      const std::string id = err.id ? err.id : "cagd:internal";
+      const std::string message = err.message ? err.message : "__cagd__: unknown error";
+      cagd_error_free (&err);
+      error_with_id (id.c_str (), "%s", message.c_str ());
+    }
+
+  octave_value_list retval;
+  for (auto& r : out.reals)
+    {
+      if (retval.length () <= static_cast<octave_idx_type> (r.first))
+        retval.resize (r.first + 1);
+      retval(r.first) = octave_value (r.second);
+    }
+  for (auto& o : out.others)
+    {
+      if (retval.length () <= static_cast<octave_idx_type> (o.first))
+        retval.resize (o.first + 1);
+      retval(o.first) = o.second;
+    }
+  return retval;
+}
