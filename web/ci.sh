@@ -32,6 +32,9 @@ fi
 echo "== web/build.sh"
 bash web/build.sh
 
+echo "== clippy for the WebAssembly build (the core without its parallel feature; warnings are errors)"
+cargo clippy -p cagd-web --target wasm32-unknown-unknown -- -D warnings
+
 echo "== cargo build -p cagd-cli --bin cagd (the program the page is compared with; it also serves the page)"
 cargo build -p cagd-cli --bin cagd
 

@@ -74,7 +74,6 @@ where
     if row_len == 0 || out.is_empty() {
         return;
     }
-    let rows = out.len().div_ceil(row_len);
     let run_block = |first: usize, block: &mut [T]| {
         let mut scratch = init();
         for (r, chunk) in block.chunks_mut(row_len).enumerate() {
@@ -84,6 +83,7 @@ where
     #[cfg(feature = "parallel")]
     {
         let threads = rayon::current_num_threads();
+        let rows = out.len().div_ceil(row_len);
         if threads > 1 && rows > 1 && work >= PARALLEL_MIN_WORK {
             use rayon::prelude::*;
             // A few blocks per thread, so that a thread slowed by other load can be helped out.
