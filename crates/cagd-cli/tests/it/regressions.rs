@@ -138,22 +138,36 @@ fn scripts_have_a_work_budget() {
 }
 
 /// One evaluation is bounded in work (64 × max_elements element operations), so a short text
-/// cannot run for minutes: chains of large products or sums stop with `TooLarge`.
+/// cannot run for minutes: chains of large products or sums stop with `TooLarge`. (Shown at
+/// 10⁵ elements, a budget of 6.4·10⁶ operations that each chain exceeds after a few links;
+/// at the default 4·10⁶ the same chains, 40 times larger, stop alike.)
 #[test]
 fn one_evaluation_has_a_work_budget() {
-    let products = format!("ones(500,512){}", "*ones(512,500)*ones(500,512)".repeat(40));
+    let limits = cagd::limits::Limits {
+        max_elements: 100_000,
+        ..cagd::limits::Limits::default()
+    };
+    let parse = |text: &str| cagd_octave::literal::parse_matrix_with::<f64>(text, &limits);
+    // Each product 100·128·100 = 1.28·10⁶ multiply-adds: the budget ends after about five.
+    let products = format!("ones(100,128){}", "*ones(128,100)*ones(100,128)".repeat(40));
     let start = std::time::Instant::now();
-    let result = parse_matrix::<f64>(&products).map(|m| m.shape());
+    let result = parse(&products).map(|m| m.shape());
     assert!(
         matches!(result, Err(LiteralError::TooLarge { .. })),
         "{result:?}"
     );
-    let sums = format!("ones(2000,2000){}", "+1".repeat(2000));
-    let result = parse_matrix::<f64>(&sums).map(|m| m.shape());
+    // Each sum 9·10⁴ additions: the budget ends after about seventy of the 2000.
+    let sums = format!("ones(300,300){}", "+1".repeat(2000));
+    let result = parse(&sums).map(|m| m.shape());
     assert!(
         matches!(result, Err(LiteralError::TooLarge { .. })),
         "{result:?}"
     );
+    // Within the budget the same chains run.
+    let short = parse(&format!("ones(300,300){}", "+1".repeat(60))).unwrap();
+    assert_eq!(short[(299, 299)], 61.0);
+    let short = parse("ones(100,128)*ones(128,100)*ones(100,128)").unwrap();
+    assert_eq!(short[(0, 0)], 128.0 * 100.0);
     assert!(start.elapsed().as_secs() < 60, "{:?}", start.elapsed());
     // Ordinary work is far inside the budget.
     let m = parse_matrix::<f64>("ones(1000,1000)*ones(1000,1)+1").unwrap();
