@@ -9,5 +9,5 @@ d="$(pwd)"
 mkdir -p "corpus/$t" "artifacts/$t" logs
 # Absolute paths: the cli target changes into a scratch folder.
 exec nice -n 19 "$d/target/x86_64-unknown-linux-gnu/release/$t" "$d/corpus/$t" "$d/seeds/$t" \
-  -runs=10000000 -max_total_time=1800 -timeout=10 -rss_limit_mb=2048 -max_len=4096 \
+  -runs=10000000 -max_total_time=1800 -timeout=30 -rss_limit_mb=2048 -max_len=4096 \
   -artifact_prefix="$d/artifacts/$t/" -print_final_stats=1 > "logs/$t.log" 2>&1

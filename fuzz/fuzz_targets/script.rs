@@ -3,7 +3,7 @@
 #![no_main]
 
 mod common;
-use common::small_limits;
+use common::fuzz_limits;
 
 use cagd_octave::literal::Env;
 use cagd_octave::script::{run, Binding};
@@ -12,7 +12,7 @@ use libfuzzer_sys::fuzz_target;
 use num_rational::BigRational;
 
 fuzz_target!(|data: &[u8]| {
-    let limits = small_limits();
+    let limits = fuzz_limits();
     let Ok(text) = std::str::from_utf8(data) else {
         return;
     };

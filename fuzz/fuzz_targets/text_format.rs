@@ -3,13 +3,13 @@
 #![no_main]
 
 mod common;
-use common::small_limits;
+use common::fuzz_limits;
 
 use cagd_octave::text_format::{read_numeric_text, read_text_with, write_text};
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
-    let limits = small_limits();
+    let limits = fuzz_limits();
     let Ok(text) = std::str::from_utf8(data) else {
         return;
     };
