@@ -228,7 +228,7 @@ impl<T: Scalar> HermiteCubic<T> {
             &self.geometry,
             crate::conversion::CubicForm::Hermite,
             crate::conversion::CubicForm::Bezier,
-        );
+        )?;
         BezierCurve::new(g)
     }
 
@@ -249,7 +249,7 @@ impl<T: Scalar> HermiteCubic<T> {
                 curve.control(),
                 crate::conversion::CubicForm::Bezier,
                 crate::conversion::CubicForm::Hermite,
-            ),
+            )?,
         })
     }
 }

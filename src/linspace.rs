@@ -16,16 +16,38 @@
 /// assert_eq!(cagd::linspace(0.0, 1.0, 1), vec![1.0]);
 /// assert!(cagd::linspace(0.0, 1.0, 0).is_empty());
 /// ```
+///
+/// # Panics
+/// When `n` numbers cannot be allocated; [`try_linspace`] refuses such an `n` instead.
 pub fn linspace(a: f64, b: f64, n: usize) -> Vec<f64> {
+    match try_linspace(a, b, n) {
+        Ok(v) => v,
+        Err(e) => panic!("{e}"),
+    }
+}
+
+/// [`linspace`], with [`Error::TooLarge`](crate::Error::TooLarge) for an `n` whose numbers
+/// cannot be allocated (`usize::MAX`, say) instead of an abort.
+///
+/// ```
+/// assert_eq!(cagd::linspace::try_linspace(0.0, 1.0, 3)?, vec![0.0, 0.5, 1.0]);
+/// assert!(cagd::linspace::try_linspace(0.0, 1.0, usize::MAX).is_err());
+/// # Ok::<(), cagd::Error>(())
+/// ```
+pub fn try_linspace(a: f64, b: f64, n: usize) -> crate::Result<Vec<f64>> {
+    let mut out = crate::grid::try_filled("linspace samples", n, 0.0)?;
     match n {
-        0 => return Vec::new(),
-        1 => return vec![b],
+        0 => return Ok(out),
+        1 => {
+            out[0] = b;
+            return Ok(out);
+        }
         _ => {}
     }
     if a == b {
-        return vec![b; n];
+        out.fill(b);
+        return Ok(out);
     }
-    let mut out = vec![0.0; n];
     out[0] = a;
     out[n - 1] = b;
     let mut delta = (b - a) / (n - 1) as f64;
@@ -47,7 +69,7 @@ pub fn linspace(a: f64, b: f64, n: usize) -> Vec<f64> {
             a + half as f64 * delta
         };
     }
-    out
+    Ok(out)
 }
 
 #[cfg(test)]

@@ -137,6 +137,13 @@ pub fn solve_tridiagonal<T: Scalar>(
             ),
         });
     }
+    if let Some(k) = rhs.iter().position(|r| r.len() != rhs[0].len()) {
+        return Err(Error::ShapeMismatch {
+            what: "tridiagonal system",
+            expected: format!("right-hand sides of {} entries each", rhs[0].len()),
+            found: format!("{} entries in row {k}", rhs[k].len()),
+        });
+    }
     let mut c = vec![T::zero(); n];
     let mut d: Vec<DVector<T>> = Vec::with_capacity(n);
     for k in 0..n {

@@ -92,6 +92,14 @@ pub fn binomial_scalar<T: Scalar>(n: usize, k: usize) -> T {
 /// assert_eq!(binomial_f64(2, 3), 0.0);
 /// ```
 pub fn binomial_f64(n: usize, k: usize) -> f64 {
+    if k > n {
+        return 0.0;
+    }
+    // C(n, m), m = min(k, n − k) > 1030 and n ≥ 2m, is at least C(2062, 1031) > f64::MAX:
+    // answered at once instead of after min(k, n − k) products (2⁶³ for n = usize::MAX).
+    if k.min(n - k) > 1030 {
+        return f64::INFINITY;
+    }
     binomial_scalar(n, k)
 }
 

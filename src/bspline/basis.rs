@@ -24,14 +24,16 @@ use crate::scalar::Scalar;
 /// # Ok::<(), cagd::Error>(())
 /// ```
 pub fn find_span<T: Scalar>(p: usize, n_control: usize, knots: &[T], u: &T) -> Result<usize> {
+    super::knots::check_knot_slice("knot vector", p, n_control, knots)?;
     let (lo, hi) = (&knots[p], &knots[n_control]);
     check_in_domain(u, lo, hi)?;
     if u == hi {
         return Ok(last_span(p, n_control, knots));
     }
     // Largest s with u_s <= u, within [p, n_control − 1].
+    // (Knots out of order give some span in the range, never a panic.)
     let above = knots[..=n_control].partition_point(|k| k <= u);
-    Ok((above - 1).clamp(p, n_control - 1))
+    Ok(above.saturating_sub(1).clamp(p, n_control - 1))
 }
 
 /// The span [`find_span`] gives for the right end `u_{n_control}` of the domain: the last span
@@ -144,10 +146,31 @@ pub(crate) fn basis_functions_into<T: Scalar>(
 /// use cagd::bspline::cox_de_boor;
 /// let knots = [0.0, 1.0, 2.0, 3.0];
 /// // The uniform quadratic B-spline: ½u² on [0, 1], peak ¾ at u = 1.5.
-/// assert_eq!(cox_de_boor(0, 2, &knots, &0.5), 0.125);
-/// assert_eq!(cox_de_boor(0, 2, &knots, &1.5), 0.75);
+/// assert_eq!(cox_de_boor(0, 2, &knots, &0.5)?, 0.125);
+/// assert_eq!(cox_de_boor(0, 2, &knots, &1.5)?, 0.75);
+/// assert!(cox_de_boor(1, 2, &knots, &1.5).is_err()); // N_{1,2} needs the knots u_1 … u_4
+/// # Ok::<(), cagd::Error>(())
 /// ```
-pub fn cox_de_boor<T: Scalar>(i: usize, p: usize, knots: &[T], u: &T) -> T {
+///
+/// # Errors
+/// [`Error::InvalidArgument`](crate::Error::InvalidArgument) unless the knots `u_i … u_{i+p+1}`
+/// exist.
+pub fn cox_de_boor<T: Scalar>(i: usize, p: usize, knots: &[T], u: &T) -> Result<T> {
+    let needed = i.checked_add(p).and_then(|x| x.checked_add(1));
+    if needed.is_none_or(|last| last >= knots.len()) {
+        return Err(crate::Error::InvalidArgument {
+            what: "Cox-de Boor basis function",
+            message: format!(
+                "N_{{{i},{p}}} needs the knots u_{i} … u_{{{i}+{p}+1}}, but there are {} knots",
+                knots.len()
+            ),
+        });
+    }
+    Ok(cox_de_boor_unchecked(i, p, knots, u))
+}
+
+/// [`cox_de_boor`] for `i + p + 1 < knots.len()`.
+pub(crate) fn cox_de_boor_unchecked<T: Scalar>(i: usize, p: usize, knots: &[T], u: &T) -> T {
     let last = knots.len() - 1;
     if p == 0 {
         let (a, b) = (&knots[i], &knots[i + 1]);
@@ -163,12 +186,14 @@ pub fn cox_de_boor<T: Scalar>(i: usize, p: usize, knots: &[T], u: &T) -> T {
     let mut value = T::zero();
     let d1 = knots[i + p].clone() - knots[i].clone();
     if !d1.is_zero() {
-        value = value + (u.clone() - knots[i].clone()) / d1 * cox_de_boor(i, p - 1, knots, u);
+        value =
+            value + (u.clone() - knots[i].clone()) / d1 * cox_de_boor_unchecked(i, p - 1, knots, u);
     }
     let d2 = knots[i + p + 1].clone() - knots[i + 1].clone();
     if !d2.is_zero() {
         value = value
-            + (knots[i + p + 1].clone() - u.clone()) / d2 * cox_de_boor(i + 1, p - 1, knots, u);
+            + (knots[i + p + 1].clone() - u.clone()) / d2
+                * cox_de_boor_unchecked(i + 1, p - 1, knots, u);
     }
     value
 }
@@ -244,7 +269,7 @@ mod tests {
             let u = k as f64 / 20.0;
             let all = basis_all(2, n, &knots, &u).unwrap();
             for (i, v) in all.iter().enumerate() {
-                let r = cox_de_boor(i, 2, &knots, &u);
+                let r = cox_de_boor(i, 2, &knots, &u).unwrap();
                 assert!((v - r).abs() < 1e-15, "u={u} i={i}: {v} vs {r}");
             }
             assert!((all.iter().sum::<f64>() - 1.0).abs() < 1e-15);

@@ -64,7 +64,10 @@ impl<T: Scalar> KnotVector<T> {
     pub fn clamped_uniform(p: usize, n_control: usize) -> Result<Self> {
         check_count("clamped knot vector", p, n_control)?;
         let spans = n_control - p;
-        let mut knots = vec![T::zero(); p + 1];
+        let mut knots = crate::grid::try_filled("clamped knot vector", p + 1, T::zero())?;
+        knots
+            .try_reserve_exact(n_control)
+            .map_err(|_| too_many_knots("clamped knot vector", p, n_control))?;
         for j in 1..spans {
             knots.push(T::from_ratio(j as i64, spans as i64));
         }
@@ -81,9 +84,11 @@ impl<T: Scalar> KnotVector<T> {
     /// [`Error::TooFewControlPoints`] if `n_control < p + 1`.
     pub fn uniform(p: usize, n_control: usize) -> Result<Self> {
         check_count("uniform knot vector", p, n_control)?;
-        let knots = (0..n_control + p + 1)
-            .map(|j| T::from_ratio(j as i64 - p as i64, 1))
-            .collect();
+        let mut knots = Vec::new();
+        knots
+            .try_reserve_exact(n_control + p + 1)
+            .map_err(|_| too_many_knots("uniform knot vector", p, n_control))?;
+        knots.extend((0..n_control + p + 1).map(|j| T::from_ratio(j as i64 - p as i64, 1)));
         Ok(KnotVector { knots })
     }
 
@@ -125,14 +130,65 @@ impl<T: Scalar> KnotVector<T> {
     }
 }
 
-/// `n_control ≥ p + 1`.
+/// `n_control ≥ p + 1`, and `n_control + p + 1` knots a size that fits in memory.
 pub(crate) fn check_count(what: &'static str, p: usize, n_control: usize) -> Result<()> {
-    if n_control < p + 1 {
+    if n_control <= p {
         return Err(Error::TooFewControlPoints {
             what,
             degree: p,
-            min: p + 1,
+            min: p.saturating_add(1),
             found: n_control,
+        });
+    }
+    knot_count(what, p, n_control).map(|_| ())
+}
+
+/// `n_control + p + 1`, the number of knots, or [`Error::TooLarge`] when so many knots could
+/// not be held in memory (the sum overflows, or exceeds `isize::MAX` bytes).
+pub(crate) fn knot_count(what: &'static str, p: usize, n_control: usize) -> Result<usize> {
+    let max = isize::MAX as usize / std::mem::size_of::<f64>();
+    match n_control.checked_add(p).and_then(|x| x.checked_add(1)) {
+        Some(m) if m <= max => Ok(m),
+        _ => Err(Error::TooLarge {
+            what,
+            requested: n_control as u128 + p as u128 + 1,
+            limit: max as u128,
+            which: crate::error::Limit::Elements,
+        }),
+    }
+}
+
+/// [`Error::TooLarge`] for `n_control + p + 1` knots that cannot be allocated.
+fn too_many_knots(what: &'static str, p: usize, n_control: usize) -> Error {
+    Error::TooLarge {
+        what,
+        requested: n_control as u128 + p as u128 + 1,
+        limit: (isize::MAX as usize / std::mem::size_of::<f64>()) as u128,
+        which: crate::error::Limit::Elements,
+    }
+}
+
+/// [`check_knots`] for knots given as a slice.
+pub(crate) fn check_knot_slice<T: Scalar>(
+    what: &'static str,
+    p: usize,
+    n_control: usize,
+    knots: &[T],
+) -> Result<()> {
+    check_count(what, p, n_control)?;
+    if knots.len() != n_control + p + 1 {
+        return Err(Error::KnotCount {
+            what,
+            expected: n_control + p + 1,
+            found: knots.len(),
+        });
+    }
+    let (a, b) = (&knots[p], &knots[n_control]);
+    if a >= b || !a.is_finite_value() || !b.is_finite_value() {
+        return Err(Error::EmptyInterval {
+            what,
+            a: a.to_f64(),
+            b: b.to_f64(),
         });
     }
     Ok(())
@@ -146,23 +202,7 @@ pub(crate) fn check_knots<T: Scalar>(
     n_control: usize,
     knots: &KnotVector<T>,
 ) -> Result<()> {
-    check_count(what, p, n_control)?;
-    if knots.len() != n_control + p + 1 {
-        return Err(Error::KnotCount {
-            what,
-            expected: n_control + p + 1,
-            found: knots.len(),
-        });
-    }
-    let (a, b) = knots.domain(p);
-    if a >= b {
-        return Err(Error::EmptyInterval {
-            what,
-            a: a.to_f64(),
-            b: b.to_f64(),
-        });
-    }
-    Ok(())
+    check_knot_slice(what, p, n_control, knots.as_slice())
 }
 
 #[cfg(test)]

@@ -69,9 +69,22 @@ pub fn conversion_matrix<T: Scalar>(from: CubicForm, to: CubicForm) -> DMatrix<T
 }
 
 /// The geometry `X_to = X_from · conversion_matrix(from, to)` (`d × 4` in, `d × 4` out).
-/// `geometry` must have 4 columns.
-pub fn convert<T: Scalar>(geometry: &DMatrix<T>, from: CubicForm, to: CubicForm) -> DMatrix<T> {
-    T::mat_mul(geometry, &conversion_matrix(from, to))
+///
+/// # Errors
+/// [`Error::ShapeMismatch`](crate::Error::ShapeMismatch) unless `geometry` has 4 columns.
+pub fn convert<T: Scalar>(
+    geometry: &DMatrix<T>,
+    from: CubicForm,
+    to: CubicForm,
+) -> crate::Result<DMatrix<T>> {
+    if geometry.ncols() != 4 {
+        return Err(crate::Error::ShapeMismatch {
+            what: "cubic geometry",
+            expected: "4 columns (one per point or tangent of the cubic)".into(),
+            found: format!("{} × {}", geometry.nrows(), geometry.ncols()),
+        });
+    }
+    Ok(T::mat_mul(geometry, &conversion_matrix(from, to)))
 }
 
 #[cfg(test)]

@@ -49,6 +49,21 @@ pub(crate) fn check_len<T>(what: &'static str, expected: usize, out: &[T]) -> Re
     }
 }
 
+/// A vector of `len` copies of `value`, or [`Error::TooLarge`] (counted in
+/// [`Limit::Elements`](crate::error::Limit::Elements)) when the memory cannot be reserved: a size
+/// beyond what the machine can hold is refused, never a panic or an abort.
+pub(crate) fn try_filled<T: Clone>(what: &'static str, len: usize, value: T) -> Result<Vec<T>> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(len).map_err(|_| Error::TooLarge {
+        what,
+        requested: len as u128,
+        limit: (isize::MAX as usize / std::mem::size_of::<T>().max(1)) as u128,
+        which: crate::error::Limit::Elements,
+    })?;
+    v.resize(len, value);
+    Ok(v)
+}
+
 /// `rows · row_len` without overflow (an overflowing request is a shape error, not a panic).
 pub(crate) fn grid_len(what: &'static str, sizes: &[usize]) -> Result<usize> {
     sizes

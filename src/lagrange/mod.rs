@@ -40,7 +40,7 @@ mod product;
 
 pub use barycentric::{Lagrange, LagrangeInterpolant, LebesgueEstimate};
 pub use bernstein_form::bernstein_coefficients;
-pub use placement::{chebyshev_nodes, NodePlacement};
+pub use placement::{chebyshev_nodes, try_chebyshev_nodes, NodePlacement};
 pub use power::power_coefficients;
 pub use product::basis_product;
 pub(crate) use product::basis_product_unchecked;

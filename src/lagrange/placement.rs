@@ -13,20 +13,35 @@ use crate::scalar::Scalar;
 /// assert_eq!((t[0], t[2], t[4]), (0.0, 0.5, 1.0));
 /// assert!((t[1] - (1.0 - 0.5f64.sqrt()) / 2.0).abs() < 1e-16);
 /// ```
+///
+/// # Panics
+/// When `count` numbers cannot be allocated; [`try_chebyshev_nodes`] refuses such a count
+/// instead.
 pub fn chebyshev_nodes(count: usize) -> Vec<f64> {
-    match count {
-        0 => Vec::new(),
-        1 => vec![0.5],
-        _ => {
-            let m = (count - 1) as f64;
-            (0..count)
-                .map(|k| {
-                    let s = (std::f64::consts::PI * (2.0 * k as f64 - m) / (2.0 * m)).sin();
-                    (1.0 + s) / 2.0
-                })
-                .collect()
+    match try_chebyshev_nodes(count) {
+        Ok(v) => v,
+        Err(e) => panic!("{e}"),
+    }
+}
+
+/// [`chebyshev_nodes`], with [`Error::TooLarge`](crate::Error::TooLarge) for a count whose
+/// nodes cannot be allocated (`usize::MAX`, say) instead of an abort.
+///
+/// ```
+/// assert_eq!(cagd::lagrange::try_chebyshev_nodes(3)?, vec![0.0, 0.5, 1.0]);
+/// assert!(cagd::lagrange::try_chebyshev_nodes(usize::MAX).is_err());
+/// # Ok::<(), cagd::Error>(())
+/// ```
+pub fn try_chebyshev_nodes(count: usize) -> crate::Result<Vec<f64>> {
+    let mut out = crate::grid::try_filled("Chebyshev nodes", count, 0.5)?;
+    if count > 1 {
+        let m = (count - 1) as f64;
+        for (k, t) in out.iter_mut().enumerate() {
+            let s = (std::f64::consts::PI * (2.0 * k as f64 - m) / (2.0 * m)).sin();
+            *t = (1.0 + s) / 2.0;
         }
     }
+    Ok(out)
 }
 
 /// Where to put the nodes of an interpolation (or the curves of a Gordon network).

@@ -12,6 +12,7 @@ mod exact_paths;
 mod examples;
 mod gordon;
 mod grid_eval;
+mod hostile_library;
 mod layers;
 mod mixed_boundaries;
 mod octave_reference;

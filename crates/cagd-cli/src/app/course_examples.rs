@@ -166,9 +166,10 @@ fn conversions(out: &mut String, files: &mut Files) -> Result<(), CliError> {
     let mut figure = Figure::new("Lecture notes: one cubic, its Bézier and B-spline polygons");
     for (k, x2) in [[4, 7], [4, 1]].iter().enumerate() {
         let b = rows_q(&[&[2, 3], &[3, 5], x2, &[5, 3]]);
-        let h = convert(&b, CubicForm::Bezier, CubicForm::Hermite);
-        let s = convert(&b, CubicForm::Bezier, CubicForm::BSpline);
-        let back = convert(&s, CubicForm::BSpline, CubicForm::Bezier);
+        let conv = |g: &DMatrix<Q>, from, to| convert(g, from, to).map_err(lib("course", INTERNAL));
+        let h = conv(&b, CubicForm::Bezier, CubicForm::Hermite)?;
+        let s = conv(&b, CubicForm::Bezier, CubicForm::BSpline)?;
+        let back = conv(&s, CubicForm::BSpline, CubicForm::Bezier)?;
         let _ = writeln!(out, "x2 = ({}, {}):\n", x2[0], x2[1]);
         let mut r = Report::<Q>::new();
         r.push("X_B", Value::Matrix(b.clone()));

@@ -267,7 +267,7 @@ fn convert_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> 
     }
     let from = form(call, 1, "from")?;
     let to = form(call, 2, "to")?;
-    emit_matrix(sink, 0, &conversion::convert(&g, from, to))
+    emit_matrix(sink, 0, &conversion::convert(&g, from, to)?)
 }
 
 native!(
