@@ -21,6 +21,8 @@
 //! | interpolating cubic spline | [`spline::interpolation_cost`](crate::spline::interpolation_cost), [`spline::sample_cost`](crate::spline::sample_cost) |
 //! | Lagrange basis (barycentric) | [`Lagrange::weights_cost`](crate::lagrange::Lagrange::weights_cost), [`Lagrange::basis_cost`](crate::lagrange::Lagrange::basis_cost), [`Lagrange::interpolation_cost`](crate::lagrange::Lagrange::interpolation_cost) |
 //! | Coons patches, Gordon surfaces (blends of curves) | [`coons::coons_point_cost`](crate::coons::coons_point_cost), [`coons::bicubic_point_cost`](crate::coons::bicubic_point_cost), [`gordon::gordon_point_cost`](crate::gordon::gordon_point_cost), all through [`blended`] |
+//! | the set-up of a Gordon surface (crossings checked, Lagrange weights) | [`gordon::gordon_setup_cost`](crate::gordon::gordon_setup_cost) |
+//! | the discrete Coons formula | [`coons::discrete_coons_cost`](crate::coons::discrete_coons_cost) |
 //! | the band solve of a discrete Coons mask | [`Mask::solve_cost`](crate::coons::Mask::solve_cost) |
 //!
 //! The sizes grow with the construction ([`polynomial_bits`]): a de Casteljau scheme of degree

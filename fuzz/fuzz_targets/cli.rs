@@ -1,5 +1,5 @@
-//! The whole command line, in-process: a subcommand chosen by the first byte, then arguments
-//! split from the rest of the input at NUL bytes. Options come from a vocabulary (so that the
+//! The whole command line, in-process, at the default limits: a subcommand chosen by the first
+//! byte, then arguments split from the rest of the input at NUL bytes. Options come from a vocabulary (so that the
 //! fuzzer reaches the constructions rather than clap's parser) or are taken verbatim.
 //!
 //! `cagd_cli::run` stages files in memory and never writes; the target runs in an empty
@@ -9,6 +9,8 @@
 
 use libfuzzer_sys::fuzz_target;
 
+/// Every subcommand that computes from its arguments (not `thesis`, which takes none, nor
+/// `serve`). New ones are appended, so that the seeds' first bytes keep their meaning.
 const SUBCOMMANDS: &[&str] = &[
     "decasteljau",
     "bezier-patch",
@@ -26,8 +28,24 @@ const SUBCOMMANDS: &[&str] = &[
     "curve",
     "surface",
     "script",
+    "convert",
+    "elevate",
+    "subdivide",
+    "insert-knot",
+    "bspline-basis",
+    "continuity",
+    "integrate",
+    "ruled",
+    "ferguson",
+    "bspline-surface",
+    "nurbs-surface",
+    "circle",
+    "arc",
+    "course",
 ];
 
+/// Every option of the subcommands above, except the limits (`--max-…`, which the target
+/// keeps at their defaults) and the folders of `course` and `serve`.
 const OPTIONS: &[&str] = &[
     "--t",
     "--u",
@@ -70,8 +88,37 @@ const OPTIONS: &[&str] = &[
     "--plot",
     "--mesh",
     "--script",
+    "--bernstein",
+    "--blend",
+    "--by",
+    "--center",
+    "--coefficients",
+    "--digits",
+    "--du",
+    "--dv",
+    "--first",
+    "--second",
+    "--free-point",
+    "--from",
+    "--to",
+    "--insert",
+    "--interval",
+    "--k",
+    "--linear",
+    "--list",
+    "--params",
+    "--radius",
+    "--samples",
+    "--start",
+    "--uknots",
+    "--vknots",
+    "--x",
+    "--y",
+    "--z",
 ];
 
+/// Typical values, and values at the edges: near the range of doubles, subnormal, deep
+/// nesting, non-finite.
 const VALUES: &[&str] = &[
     "[0 0 0; 0 2 2; 8 2 0; 4 0 0]'",
     "[u;0;u-u^2]",
@@ -93,6 +140,25 @@ const VALUES: &[&str] = &[
     "clamped",
     "natural",
     "gregory",
+    "[0 0 0 1 2 3 3 3]",
+    "[0 0 0 0.5 1 1 1]",
+    "[1 2 1]",
+    "hermite",
+    "bezier",
+    "bspline",
+    "monomial",
+    "[0 0; 1 2; 3 2; 4 0]",
+    "[1 -1]",
+    "pi/2",
+    "2",
+    "1e308",
+    "-1.7e308",
+    "5e-324",
+    "[1e308 -1e308; 0 1]",
+    "[0 1e-310 1]",
+    "((((((((((((((((1))))))))))))))))",
+    "NaN",
+    "-Inf",
 ];
 
 fn init() {
@@ -101,14 +167,10 @@ fn init() {
         let dir = std::env::temp_dir().join(format!("cagd-fuzz-cli-{}", std::process::id()));
         std::fs::create_dir_all(&dir).expect("scratch folder");
         std::env::set_current_dir(&dir).expect("enter scratch folder");
-        // Smaller limits than the defaults (see the other targets), from cli_limits.env, which
-        // crates/cagd-cli/tests/it/regressions.rs replays: `run` reads them from the environment, and `--max-…`
+        // The default limits, as a user gets them: none from the environment, and `--max-…`
         // arguments are dropped below.
-        for (var, value) in include_str!("../cli_limits.env")
-            .lines()
-            .filter_map(|l| l.split_once('='))
-        {
-            std::env::set_var(var, value);
+        for (_, var, _) in cagd_cli::limits::SETTINGS {
+            std::env::remove_var(var);
         }
     });
 }
@@ -124,8 +186,10 @@ fuzz_target!(|data: &[u8]| {
     ];
     for piece in rest.split(|&b| b == 0) {
         let arg = match piece {
-            // One control byte 0x02..=0x1F: an option; 0x01 then any byte: a value.
-            [b] if (2..0x20).contains(b) => OPTIONS[*b as usize % OPTIONS.len()].to_string(),
+            // One control byte 0x03..=0x1F, or 0x02 then any byte: an option; 0x01 then any
+            // byte: a value.
+            [b] if (3..0x20).contains(b) => OPTIONS[*b as usize % OPTIONS.len()].to_string(),
+            [2, b] => OPTIONS[*b as usize % OPTIONS.len()].to_string(),
             [1, b] => VALUES[*b as usize % VALUES.len()].to_string(),
             _ => match std::str::from_utf8(piece) {
                 Ok(s) => s.to_string(),

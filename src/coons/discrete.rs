@@ -2,6 +2,7 @@
 
 use nalgebra::DMatrix;
 
+use crate::cost::Cost;
 use crate::error::{Error, Result};
 use crate::scalar::Scalar;
 
@@ -102,4 +103,30 @@ pub fn discrete_coons<T: Scalar>(net: &[DMatrix<T>]) -> Result<Vec<DMatrix<T>>> 
         }
     }
     Ok(out)
+}
+
+/// The cost of [`discrete_coons`] on a net of degree `(m, n)` in `d` coordinates: the
+/// `(m−1)(n−1)` interior points, each coordinate `b^u + b^v − b^uv` in 17 operations (4 in each
+/// of `b^u`, `b^v`, 9 in `b^uv` with its two weights `1 − i/m`, `1 − j/n`), on numbers as large
+/// as the net's grown by the weights: `i/m` and `j/n` multiply numerator and denominator, twice
+/// in the corner term, `2(⌈log₂ m⌉ + ⌈log₂ n⌉) + 2` bits (grow it by the size of the net).
+///
+/// In exact arithmetic an operation took about 300 ns (nets of 401 × 401 single digits, 2.8 s
+/// with reading and writing): each weighs a quarter of
+/// [`exact_op_cost`](crate::limits::exact_op_cost) ([`Cost::cheaper_when_exact`]).
+///
+/// ```
+/// use cagd::coons::discrete_coons_cost;
+/// let c = discrete_coons_cost(4, 3, 3);
+/// assert_eq!(c.ops(), 3 * 2 * 3 * 17);
+/// assert_eq!(c.bits(), 2 * (2 + 2) + 2);
+/// // No interior, no work.
+/// assert_eq!(discrete_coons_cost(1, 100, 3).ops(), 0);
+/// ```
+pub fn discrete_coons_cost(m: usize, n: usize, d: usize) -> Cost {
+    let interior = (m.saturating_sub(1) as u128).saturating_mul(n.saturating_sub(1) as u128);
+    let log2 = |k: usize| u128::from(usize::BITS - k.saturating_sub(1).leading_zeros());
+    Cost::new(interior.saturating_mul(17 * d as u128), 0)
+        .grown(2 * (log2(m) + log2(n)) + 2)
+        .cheaper_when_exact(4)
 }

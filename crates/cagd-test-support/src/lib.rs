@@ -22,6 +22,10 @@
 //! # Bad input
 //! [`bad_input`] checks the command line's contract for bad input, for the tables of bad
 //! inputs; [`thesis_args`] holds the command-line arguments of the thesis's examples.
+//!
+//! # Hostile calls
+//! [`hostile_calls`] calls the core's public functions with arbitrary arguments, for the
+//! property test that none panics and for the `library` fuzz target.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -31,6 +35,7 @@ use cagd_octave::text_format::{read_text_file, Workspace};
 use ndarray::{Array2, Array3, ArrayD, ArrayViewD, Dimension, Ix3};
 
 pub mod bad_input;
+pub mod hostile_calls;
 pub mod lcg;
 pub mod thesis_args;
 

@@ -39,6 +39,9 @@ fn hostile_params() -> Vec<String> {
     ]
 }
 
+/// Four corner vectors of zeros, for the tangents and twists of a Ferguson patch.
+const FLAT_TANGENTS: &str = "[0 0 0; 0 0 0; 0 0 0; 0 0 0]'";
+
 /// The commands, each with its matrix argument replaced by `M` and a parameter list by `T`.
 fn templates() -> Vec<Vec<String>> {
     let s = |v: &[&str]| v.iter().map(|x| x.to_string()).collect::<Vec<_>>();
@@ -89,6 +92,71 @@ fn templates() -> Vec<Vec<String>> {
         s(&["curve", "M", "--n", "3"]),
         s(&["surface", "[1e308*(2*u-1); v; u]", "--n", "3"]),
         s(&["surface", "[u; v; M(1)*u]", "--u", "T", "--v", "0:0.5:1"]),
+        // The constructions of the course.
+        s(&["convert", "M", "--from", "bezier", "--to", "bspline"]),
+        s(&["elevate", "M", "--by", "2"]),
+        s(&["subdivide", "M", "--t", "T"]),
+        s(&["insert-knot", "M", "--degree", "1", "--insert", "T"]),
+        s(&["bspline-basis", "--knots", "M", "--degree", "1", "--t", "T"]),
+        s(&["continuity", PRIMER_2_4, "M", "--free-point"]),
+        s(&["integrate", "M"]),
+        s(&[
+            "ruled",
+            "--first",
+            "M",
+            "--second",
+            "[0 1 2; 1 1 1]",
+            "--u",
+            "T",
+            "--v",
+            "0.5",
+        ]),
+        s(&[
+            "ruled",
+            "--first",
+            "[1e308*u; 0]",
+            "--second",
+            "[u; 1]",
+            "--n",
+            "3",
+        ]),
+        s(&[
+            "ferguson",
+            "--points",
+            "M",
+            "--du",
+            FLAT_TANGENTS,
+            "--dv",
+            FLAT_TANGENTS,
+            "--twists",
+            FLAT_TANGENTS,
+            "--u",
+            "T",
+        ]),
+        s(&[
+            "bspline-surface",
+            "M",
+            "--degree",
+            "1",
+            "--u",
+            "T",
+            "--v",
+            "0.5",
+        ]),
+        s(&[
+            "nurbs-surface",
+            "M",
+            "--degree",
+            "1",
+            "--u",
+            "T",
+            "--v",
+            "0.5",
+        ]),
+        s(&["circle", "--radius", "M(1)", "--t", "T"]),
+        s(&[
+            "arc", "--radius", "1", "--center", "M", "--start", "0", "--end", "T",
+        ]),
     ];
     let mut coons = s(&["coons"]);
     coons.extend(s(&PRIMER_4_3));

@@ -317,6 +317,16 @@ fn exact_work_is_weighed_by_the_size_of_the_numbers() {
     let coons = with(&["coons"], &PRIMER_4_3);
     let gordon = with(&["gordon"], &GORDON_D);
     let bicubic = [&["coons-bicubic"][..], &FLAT_SQUARE, &FLAT_SQUARE_CROSS].concat();
+    // A plane as a network of 400 × 400 lines: its exact Lagrange weights alone took 17 s,
+    // before the estimate of the points was made.
+    let lines: Vec<String> = (0..400)
+        .flat_map(|i| ["--u-curve".into(), format!("[{i}/399; v; 0]")])
+        .chain((0..400).flat_map(|j| ["--v-curve".into(), format!("[u; {j}/399; 0]")]))
+        .collect();
+    let network: Vec<&str> = ["gordon", "--u", "0.5", "--v", "0.5"]
+        .into_iter()
+        .chain(lines.iter().map(String::as_str))
+        .collect();
     // (arguments, the argument named, whether the command also runs in doubles here)
     let cases: Vec<(Vec<&str>, &str, bool)> = vec![
         (vec!["bernstein", "--degree", "200"], "--t", true),
@@ -387,6 +397,9 @@ fn exact_work_is_weighed_by_the_size_of_the_numbers() {
             "NET",
             true,
         ),
+        // The formula on a 501 × 501 net (a 1001 × 1001 one ran 20–74 s unchecked).
+        (vec!["discrete-coons", "zeros(501,1503)"], "NET", true),
+        (network, "--u-curve/--v-curve", true),
     ];
     for (args, argument, in_doubles) in &cases {
         let out = cagd().args(args).arg("--exact").output().unwrap();
@@ -426,6 +439,7 @@ fn small_exact_problems_run() {
         vec!["curve", "[u; u^2; u^3]", "--n", "1001"],
         with(&coons, &["--n", "21", "--steps"]),
         with(&gordon, &["--n", "21", "--steps"]),
+        vec!["discrete-coons", "zeros(41,123)", "--steps"],
     ];
     for args in &commands {
         succeeds(

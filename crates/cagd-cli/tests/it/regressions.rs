@@ -407,17 +407,25 @@ fn fuzz_script_stack_overflow_long_transpose_run() {
     handle.join().expect("no stack overflow");
 }
 
-/// The command line as the `cli` fuzz target runs it: its smaller limits (fuzz/cli_limits.env,
-/// which the target reads too) in the environment, the others removed.
+/// The smaller limits the `cli` fuzz target ran at when it found the findings below (it now
+/// runs at the defaults).
+const FUZZ_CLI_LIMITS: [(&str, &str); 6] = [
+    ("CAGD_MAX_ELEMENTS", "10000"),
+    ("CAGD_MAX_ITERATIONS", "10000"),
+    ("CAGD_MAX_SAMPLES", "1000"),
+    ("CAGD_MAX_GRID_POINTS", "10000"),
+    ("CAGD_MAX_WORK", "5000000"),
+    ("CAGD_MAX_SYSTEM_ENTRIES", "100000"),
+];
+
+/// The command line as the `cli` fuzz target ran it for the findings below: its smaller limits
+/// ([`FUZZ_CLI_LIMITS`]) in the environment, the others removed.
 fn fuzz_cli(args: &[&str]) -> std::process::Output {
     let mut c = assert_cmd::Command::cargo_bin("cagd").unwrap();
     for (_, var, _) in cagd_cli::limits::SETTINGS {
         c.env_remove(var);
     }
-    for (var, value) in include_str!("../../../../fuzz/cli_limits.env")
-        .lines()
-        .filter_map(|l| l.split_once('='))
-    {
+    for (var, value) in FUZZ_CLI_LIMITS {
         c.env(var, value);
     }
     c.args(args).output().unwrap()

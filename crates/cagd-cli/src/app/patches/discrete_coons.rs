@@ -8,7 +8,7 @@ use nalgebra::DMatrix;
 use crate::args::{OutputArgs, PlotArgs, ScriptArgs, StepsArgs};
 use crate::plot::{Colour, Figure};
 use crate::{load_net, CliError, PendingWrites, Report, Value};
-use cagd::coons::{discrete_coons, solve_mask, Mask};
+use cagd::coons::{discrete_coons, discrete_coons_cost, solve_mask, Mask};
 
 use cagd_octave::literal::{Env, LiteralScalar};
 
@@ -68,8 +68,23 @@ pub fn discrete<T: LiteralScalar>(
         .map(|k| DMatrix::from_fn(m1, n1, |i, j| net[[i, j, k]].clone()))
         .collect();
     let expected = "a net of at least 3×3 points";
+    if cmd.steps.steps && cmd.mask.is_some() {
+        return Err(usage(
+            "--steps",
+            "has no effect with --mask (the mask is solved as one linear system)",
+            "--steps without --mask (the parts of the discrete Coons formula)",
+        ));
+    }
     let full = match &cmd.mask {
-        None => discrete_coons(&coords).map_err(lib("NET", expected))?,
+        None => {
+            // The formula, and with --steps its three parts once more.
+            let passes = if cmd.steps.steps { 2 } else { 1 };
+            let cost = discrete_coons_cost(m1.saturating_sub(1), n1.saturating_sub(1), d)
+                .times(passes)
+                .grown(bits(net.iter()));
+            check_work(limits, "NET", weigh::<T>(cost))?;
+            discrete_coons(&coords).map_err(lib("NET", expected))?
+        }
         Some(text) => {
             let form = "two numbers α,β with α + β = 1/4, e.g. -0.25,0.5";
             // Not load_params: the comma between α and β is not a decimal comma.
@@ -89,13 +104,6 @@ pub fn discrete<T: LiteralScalar>(
     let grid = PointGrid::from_shape_fn((m1, n1, d), |(i, j, k)| full[k][(i, j)].clone());
     let mut report = Report::new();
     if cmd.steps.steps {
-        if cmd.mask.is_some() {
-            return Err(usage(
-                "--steps",
-                "has no effect with --mask (the mask is solved as one linear system)",
-                "--steps without --mask (the parts of the discrete Coons formula)",
-            ));
-        }
         let [bu, bv, buv] = super::super::discrete_parts::parts(&net);
         report.push("bu", Value::Grid(bu));
         report.push("bv", Value::Grid(bv));

@@ -8,7 +8,7 @@ use crate::args::{
 };
 use crate::plot::{Colour, Figure};
 use crate::{load_params, CliError, PendingWrites, Report, Value};
-use cagd::gordon::gordon_point_cost;
+use cagd::gordon::{gordon_point_cost, gordon_setup_cost};
 use cagd::{Curve, GordonSurface, SampledCurve, Surface, Tolerance};
 use cagd_octave::compat::PackedNetwork;
 use cagd_octave::literal::LiteralScalar;
@@ -16,7 +16,7 @@ use cagd_octave::script::Script;
 
 use super::super::bezier::point_mode;
 use super::super::common::*;
-use super::super::curve::curve_costs;
+use super::super::curve::{curve_cost, curve_costs};
 use super::super::work::{bits, check_work, weigh};
 use super::super::{prepare_script, Outcome};
 
@@ -206,6 +206,20 @@ pub fn gordon<T: LiteralScalar>(limits: &Limits, cmd: &GordonCommand) -> Result<
         .collect();
     let mut curves_u = build_curves(limits, &parts, &mut env)?;
     let curves_v = curves_u.split_off(at_u.len());
+    // The set-up (crossings checked, Lagrange weights) before it runs
+    // (cagd::gordon::gordon_setup_cost): exact weights of many nodes take minutes.
+    let at_nodes = |curves: &[CliCurve<T>], nodes: &[T]| -> Vec<cagd::cost::Cost> {
+        curves.iter().map(|c| curve_cost(c, nodes)).collect()
+    };
+    check_work(
+        limits,
+        "--u-curve/--v-curve",
+        weigh::<T>(gordon_setup_cost(
+            at_nodes(&curves_u, &v_nodes),
+            at_nodes(&curves_v, &u_nodes),
+            (bits(&u_nodes), bits(&v_nodes)),
+        )),
+    )?;
     let expected =
         "a compatible network: g(u_i, ·) at v_j equals g(·, v_j) at u_i, one curve per node";
     let surface = match points {
