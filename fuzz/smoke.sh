@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # A short fuzzing run for CI: builds the five targets (cargo-fuzz, installed if missing) and
 # runs each from its seeds for SECONDS_PER_TARGET seconds (default 20) at the default limits,
-# into a throw-away corpus. Any crash, panic, timeout (30 s per input) or out-of-memory input
-# fails it, with the input saved under fuzz/artifacts/smoke/. The long runs are
-# fuzz/run_fuzz.sh (10^7 runs or 30 minutes per target; results in fuzz/README.md).
+# into a throw-away corpus. Any crash, panic, timeout (30 s per input, 180 s for literal, as in
+# fuzz/run_fuzz.sh) or out-of-memory input fails it, with the input saved under
+# fuzz/artifacts/smoke/. The long runs are fuzz/run_fuzz.sh (10^7 runs or 30 minutes per
+# target; results in fuzz/README.md).
 # Usage: bash fuzz/smoke.sh   (from anywhere)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")"
@@ -25,9 +26,14 @@ scratch="$(mktemp -d)"
 trap 'rm -rf "$scratch"' EXIT
 for t in "${targets[@]}"; do
     mkdir -p "$scratch/$t"
+    # Per input as in fuzz/run_fuzz.sh: 30 s, 180 s for literal (four exact evaluations).
+    timeout=30
+    if [ "$t" = literal ]; then
+        timeout=180
+    fi
     echo "-- $t: ${seconds} s from seeds/$t"
     if ! "$d/target/x86_64-unknown-linux-gnu/release/$t" "$scratch/$t" "$d/seeds/$t" \
-            -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 -max_len=4096 \
+            -max_total_time="$seconds" -timeout="$timeout" -rss_limit_mb=2048 -max_len=4096 \
             -artifact_prefix="$d/artifacts/smoke/$t-" -print_final_stats=1 \
             > "$scratch/$t.log" 2>&1; then
         tail -n 40 "$scratch/$t.log"

@@ -231,6 +231,39 @@ fn fuzz_literal_timeout_long_exact_range() {
     assert!(matches!(over, Err(LiteralError::TooLarge { .. })));
 }
 
+/// Fuzzing (`literal`, timeout at 30 s per input at the default limits, after 99 012 runs):
+/// `[1.7918485:1206315]*3` builds an exact range of 1.2·10⁶ elements (denominator 10⁷), about
+/// a second in a release build, and the target builds it four times. Linear work the limits
+/// allow (the target now has 180 s per input); what must hold is that the work meter refuses
+/// the multiplication after the range, and a range it cannot pay for before it is built.
+#[test]
+fn fuzz_literal_timeout_exact_range_at_the_default_limits() {
+    use num_rational::BigRational;
+    let work_refused = |text: &str| {
+        let r = cagd_octave::literal::parse_matrix::<BigRational>(text);
+        match r {
+            Err(LiteralError::TooLarge {
+                what, count, limit, ..
+            }) => {
+                assert!(what.contains("work"), "{text}: {what}");
+                assert_eq!(limit, 256_000_000, "{text}");
+                count
+            }
+            other => panic!("{text}: {:?}", other.map(|m| m.len())),
+        }
+    };
+    // Past the meter: refused before a single element is built (the count is the range's
+    // charge, 128 per element for one-word bounds).
+    let charged = work_refused("[1.7918485:2100000]");
+    assert!(
+        (2_099_999 * 128..2_099_999 * 128 + 16).contains(&charged),
+        "{charged}"
+    );
+    // In doubles the same range is cheap and allowed.
+    let r = cagd_octave::literal::parse_matrix::<f64>("[1.7918485:2100000]").unwrap();
+    assert_eq!(r.len(), 2_099_999);
+}
+
 /// Fuzzing (`literal`, timeout): the exact power `-(24.445^46913)` built a 985 000-bit
 /// rational by repeated squaring with a gcd at every step (minutes). Exact numbers are now
 /// limited to 2¹² bits of numerator and denominator, and powers skip the gcd.
