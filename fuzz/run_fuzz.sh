@@ -1,12 +1,18 @@
 #!/bin/sh
 # Runs one fuzz target (built by `RUSTC_BOOTSTRAP=1 cargo fuzz build`) for 10^7 executions or
-# 30 minutes, whichever comes first, at the lowest CPU priority.
-# Usage: fuzz/run_fuzz.sh TARGET   (from the repository root)
+# SECONDS (default 1800: 30 minutes), whichever comes first, at the lowest CPU priority, from
+# CORPUS (default fuzz/corpus/TARGET) and seeds/TARGET, logging to LOG (default
+# fuzz/logs/TARGET.log); a failing input is saved under fuzz/artifacts/TARGET/. The one place
+# that sets the options of a run: fuzz/smoke.sh runs every target through it for 20 s.
+# Usage: fuzz/run_fuzz.sh TARGET [SECONDS [CORPUS [LOG]]]
 set -e
 t="$1"
+seconds="${2:-1800}"
 cd "$(dirname "$0")"
 d="$(pwd)"
-mkdir -p "corpus/$t" "artifacts/$t" logs
+corpus="${3:-$d/corpus/$t}"
+log="${4:-$d/logs/$t.log}"
+mkdir -p "$corpus" "artifacts/$t" "$(dirname "$log")"
 # Absolute paths: the cli target changes into a scratch folder.
 # allocator_may_return_null: a fallible reservation (`try_reserve`, which the library uses to
 # answer `TooLarge` for sizes it cannot hold) gets null, as from the system allocator, instead of
@@ -23,6 +29,6 @@ timeout=30
 if [ "$t" = literal ]; then
     timeout=180
 fi
-exec nice -n 19 "$d/target/x86_64-unknown-linux-gnu/release/$t" "$d/corpus/$t" "$d/seeds/$t" \
-  -runs=10000000 -max_total_time=1800 -timeout="$timeout" -rss_limit_mb=2048 -max_len=4096 \
-  -artifact_prefix="$d/artifacts/$t/" -print_final_stats=1 > "logs/$t.log" 2>&1
+exec nice -n 19 "$d/target/x86_64-unknown-linux-gnu/release/$t" "$corpus" "$d/seeds/$t" \
+  -runs=10000000 -max_total_time="$seconds" -timeout="$timeout" -rss_limit_mb=2048 \
+  -max_len=4096 -artifact_prefix="$d/artifacts/$t/" -print_final_stats=1 > "$log" 2>&1

@@ -871,16 +871,19 @@ pub fn gordon_setup_cost(
     curves_at_v: impl IntoIterator<Item = Cost>,
     (u_node_bits, v_node_bits): (u128, u128),
 ) -> Cost {
-    let (at_u, k_u) = curves_at_u
-        .into_iter()
-        .fold((Cost::default(), 0usize), |(c, k), x| (c.and(x), k + 1));
-    let (at_v, k_v) = curves_at_v
-        .into_iter()
-        .fold((Cost::default(), 0usize), |(c, k), x| (c.and(x), k + 1));
+    let (at_u, k_u) = one_of_each(curves_at_u);
+    let (at_v, k_v) = one_of_each(curves_at_v);
     at_u.times(2 * k_v as u128)
         .and(at_v.times(k_u as u128))
         .and(Lagrange::<f64>::weights_cost(k_u, u_node_bits))
         .and(Lagrange::<f64>::weights_cost(k_v, v_node_bits))
+}
+
+/// One evaluation of each curve ([`Cost::and`] of their costs), and how many curves.
+fn one_of_each(curves: impl IntoIterator<Item = Cost>) -> (Cost, usize) {
+    curves
+        .into_iter()
+        .fold((Cost::default(), 0), |(c, k), x| (c.and(x), k + 1))
 }
 
 #[cfg(test)]

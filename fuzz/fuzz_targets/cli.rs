@@ -1,6 +1,7 @@
 //! The whole command line, in-process, at the default limits: a subcommand chosen by the first
-//! byte, then arguments split from the rest of the input at NUL bytes. Options come from a vocabulary (so that the
-//! fuzzer reaches the constructions rather than clap's parser) or are taken verbatim.
+//! byte, then arguments split from the rest of the input at NUL bytes. Options come from a
+//! vocabulary (so that the fuzzer reaches the constructions rather than clap's parser) or are
+//! taken verbatim.
 //!
 //! `cagd_cli::run` stages files in memory and never writes; the target runs in an empty
 //! folder and drops arguments that would read standard input or absolute/parent paths, so
@@ -167,6 +168,14 @@ fn init() {
         let dir = std::env::temp_dir().join(format!("cagd-fuzz-cli-{}", std::process::id()));
         std::fs::create_dir_all(&dir).expect("scratch folder");
         std::env::set_current_dir(&dir).expect("enter scratch folder");
+        // The vocabulary is kept in its own order (the seeds' first bytes index it), so check
+        // here that it has every subcommand the command line has: a new one must be added.
+        for sub in cagd_cli::subcommands() {
+            assert!(
+                SUBCOMMANDS.contains(&sub.as_str()) || sub == "thesis" || sub == "serve",
+                "the cli fuzz target does not know the subcommand {sub}: append it to SUBCOMMANDS"
+            );
+        }
         // The default limits, as a user gets them: none from the environment, and `--max-…`
         // arguments are dropped below.
         for (_, var, _) in cagd_cli::limits::SETTINGS {

@@ -47,7 +47,7 @@ mod serve {
 }
 pub mod slips;
 
-pub use app::{run, serve_request, Outcome};
+pub use app::{run, serve_request, subcommands, Outcome};
 pub use atomic::{write_atomic, PendingWrites};
 pub use error::{CliError, ErrorKind};
 pub use input::{

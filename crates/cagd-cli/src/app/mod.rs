@@ -676,6 +676,14 @@ fn dispatch(limits: &Limits, command: &Command) -> Result<Outcome, CliError> {
     }
 }
 
+/// The names of the subcommands, in the order of `cagd --help` (without clap's `help`).
+pub fn subcommands() -> Vec<String> {
+    Cli::command()
+        .get_subcommands()
+        .map(|s| s.get_name().to_string())
+        .collect()
+}
+
 /// The `serve` subcommand, if `args` (the program name first) ask for it and parse; anything
 /// else, including errors and `--help`, is left to [`run`].
 pub fn serve_request<I, A>(args: I) -> Option<crate::serve::ServeCommand>
@@ -892,11 +900,7 @@ fn usage_error(e: clap::Error) -> Result<Outcome, CliError> {
         .map(strip)
         .unwrap_or_else(|| "cagd".into());
     let value = context(ContextKind::InvalidValue).unwrap_or_default();
-    let subcommands = Cli::command()
-        .get_subcommands()
-        .map(|s| s.get_name().to_string())
-        .collect::<Vec<_>>()
-        .join(", ");
+    let subcommands = subcommands().join(", ");
     let (argument, problem, expected) = match e.kind() {
         ClapKind::InvalidValue => (
             arg,

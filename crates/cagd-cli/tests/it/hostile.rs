@@ -133,31 +133,16 @@ fn templates() -> Vec<Vec<String>> {
             "--u",
             "T",
         ]),
-        s(&[
-            "bspline-surface",
-            "M",
-            "--degree",
-            "1",
-            "--u",
-            "T",
-            "--v",
-            "0.5",
-        ]),
-        s(&[
-            "nurbs-surface",
-            "M",
-            "--degree",
-            "1",
-            "--u",
-            "T",
-            "--v",
-            "0.5",
-        ]),
         s(&["circle", "--radius", "M(1)", "--t", "T"]),
         s(&[
             "arc", "--radius", "1", "--center", "M", "--start", "0", "--end", "T",
         ]),
     ];
+    for surface in ["bspline-surface", "nurbs-surface"] {
+        t.push(s(&[
+            surface, "M", "--degree", "1", "--u", "T", "--v", "0.5",
+        ]));
+    }
     let mut coons = s(&["coons"]);
     coons.extend(s(&PRIMER_4_3));
     coons.extend(s(&["--u", "T", "--v", "0.5"]));
