@@ -14,7 +14,7 @@
 use nalgebra::DVector;
 
 use crate::error::{check_finite, Error, Result};
-use crate::param::Curve;
+use crate::param::CurveDeriv;
 use crate::scalar::Scalar;
 
 /// What holds at a joint.
@@ -95,23 +95,19 @@ pub fn joint<T: Scalar>(
 }
 
 /// The joint of two curves: `first` at `t1`, `second` at `t0` (usually 1 and 0), from their
-/// values and derivatives ([`Curve::eval_derivative`]).
+/// values and derivatives ([`CurveDeriv::eval_derivative`]).
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] if a curve has no derivative, and the errors of [`joint`].
+/// The errors of [`joint`].
 pub fn curve_joint<T: Scalar>(
-    first: &impl Curve<T>,
+    first: &impl CurveDeriv<T>,
     t1: T,
-    second: &impl Curve<T>,
+    second: &impl CurveDeriv<T>,
     t0: T,
     tol: T,
 ) -> Result<Joint> {
-    let missing = || Error::InvalidArgument {
-        what: "curve joint",
-        message: "both curves must provide derivatives".into(),
-    };
-    let d1 = first.eval_derivative(t1.clone()).ok_or_else(missing)?;
-    let d0 = second.eval_derivative(t0.clone()).ok_or_else(missing)?;
+    let d1 = first.eval_derivative(t1.clone());
+    let d0 = second.eval_derivative(t0.clone());
     joint((&first.eval(t1), &d1), (&second.eval(t0), &d0), tol)
 }
 

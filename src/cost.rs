@@ -37,6 +37,25 @@
 //! ```
 
 use crate::limits::exact_op_cost;
+use crate::scalar::Scalar;
+
+/// The most bits of any of `values` ([`Scalar::bits`]; 0 for none, and for `f64` without
+/// looking at them): the size a caller measures before asking for an estimate.
+///
+/// ```
+/// use cagd::Scalar;
+/// use num_rational::BigRational;
+/// let xs = [BigRational::from_ratio(1, 3), BigRational::from_ratio(255, 7)];
+/// assert_eq!(cagd::cost::max_bits(&xs), 11);
+/// assert_eq!(cagd::cost::max_bits(&[0.5f64]), 0);
+/// ```
+pub fn max_bits<'a, T: Scalar>(values: impl IntoIterator<Item = &'a T>) -> u128 {
+    if T::EXACT {
+        values.into_iter().map(Scalar::bits).max().unwrap_or(0)
+    } else {
+        0
+    }
+}
 
 /// `ops` arithmetic operations on numbers of about `bits` bits (see the
 /// [module documentation](self)).

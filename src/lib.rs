@@ -82,6 +82,6 @@ pub use hermite::HermiteCubic;
 pub use limits::Limits;
 pub use linspace::linspace;
 pub use nurbs::{NurbsCurve, NurbsSurface};
-pub use param::{Curve, FnCurve, OnUnitInterval, SampledCurve, Surface};
+pub use param::{Curve, CurveDeriv, FnCurve, NoDerivative, OnUnitInterval, SampledCurve, Surface};
 pub use scalar::Scalar;
 pub use spline::{CubicSpline, EndCondition};

@@ -652,12 +652,19 @@ impl<T: Scalar> Curve<T> for BezierCurve<T> {
         BezierCurve::try_eval(self, t)
     }
 
-    fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
-        Some(BezierCurve::eval_derivative(self, t))
+    /// [`BezierCurve::eval_cost`] on the curve's own control points.
+    fn point_cost(&self, param_bits: u128) -> crate::cost::Cost {
+        BezierCurve::eval_cost(self, param_bits, crate::cost::max_bits(self.control().iter()))
     }
 
     fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
         BezierCurve::eval_many_into(self, ts, out)
+    }
+}
+
+impl<T: Scalar> crate::param::CurveDeriv<T> for BezierCurve<T> {
+    fn eval_derivative(&self, t: T) -> DVector<T> {
+        BezierCurve::eval_derivative(self, t)
     }
 }
 

@@ -16,6 +16,8 @@ pub enum ErrorKind {
     Shape,
     /// A construction of the library refused its input.
     Library(Box<cagd::Error>),
+    /// A construction refused its input (a check of the operation layer, [`cagd_ops`]).
+    Operation(cagd_ops::Kind),
     /// Command-line usage: an unknown option, a missing or conflicting argument.
     Usage,
     /// A valid request this build cannot serve yet.

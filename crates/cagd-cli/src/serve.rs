@@ -13,8 +13,17 @@ use clap::Args;
 
 use crate::{CliError, ErrorKind};
 
-/// Serve the web page on localhost.
+/// Serve the web page (every construction, in the browser) on localhost.
 #[derive(Debug, Clone, Args)]
+#[command(after_help = "\
+Serves the page built by `bash web/build.sh` (web/dist/) on http://127.0.0.1:P/ until stopped
+with Ctrl-C; the page computes in the browser, the server only hands out its files. A link
+such as http://127.0.0.1:8000/#cmd=cagd%20bernstein%20--degree%203%20--t%200.5 opens the page
+with that command run.
+
+Examples:
+  cagd serve
+  cagd serve --port 8080 --dir web/dist")]
 pub struct ServeCommand {
     /// The port on 127.0.0.1 (0 picks a free one; the address is printed).
     #[arg(long, value_name = "P", default_value_t = 8000)]

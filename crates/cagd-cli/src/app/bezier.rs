@@ -17,30 +17,6 @@ use super::common::*;
 use super::work::{bits, check_work, plotted, weigh};
 use super::{prepare_script, Outcome};
 
-#[derive(Debug, Args)]
-pub struct DeCasteljauCommand {
-    /// Control points b_0..b_n: a matrix literal, a data file (FILE or FILE.txt:NAME for an
-    /// Octave save -text file) or - for standard input; one point per column.
-    #[arg(value_name = "CONTROL", allow_hyphen_values = true)]
-    pub control: String,
-    #[command(flatten)]
-    pub params: CurveParamArgs,
-    /// The parameter interval [a, b] of the curve (thesis §2.3.2), e.g. --interval 2,5: the
-    /// weights of each step are (b − t)/(b − a) and (t − a)/(b − a); --n samples [a, b].
-    #[arg(long, value_name = "A,B", allow_hyphen_values = true)]
-    pub interval: Option<String>,
-    #[command(flatten)]
-    pub rows: RowsArgs,
-    #[command(flatten)]
-    pub steps: StepsArgs,
-    #[command(flatten)]
-    pub script: ScriptArgs,
-    #[command(flatten)]
-    pub output: OutputArgs,
-    #[command(flatten)]
-    pub plot: PlotArgs,
-}
-
 /// The interval `a,b` of `--interval` (default `[0, 1]`).
 pub fn interval<T: LiteralScalar>(
     limits: &Limits,
@@ -64,99 +40,13 @@ pub fn interval<T: LiteralScalar>(
     }
 }
 
-/// Curve points by de Casteljau's algorithm (thesis algorithm 1, `deCasteljau`).
-pub fn decasteljau<T: LiteralScalar>(
-    limits: &Limits,
-    cmd: &DeCasteljauCommand,
-) -> Result<Outcome, CliError> {
-    let script = prepare_script::<T>(limits, &cmd.script, None)?;
-    let control = points(
-        limits,
-        "CONTROL",
-        &cmd.control,
-        script.as_ref(),
-        cmd.rows.rows,
-    )?;
-    check_degree(limits, "CONTROL", control.ncols().saturating_sub(1))?;
-    let (a, b) = interval::<T>(limits, &cmd.interval)?;
-    let curve = BezierCurve::new_on_interval(control, a.clone(), b.clone()).map_err(lib(
-        "CONTROL",
-        "control points b_0..b_n, one per column (or per row with --rows)",
-    ))?;
-    let ts: Vec<T> = match &cmd.params.t {
-        Some(t) => crate::load_params(limits, "--t", t)?,
-        None => {
-            // --n: the thesis's linspace(0,1,N), mapped onto [a, b] if given.
-            let unit: Vec<T> = crate::samples(limits, cmd.params.n.unwrap_or(DEFAULT_SAMPLES), 2)?;
-            if cmd.interval.is_none() {
-                unit
-            } else {
-                unit.into_iter()
-                    .map(|x| a.clone() + x * (b.clone() - a.clone()))
-                    .collect()
-            }
-        }
-    };
-    crate::slips::outside("--t", &ts, &a, &b, "the curve is extrapolated there");
-    // The picture always shows the whole curve over [a, b], as the thesis's plot3.
-    let dense: Vec<T> = T::linspace(&a, &b, 101);
-    check_work(
-        limits,
-        "--t",
-        curve_work(&curve, &ts, cmd.steps.steps, plotted(&cmd.plot, &dense)),
-    )?;
-    let values = curve
-        .eval_many(&ts)
-        .map_err(lib("--t", "finite parameter values"))?;
-    let mut report = Report::new();
-    if cmd.steps.steps {
-        for (k, t) in ts.iter().enumerate() {
-            let name = if ts.len() == 1 {
-                "scheme".to_string()
-            } else {
-                format!("scheme_{}", k + 1)
-            };
-            report.push(
-                name,
-                super::scheme::curve_scheme(
-                    &curve.scheme(t.clone()),
-                    cmd.output.text_digits(),
-                    super::scheme::Marks::None,
-                ),
-            );
-        }
-    }
-    report.push("t", Value::Matrix(row(&ts)));
-    report.push("result", Value::Matrix(values.clone()));
-    let mut files = PendingWrites::new();
-    if let Some(path) = &cmd.plot.plot {
-        let line = curve.eval_many(&dense).map_err(lib("--plot", "a curve"))?;
-        let mut figure = Figure::new("Bézier curve (de Casteljau)")
-            .curve(to_f64(&line), Colour::Blue, "curve")
-            .control_polygon(to_f64(curve.control()), "control polygon");
-        if cmd.params.t.is_some() {
-            figure = figure.boundary(to_f64(&values), Colour::Black, "points at t");
-        }
-        add_plot(&mut files, "--plot", path, &figure)?;
-    }
-    finish(
-        &report,
-        &cmd.output,
-        files,
-        warnings(
-            &cmd.script.script,
-            script.as_ref(),
-            &mut Env::with_limits(*limits),
-        ),
-    )
-}
-
 /// How much more `--steps` costs than the points alone: each scheme is computed again and
 /// written out, about as many numbers as operations (`(n+1)(n+2)/2` points of a curve's
 /// scheme), each number some 50 operations to format and about 16 bytes of text. So a
 /// command whose schemes would fill gigabytes of memory (a 10⁷-point grid of 3×3-net schemes
 /// is 6.6 GB of text) is refused up front like any other large work.
 const STEPS_FACTOR: u128 = 50;
+
 
 /// The work of evaluating `curve` by de Casteljau at `ts` and at `dense` (a picture),
 /// [`BezierCurve::eval_cost`] at each parameter; with `steps` [`STEPS_FACTOR`] times that at
@@ -178,7 +68,21 @@ fn curve_work<T: LiteralScalar>(
     at(ts, if steps { STEPS_FACTOR } else { 1 }).saturating_add(at(dense, 1))
 }
 
+/// Points of a Bézier patch (thesis algorithms 2-4, ploskevB/bilinearna/tenzor).
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Input: the net packed (m+1)×3(n+1) as ploskevB takes it (row i = [b_i0 b_i1 ... b_in], x y z
+side by side), or an Octave save -text file with an (m+1)×(n+1)×3 array.
+Instead of NET: --x, --y, --z, the coordinate matrices (m+1)×(n+1) (entry (i,j) of b_ij).
+Layout: with single --u and --v, result is the 3×1 point; otherwise result is the grid
+nu×nv×3 (result(i,j,:) at (u(i), v(j)), like P in ploskevB), or with --list one row u v x y z
+per point. --steps prints the tensor de Casteljau scheme for each (u, v). --du R --dv S give
+the partial derivative ∂^(R+S)x/∂u^R∂v^S (thesis Trditev 3.3; --du 1 --dv 1 the twist): its
+values as result and its net as net.
+
+Examples:
+  cagd bezier-patch \"[0 0 0 0 2 1 0 4 0; 2 0 1 2 2 4 2 4 1; 4 0 0 4 2 1 4 4 0]\" --u 0.5 --v 0.5 --steps
+  cagd bezier-patch net.txt --n 20 --plot patch.png --mesh patch.stl")]
 pub struct BezierPatchCommand {
     /// The control net: packed (m+1)×3(n+1) like ploskevB's input (row i = [b_i0 b_i1 …
     /// b_in], each point's x y z side by side), or an Octave save -text file holding an
@@ -388,7 +292,15 @@ pub fn bezier_patch<T: LiteralScalar>(
     )
 }
 
+/// Bernstein polynomial values B_i^n(t).
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Layout: t is k×1, result k×(n+1) (row = parameter, column = B_0^n..B_n^n), or k×1 with --i.
+--plot draws the polynomials over [0, 1].
+
+Examples:
+  cagd bernstein --degree 3 --t 0.5 --exact
+  cagd bernstein --degree 3 --i 1 --n 5")]
 pub struct BernsteinCommand {
     /// The degree n.
     #[arg(long, value_name = "N")]
@@ -484,7 +396,13 @@ pub fn bernstein<T: LiteralScalar>(
     finish(&report, &cmd.output, files, Vec::new())
 }
 
+/// Control points (and values) of the r-th derivative of a Bézier curve.
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Layout: control is d×(n-r+1), the points n!/(n-r)! Δ^r b_i as columns; with --t, result is d×k.
+
+Example:
+  cagd derivative \"[0 0 0; 0 2 2; 8 2 0; 4 0 0]'\" --order 1 --t 0.5 --exact")]
 pub struct DerivativeCommand {
     /// Control points of the curve (columns), as for decasteljau.
     #[arg(value_name = "CONTROL", allow_hyphen_values = true)]

@@ -17,7 +17,19 @@ use super::Outcome;
 use cagd::cost::polynomial_bits;
 use cagd::cost::Cost;
 
+/// B-spline basis functions N_i,p(u) of a knot vector (Cox–de Boor).
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Input: --knots u_0..u_m, --degree P (or --order K = P + 1, as the lecture notes count); --t in
+[u_0, u_m], or --n samples of it.
+Layout: t is k×1, result k×n (row = parameter, column = N_0,p..N_(n-1),p, n = m − p). --steps
+prints the Cox–de Boor triangle N_i,j(t) for j = 0..p (triangle.p0 … triangle.pP). --plot draws
+the functions.
+
+Examples:
+  cagd bspline-basis --knots \"[0 0 0 1 2 3 3 3]\" --degree 2 --t 1.5 --steps --exact
+  cagd bspline-basis --knots 0:7 --order 4 --n 50 --plot basis.svg")]
+#[command(mut_arg("n", |a| a.help("Sample the whole knot range [u_0, u_m] at N equally spaced parameters")))]
 pub struct BSplineBasisCommand {
     /// The knot vector u_0 ≤ … ≤ u_m.
     #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]

@@ -88,7 +88,18 @@ pub struct SplineSurfaceArgs {
     pub mesh: MeshArgs,
 }
 
+/// A tensor-product B-spline surface (the CAD notes, the lecture notes).
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Input: the control net packed (m+1)×3(n+1) as for bezier-patch, an Octave (m+1)×(n+1)×3 array
+file, or an Octave save -text file with an octave-nurbs nrbmak struct (weights all 1);
+--degree P or P,Q (or --order), --uknots and --vknots (default clamped uniform).
+Layout: single --u and --v give the 3×1 point; otherwise the grid nu×nv×3, or --list. Parameters
+default to --n samples of the domain; outside it the surface is not defined (an error). --steps
+prints the knots and the basis values N_i,p(u), N_j,q(v).
+
+Example:
+  cagd bspline-surface net.txt --degree 2 --n 20 --plot surface.png --mesh surface.stl")]
 pub struct BSplineSurfaceCommand {
     #[command(flatten)]
     pub args: SplineSurfaceArgs,

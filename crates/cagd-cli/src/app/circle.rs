@@ -16,7 +16,16 @@ use super::common::*;
 use super::work::check_work;
 use super::Outcome;
 
+/// A circle as an exact NURBS curve (octave-nurbs nrbcirc).
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Input: --radius (default 1), --center (2 or 3 coordinates, default [0 0]).
+Layout: knots, control (d×9: four quarter arcs), weights (1 and √2/2), and the points at --t
+(default --n 11 samples of [0, 1]). --steps prints the homogeneous coefficients (w·x, w·y, w),
+as octave-nurbs stores them.
+
+Example:
+  cagd circle --radius 2 --center \"[1 -1]\" --n 9 --plot circle.svg")]
 pub struct CircleCommand {
     /// The radius r > 0.
     #[arg(
@@ -44,7 +53,14 @@ pub struct CircleCommand {
     pub plot: PlotArgs,
 }
 
+/// A circular arc as an exact NURBS curve (octave-nurbs nrbcirc with angles).
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Input: as for circle, with --start and --end angles in radians (expressions such as pi/2).
+Layout: as for circle; 1 to 4 rational quadratic pieces of at most 90° each.
+
+Example:
+  cagd arc --radius 1 --start 0 --end pi/2 --n 5")]
 pub struct ArcCommand {
     #[command(flatten)]
     pub circle: CircleCommand,

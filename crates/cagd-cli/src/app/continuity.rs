@@ -27,7 +27,20 @@ use super::work::{bits, check_work, weigh};
 use super::Outcome;
 use cagd::cost::Cost;
 
+/// Continuity (C0, C1, G1, C2) where two Bézier curves join; the free point of a C1 joint.
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Input: FIRST (ends at u = 1) and SECOND (starts at v = 0), Bézier control points as columns
+(rows with --rows). With --free-point the second-to-last point of FIRST is unknown and left out:
+the line x_(n-1)(k) = x_n + k·(m/n)(y_0 − y_1) of points giving x'(1) = k·¹x'(0) is printed
+(k = 1: C1; k > 0: G1, which the lecture notes call C1), and the joint with k = --k (default 1).
+Layout: end, start (x(1), ¹x(0)), d_end, d_start (first derivatives), dd_end, dd_start
+(second), k if the tangents are parallel, continuity (1 = holds), verdict (the comparison);
+--steps adds each curve's control points and derivative polygons (first.d1, first.d2, …).
+
+Examples:
+  cagd continuity \"[2 3 4; 3 1 5; 3 4 3]\" \"[3 4 3; 2 6 0; 5 7 5; 5 2 3]\" --rows --free-point --exact
+  cagd continuity \"[0 0; 1 1; 2 1]'\" \"[2 1; 3 1; 4 0]'\" --exact")]
 pub struct ContinuityCommand {
     /// Control points of the first curve x(u), ending at u = 1 (columns; rows with --rows).
     #[arg(value_name = "FIRST", allow_hyphen_values = true)]

@@ -63,7 +63,21 @@ impl Form {
     }
 }
 
+/// Convert a curve between Hermite, Bézier, B-spline, monomial and algebraic forms.
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Input: GEOMETRY, the d×(n+1) geometry matrix of the --from form, one vector per column (rows
+with --rows): hermite [x(0) x(1) x'(0) x'(1)], bezier [b_0 … b_n], bspline (the uniform cubic
+segment of the lecture notes) [x_(i-1) x_i x_(i+1) x_(i+2)], monomial [a_0 … a_n] with
+p(t) = Σ a_j t^j (the matrix-form notes' P·M), algebraic [a b c d] of u³ u² u 1 (the lecture
+notes' A). hermite and bspline are cubic (4 columns); bezier, monomial and algebraic any degree.
+Layout: result is the geometry of the --to form (d×(n+1)). X_to = X_from · T; --steps prints T
+and, between the cubic forms, the basis matrices M_from, M_to and M_to⁻¹ (T = M_from·M_to⁻¹, the
+lecture notes' conversion table); otherwise the matrices to and from the Bézier form.
+
+Examples:
+  cagd convert \"[0 0; 1 1; 2 0; 3 1]\" --rows --from bezier --to monomial --exact
+  cagd convert \"[2 3; 5 3; 3 6; 3 -12]\" --rows --from hermite --to bspline --steps --exact")]
 pub struct ConvertCommand {
     /// The geometry matrix of the curve, one vector per column (rows with --rows).
     #[arg(value_name = "GEOMETRY", allow_hyphen_values = true)]

@@ -40,7 +40,20 @@ pub enum End {
     Closed,
 }
 
+/// An interpolating cubic spline (the lecture notes): tangents at the points and curve samples.
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Input: points as columns (rows with --rows); --end clamped (with --start-tangent and
+--end-tangent; the default when both are given), natural or closed (a tangent with natural or
+closed is an error). --params uniform (t_k = k, the lecture notes: segment k over [k, k+1]),
+chord, centripetal or a list of values. A closed spline is periodic: every t is on the curve.
+Layout: tangents is d×m (one per point); result d×k at --t (default: 10 samples per segment).
+--steps prints params, the linear system (system, m×m, and rhs, d×m: system · tangentsᵀ = rhsᵀ,
+as the lecture notes write it) and each segment's hermite data [x_k x_(k+1) h·x'_k h·x'_(k+1)]
+and bezier control points.
+
+Example:
+  cagd spline \"[0 0; 2 1; 4 4; 6 0]'\" --end clamped --start-tangent \"[1;1]\" --end-tangent \"[-1;1]\" --exact")]
 pub struct SplineCommand {
     /// The points to interpolate, one per column.
     #[arg(value_name = "POINTS", allow_hyphen_values = true)]
@@ -220,7 +233,14 @@ fn spline_work<T: LiteralScalar>(
     ))
 }
 
+/// A Hermite (Ferguson) cubic from end points and end tangents (the lecture notes).
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Layout: result d×k at the parameters; --steps prints the Hermite basis values and the Bézier
+control points of the same cubic.
+
+Example:
+  cagd hermite --p0 \"[0;0]\" --p1 \"[1;0]\" --t0 \"[1;1]\" --t1 \"[1;-1]\" --t 0.5 --exact")]
 pub struct HermiteCommand {
     /// The start point x(0).
     #[arg(long, value_name = "VECTOR", allow_hyphen_values = true)]
@@ -315,7 +335,17 @@ pub fn hermite<T: LiteralScalar>(
     finish(&report, &cmd.output, files, Vec::new())
 }
 
+/// A B-spline curve by de Boor's algorithm (the CAD notes and the lecture notes).
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Input: control points as columns, --degree p or --order k = p + 1 (as the lecture notes
+count), --knots (n+p+2 values; default clamped uniform). --n samples the knot domain.
+Layout: result d×k at the parameters; --steps prints the basis functions N_i,p(t) (k×(n+1)) and
+the de Boor scheme of each t (span, α's and levels d0..dp).
+
+Example:
+  cagd bspline \"[0 0; 1 2; 3 2; 4 0]'\" --degree 2 --knots \"[0 0 0 0.5 1 1 1]\" --t 0.25 --steps --exact")]
+#[command(mut_arg("n", |a| a.help("Sample the knot domain [u_p, u_n] (not [0, 1]) at N equally spaced parameters")))]
 pub struct BSplineCommand {
     /// Control points, one per column.
     #[arg(value_name = "CONTROL", allow_hyphen_values = true)]
@@ -471,7 +501,16 @@ fn spline_basis_work<T: LiteralScalar>(
     at(ts, steps).saturating_add(at(dense, false))
 }
 
+/// A NURBS curve (the CAD notes): rational B-spline with weights.
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Input: control points as columns, --weights (one per point, positive), --degree (or --order),
+--knots.
+Layout: result d×k; --steps prints the rational basis functions R_i,p(t).
+
+Example (a quarter circle):
+  cagd nurbs \"[1 0; 1 1; 0 1]'\" --weights \"[1 0.7071067811865476 1]\" --degree 2 --n 5")]
+#[command(mut_arg("n", |a| a.help("Sample the knot domain [u_p, u_n] (not [0, 1]) at N equally spaced parameters")))]
 pub struct NurbsCommand {
     /// Control points, one per column.
     #[arg(value_name = "CONTROL", allow_hyphen_values = true)]

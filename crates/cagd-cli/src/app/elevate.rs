@@ -17,7 +17,18 @@ use super::work::{bits, check_work, weigh};
 use super::Outcome;
 use cagd::cost::Cost;
 
+/// Raise the degree of a Bézier curve (or of a clamped B-spline curve) without changing it.
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Input: control points as columns (rows with --rows); --by R. A Bézier curve, or a B-spline with
+--degree/--order and --knots (clamped: first and last knot p+1 times; default clamped uniform).
+Layout: control is d×(n+R+1); for a B-spline also knots (each distinct knot R times more, as
+octave-nurbs nrbdegelev). --steps prints every intermediate Bézier polygon
+b'_i = i/(n+1)·b_(i-1) + (1 − i/(n+1))·b_i.
+
+Examples:
+  cagd elevate \"[0 0; 1 2; 3 2; 4 0]\" --rows --by 1 --steps --exact
+  cagd elevate \"[0 0; 1 2; 3 2; 4 0]\" --rows --degree 2 --knots \"[0 0 0 0.5 1 1 1]\" --by 1 --exact")]
 pub struct ElevateCommand {
     /// Control points, one per column (rows with --rows).
     #[arg(value_name = "CONTROL", allow_hyphen_values = true)]

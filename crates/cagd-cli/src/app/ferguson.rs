@@ -19,7 +19,19 @@ use super::Outcome;
 use cagd::cost::polynomial_bits;
 use cagd::cost::Cost;
 
+/// The Hermite bicubic (Ferguson) patch from corner points, tangents and twists.
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Input: --points, --du, --dv, --twists (default zero: the F-patch): d×4 matrices whose columns
+are the vectors at the corners (u,v) = (0,0), (1,0), (0,1), (1,1) (rows with --rows).
+Layout: single --u and --v give the d×1 point; otherwise the grid nu×nv×d, or --list. --steps
+prints the geometry matrices G (one per coordinate, rows x(0,·) x(1,·) x_u(0,·) x_u(1,·),
+columns x(·,0) x(·,1) x_v(·,0) x_v(·,1)): x(u,v) = f(u)ᵀ G f(v) with the Hermite basis f. The
+lecture notes write vᵀ M_Hᵀ X_H M_H u with X_H = Gᵀ.
+
+Example (z = uv):
+  cagd ferguson --points \"[0 0 0; 1 0 0; 0 1 0; 1 1 1]'\" --du \"[1 0 0; 1 0 0; 1 0 1; 1 0 1]'\" \\
+            --dv \"[0 1 0; 0 1 1; 0 1 0; 0 1 1]'\" --twists \"[0 0 1; 0 0 1; 0 0 1; 0 0 1]'\" --u 0.5 --v 0.25 --exact")]
 pub struct FergusonCommand {
     /// The corner points x(0,0), x(1,0), x(0,1), x(1,1) as the columns of a d×4 matrix.
     #[arg(long, value_name = "MATRIX", allow_hyphen_values = true)]

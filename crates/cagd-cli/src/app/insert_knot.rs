@@ -22,7 +22,17 @@ use super::work::{bits, check_work, weigh};
 use super::Outcome;
 use cagd::cost::Cost;
 
+/// Insert knots into a B-spline or NURBS curve (Boehm's algorithm).
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Input: control points as columns (rows with --rows), --degree P (or --order K), --knots
+(default clamped uniform), --insert the knots to add (strictly inside the domain); --weights for
+a NURBS curve (the homogeneous points (w P, w) are refined).
+Layout: knots 1×(n+p+1+r) and control d×(n+r) (weights 1×(n+r) for NURBS). --steps prints each
+insertion: the span k, α_i = (u − u_i)/(u_(i+p) − u_i) for i = k−p+1..k, and the new polygon.
+
+Example:
+  cagd insert-knot \"[0 0; 1 2; 3 2; 4 0]\" --rows --degree 2 --knots \"[0 0 0 0.5 1 1 1]\" --insert 0.25 --steps --exact")]
 pub struct InsertKnotCommand {
     /// Control points, one per column (rows with --rows).
     #[arg(value_name = "CONTROL", allow_hyphen_values = true)]

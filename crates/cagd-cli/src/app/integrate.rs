@@ -23,7 +23,20 @@ use super::Outcome;
 use cagd::cost::polynomial_bits;
 use cagd::cost::Cost;
 
+/// Antiderivative and definite integral of Bernstein polynomials, Bézier or B-spline curves.
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Input: Bézier control points as columns (rows with --rows) over [0, 1] or --interval a,b; with
+--degree/--order and --knots a B-spline; or --bernstein N [--i I] alone.
+Layout: antiderivative holds the control points of ∫ (d×(n+2); a B-spline's with its knots,
+(u_0, u_0, …, u_m, u_m)); integral the definite integral over the domain (d×1); with --t, result
+holds ∫ from the start of the domain to t. Bernstein: rows of Bernstein coefficients of degree
+N+1 of ∫₀ᵗ B_i^N, and ∫₀¹ B_i^N = 1/(N+1).
+
+Examples:
+  cagd integrate \"[0 0; 1 2; 2 0]\" --rows --exact
+  cagd integrate --bernstein 3 --exact
+  cagd integrate \"[6 0 0 0]\" --degree 2 --knots \"[0 0 0 0.5 1 1 1]\" --exact")]
 pub struct IntegrateCommand {
     /// Control points of a Bézier curve (or with --knots/--degree/--order of a B-spline),
     /// one per column (rows with --rows). Leave out with --bernstein.

@@ -15,7 +15,19 @@ use super::common::*;
 use super::work::{bits, check_work, weigh};
 use super::Outcome;
 
+/// Lagrange basis polynomials, or the polynomial interpolating values at nodes.
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Nodes: distinct, in any order (the lecture notes' Příklad 1 takes 0, 1/2, 1/4, 1).
+Layout: without --points, result is k×(m+1): row = parameter, column = L_0..L_m (in the order of
+the nodes given). With --points (d×(m+1), one column per node), result is d×k, the interpolant
+at each t. --coefficients adds coefficients (row i: L_i, highest power first, the lecture notes'
+G) and with --points polynomial (the interpolant's, A = X G). --linear interpolates --points
+piecewise linearly instead (the lecture notes' linear interpolation; increasing nodes).
+
+Examples:
+  cagd lagrange --nodes \"[0 0.5 1]\" --t 0.25 --exact
+  cagd lagrange --nodes 1:5 --points \"[1 2 3 2 1]\" --t 1:0.5:5")]
 pub struct LagrangeCommand {
     /// The nodes x_0..x_m: a list such as "[0 0.5 1]" or a range.
     #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]

@@ -11,7 +11,17 @@ use crate::CliError;
 use super::bspline_surface::{spline_surface, SplineSurfaceArgs};
 use super::Outcome;
 
+/// A tensor-product NURBS surface (the CAD notes): weights and homogeneous points.
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Input: as for bspline-surface, with --weights (an (m+1)×(n+1) matrix of positive weights), or
+an Octave save -text file with an octave-nurbs nrbmak struct (coefs 4×nu×nv homogeneous
+[w·x; w·y; w·z; w], knots {ku, kv}, order) — e.g. from Octave: srf = nrbmak(coefs, {ku, kv});
+save -text srf.txt srf.
+Layout: as for bspline-surface.
+
+Example:
+  cagd nurbs-surface srf.txt --n 20 --plot srf.png")]
 pub struct NurbsSurfaceCommand {
     #[command(flatten)]
     pub args: SplineSurfaceArgs,

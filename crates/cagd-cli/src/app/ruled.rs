@@ -19,7 +19,17 @@ use super::curve::curve_costs;
 use super::work::{bits, check_work, weigh};
 use super::{prepare_script, Outcome};
 
+/// The ruled surface (1 − v)·¹x(u) + v·²x(u) between two curves (the lecture notes).
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Input: --first ¹x(u) and --second ²x(u): expressions in u such as \"[u;0;u-u^2]\", or Bézier
+control points (columns; rows with --rows).
+Layout: single --u and --v give the d×1 point; otherwise the grid nu×nv×d (like P), or with
+--list one row u v x y z per point. --steps prints both curves at the u's.
+
+Examples:
+  cagd ruled --first \"[u;0;0]\" --second \"[u;1;u-u^2]\" --u 0.5 --v 0.25 --exact
+  cagd ruled --first \"[0 0 0; 1 0 1; 2 0 0]'\" --second \"[0 1 1; 2 1 1]'\" --n 10 --plot ruled.png")]
 pub struct RuledCommand {
     /// The curve ¹x(u) at v = 0: an expression in u such as "[u;0;u-u^2]", or Bézier control
     /// points (columns).

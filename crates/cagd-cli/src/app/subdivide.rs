@@ -18,7 +18,16 @@ use super::Outcome;
 use cagd::cost::polynomial_bits;
 use cagd::cost::Cost;
 
+/// Split a Bézier curve at t into two Bézier curves (de Casteljau subdivision).
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Input: control points as columns (rows with --rows); --t (default the middle of the interval).
+Layout: left and right are d×(n+1), the control polygons of the parts before and after t.
+--steps prints the de Casteljau scheme with the two polygons marked: L on the diagonal
+b_0^r (left part), R on the last row b_(n-r)^r (right part).
+
+Example:
+  cagd subdivide \"[0 0 0; 0 2 2; 8 2 0; 4 0 0]'\" --t 0.5 --steps --exact")]
 pub struct SubdivideCommand {
     /// Control points b_0..b_n, one per column (rows with --rows).
     #[arg(value_name = "CONTROL", allow_hyphen_values = true)]

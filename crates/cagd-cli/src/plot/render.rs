@@ -9,7 +9,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::model::{Colour, Figure, ImageKind, Layer};
+use super::model::{validate, Colour, Figure, ImageKind, Layer};
 use super::PlotError;
 
 /// The font embedded for text in pictures.
@@ -27,27 +27,26 @@ fn register_font() {
     });
 }
 
-impl Colour {
-    pub(super) fn rgb(self) -> RGBColor {
-        match self {
-            Colour::Blue => RGBColor(0, 114, 189),
-            Colour::Red => RGBColor(220, 20, 20),
-            Colour::Green => RGBColor(0, 150, 0),
-            Colour::Black => RGBColor(0, 0, 0),
-            Colour::Orange => RGBColor(237, 145, 33),
-            Colour::Purple => RGBColor(126, 47, 142),
-        }
+/// The colour's RGB value.
+pub(super) fn rgb(colour: Colour) -> RGBColor {
+    match colour {
+        Colour::Blue => RGBColor(0, 114, 189),
+        Colour::Red => RGBColor(220, 20, 20),
+        Colour::Green => RGBColor(0, 150, 0),
+        Colour::Black => RGBColor(0, 0, 0),
+        Colour::Orange => RGBColor(237, 145, 33),
+        Colour::Purple => RGBColor(126, 47, 142),
     }
 }
 
 impl Figure {
     /// Draws the figure into an in-memory SVG or PNG file.
     pub fn render(&self, kind: ImageKind) -> Result<Vec<u8>, PlotError> {
-        if self.layers.is_empty() {
+        if self.layers().is_empty() {
             return Err(PlotError::Empty);
         }
-        for l in &self.layers {
-            l.validate()?;
+        for l in self.layers() {
+            validate(l)?;
         }
         let (w, h) = self.size;
         if !(100..=10_000).contains(&w) || !(100..=10_000).contains(&h) {
@@ -97,7 +96,7 @@ impl Figure {
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), PlotError> {
         root.fill(&WHITE).map_err(drawing)?;
-        if self.layers.iter().all(|l| l.dim() == 2) {
+        if self.layers().iter().all(|l| l.dim() == 2) {
             self.draw_2d(root)
         } else {
             self.draw_3d(root)
@@ -106,7 +105,7 @@ impl Figure {
 
     fn bounds(&self) -> [(f64, f64); 3] {
         let mut b = [(f64::INFINITY, f64::NEG_INFINITY); 3];
-        for l in &self.layers {
+        for l in self.layers() {
             for p in l.points() {
                 for k in 0..3 {
                     b[k].0 = b[k].0.min(p[k]);
@@ -123,7 +122,7 @@ impl Figure {
         // (y, z, x), a cyclic permutation, so that the picture keeps the right-handed
         // orientation of the data.
         let mut chart = ChartBuilder::on(root)
-            .caption(&self.title, (FAMILY, 24))
+            .caption(&self.drawing.title, (FAMILY, 24))
             .margin(20)
             .build_cartesian_3d(by.0..by.1, bz.0..bz.1, bx.0..bx.1)
             .map_err(drawing)?;
@@ -226,7 +225,7 @@ impl Figure {
         let (cx, cy) = ((bx.0 + bx.1) / 2.0, (by.0 + by.1) / 2.0);
         let (hx, hy) = (scale * aw / 2.0, scale * (ah - band) / 2.0);
         let mut chart = ChartBuilder::on(root)
-            .caption(&self.title, (FAMILY, 24))
+            .caption(&self.drawing.title, (FAMILY, 24))
             .margin(20)
             .x_label_area_size(40)
             .y_label_area_size(50)
@@ -302,7 +301,7 @@ impl Figure {
                     colour,
                     label,
                 } => {
-                    let style = colour.rgb().stroke_width(1);
+                    let style = rgb(*colour).stroke_width(1);
                     let anno = chart
                         .draw_series(net_lines(grid).into_iter().map(|l| {
                             PathElement::new(l.into_iter().map(project).collect::<Vec<_>>(), style)
@@ -319,7 +318,7 @@ impl Figure {
                                 layer
                                     .points()
                                     .into_iter()
-                                    .map(|p| Circle::new(project(p), 3, colour.rgb().filled())),
+                                    .map(|p| Circle::new(project(p), 3, rgb(*colour).filled())),
                             )
                             .map_err(drawing)?;
                     }
@@ -330,7 +329,7 @@ impl Figure {
                     label,
                     ..
                 } => {
-                    let style = colour.rgb().stroke_width(*width);
+                    let style = rgb(*colour).stroke_width(*width);
                     let anno = chart
                         .draw_series(LineSeries::new(
                             layer.points().into_iter().map(project),
@@ -343,8 +342,30 @@ impl Figure {
                         });
                     }
                 }
+                Layer::Points { labels, label, .. } => {
+                    let black = rgb(Colour::Black);
+                    let anno = chart
+                        .draw_series(
+                            layer
+                                .points()
+                                .into_iter()
+                                .map(|p| Circle::new(project(p), 6, black.filled())),
+                        )
+                        .map_err(drawing)?;
+                    if !label.is_empty() {
+                        anno.label(label.as_str())
+                            .legend(move |(x, y)| Circle::new((x + 10, y), 5, black.filled()));
+                    }
+                    let font = (FAMILY, 14).into_font().color(&black);
+                    chart
+                        .draw_series(layer.points().into_iter().zip(labels).map(|(p, text)| {
+                            EmptyElement::at(project(p))
+                                + Text::new(text.clone(), (9, -18), font.clone())
+                        }))
+                        .map_err(drawing)?;
+                }
                 Layer::ControlPolygon { label, .. } => {
-                    let red = Colour::Red.rgb();
+                    let red = rgb(Colour::Red);
                     let anno = chart
                         .draw_series(LineSeries::new(
                             layer.points().into_iter().map(project),

@@ -61,7 +61,7 @@ pub(crate) use native;
 /// The operations of `ops` double operations in `T`: in exact arithmetic each weighs
 /// [`exact_op_cost`] of numbers of about `words` 64-bit words (they grow with the degree).
 fn cost<T: Number>(ops: usize, words: usize) -> usize {
-    if <T as cagd_octave::literal::LiteralScalar>::EXACT {
+    if <T as cagd::Scalar>::EXACT {
         let per = exact_op_cost(64 * words.max(1) as u128);
         ops.saturating_mul(usize::try_from(per).unwrap_or(usize::MAX))
     } else {

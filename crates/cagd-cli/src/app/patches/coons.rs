@@ -19,7 +19,23 @@ use super::super::{prepare_script, Outcome};
 
 use super::*;
 
+/// A bilinearly blended Coons patch x = r_c + r_d - r_cd (thesis 4.1, algorithms 5, 6).
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Input: --c1 x(u,0), --c2 x(u,1) (expressions in u), --d1 x(0,v), --d2 x(1,v) (in v), as the
+thesis writes them, e.g. \"[u;0;u-u^2]\"; a constant matrix or data file instead gives the
+control points (columns) of a Bézier curve. Or --script FILE: the appendix C data script
+(sampled c1, c2, d1, d2 and corners P1..P4); --n binds its N. A script's matrix named in a
+curve argument (--c1 c1) is read as Bézier control points, with a warning; --samples reads it
+as samples of the curve, as appendix C means. --blend linear|hermite|EXPR chooses the blending
+functions of thesis (4.4) (hermite: the partially bicubic patch of §4.2).
+Layout: single --u and --v give the 3×1 point; otherwise the grid nu×nv×3 (like P), or with
+--list one row u v x y z per point. --steps also prints rc, rd, rcd (same layout). --plot draws
+the surface with c1, c2 in red and d1, d2 in green, as appendix C does.
+
+Examples:
+  cagd coons --c1 \"[u;0;u-u^2]\" --c2 \"[u;1;u]\" --d1 \"[0;v^2;v-v^2]\" --d2 \"[1;v;v]\" --u 0.2 --v 0.5 --steps --exact
+  cagd coons --script appendix_c.m --n 10 --plot coons.png --mesh coons.obj")]
 pub struct CoonsCommand {
     #[command(flatten)]
     pub boundary: BoundaryArgs,

@@ -30,7 +30,18 @@ pub enum TwistChoice {
     Given,
 }
 
+/// A bicubically blended Coons patch with cross-boundary derivatives (thesis 4.3).
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Input: the boundaries as for coons, and the cross-boundary derivative curves --c1v x_v(u,0),
+--c2v x_v(u,1) (in u), --d1u x_u(0,v), --d2u x_u(1,v) (in v). --twist zero|gregory|given
+chooses the corner twists x_uv (given: --twists, a d×4 matrix for P1..P4; gregory needs
+Bézier cross-boundary curves, whose derivatives it uses).
+Layout: as for coons; --steps prints the three parts of thesis (4.5): hc (the curves in v
+blended along u), hd (the curves in u blended along v) and hcd (the corner data), x = hc + hd − hcd.
+
+Example:
+  cagd coons-bicubic --c1 \"[u;0;0]\" --c2 \"[u;1;0]\" --d1 \"[0;v;0]\" --d2 \"[1;v;0]\" --c1v \"[0;1;0]\" --c2v \"[0;1;0]\" --d1u \"[1;0;0]\" --d2u \"[1;0;0]\" --n 5")]
 pub struct CoonsBicubicCommand {
     #[command(flatten)]
     pub boundary: BoundaryArgs,

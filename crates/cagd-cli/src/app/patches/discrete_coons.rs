@@ -16,7 +16,19 @@ use super::super::common::*;
 use super::super::work::{bits, check_work, weigh};
 use super::super::{prepare_script, Outcome};
 
+/// The discrete Coons patch: interior control points from the boundary of a net.
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Input: a net as for bezier-patch; only its boundary rows and columns are used.
+Layout: result is the full net (m+1)×(n+1)×3; --steps also prints its parts bu, bv, buv (the
+CAD notes (6): net = bu + bv − buv).
+--mask=ALPHA,BETA solves the affine mask instead (alpha + beta = 1/4): α = −1/4, β = 1/2 is the
+permanence principle's mask, the discrete Coons patch again; α = 0, β = 1/4 the discrete Laplace
+mask.
+
+Examples:
+  cagd discrete-coons \"[0 0 0 0 1 0 0 2 0; 1 0 0 0 0 0 1 2 1; 2 0 0 2 1 1 2 2 0]\"
+  cagd discrete-coons net.txt --mask=0,0.25")]
 pub struct DiscreteCoonsCommand {
     /// A Bézier control net, packed (m+1)×3(n+1) as ploskevB takes it, or an Octave
     /// (m+1)×(n+1)×3 array file. Only its boundary rows and columns are used.

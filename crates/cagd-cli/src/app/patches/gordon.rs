@@ -22,7 +22,21 @@ use super::super::{prepare_script, Outcome};
 
 use super::*;
 
+/// A Gordon surface g = g1 + g2 - g12 of a curve network (thesis 4.4, algorithm 7).
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Input: repeated --u-curve g(u_i, v) (expressions in v) and --v-curve g(u, v_j) (in u), in node
+order, with --u-nodes and --v-nodes (default equally spaced); or --script FILE with appendix
+D's packed g_u (3×kN), g_v, g_uv (k×3k) and nodes x, read as krpa_gordon reads them: each curve
+is the polyline through its N samples (at the script's u and v, else linspace(0,1,N)), with the
+crossing from g_uv added where a node is not a sample; default --u/--v: the samples.
+Layout: single --u and --v give the 3×1 point; otherwise the grid nu×nv×3. --steps also prints
+g1, g2, g12. The conditioning line gives the Lebesgue constants of the node vectors.
+
+Examples:
+  cagd gordon --v-curve \"[u;0;u-u^2]\" --v-curve \"[u;0.5;0.5+u-u^2]\" --v-curve \"[u;1;1+u-u^2]\" \\
+          --u-curve \"[0;v;v]\" --u-curve \"[0.5;v;0.25+v]\" --u-curve \"[1;v;v]\" --u 0.25 --v 0.75 --steps --exact
+  cagd gordon --script appendix_d.m --n 10 --plot gordon.png")]
 pub struct GordonCommand {
     /// A curve g(u_i, v) of the network, in v (repeat, one per u-node, in order); an
     /// expression such as "[0.5; v; 0.25+v]" or Bézier control points.

@@ -1,0 +1,92 @@
+//! A user's expression as a curve the operation layer evaluates where it needs it
+//! ([`cagd_ops::curves::Evaluator`]): `--c1 "[u; 0; u-u^2]"`, a script's curve, `--blend`.
+
+use std::cell::RefCell;
+use std::rc::Rc;
+
+use cagd::limits::Limits;
+use cagd_octave::literal::{Env, LiteralScalar, ParamExpr, Warning};
+use cagd_ops::curves::Evaluator;
+use cagd_ops::{Kind, OpError, Role};
+use nalgebra::DMatrix;
+
+use super::work::Sampling;
+
+/// The form of a curve expression, for error messages.
+pub(crate) const CURVE_FORM: &str =
+    "an expression in the curve parameter such as \"[u; 0; u-u^2]\"";
+
+/// An expression in one parameter, evaluated in a shared environment (whose warnings the
+/// command reports afterwards).
+pub(crate) struct ExprCurve<T: LiteralScalar> {
+    expr: ParamExpr,
+    param: &'static str,
+    env: Rc<RefCell<Env<T>>>,
+    limits: Limits,
+    form: &'static str,
+}
+
+impl<T: LiteralScalar> ExprCurve<T> {
+    /// `expr` in `param`, evaluated in `env`; errors name `form` as what was expected.
+    pub fn new(
+        expr: ParamExpr,
+        param: &'static str,
+        env: Rc<RefCell<Env<T>>>,
+        limits: Limits,
+        form: &'static str,
+    ) -> Self {
+        ExprCurve {
+            expr,
+            param,
+            env,
+            limits,
+            form,
+        }
+    }
+
+    fn error(&self, e: cagd_octave::literal::LiteralError) -> OpError {
+        OpError::new(Role::Result, Kind::Value, e.to_string(), self.form)
+    }
+}
+
+impl<T: LiteralScalar> Evaluator<T> for ExprCurve<T> {
+    fn values(&self, ts: &[T]) -> cagd_ops::Result<DMatrix<T>> {
+        let mut env = self.env.borrow_mut();
+        self.expr
+            .sample_curve(&mut env, self.param, ts)
+            .map_err(|e| self.error(e))
+    }
+
+    fn derivatives(&self, ts: &[T]) -> cagd_ops::Result<DMatrix<T>> {
+        let derivative = self
+            .expr
+            .derivative(self.param)
+            .map_err(|e| self.error(e))?;
+        let mut env = self.env.borrow_mut();
+        derivative
+            .sample_curve(&mut env, self.param, ts)
+            .map_err(|e| self.error(e))
+    }
+
+    fn work(&self, ts: &[T]) -> u128 {
+        let env = self.env.borrow();
+        let sampling = Sampling {
+            argument: "",
+            expr: &self.expr,
+            params: vec![(self.param, ts)],
+        };
+        sampling.work(&env, &self.limits)
+    }
+}
+
+/// The warnings an environment collected, about `argument`.
+pub(crate) fn env_warnings<T: LiteralScalar>(
+    argument: &str,
+    env: &Rc<RefCell<Env<T>>>,
+) -> Vec<(String, Warning)> {
+    env.borrow_mut()
+        .take_warnings()
+        .into_iter()
+        .map(|w| (argument.to_string(), w))
+        .collect()
+}

@@ -1,0 +1,80 @@
+//! The constructions, one file each: what each front end offers as a command, a function or
+//! a view.
+//!
+//! | request | construction |
+//! |---|---|
+//! | [`DeCasteljau`] | points of a Bézier curve, with the de Casteljau scheme |
+//! | [`Coons`] | a Coons patch of any four boundary curves, with its parts |
+
+use cagd::{Curve, Scalar};
+use nalgebra::DMatrix;
+
+use crate::error::{lib, Result};
+use crate::{number_text, Context, Role};
+
+pub mod coons;
+mod decasteljau;
+pub mod surface;
+
+pub use coons::{Blend, Coons};
+pub use decasteljau::DeCasteljau;
+
+/// How much more steps cost than the points alone: each scheme is computed again and laid out
+/// as text, about as many numbers as operations, each number some 50 operations to format
+/// and about 16 bytes of text. So a request whose schemes would fill gigabytes of memory is
+/// refused up front like any other large work.
+pub const STEPS_FACTOR: u128 = 50;
+
+/// Points evaluated between two interrupt checks.
+const CHUNK: usize = 4096;
+
+/// The points of `curve` at `ts` (`d × k`, one per column), in chunks between which the
+/// front end may interrupt.
+pub fn eval_points<T: Scalar, C: Curve<T> + ?Sized>(
+    curve: &C,
+    ts: &[T],
+    role: Role,
+    cx: &Context,
+) -> Result<DMatrix<T>> {
+    let d = curve.dim();
+    let too_large = |requested: u128| {
+        crate::OpError::library(
+            role,
+            cagd::Error::TooLarge {
+                what: "curve points",
+                requested,
+                limit: cx.limits.max_grid_points as u128,
+                which: cagd::limits::Limit::GridPoints,
+            },
+            "fewer points",
+        )
+    };
+    let len = d
+        .checked_mul(ts.len())
+        .ok_or_else(|| too_large(d as u128 * ts.len() as u128))?;
+    let mut out = Vec::new();
+    out.try_reserve_exact(len)
+        .map_err(|_| too_large(len as u128))?;
+    out.resize(len, T::zero());
+    for (chunk, buffer) in ts.chunks(CHUNK).zip(out.chunks_mut(CHUNK * d.max(1))) {
+        cx.check_interrupt()?;
+        curve
+            .eval_many_into(chunk, buffer)
+            .map_err(lib(role, "finite parameter values"))?;
+    }
+    // Row-major k × d is column-major d × k: one point per column.
+    Ok(DMatrix::from_vec(d, ts.len(), out))
+}
+
+/// Labels `t = 1/2` of the points at `values`, named `name`.
+pub fn point_labels<T: Scalar>(name: &str, values: &[T]) -> Vec<String> {
+    values
+        .iter()
+        .map(|x| format!("{name} = {}", number_text(x)))
+        .collect()
+}
+
+/// A matrix in doubles, for pictures.
+pub fn to_f64<T: Scalar>(m: &DMatrix<T>) -> DMatrix<f64> {
+    m.map(|x| x.to_f64())
+}
