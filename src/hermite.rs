@@ -276,7 +276,11 @@ impl<T: Scalar> Curve<T> for HermiteCubic<T> {
     }
     /// [`HermiteCubic::eval_cost`] on the cubic's own data.
     fn point_cost(&self, param_bits: u128) -> crate::cost::Cost {
-        HermiteCubic::eval_cost(self, param_bits, crate::cost::max_bits(self.geometry.iter()))
+        HermiteCubic::eval_cost(
+            self,
+            param_bits,
+            crate::cost::max_bits(self.geometry.iter()),
+        )
     }
 }
 

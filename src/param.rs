@@ -764,9 +764,7 @@ impl<T: Scalar, C: Curve<T>> Curve<T> for OnUnitInterval<C, T> {
             .saturating_add(self.start.bits())
             .saturating_add(self.end.bits())
             .saturating_add(2);
-        self.curve
-            .point_cost(mapped)
-            .and(Cost::new(3, mapped))
+        self.curve.point_cost(mapped).and(Cost::new(3, mapped))
     }
 
     fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {

@@ -629,7 +629,10 @@ impl<T: Scalar> Curve<T> for CubicSpline<T> {
     /// [`sample_cost`] on the spline's own points and tangents.
     fn point_cost(&self, param_bits: u128) -> crate::cost::Cost {
         let data = crate::cost::max_bits(self.points.iter().chain(self.tangents.iter()));
-        crate::cost::Cost::new(12 * self.dim() as u128, data.saturating_add(param_bits.saturating_mul(3)))
+        crate::cost::Cost::new(
+            12 * self.dim() as u128,
+            data.saturating_add(param_bits.saturating_mul(3)),
+        )
     }
     /// [`CubicSpline::eval_many_into`]: segment coefficients once, no allocation per point.
     fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {

@@ -654,7 +654,11 @@ impl<T: Scalar> Curve<T> for BezierCurve<T> {
 
     /// [`BezierCurve::eval_cost`] on the curve's own control points.
     fn point_cost(&self, param_bits: u128) -> crate::cost::Cost {
-        BezierCurve::eval_cost(self, param_bits, crate::cost::max_bits(self.control().iter()))
+        BezierCurve::eval_cost(
+            self,
+            param_bits,
+            crate::cost::max_bits(self.control().iter()),
+        )
     }
 
     fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {

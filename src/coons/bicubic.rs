@@ -447,9 +447,10 @@ impl<T: Scalar, C: CurveDeriv<T>, D: CurveDeriv<T>> BicubicCoonsPatch<C, D, T> {
     pub fn eval_partials(&self, u: T, v: T) -> Result<SurfacePartials<T>> {
         let [c1, c2, d1, d2] = self.boundary.unit_curves();
         let [du0, du1, dv0, dv1] = self.unit_cross();
-        let deriv = |c: &dyn Fn(T) -> DVector<T>, _what: &'static str, t: &T| -> Result<DVector<T>> {
-            Ok(c(t.clone()))
-        };
+        let deriv = |c: &dyn Fn(T) -> DVector<T>,
+                     _what: &'static str,
+                     t: &T|
+         -> Result<DVector<T>> { Ok(c(t.clone())) };
         let at_u = self.values_at_u(&u);
         let at_v = self.values_at_v(&v);
         let at_u_d = [

@@ -416,7 +416,10 @@ impl<T: Scalar> Curve<T> for NurbsCurve<T> {
     /// [`homogeneous`](NurbsCurve::homogeneous)) and `d` divisions by the weight.
     fn point_cost(&self, param_bits: u128) -> crate::cost::Cost {
         let h = Curve::point_cost(&self.homogeneous, param_bits);
-        h.and(crate::cost::Cost::new(self.dim() as u128, h.bits().saturating_mul(2)))
+        h.and(crate::cost::Cost::new(
+            self.dim() as u128,
+            h.bits().saturating_mul(2),
+        ))
     }
 
     /// [`NurbsCurve::eval_many_into`]: the fast batch (reciprocals per span, one division and no

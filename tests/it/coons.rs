@@ -765,7 +765,10 @@ fn bicubic_errors() {
         .unwrap();
     assert!((patch.eval(0.25, 0.75) - dvector![0.25, 0.75]).amax() < 1e-16);
     let partials = patch.eval_partials(0.5, 0.5).unwrap();
-    assert!((partials.xu.clone() - dvector![1.0, 0.0]).amax() < 1e-15, "{partials:?}");
+    assert!(
+        (partials.xu.clone() - dvector![1.0, 0.0]).amax() < 1e-15,
+        "{partials:?}"
+    );
     // Given twists of the wrong dimension.
     let err = BicubicCoonsPatch::new(
         boundary,

@@ -17,13 +17,13 @@ use cagd::coons::{
     GeneralizedCoonsPatch, Tolerance, Twist,
 };
 use cagd::gordon::GordonSurface;
-use cagd::CurveDeriv;
 use cagd::hermite::HermiteCubic;
 use cagd::interpolation::ParametricInterpolant;
 use cagd::lagrange::{Lagrange, LagrangeInterpolant};
 use cagd::nurbs::{NurbsCurve, NurbsSurface};
 use cagd::spline::{CubicSpline, EndCondition};
 use cagd::surfaces::{CubicMatrixPatch, FergusonPatch, RuledSurface};
+use cagd::CurveDeriv;
 use cagd::{Curve, Error, FnCurve, OnUnitInterval, SampledCurve, Scalar, Surface};
 use nalgebra::{dmatrix, dvector, DMatrix, DVector};
 use proptest::prelude::*;

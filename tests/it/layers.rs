@@ -432,7 +432,11 @@ fn the_checker_finds_a_parent_child_cycle() {
         )
         .unwrap();
         let found = cycles(root);
-        assert_eq!(found, ["  app -> app/bezier\n  app/bezier -> app\n"], "{back}: {found:?}");
+        assert_eq!(
+            found,
+            ["  app -> app/bezier\n  app/bezier -> app\n"],
+            "{back}: {found:?}"
+        );
     }
     // A child that takes what it needs from a sibling, not from the parent, is fine.
     std::fs::write(root.join("app/cx.rs"), "pub fn prepare() {}\n").unwrap();

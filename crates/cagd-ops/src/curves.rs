@@ -29,7 +29,17 @@ pub trait Evaluator<T: Scalar> {
 
     /// The work of evaluating at all of `ts` (in units of one `f64` operation, exact
     /// arithmetic weighed), estimated or measured before any of it is done.
-    fn work(&self, ts: &[T]) -> u128;
+    fn work(&self, ts: &[T]) -> Work;
+}
+
+/// An evaluator's estimate of its work, and how it was made (the words of a refusal:
+/// `estimated operations (samples × expression nodes)`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Work {
+    /// The operations.
+    pub operations: u128,
+    /// What they count.
+    pub what: &'static str,
 }
 
 /// A curve argument.
@@ -69,12 +79,11 @@ impl<T: Scalar> CurveArg<T> {
     }
 
     /// The work of evaluating the curve once at each of `at` (weighed in the arithmetic `T`).
-    pub fn work(&self, at: &[T]) -> u128 {
+    pub fn work(&self, at: &[T]) -> Work {
         let bits = cagd::cost::max_bits(at);
-        let per = |c: &dyn Curve<T>| {
-            c.point_cost(bits)
-                .times(at.len() as u128)
-                .weigh(T::EXACT)
+        let per = |c: &dyn Curve<T>| Work {
+            operations: c.point_cost(bits).times(at.len() as u128).weigh(T::EXACT),
+            what: "estimated operations",
         };
         match self {
             CurveArg::Curve(c) => per(c.as_ref()),
@@ -88,12 +97,7 @@ impl<T: Scalar> CurveArg<T> {
     ///
     /// # Errors
     /// The evaluator's errors, about `role`.
-    pub fn realise(
-        &self,
-        role: Role,
-        at: &[T],
-        with_derivatives: bool,
-    ) -> Result<Realised<'_, T>> {
+    pub fn realise(&self, role: Role, at: &[T], with_derivatives: bool) -> Result<Realised<'_, T>> {
         match self {
             CurveArg::Curve(c) => Ok(Realised::Curve(c.as_ref())),
             CurveArg::Samples(s) => Ok(Realised::Samples(s)),
@@ -106,7 +110,10 @@ impl<T: Scalar> CurveArg<T> {
                 };
                 Tabulated::new(at.to_vec(), values, derivatives)
                     .map(Realised::Tabulated)
-                    .map_err(lib(role, "a curve whose values are points of one dimension"))
+                    .map_err(lib(
+                        role,
+                        "a curve whose values are points of one dimension",
+                    ))
             }
         }
     }
@@ -195,7 +202,11 @@ impl<T: Scalar> Tabulated<T> {
     ///
     /// # Errors
     /// The errors of [`SampledCurve::new`].
-    pub fn new(at: Vec<T>, values: DMatrix<T>, derivatives: Option<DMatrix<T>>) -> cagd::Result<Self> {
+    pub fn new(
+        at: Vec<T>,
+        values: DMatrix<T>,
+        derivatives: Option<DMatrix<T>>,
+    ) -> cagd::Result<Self> {
         let unit = |m: DMatrix<T>| {
             SampledCurve::new(at.clone(), m).and_then(|c| c.with_domain(T::zero(), T::one()))
         };
@@ -245,21 +256,25 @@ pub fn needed<T: Scalar>(lists: &[&[T]]) -> Vec<T> {
 }
 
 /// Refuses the work of evaluating `curves` (each with its role and parameters) above the
-/// limit, naming the role with the largest share.
+/// limit, naming the role with the largest share and saying how its work was estimated.
 pub fn check_curves_work<T: Scalar>(
     cx: &Context,
     curves: &[(Role, &CurveArg<T>, &[T])],
 ) -> Result<()> {
-    let works: Vec<(Role, u128)> = curves
+    let works: Vec<(Role, Work)> = curves
         .iter()
         .map(|(role, c, at)| (*role, c.work(at)))
         .collect();
-    let total = works.iter().map(|w| w.1).fold(0u128, u128::saturating_add);
-    let role = works
+    let total = works
         .iter()
-        .max_by_key(|w| w.1)
-        .map_or(Role::Result, |w| w.0);
-    cx.check_work(role, total)
+        .map(|w| w.1.operations)
+        .fold(0u128, u128::saturating_add);
+    let Some((role, largest)) = works.iter().max_by_key(|w| w.1.operations) else {
+        return Ok(());
+    };
+    cx.limits
+        .check_work(largest.what, total)
+        .map_err(lib(*role, "fewer samples or shorter expressions"))
 }
 
 /// The dimension shared by `curves`, or an error naming the first that differs.
@@ -273,7 +288,10 @@ pub fn common_dim<T: Scalar>(curves: &[(Role, &dyn Curve<T>)]) -> Result<usize> 
         Some((role, c)) => Err(OpError::new(
             *role,
             Kind::Shape,
-            format!("a curve of dimension {}, the first is of dimension {d}", c.dim()),
+            format!(
+                "a curve of dimension {}, the first is of dimension {d}",
+                c.dim()
+            ),
             "curves of one dimension",
         )),
     }

@@ -200,7 +200,12 @@ impl Drawing {
 
     /// Adds the answer's points as markers; with at most [`MAX_POINT_LABELS`] of them each is
     /// labelled (`labels`, e.g. `t = 1/2`).
-    pub fn points(self, points: DMatrix<f64>, labels: Vec<String>, label: impl Into<String>) -> Self {
+    pub fn points(
+        self,
+        points: DMatrix<f64>,
+        labels: Vec<String>,
+        label: impl Into<String>,
+    ) -> Self {
         let labels = if labels.len() <= MAX_POINT_LABELS {
             labels
         } else {

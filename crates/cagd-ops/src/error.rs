@@ -120,7 +120,7 @@ impl Kind {
 /// let e = OpError::new(Role::Samples, Kind::Shape, "N = 1 is too small", "an integer N ≥ 2");
 /// assert_eq!(e.to_string(), "N = 1 is too small; expected an integer N ≥ 2");
 /// ```
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, thiserror::Error)]
 #[error("{problem}; expected {expected}")]
 pub struct OpError {
     /// The role of the argument the error is about.
@@ -135,6 +135,24 @@ pub struct OpError {
     pub limit: Option<Limit>,
     /// The library error underneath, if any.
     pub source: Option<Box<cagd::Error>>,
+    /// A front end's own error underneath (an expression that did not evaluate), which the
+    /// front end may recognise again; opaque here.
+    pub cause: Option<std::sync::Arc<dyn std::error::Error + Send + Sync>>,
+}
+
+impl PartialEq for OpError {
+    /// Equal roles, kinds, words, limits and library errors (a front end's cause is compared
+    /// by its text).
+    fn eq(&self, other: &Self) -> bool {
+        let cause = |e: &OpError| e.cause.as_ref().map(|c| c.to_string());
+        self.role == other.role
+            && self.kind == other.kind
+            && self.problem == other.problem
+            && self.expected == other.expected
+            && self.limit == other.limit
+            && self.source == other.source
+            && cause(self) == cause(other)
+    }
 }
 
 impl OpError {
@@ -152,6 +170,15 @@ impl OpError {
             expected: one_line(&expected.into()),
             limit: None,
             source: None,
+            cause: None,
+        }
+    }
+
+    /// The same error with a front end's own error as its cause.
+    pub fn caused_by(self, cause: impl std::error::Error + Send + Sync + 'static) -> Self {
+        OpError {
+            cause: Some(std::sync::Arc::new(cause)),
+            ..self
         }
     }
 

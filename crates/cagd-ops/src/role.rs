@@ -29,6 +29,8 @@ pub enum Role {
     U,
     /// Surface parameters `v`.
     V,
+    /// The grid `u × v` as a whole (its size, the work of evaluating on it).
+    Grid,
     /// A number of equally spaced samples (the thesis's `N`).
     Samples,
     /// The order of a derivative (of a curve, or `∂/∂u` of a patch).
@@ -49,6 +51,8 @@ pub enum Role {
     D1,
     /// Boundary curve `x(1, v)`.
     D2,
+    /// The four boundary curves together (where they meet).
+    Boundary,
     /// Cross-boundary derivative `x_v(u, 0)`.
     C1v,
     /// Cross-boundary derivative `x_v(u, 1)`.
@@ -124,6 +128,7 @@ impl Role {
             Role::T => "t",
             Role::U => "u",
             Role::V => "v",
+            Role::Grid => "grid",
             Role::Samples => "n",
             Role::DerivativeOrder => "derivative",
             Role::DerivativeV => "dv",
@@ -134,6 +139,7 @@ impl Role {
             Role::C2 => "c2",
             Role::D1 => "d1",
             Role::D2 => "d2",
+            Role::Boundary => "boundary",
             Role::C1v => "c1v",
             Role::C2v => "c2v",
             Role::D1u => "d1u",

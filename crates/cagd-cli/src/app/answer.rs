@@ -81,7 +81,15 @@ pub(crate) fn op_error(names: &Names, e: OpError) -> CliError {
     if e.role == Role::Result {
         problem = problem.replacen("the result", &format!("the {} result", names.command), 1);
     }
+    let literal = e
+        .cause
+        .as_ref()
+        .and_then(|c| c.downcast_ref::<cagd_octave::literal::LiteralError>())
+        .cloned();
     let kind = match (e.source, e.kind) {
+        _ if literal.is_some() => ErrorKind::Literal(Box::new(
+            literal.unwrap_or_else(|| unreachable!("checked just above")),
+        )),
         (Some(source), _) => ErrorKind::Library(source),
         (None, cagd_ops::Kind::Shape) => ErrorKind::Shape,
         (None, cagd_ops::Kind::Usage) => ErrorKind::Usage,

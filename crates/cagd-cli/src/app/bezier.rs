@@ -47,7 +47,6 @@ pub fn interval<T: LiteralScalar>(
 /// is 6.6 GB of text) is refused up front like any other large work.
 const STEPS_FACTOR: u128 = 50;
 
-
 /// The work of evaluating `curve` by de Casteljau at `ts` and at `dense` (a picture),
 /// [`BezierCurve::eval_cost`] at each parameter; with `steps` [`STEPS_FACTOR`] times that at
 /// `ts`.

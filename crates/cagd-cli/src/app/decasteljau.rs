@@ -66,7 +66,13 @@ impl Run for DecasteljauCommand {
     fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
         let script = cx.script::<T>(&self.script, None)?;
         let op = DeCasteljau {
-            control: points(cx, "CONTROL", &self.control, script.as_ref(), self.rows.rows)?,
+            control: points(
+                cx,
+                "CONTROL",
+                &self.control,
+                script.as_ref(),
+                self.rows.rows,
+            )?,
             interval: interval(cx, &self.interval)?,
             t: curve_params(cx, &self.params)?,
             steps: self.steps.steps,

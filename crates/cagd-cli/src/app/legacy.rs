@@ -28,16 +28,6 @@ impl Run for bezier::BezierPatchCommand {
     }
 }
 
-impl Run for patches::CoonsCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        patches::coons::<T>(&cx.limits, self)
-    }
-}
-
 impl Run for patches::CoonsBicubicCommand {
     fn exact(&self) -> bool {
         self.output.exact

@@ -13,17 +13,23 @@ mod answer;
 
 mod bezier;
 
+mod boundary;
+
+mod coons;
+
+mod curve_arg;
+
 mod cx;
 
 mod decasteljau;
+
+mod expr_curve;
 
 mod legacy;
 
 mod read;
 
 mod run;
-
-mod blend;
 
 mod bspline_basis;
 
@@ -120,7 +126,7 @@ subcommands! {
     Course(course_examples::CourseCommand),
     Decasteljau(decasteljau::DecasteljauCommand),
     BezierPatch(bezier::BezierPatchCommand),
-    Coons(patches::CoonsCommand),
+    Coons(coons::CoonsCommand),
     CoonsBicubic(patches::CoonsBicubicCommand),
     DiscreteCoons(patches::DiscreteCoonsCommand),
     Gordon(patches::GordonCommand),
@@ -220,8 +226,8 @@ struct ScriptCommand {
 }
 
 use common::DEFAULT_SAMPLES;
-pub use outcome::Outcome;
 use cx::Cx;
+pub use outcome::Outcome;
 
 /// Parses `args` (the program name first, as `std::env::args_os` gives them) and runs the
 /// subcommand. Nothing is written: the files are returned staged in the [`Outcome`].
@@ -305,7 +311,6 @@ impl Command {
         }
     }
 }
-
 
 /// The names of the subcommands, in the order of `cagd --help` (without clap's `help`).
 pub fn subcommands() -> Vec<String> {

@@ -8,7 +8,7 @@ use nalgebra::DMatrix;
 
 use super::common::shape;
 use super::Cx;
-use crate::args::{CurveParamArgs, ScriptArgs};
+use crate::args::{CurveParamArgs, ScriptArgs, SurfaceParamArgs};
 use crate::{load_matrix, load_params, CliError, Outcome};
 
 /// A matrix argument with points as columns (or rows with `--rows`), with the orientation
@@ -32,6 +32,19 @@ pub(crate) fn curve_params<T: LiteralScalar>(
     params: &CurveParamArgs,
 ) -> Result<Params<T>, CliError> {
     given_or_samples(cx, "--t", &params.t, params.n)
+}
+
+/// The parameters of a surface: `--u`, `--v` values or `--n` samples of the domain, and
+/// `--list`.
+pub(crate) fn surface_params<T: LiteralScalar>(
+    cx: &mut Cx,
+    params: &SurfaceParamArgs,
+) -> Result<cagd_ops::ops::surface::SurfaceParams<T>, CliError> {
+    Ok(cagd_ops::ops::surface::SurfaceParams {
+        u: given_or_samples(cx, "--u", &params.u, params.n)?,
+        v: given_or_samples(cx, "--v", &params.v, params.n)?,
+        list: params.list,
+    })
 }
 
 /// `given` values of `argument`, else `n` samples, else the default.

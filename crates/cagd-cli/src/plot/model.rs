@@ -111,7 +111,12 @@ impl Figure {
     }
 
     /// Adds a boundary curve drawn 3 pixels wide (the thesis's `'LineWidth', 2.5`).
-    pub fn boundary(mut self, points: DMatrix<f64>, colour: Colour, label: impl Into<String>) -> Self {
+    pub fn boundary(
+        mut self,
+        points: DMatrix<f64>,
+        colour: Colour,
+        label: impl Into<String>,
+    ) -> Self {
         self.drawing = self.drawing.boundary(points, colour, label);
         self
     }
@@ -123,7 +128,12 @@ impl Figure {
     }
 
     /// Adds marked points with their labels.
-    pub fn points(mut self, points: DMatrix<f64>, labels: Vec<String>, label: impl Into<String>) -> Self {
+    pub fn points(
+        mut self,
+        points: DMatrix<f64>,
+        labels: Vec<String>,
+        label: impl Into<String>,
+    ) -> Self {
         self.drawing = self.drawing.points(points, labels, label);
         self
     }
@@ -152,7 +162,11 @@ impl Figure {
     /// The height in pixels the legend takes at the top of the plotting area (0 without one):
     /// a line of about 20 pixels per label and the margins of its box.
     pub(super) fn legend_height(&self) -> f64 {
-        let labels = self.layers().iter().filter(|l| !l.label().is_empty()).count();
+        let labels = self
+            .layers()
+            .iter()
+            .filter(|l| !l.label().is_empty())
+            .count();
         if labels == 0 {
             0.0
         } else {

@@ -3,10 +3,14 @@
 use cagd::bezier::{BezierCurve, BezierPatch};
 use nalgebra::DMatrix;
 
-use super::{bezier_curve, cost, native};
+use cagd_ops::ops::DeCasteljau;
+use cagd_ops::{Params, Role};
+
+use super::{bezier_curve, cost, emit_result, native, CONTROL_FORM};
 use crate::args::Call;
 use crate::error::{Kind, PkgError, Result};
-use crate::number::{emit_grid, emit_matrix, params, scalar, Number};
+use crate::number::{emit_grid, emit_matrix, matrix, params, scalar, Number};
+use crate::ops::{execute, Names};
 use crate::value::Sink;
 
 /// The points of `curve` at `t` as a `d × numel(t)` output `index`.
@@ -34,10 +38,16 @@ native!(
 fn bezier_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     call.nargin(2, 2, "X = cagd_bezier (P, t [, \"exact\"])")?;
     call.nargout_max(1)?;
-    let curve = bezier_curve::<T>(call, call.arg(0), "P")?;
-    let t = params::<T>(call, 1, "t")?;
-    emit_points(call, sink, 0, &curve, &t)
+    let op = DeCasteljau {
+        t: Params::Given(params::<T>(call, 1, "t")?),
+        ..DeCasteljau::new(matrix::<T>(call, 0, "P", CONTROL_FORM)?)
+    };
+    let report = execute(call, NAMES, &op)?;
+    emit_result(sink, 0, &report)
 }
+
+/// How the Bézier functions name their arguments.
+const NAMES: Names = &[(Role::Control, "P"), (Role::T, "t"), (Role::Result, "X")];
 
 native!(
     /// `[X, Q] = cagd_bezier_derivative (P, t, r)`: the `r`-th derivative (default 1) at `t`

@@ -69,6 +69,40 @@ fn cost<T: Number>(ops: usize, words: usize) -> usize {
     }
 }
 
+/// Output `index`: the report's `result` (a matrix, or a grid as `d × nu × nv`).
+///
+/// # Errors
+/// [`Kind::Memory`](crate::Kind::Memory); a report without a result is an internal error.
+fn emit_result<T: Number>(
+    sink: &mut dyn Sink,
+    index: usize,
+    report: &cagd_ops::Report<T>,
+) -> Result<()> {
+    emit_item(sink, index, report, "result")
+}
+
+/// Output `index`: the report's item `name` (a matrix, or a grid as `d × nu × nv`).
+///
+/// # Errors
+/// [`Kind::Memory`](crate::Kind::Memory); a report without that item is an internal error.
+fn emit_item<T: Number>(
+    sink: &mut dyn Sink,
+    index: usize,
+    report: &cagd_ops::Report<T>,
+    name: &str,
+) -> Result<()> {
+    match report.get(name) {
+        Some(cagd_ops::Value::Matrix(m)) => crate::number::emit_matrix(sink, index, m),
+        Some(cagd_ops::Value::Grid(g)) => {
+            crate::number::emit_grid(sink, index, g.dim(), g.as_slice())
+        }
+        _ => Err(crate::PkgError::new(
+            crate::Kind::Internal,
+            format!("the answer has no numeric item `{name}`"),
+        )),
+    }
+}
+
 /// The form of control points.
 const CONTROL_FORM: &str = "a d × (n+1) matrix, one control point per column";
 

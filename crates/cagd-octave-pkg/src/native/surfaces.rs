@@ -1,13 +1,18 @@
 //! Coons and Gordon patches of Bézier curves, with their parts.
 
 use cagd::bezier::BezierCurve;
-use cagd::coons::CoonsPatch;
 use cagd::gordon::GordonSurface;
 
-use super::{bezier_curve, cost, native};
+use cagd_ops::curves::CurveArg;
+use cagd_ops::ops::surface::SurfaceParams;
+use cagd_ops::ops::Coons;
+use cagd_ops::{Params, Role};
+
+use super::{bezier_curve, cost, emit_item, native};
 use crate::args::Call;
 use crate::error::{Kind, PkgError, Result};
 use crate::number::{emit_grid, params, Number};
+use crate::ops::{execute, Names};
 use crate::value::{Sink, Value};
 
 /// Writes the grid `u × v` of `x` (output 0) and, when asked, of its three parts (outputs 1
@@ -54,39 +59,43 @@ fn coons_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
         "[X, rc, rd, rcd] = cagd_coons (c1, c2, d1, d2, u, v [, \"exact\"])",
     )?;
     call.nargout_max(4)?;
-    let names = ["c1", "c2", "d1", "d2"];
-    let curves: Vec<BezierCurve<T>> = names
-        .iter()
+    let mut boundary = Vec::with_capacity(4);
+    for (i, name) in ["c1", "c2", "d1", "d2"].into_iter().enumerate() {
+        boundary.push(CurveArg::curve(bezier_curve::<T>(call, call.arg(i), name)?));
+    }
+    let op =
+        Coons {
+            at: SurfaceParams {
+                u: Params::Given(params::<T>(call, 4, "u")?),
+                v: Params::Given(params::<T>(call, 5, "v")?),
+                list: false,
+            },
+            steps: call.nargout > 1,
+            ..Coons::new(boundary.try_into().map_err(|_| {
+                PkgError::new(Kind::Internal, "cagd_coons: not four boundary curves")
+            })?)
+        };
+    let report = execute(call, COONS_NAMES, &op)?;
+    for (k, name) in ["result", "rc", "rd", "rcd"]
+        .into_iter()
         .enumerate()
-        .map(|(i, name)| bezier_curve::<T>(call, call.arg(i), name))
-        .collect::<Result<_>>()?;
-    let [c1, c2, d1, d2]: [BezierCurve<T>; 4] = curves.try_into().expect("four curves");
-    let d = c1.dim();
-    let degree = [&c1, &c2, &d1, &d2]
-        .iter()
-        .map(|c| c.degree())
-        .max()
-        .unwrap_or(0);
-    let u = params::<T>(call, 4, "u")?;
-    let v = params::<T>(call, 5, "v")?;
-    call.check_grid("u, v", u.len(), v.len())?;
-    call.check_work(
-        "u, v",
-        u.len() * v.len(),
-        cost::<T>(4 * d * (degree + 2), degree + 1),
-    )?;
-    let patch = CoonsPatch::new(c1, c2, d1, d2)?;
-    emit_with_parts(
-        call,
-        sink,
-        (&u, &v, d),
-        |out| patch.eval_grid_into(&u, &v, out),
-        |a, b| {
-            let p = patch.eval_parts(a, b);
-            [p.x, p.rc, p.rd, p.rcd]
-        },
-    )
+        .take(call.nargout.max(1))
+    {
+        emit_item(sink, k, &report, name)?;
+    }
+    Ok(())
 }
+
+/// How `cagd_coons` names its arguments.
+const COONS_NAMES: Names = &[
+    (Role::C1, "c1"),
+    (Role::C2, "c2"),
+    (Role::D1, "d1"),
+    (Role::D2, "d2"),
+    (Role::U, "u"),
+    (Role::V, "v"),
+    (Role::Result, "X"),
+];
 
 /// The Bézier curves held by the cell argument `i` (`what` names it).
 fn curve_cell<T: Number>(

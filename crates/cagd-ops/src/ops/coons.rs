@@ -137,7 +137,7 @@ impl<T: Scalar> Operation<T> for Coons<T> {
         let d = self.dim()?;
         let per_point = coons_point_cost([c1, c2, d1, d2], d, bits(&at_u), bits(&at_v));
         let points = evaluated_points((&us, &vs), pictures.then_some((&pus, &pvs)));
-        cx.check_cost(Role::U, per_point.times(points), T::EXACT)?;
+        cx.check_cost(Role::Grid, per_point.times(points), T::EXACT)?;
         let mut report = Report::new();
         report.push("u", Value::row(&us));
         report.push("v", Value::row(&vs));
@@ -247,7 +247,7 @@ impl<T: Scalar> Coons<T> {
         };
         built.map_err(|e| match e {
             cagd::Error::BlendingCondition { .. } => OpError::library(Role::Blend, e, BLEND_FORM),
-            _ => OpError::library(Role::C1, e, BOUNDARY_FORM),
+            _ => OpError::library(Role::Boundary, e, BOUNDARY_FORM),
         })
     }
 
@@ -305,16 +305,15 @@ pub fn realise_all<'a, T: Scalar>(
 
 /// The user's blending pair, tabulated at `at` and at the check points `k/32` of
 /// [`GeneralizedCoonsPatch::from_boundary`] (the patch evaluates it only there).
-fn custom_pair<T: Scalar>(
-    cx: &Context,
-    f: &dyn Evaluator<T>,
-    at: &[T],
-) -> Result<BlendingPair<T>> {
+fn custom_pair<T: Scalar>(cx: &Context, f: &dyn Evaluator<T>, at: &[T]) -> Result<BlendingPair<T>> {
     let mut points: Vec<T> = at.to_vec();
     points.extend((0..=32).map(|k| T::from_ratio(k, 32)));
     points.sort_by(|a, b| a.partial_cmp(b).unwrap_or(std::cmp::Ordering::Equal));
     points.dedup();
-    cx.check_work(Role::Blend, f.work(&points))?;
+    let work = f.work(&points);
+    cx.limits
+        .check_work(work.what, work.operations)
+        .map_err(crate::error::lib(Role::Blend, BLEND_FORM))?;
     let m = f.values(&points).map_err(|e| e.about(Role::Blend))?;
     let table: Vec<(T, T, T)> = match m.nrows() {
         1 => points

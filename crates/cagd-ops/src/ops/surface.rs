@@ -46,7 +46,7 @@ impl<T: Scalar> SurfaceParams<T> {
     ) -> Result<(Vec<T>, Vec<T>)> {
         let us = self.u.resolve(Role::U, (a, b), consequence, cx)?;
         let vs = self.v.resolve(Role::V, (c, d), consequence, cx)?;
-        cx.check_grid(Role::U, us.len(), vs.len())?;
+        cx.check_grid(Role::Grid, us.len(), vs.len())?;
         Ok((us, vs))
     }
 }

@@ -265,12 +265,10 @@ pub fn coons_figure<T: LiteralScalar, C: Curve<T>>(
         .boundary(along(d2, vs), Colour::Green, "")
 }
 
-mod coons;
 mod coons_bicubic;
 mod discrete_coons;
 mod gordon;
 
-pub use coons::{coons, CoonsCommand};
 pub use coons_bicubic::{coons_bicubic, CoonsBicubicCommand};
 pub use discrete_coons::{discrete, DiscreteCoonsCommand};
 pub use gordon::{gordon, GordonCommand};
