@@ -57,6 +57,7 @@ pub mod continuity;
 pub mod conversion;
 pub mod coons;
 pub mod cost;
+pub mod curvature;
 pub mod error;
 pub mod gordon;
 pub mod grid;

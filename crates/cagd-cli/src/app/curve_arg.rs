@@ -60,7 +60,7 @@ pub(crate) fn curve_arg<T: LiteralScalar>(
     env: &Rc<RefCell<Env<T>>>,
 ) -> Result<CurveArg<T>, CliError> {
     if let Some(curve) = library_call(cx, argument, text, how)? {
-        return Ok(curve);
+        return Ok(curve.into_arg());
     }
     let data = names_data(cx, text, how.script);
     if let (Some(param), true) = (how.samples, data) {
@@ -200,21 +200,69 @@ fn bezier<T: LiteralScalar>(
         .map_err(lib(argument, "control points, one per column"))
 }
 
+/// A curve of the library, as `bezier(P)`, `bspline(P, U)`, `nurbs(P, W, U)` (or control
+/// points) make it.
+pub(crate) enum LibraryCurve<T: LiteralScalar> {
+    /// `bezier(P)` or control points.
+    Bezier(BezierCurve<T>),
+    /// `bspline(P, U)`.
+    BSpline(BSplineCurve<T>),
+    /// `nurbs(P, W, U)`.
+    Nurbs(NurbsCurve<T>),
+}
+
+impl<T: LiteralScalar> LibraryCurve<T> {
+    /// As a curve argument of a construction taking any curve.
+    pub fn into_arg(self) -> CurveArg<T> {
+        match self {
+            LibraryCurve::Bezier(c) => CurveArg::curve(c),
+            LibraryCurve::BSpline(c) => CurveArg::curve(c),
+            LibraryCurve::Nurbs(c) => CurveArg::curve(c),
+        }
+    }
+
+    /// As a curve that knows its second derivative.
+    pub fn into_deriv2(self) -> Box<dyn cagd::curvature::CurveDeriv2<T> + Send + Sync> {
+        match self {
+            LibraryCurve::Bezier(c) => Box::new(c),
+            LibraryCurve::BSpline(c) => Box::new(c),
+            LibraryCurve::Nurbs(c) => Box::new(c),
+        }
+    }
+}
+
+/// A library curve: `bezier(P)`, `bspline(P, U)`, `nurbs(P, W, U)`, or control points (a
+/// Bézier curve).
+pub(crate) fn library_curve<T: LiteralScalar>(
+    cx: &mut Cx,
+    argument: &str,
+    text: &str,
+    how: Reading<'_, T>,
+) -> Result<LibraryCurve<T>, CliError> {
+    if let Some(curve) = library_call(cx, argument, text, how)? {
+        return Ok(curve);
+    }
+    let m = load_matrix(&cx.limits, argument, text, how.script)?;
+    crate::slips::point_matrix(argument, &m, how.rows);
+    BezierCurve::new(orient(m, how.rows))
+        .map(LibraryCurve::Bezier)
+        .map_err(lib(argument, "control points, one per column"))
+}
+
 /// `bezier(P)`, `bspline(P, U)` or `nurbs(P, W, U)`, if `text` is such a call.
 fn library_call<T: LiteralScalar>(
     cx: &mut Cx,
     argument: &str,
     text: &str,
     how: Reading<'_, T>,
-) -> Result<Option<CurveArg<T>>, CliError> {
+) -> Result<Option<LibraryCurve<T>>, CliError> {
     let Some((name, args)) = split_call(text) else {
         return Ok(None);
     };
     let form = match name {
         "bezier" => "bezier(P): P the control points, one per column",
         "bspline" => "bspline(P, U): P the control points (columns), U the knot vector (numel(U) − columns(P) − 1 is the degree)",
-        "nurbs" => "nurbs(P, W, U): P the control points (columns), W their weights, U the knot vector",
-        _ => return Ok(None),
+        _ => "nurbs(P, W, U): P the control points (columns), W their weights, U the knot vector",
     };
     let want = match name {
         "bezier" => 1,
@@ -246,17 +294,17 @@ fn library_call<T: LiteralScalar>(
         })
     };
     let curve = match name {
-        "bezier" => BezierCurve::new(points.clone()).map(CurveArg::curve),
+        "bezier" => BezierCurve::new(points.clone()).map(LibraryCurve::Bezier),
         "bspline" => {
             let knots = list(cx, 1)?;
             let p = degree(&knots)?;
-            BSplineCurve::new(p, knots, points.clone()).map(CurveArg::curve)
+            BSplineCurve::new(p, knots, points.clone()).map(LibraryCurve::BSpline)
         }
         _ => {
             let weights = list(cx, 1)?;
             let knots = list(cx, 2)?;
             let p = degree(&knots)?;
-            NurbsCurve::new(p, knots, points.clone(), weights).map(CurveArg::curve)
+            NurbsCurve::new(p, knots, points.clone(), weights).map(LibraryCurve::Nurbs)
         }
     };
     curve.map(Some).map_err(lib(argument, form))

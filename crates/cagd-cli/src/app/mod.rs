@@ -17,6 +17,8 @@ mod boundary;
 
 mod coons;
 
+mod curvature;
+
 mod curve_arg;
 
 mod cx;
@@ -143,6 +145,7 @@ subcommands! {
     InsertKnot(insert_knot::InsertKnotCommand),
     BsplineBasis(bspline_basis::BSplineBasisCommand),
     Continuity(continuity::ContinuityCommand),
+    Curvature(curvature::CurvatureCommand),
     Integrate(integrate::IntegrateCommand),
     Ruled(ruled::RuledCommand),
     Ferguson(ferguson::FergusonCommand),
@@ -301,6 +304,7 @@ impl Command {
             Command::InsertKnot(_) => ("insert-knot", "CONTROL"),
             Command::BsplineBasis(_) => ("bspline-basis", "--knots"),
             Command::Continuity(_) => ("continuity", "FIRST/SECOND"),
+            Command::Curvature(_) => ("curvature", "CURVE"),
             Command::Integrate(_) => ("integrate", "CONTROL"),
             Command::Ruled(_) => ("ruled", "--first/--second"),
             Command::Ferguson(_) => ("ferguson", "--points"),

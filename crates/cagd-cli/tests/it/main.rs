@@ -5,6 +5,7 @@ mod atomic_output;
 mod bad_inputs;
 mod cli;
 mod course;
+mod curvature;
 mod error_catalogue;
 mod hostile;
 mod limits;

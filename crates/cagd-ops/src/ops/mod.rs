@@ -5,6 +5,7 @@
 //! |---|---|
 //! | [`DeCasteljau`] | points of a Bézier curve, with the de Casteljau scheme |
 //! | [`Coons`] | a Coons patch of any four boundary curves, with its parts |
+//! | [`Curvature`] | the curvature and Frenet frame of a Bézier, B-spline or NURBS curve |
 
 use cagd::{Curve, Scalar};
 use nalgebra::DMatrix;
@@ -13,10 +14,12 @@ use crate::error::{lib, Result};
 use crate::{number_text, Context, Role};
 
 pub mod coons;
+mod curvature;
 mod decasteljau;
 pub mod surface;
 
 pub use coons::{Blend, Coons};
+pub use curvature::Curvature;
 pub use decasteljau::DeCasteljau;
 
 /// How much more steps cost than the points alone: each scheme is computed again and laid out
