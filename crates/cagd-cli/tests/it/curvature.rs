@@ -124,6 +124,6 @@ fn a_singular_point_and_bad_curves_are_refused_naming_the_argument() {
         "0.5",
     ])
     .unwrap_err();
-    assert_eq!(e.argument, "--t", "{e}");
+    assert_eq!(e.argument, "CURVE", "{e}");
     assert!(e.problem.contains("4 coordinates"), "{e}");
 }
