@@ -145,22 +145,39 @@ impl Layer {
     }
 }
 
-/// A picture: a title and layers (drawn surfaces first, then nets, curves, control polygons
-/// and marked points on top).
+/// A picture: a title, the names of its axes, and layers (drawn surfaces first, then nets,
+/// curves, control polygons and marked points on top).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Drawing {
     /// The title.
     pub title: String,
     /// The layers, in the order added.
     pub layers: Vec<Layer>,
+    /// What the axes show (`x`, `y`, `z` for points; `t` and `N_i,p(t)` for functions).
+    pub axes: [String; 3],
+    /// Equal scales on all axes (geometry, so shapes are not distorted), or each axis fitted
+    /// to its data (graphs of functions).
+    pub equal_scales: bool,
 }
 
 impl Drawing {
-    /// An empty drawing.
+    /// An empty drawing of points in space (axes `x`, `y`, `z`, equal scales).
     pub fn new(title: impl Into<String>) -> Self {
         Drawing {
             title: title.into(),
             layers: Vec::new(),
+            axes: ["x".into(), "y".into(), "z".into()],
+            equal_scales: true,
+        }
+    }
+
+    /// A graph of functions: the horizontal axis `x_name`, the vertical `y_name`, each fitted
+    /// to the data.
+    pub fn graph(title: impl Into<String>, x_name: &str, y_name: &str) -> Self {
+        Drawing {
+            axes: [x_name.into(), y_name.into(), String::new()],
+            equal_scales: false,
+            ..Drawing::new(title)
         }
     }
 

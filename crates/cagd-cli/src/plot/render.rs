@@ -73,13 +73,8 @@ impl Figure {
             )),
             #[cfg(not(target_arch = "wasm32"))]
             ImageKind::Png => {
-                let mut rgb = vec![0u8; w as usize * h as usize * 3];
-                {
-                    let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
-                    self.draw(&root)?;
-                    root.present().map_err(drawing)?;
-                }
-                encode_png(&rgb, w, h)
+                let svg = self.render(ImageKind::Svg)?;
+                rasterize(&String::from_utf8_lossy(&svg), w, h)
             }
         }
     }
@@ -147,7 +142,8 @@ impl Figure {
             .map_err(drawing)?;
         let to3 = |p: [f64; 3]| (p[1], p[2], p[0]);
         let names = axis_name_positions(chart.as_coord_spec(), [by, bz, bx], root.dim_in_pixel());
-        for (name, (x, y)) in ["y", "z", "x"].iter().zip(names) {
+        let axes = &self.drawing.axes;
+        for (name, (x, y)) in [&axes[1], &axes[2], &axes[0]].into_iter().zip(names) {
             root.draw(&Text::new(
                 name.to_string(),
                 (x, y),
@@ -221,9 +217,16 @@ impl Figure {
         let (w, h) = root.dim_in_pixel();
         let (aw, ah) = ((w as f64 - 110.0).max(50.0), (h as f64 - 120.0).max(50.0));
         let band = self.legend_height().min(ah / 2.0);
-        let scale = ((bx.1 - bx.0) / aw).max((by.1 - by.0) / (ah - band));
+        let (sx, sy) = ((bx.1 - bx.0) / aw, (by.1 - by.0) / (ah - band));
+        // Geometry: one scale for both axes; a graph: each axis fitted to its data.
+        let (sx, sy) = if self.drawing.equal_scales {
+            (sx.max(sy), sx.max(sy))
+        } else {
+            (sx, sy)
+        };
+        let scale = sy;
         let (cx, cy) = ((bx.0 + bx.1) / 2.0, (by.0 + by.1) / 2.0);
-        let (hx, hy) = (scale * aw / 2.0, scale * (ah - band) / 2.0);
+        let (hx, hy) = (sx * aw / 2.0, sy * (ah - band) / 2.0);
         let mut chart = ChartBuilder::on(root)
             .caption(&self.drawing.title, (FAMILY, 24))
             .margin(20)
@@ -236,8 +239,8 @@ impl Figure {
             .light_line_style(BLACK.mix(0.08))
             .x_label_formatter(&|x| tick_text(*x, 2.0 * hx))
             .y_label_formatter(&|y| tick_text(*y, 2.0 * hy))
-            .x_desc("x")
-            .y_desc("y")
+            .x_desc(self.drawing.axes[0].as_str())
+            .y_desc(self.drawing.axes[1].as_str())
             .label_style((FAMILY, 13))
             .axis_desc_style((FAMILY, 16))
             .draw()
@@ -553,6 +556,51 @@ fn viridis(t: f64) -> RGBColor {
 
 fn drawing<E: std::fmt::Debug>(e: E) -> PlotError {
     PlotError::Drawing(format!("{e:?}"))
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+/// The font database of PNG pictures: the embedded DejaVu Sans as the sans-serif family the
+/// SVG names.
+#[cfg(not(target_arch = "wasm32"))]
+fn fonts() -> std::sync::Arc<resvg::usvg::fontdb::Database> {
+    static FONTS: std::sync::OnceLock<std::sync::Arc<resvg::usvg::fontdb::Database>> =
+        std::sync::OnceLock::new();
+    FONTS
+        .get_or_init(|| {
+            let mut db = resvg::usvg::fontdb::Database::new();
+            db.load_font_data(FONT.to_vec());
+            db.set_sans_serif_family("DejaVu Sans");
+            std::sync::Arc::new(db)
+        })
+        .clone()
+}
+
+/// A PNG of the picture's SVG, drawn with anti-aliasing (resvg) on white: lines and text as
+/// smooth as the SVG's in a browser, and the same picture.
+#[cfg(not(target_arch = "wasm32"))]
+fn rasterize(svg: &str, width: u32, height: u32) -> Result<Vec<u8>, PlotError> {
+    use resvg::{tiny_skia, usvg};
+    let options = usvg::Options {
+        fontdb: fonts(),
+        ..Default::default()
+    };
+    let tree =
+        usvg::Tree::from_str(svg, &options).map_err(|e| PlotError::Drawing(e.to_string()))?;
+    let mut pixmap = tiny_skia::Pixmap::new(width, height)
+        .ok_or_else(|| PlotError::Drawing(format!("no {width}×{height} picture")))?;
+    pixmap.fill(tiny_skia::Color::WHITE);
+    resvg::render(
+        &tree,
+        tiny_skia::Transform::identity(),
+        &mut pixmap.as_mut(),
+    );
+    // Opaque on white: the premultiplied colours are the colours.
+    let rgb: Vec<u8> = pixmap
+        .data()
+        .chunks_exact(4)
+        .flat_map(|p| [p[0], p[1], p[2]])
+        .collect();
+    encode_png(&rgb, width, height)
 }
 
 #[cfg(not(target_arch = "wasm32"))]
