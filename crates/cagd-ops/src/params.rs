@@ -76,14 +76,7 @@ pub fn check_given<T: Scalar>(role: Role, values: &[T], cx: &Context) -> Result<
     if values.is_empty() {
         return Err(OpError::new(role, Kind::Shape, "no values", PARAMS_FORM));
     }
-    if let Some(k) = values.iter().position(|x| !x.is_finite_value()) {
-        return Err(OpError::new(
-            role,
-            Kind::NonFinite,
-            format!("value {} is not finite ({})", k + 1, values[k].to_f64()),
-            "finite parameter values",
-        ));
-    }
+    crate::check::finite(role, values)?;
     cx.limits
         .check_samples("parameter values", values.len())
         .map_err(lib(role, PARAMS_FORM))

@@ -62,6 +62,7 @@ impl<T: Scalar> DeCasteljau<T> {
 
 impl<T: Scalar> Operation<T> for DeCasteljau<T> {
     fn run(&self, cx: &mut Context) -> Result<Answer<T>> {
+        crate::check::points(Role::Control, &self.control, 1, "control points")?;
         cx.check_degree(Role::Control, self.control.ncols().saturating_sub(1))?;
         let (a, b) = self
             .interval
