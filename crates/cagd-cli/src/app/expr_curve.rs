@@ -57,14 +57,26 @@ impl<T: LiteralScalar> Evaluator<T> for ExprCurve<T> {
             .map_err(|e| self.error(e))
     }
 
+    /// The derivative expression ([`ParamExpr::derivative`]) sampled at `ts`, after its own
+    /// work is checked (a derivative may be several times larger than its curve).
     fn derivatives(&self, ts: &[T]) -> cagd_ops::Result<DMatrix<T>> {
-        let _ = ts;
-        Err(OpError::new(
-            Role::Result,
-            Kind::Value,
-            format!("the derivative of `{}` is not known", self.expr.source()),
-            "a curve with a derivative",
-        ))
+        let derivative = self
+            .expr
+            .derivative(self.param)
+            .map_err(|e| self.error(e))?;
+        let work = Sampling {
+            argument: "",
+            expr: &derivative,
+            params: vec![(self.param, ts)],
+        }
+        .work(&self.env.borrow(), &self.limits);
+        self.limits
+            .check_work(work.what, work.operations)
+            .map_err(|e| OpError::library(Role::Result, e, "fewer samples or a shorter expression"))?;
+        let mut env = self.env.borrow_mut();
+        derivative
+            .sample_curve(&mut env, self.param, ts)
+            .map_err(|e| self.error(e))
     }
 
     fn work(&self, ts: &[T]) -> Work {
