@@ -29,6 +29,7 @@ pub mod mesh;
 mod output;
 pub mod outputs;
 pub mod plot;
+pub mod schema;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod serve;
 #[cfg(target_arch = "wasm32")]

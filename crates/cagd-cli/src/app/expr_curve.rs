@@ -72,7 +72,9 @@ impl<T: LiteralScalar> Evaluator<T> for ExprCurve<T> {
         .work(&self.env.borrow(), &self.limits);
         self.limits
             .check_work(work.what, work.operations)
-            .map_err(|e| OpError::library(Role::Result, e, "fewer samples or a shorter expression"))?;
+            .map_err(|e| {
+                OpError::library(Role::Result, e, "fewer samples or a shorter expression")
+            })?;
         let mut env = self.env.borrow_mut();
         derivative
             .sample_curve(&mut env, self.param, ts)

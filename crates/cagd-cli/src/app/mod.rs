@@ -316,6 +316,11 @@ impl Command {
     }
 }
 
+/// The clap definition of the whole command line (see [`crate::schema`]).
+pub(crate) fn command() -> clap::Command {
+    Cli::command()
+}
+
 /// The names of the subcommands, in the order of `cagd --help` (without clap's `help`).
 pub fn subcommands() -> Vec<String> {
     Cli::command()
