@@ -10,7 +10,7 @@ use cagd_ops::{Answer, OpError, Operation, Role};
 
 use super::common::{add_mesh, add_plot, finish};
 use super::run::Names;
-use super::Cx;
+use super::cx::Cx;
 use crate::args::OutputArgs;
 use crate::plot::Figure;
 use crate::{CliError, ErrorKind, Outcome, PendingWrites};

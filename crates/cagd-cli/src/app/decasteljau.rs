@@ -8,7 +8,7 @@ use cagd_ops::ops::DeCasteljau;
 use super::answer::{respond, Destinations};
 use super::read::{curve_params, interval, points};
 use super::run::{Names, Run};
-use super::Cx;
+use super::cx::Cx;
 use crate::args::{CurveParamArgs, OutputArgs, PlotArgs, RowsArgs, ScriptArgs, StepsArgs};
 use crate::{CliError, Outcome};
 

@@ -351,14 +351,7 @@ pub fn prepare_script<T: LiteralScalar>(
     script: &ScriptArgs,
     n: Option<usize>,
 ) -> Result<Option<Script<T>>, CliError> {
-    let Some(path) = &script.script else {
-        return Ok(None);
-    };
-    let mut env = Env::with_limits(*limits);
-    if let Some(n) = n {
-        env.bind_scalar("N", T::from_usize(n));
-    }
-    load_script(limits, "--script", path, env).map(Some)
+    read::run_script(limits, script, n)
 }
 
 fn script_warnings<T: LiteralScalar>(

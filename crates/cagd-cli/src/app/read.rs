@@ -7,7 +7,7 @@ use cagd_ops::Params;
 use nalgebra::DMatrix;
 
 use super::common::shape;
-use super::Cx;
+use super::cx::Cx;
 use crate::args::{CurveParamArgs, ScriptArgs, SurfaceParamArgs};
 use crate::{load_matrix, load_params, CliError, Outcome};
 
@@ -84,6 +84,22 @@ pub(crate) fn interval<T: LiteralScalar>(
     }
 }
 
+/// Runs `--script` if given, binding `N` to `n` first.
+pub(crate) fn run_script<T: LiteralScalar>(
+    limits: &cagd::limits::Limits,
+    script: &ScriptArgs,
+    n: Option<usize>,
+) -> Result<Option<Script<T>>, CliError> {
+    let Some(path) = &script.script else {
+        return Ok(None);
+    };
+    let mut env = Env::with_limits(*limits);
+    if let Some(n) = n {
+        env.bind_scalar("N", T::from_usize(n));
+    }
+    crate::load_script(limits, "--script", path, env).map(Some)
+}
+
 impl Cx {
     /// Runs `--script` if given, binding `N` to `n` first.
     pub(crate) fn script<T: LiteralScalar>(
@@ -91,7 +107,7 @@ impl Cx {
         script: &ScriptArgs,
         n: Option<usize>,
     ) -> Result<Option<Script<T>>, CliError> {
-        super::prepare_script(&self.limits, script, n)
+        run_script(&self.limits, script, n)
     }
 }
 
