@@ -73,6 +73,9 @@ use nalgebra::{DMatrix, DVector};
 use ndarray::{Array2, ArrayView, ArrayView2, Dimension};
 
 use cagd::error::{Error, Result};
+use cagd::Scalar;
+
+use crate::literal::LiteralScalar;
 
 mod bilinearna;
 mod de_casteljau;
@@ -103,30 +106,48 @@ pub(crate) fn shape_str(shape: &[usize]) -> String {
 }
 
 /// Rejects NaN and infinities, reporting the column-major (Octave) index of the first one.
-pub(crate) fn check_finite_array<D: Dimension>(
+pub(crate) fn check_finite_array<T: Scalar, D: Dimension>(
     what: &'static str,
-    a: &ArrayView<'_, f64, D>,
+    a: &ArrayView<'_, T, D>,
 ) -> Result<()> {
     // The reversed view iterated in row-major order visits the original in column-major order.
     cagd::error::check_finite(what, a.view().reversed_axes().iter())
 }
 
 /// The matrix with the same entries (both are `rows × cols`).
-pub(crate) fn to_dmatrix(a: &ArrayView2<'_, f64>) -> DMatrix<f64> {
-    DMatrix::from_fn(a.nrows(), a.ncols(), |i, j| a[[i, j]])
+pub(crate) fn to_dmatrix<T: Scalar>(a: &ArrayView2<'_, T>) -> DMatrix<T> {
+    DMatrix::from_fn(a.nrows(), a.ncols(), |i, j| a[[i, j]].clone())
 }
 
 /// The array with the same entries.
-pub(crate) fn from_dmatrix(m: &DMatrix<f64>) -> Array2<f64> {
-    Array2::from_shape_fn((m.nrows(), m.ncols()), |(i, j)| m[(i, j)])
+pub(crate) fn from_dmatrix<T: Scalar>(m: &DMatrix<T>) -> Array2<T> {
+    Array2::from_shape_fn((m.nrows(), m.ncols()), |(i, j)| m[(i, j)].clone())
+}
+
+/// The thesis's sample parameters `t = linspace(0,1,N)`: in doubles Octave's own points (bit
+/// for bit, [`cagd::linspace::linspace`]), in exact arithmetic `t(k+1) = k/(N−1)` exactly
+/// (`[1]` for `N = 1`, as Octave).
+pub fn samples<T: LiteralScalar>(n: usize) -> Vec<T> {
+    if T::EXACT {
+        let last = n.saturating_sub(1).max(1) as i64;
+        let first = if n == 1 { 1 } else { 0 };
+        (0..n as i64)
+            .map(|k| T::from_ratio(k + first, last))
+            .collect()
+    } else {
+        cagd::linspace::linspace(0.0, 1.0, n)
+            .into_iter()
+            .map(|x| T::from_f64(x).unwrap_or_else(T::zero))
+            .collect()
+    }
 }
 
 /// A `d × 1` column (of dimension `dim` when given) as a vector.
-pub(crate) fn column_vector(
+pub(crate) fn column_vector<T: Scalar>(
     what: &'static str,
-    a: &ArrayView2<'_, f64>,
+    a: &ArrayView2<'_, T>,
     dim: Option<usize>,
-) -> Result<DVector<f64>> {
+) -> Result<DVector<T>> {
     let ok = a.ncols() == 1 && a.nrows() >= 1 && dim.is_none_or(|d| a.nrows() == d);
     if !ok {
         return Err(Error::ShapeMismatch {
@@ -139,13 +160,13 @@ pub(crate) fn column_vector(
         });
     }
     check_finite_array(what, a)?;
-    Ok(DVector::from_iterator(a.nrows(), a.iter().copied()))
+    Ok(DVector::from_iterator(a.nrows(), a.iter().cloned()))
 }
 
 /// Checks that `a` is `rows × cols` (either may be left free with `None`).
-pub(crate) fn check_shape(
+pub(crate) fn check_shape<T>(
     what: &'static str,
-    a: &ArrayView2<'_, f64>,
+    a: &ArrayView2<'_, T>,
     rows: Option<usize>,
     cols: Option<usize>,
 ) -> Result<()> {
