@@ -202,6 +202,30 @@ mod tests {
     }
 
     #[test]
+    fn exact_samples_are_k_over_n_minus_1() {
+        use num_rational::BigRational;
+        let r = |a: i64, b: i64| BigRational::new(a.into(), b.into());
+        assert_eq!(
+            samples::<BigRational>(4),
+            vec![r(0, 1), r(1, 3), r(2, 3), r(1, 1)]
+        );
+        assert_eq!(samples::<BigRational>(1), vec![r(1, 1)]);
+        assert!(samples::<BigRational>(0).is_empty());
+        assert_eq!(samples::<f64>(11), cagd::linspace::linspace(0.0, 1.0, 11));
+    }
+
+    #[test]
+    fn exact_twin_gives_primer_2_4() {
+        use num_rational::BigRational;
+        let r = |a: i64, b: i64| BigRational::new(a.into(), b.into());
+        let p = Array2::from_shape_fn((3, 4), |(i, j)| {
+            r([[0, 0, 8, 4], [0, 2, 2, 0], [0, 2, 0, 0]][i][j], 1)
+        });
+        let t = de_casteljau(p.view(), 3).unwrap();
+        assert_eq!(t.column(1).to_vec(), vec![r(7, 2), r(3, 2), r(3, 4)]);
+    }
+
+    #[test]
     fn shapes_in_words() {
         assert_eq!(shape_str(&[3, 4]), "3×4");
         let a = Array2::<f64>::zeros((2, 5));

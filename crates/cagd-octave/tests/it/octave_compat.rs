@@ -283,7 +283,7 @@ fn bezier_twins_reject_bad_input() {
         Err(Error::NonFinite { index: 1, .. })
     ));
     assert!(matches!(
-        compat::de_casteljau(Array2::zeros((0, 3)).view(), 3),
+        compat::de_casteljau(Array2::<f64>::zeros((0, 3)).view(), 3),
         Err(Error::ShapeMismatch { .. })
     ));
     let inf = array![[0.0, 1.0, f64::INFINITY]];
