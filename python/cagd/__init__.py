@@ -26,6 +26,7 @@ Errors: every input cagd cannot use raises ``cagd.CagdError`` (a ``ValueError``)
 
 from ._cagd import CagdError, limits, set_limit
 from . import octave
+from ._bspline import BSpline
 
-__all__ = ["CagdError", "limits", "set_limit", "octave"]
+__all__ = ["CagdError", "limits", "set_limit", "octave", "BSpline"]
 __version__ = "0.1.0"

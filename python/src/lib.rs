@@ -5,6 +5,7 @@
 //!
 //! - [`octave`]: the eight thesis functions with the layouts of `octave_ref/fixed/`;
 //! - [`limits`]: the core's resource limits for the interpreter;
+//! - [`scipy_bspline`]: the core calls behind `cagd.BSpline`, scipy's `BSpline` drop-in;
 //!
 //! Built with maturin (`pip install ./python`), one abi3 wheel for CPython ≥ 3.9.
 
@@ -14,6 +15,7 @@ pub mod convert;
 pub mod error;
 pub mod limits;
 pub mod octave;
+pub mod scipy_bspline;
 
 /// The extension module `cagd._cagd`; `cagd/__init__.py` arranges its names.
 #[pymodule]
@@ -21,5 +23,6 @@ fn _cagd(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("CagdError", m.py().get_type::<error::CagdError>())?;
     octave::register(m)?;
     limits::register(m)?;
+    scipy_bspline::register(m)?;
     Ok(())
 }
