@@ -107,7 +107,7 @@ fn bspline_antiderivative<'py>(
 ) -> PyResult<Bound<'py, PyTuple>> {
     let mut s = curve(t, c, k)?;
     for _ in 0..nu {
-        s = s.antiderivative().py()?;
+        s = cagd::integral::bspline_antiderivative(&s).py()?;
     }
     tc(t.py(), &s)
 }

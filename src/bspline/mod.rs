@@ -2,7 +2,7 @@
 //! the Cox–de Boor basis, curves (de Boor evaluation, derivatives, knot insertion, degree
 //! elevation, the uniform
 //! cubic "Coons" B-spline of the lecture notes) and tensor-product surfaces; for scipy's
-//! `BSpline` also derivatives of any order, the antiderivative and definite integral, the
+//! `BSpline` also derivatives of any order, the definite integral over any interval, the
 //! value outside the domain ([`Extrapolation`]), the design matrix and the single basis element.
 //!
 //! Conventions follow octave-nurbs, the reference these are tested against: degree `p`
@@ -11,11 +11,11 @@
 //! evaluation, derivatives and knot insertion are rational, so they run exactly in
 //! `BigRational` too.
 
-mod antiderivative;
 mod basis;
 mod batch;
 mod curve;
 mod de_boor_scheme;
+mod definite_integral;
 mod derivatives;
 mod design_matrix;
 mod elevate;

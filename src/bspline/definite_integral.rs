@@ -1,8 +1,8 @@
-//! The antiderivative and the definite integral of a B-spline curve (scipy's
-//! `BSpline.antiderivative` and `BSpline.integrate`; de Boor, *A Practical Guide to Splines*,
-//! X (31)).
+//! The definite integral of a B-spline curve over any interval, with the curve outside its
+//! domain continued, zero or periodic (scipy's `BSpline.integrate`); the antiderivative it
+//! uses is [`crate::integral::bspline_antiderivative`].
 
-use nalgebra::{DMatrix, DVector};
+use nalgebra::DVector;
 
 use super::curve::BSplineCurve;
 use super::extrapolate::{wrap_periodic, Extrapolation};
@@ -10,54 +10,11 @@ use crate::error::{check_finite, Result};
 use crate::scalar::Scalar;
 
 impl<T: Scalar> BSplineCurve<T> {
-    /// The antiderivative `F(u) = ∫_{u_0}^{u} C(s) ds`, a B-spline of degree `p + 1` over the
-    /// knots with the first and the last repeated once more, `(u_0, u_0, u_1, …, u_{n+p},
-    /// u_{n+p})`, and the `n + 1` control points
-    ///
-    /// `D_0 = 0`, `D_i = Σ_{j<i} P_j (u_{j+p+1} − u_j)/(p + 1)`, `i = 1, …, n`
-    ///
-    /// (each `N_{j,p}` integrates to `(u_{j+p+1} − u_j)/(p+1) · Σ_{i>j} N_{i,p+1}`). Its domain
-    /// is the curve's; [`derivative`](Self::derivative) of it gives the curve back. Rational:
-    /// exact in `BigRational`.
-    ///
-    /// # Errors
-    /// As [`new`](Self::new) (never, for a valid curve).
-    ///
-    /// ```
-    /// use cagd::bspline::BSplineCurve;
-    /// use nalgebra::DMatrix;
-    /// // The hat N_{0,1} over 0, 1, 2 (and its neighbours): F(2) = 1, its area.
-    /// let c = BSplineCurve::new(1, vec![0.0, 0.0, 1.0, 2.0, 2.0], DMatrix::from_row_slice(1, 3, &[0.0, 1.0, 0.0]))?;
-    /// let f = c.antiderivative()?;
-    /// assert_eq!(f.degree(), 2);
-    /// assert_eq!(f.eval(1.0)[0], 0.5);
-    /// assert_eq!(f.eval(2.0)[0], 1.0);
-    /// # Ok::<(), cagd::Error>(())
-    /// ```
-    pub fn antiderivative(&self) -> Result<Self> {
-        let (p, n, d) = (self.degree(), self.control().ncols(), self.dim());
-        let t = self.knots().as_slice();
-        let order = T::from_usize(p + 1);
-        let mut control = DMatrix::from_element(d, n + 1, T::zero());
-        for j in 0..n {
-            let w = (t[j + p + 1].clone() - t[j].clone()) / order.clone();
-            for r in 0..d {
-                control[(r, j + 1)] =
-                    control[(r, j)].clone() + self.control()[(r, j)].clone() * w.clone();
-            }
-        }
-        let mut knots = Vec::with_capacity(t.len() + 2);
-        knots.push(t[0].clone());
-        knots.extend_from_slice(t);
-        knots.push(t[t.len() - 1].clone());
-        Self::new(p + 1, knots, control)
-    }
-
     /// The definite integral `∫_a^b C(u) du` (a point of the curve's dimension), with the curve
     /// outside its domain `[u_p, u_n]` taken as `extrapolation` says (scipy's
     /// `BSpline.integrate`):
     /// - [`Extrapolation::Continue`]: the end pieces continued, `F(b) − F(a)` with `F` the
-    ///   [`antiderivative`](Self::antiderivative);
+    ///   [`bspline_antiderivative`](crate::integral::bspline_antiderivative);
     /// - [`Extrapolation::Outside`]: zero outside — `a` and `b` clipped to the domain;
     /// - [`Extrapolation::Periodic`]: the curve repeated with period `L = u_n − u_p`: with
     ///   `b − a = kL + r` (`0 ≤ r < L`) the integral is `k ∫_{u_p}^{u_n} C` plus the integral
@@ -84,7 +41,7 @@ impl<T: Scalar> BSplineCurve<T> {
         if b < a {
             return Ok(self.integral(b, a, extrapolation)?.map(|x| -x));
         }
-        let f = self.antiderivative()?;
+        let f = crate::integral::bspline_antiderivative(self)?;
         let (lo, hi) = self.domain();
         let between = |x: T, y: T| {
             let (fx, fy) = (f.eval(x), f.eval(y));
@@ -139,6 +96,7 @@ impl<T: Scalar> BSplineCurve<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use nalgebra::DMatrix;
     use num_rational::BigRational;
 
     fn r(a: i64, b: i64) -> BigRational {
@@ -152,16 +110,6 @@ mod tests {
             .to_vec();
         let c = [1, -2, 5, 3, 0, 7, 2, 4].map(|x| r(x, 2));
         BSplineCurve::new(3, knots, DMatrix::from_row_slice(1, 8, &c)).unwrap()
-    }
-
-    #[test]
-    fn derivative_of_antiderivative_is_the_curve() {
-        let c = cubic();
-        let f = c.antiderivative().unwrap();
-        assert_eq!(f.degree(), 4);
-        let back = f.derivative().unwrap();
-        assert_eq!(back.control(), c.control());
-        assert_eq!(back.knots().as_slice(), c.knots().as_slice());
     }
 
     #[test]
@@ -211,7 +159,7 @@ mod tests {
         let knots = [0, 0, 0, 1, 2, 3, 3, 3].map(|k| r(k, 1)).to_vec();
         let c = [1, 3, 2, -1, 4].map(|x| r(x, 1));
         let s = BSplineCurve::new(2, knots, DMatrix::from_row_slice(1, 5, &c)).unwrap();
-        let f = s.antiderivative().unwrap();
+        let f = crate::integral::bspline_antiderivative(&s).unwrap();
         let want = [r(0, 1), r(1, 3), r(7, 3), r(13, 3), r(11, 3), r(5, 1)];
         assert_eq!(f.control().iter().cloned().collect::<Vec<_>>(), want);
         let i = s
