@@ -24,9 +24,53 @@ Errors: every input cagd cannot use raises ``cagd.CagdError`` (a ``ValueError``)
 [Fraction(7, 2), Fraction(3, 2), Fraction(3, 4)]
 """
 
-from ._cagd import CagdError, limits, set_limit
+from ._cagd import (
+    CagdError,
+    limits,
+    set_limit,
+    Steps,
+    BezierCurve,
+    BezierPatch,
+    BSplineCurve,
+    BSplineSurface,
+    NurbsCurve,
+    NurbsSurface,
+    HermiteCubic,
+    CubicSpline,
+    Lagrange,
+    CoonsPatch,
+    GordonSurface,
+    discrete_coons,
+    bernstein,
+    conversion_matrix,
+    convert_cubic,
+    continuity,
+)
 from . import octave
 from ._bspline import BSpline
 
-__all__ = ["CagdError", "limits", "set_limit", "octave", "BSpline"]
+__all__ = [
+    "CagdError",
+    "limits",
+    "set_limit",
+    "Steps",
+    "BezierCurve",
+    "BezierPatch",
+    "BSplineCurve",
+    "BSplineSurface",
+    "NurbsCurve",
+    "NurbsSurface",
+    "HermiteCubic",
+    "CubicSpline",
+    "Lagrange",
+    "CoonsPatch",
+    "GordonSurface",
+    "discrete_coons",
+    "bernstein",
+    "conversion_matrix",
+    "convert_cubic",
+    "continuity",
+    "octave",
+    "BSpline",
+]
 __version__ = "0.1.0"

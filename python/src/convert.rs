@@ -33,9 +33,6 @@ const CHUNK: usize = 1 << 15;
 
 /// `f64` or an exact rational, with the package's input and output conventions.
 pub trait Num: cagd_octave::literal::LiteralScalar + Send + Sync + 'static {
-    /// Whether this is the exact arithmetic.
-    const EXACT: bool;
-
     /// Calls `f` with the shape and the values (row-major) of the array `obj`.
     ///
     /// # Errors
@@ -162,8 +159,6 @@ fn float_values<'py>(obj: &Bound<'py, PyAny>, what: &str) -> PyResult<Bound<'py,
 }
 
 impl Num for f64 {
-    const EXACT: bool = false;
-
     fn with_values<R>(
         obj: &Bound<'_, PyAny>,
         what: &str,
@@ -245,8 +240,6 @@ fn exact_element(item: &Bound<'_, PyAny>, what: &str, index: usize) -> PyResult<
 }
 
 impl Num for BigRational {
-    const EXACT: bool = true;
-
     fn with_values<R>(
         obj: &Bound<'_, PyAny>,
         what: &str,

@@ -5,12 +5,14 @@
 //!
 //! - [`octave`]: the eight thesis functions with the layouts of `octave_ref/fixed/`;
 //! - [`limits`]: the core's resource limits for the interpreter;
+//! - [`classes`]: the course's classes (points as rows), exact with `Fraction`s, with steps;
 //! - [`scipy_bspline`]: the core calls behind `cagd.BSpline`, scipy's `BSpline` drop-in;
 //!
 //! Built with maturin (`pip install ./python`), one abi3 wheel for CPython ≥ 3.9.
 
 use pyo3::prelude::*;
 
+pub mod classes;
 pub mod convert;
 pub mod error;
 pub mod limits;
@@ -24,5 +26,6 @@ fn _cagd(m: &Bound<'_, PyModule>) -> PyResult<()> {
     octave::register(m)?;
     limits::register(m)?;
     scipy_bspline::register(m)?;
+    classes::register(m)?;
     Ok(())
 }

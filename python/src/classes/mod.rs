@@ -1,0 +1,143 @@
+//! The Pythonic classes of the course, points as rows: each holds the core's object in doubles
+//! or in exact rationals ([`Ex`]) and each method is a small translation — arrays in
+//! ([`crate::convert`]), the core's call, arrays or `cagd.CagdError` out. When the operation
+//! layer (`cagd-ops`) lands, the bodies of the methods become its requests one for one.
+//!
+//! - [`bezier`]: `BezierCurve`, `BezierPatch`;
+//! - [`splines`]: `BSplineCurve`, `BSplineSurface`, `NurbsCurve`, `NurbsSurface`;
+//! - [`interp`]: `HermiteCubic`, `CubicSpline`, `Lagrange`;
+//! - [`patches`]: `CoonsPatch`, `GordonSurface`, `discrete_coons`;
+//! - [`tools`]: Bernstein polynomials, matrix forms and conversions, continuity;
+//! - [`steps`]: the `Steps` view of a construction.
+
+use cagd::param::{Curve, Surface};
+use nalgebra::DVector;
+use num_rational::BigRational;
+use pyo3::prelude::*;
+
+use crate::convert::{chunked, params, Num};
+use crate::error::IntoPy;
+
+pub mod bezier;
+pub mod interp;
+pub mod patches;
+pub mod splines;
+pub mod steps;
+pub mod tools;
+
+/// A core object in doubles or in exact rationals.
+#[derive(Clone, Debug)]
+pub enum Ex<F, E> {
+    /// In doubles.
+    F(F),
+    /// In exact rationals.
+    E(E),
+}
+
+/// `$body` with `$c` bound to the core object, whichever arithmetic it is in.
+macro_rules! on {
+    ($inner:expr, $c:ident => $body:expr) => {
+        match &$inner {
+            $crate::classes::Ex::F($c) => $body,
+            $crate::classes::Ex::E($c) => $body,
+        }
+    };
+}
+pub(crate) use on;
+
+/// `Ex::F(f::<f64>(…))` or `Ex::E(f::<BigRational>(…))` by `exact`.
+macro_rules! build {
+    ($exact:expr, $f:ident ( $($arg:expr),* )) => {
+        if $exact {
+            $crate::classes::Ex::E($f::<num_rational::BigRational>($($arg),*)?)
+        } else {
+            $crate::classes::Ex::F($f::<f64>($($arg),*)?)
+        }
+    };
+}
+pub(crate) use build;
+
+/// Whether a constructor computes exactly: `exact=True`/`False` as given, else as the
+/// arguments are ([`crate::convert::any_exact`]).
+pub fn exactness(exact: Option<bool>, objs: &[&Bound<'_, PyAny>]) -> PyResult<bool> {
+    match exact {
+        Some(e) => Ok(e),
+        None => crate::convert::any_exact(objs),
+    }
+}
+
+/// The curve at the parameters `t` (a number: one point `(d,)`; an array of shape `S`:
+/// `S + (d,)`), by the core's batch evaluation, in chunks that Ctrl-C can stop.
+pub fn eval_curve<'py, T: Num, C: Curve<T> + Sync + ?Sized>(
+    c: &C,
+    t: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let (shape, ts) = params::<T>(t, "t")?;
+    let d = c.dim();
+    let mut out_shape = shape.clone();
+    out_shape.push(d);
+    T::output(t.py(), &out_shape, |py, out| {
+        chunked(py, out, d, &|range, block| {
+            c.eval_many_into(&ts[range], block)
+        })
+    })
+}
+
+/// The surface on the grid `u × v` (`(len(u), len(v), d)`), by the core's grid evaluation,
+/// row chunks that Ctrl-C can stop. Numbers for `u` and `v` give one point `(d,)`.
+pub fn eval_surface<'py, T: Num, S: Surface<T> + Sync + ?Sized>(
+    s: &S,
+    u: &Bound<'py, PyAny>,
+    v: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let (su, us) = params::<T>(u, "u")?;
+    let (sv, vs) = params::<T>(v, "v")?;
+    let d = s.dim();
+    crate::limits::current()
+        .check_grid("u, v", us.len(), vs.len())
+        .py()?;
+    let row = vs.len() * d;
+    let shape = if su.is_empty() && sv.is_empty() {
+        vec![d]
+    } else {
+        vec![us.len(), vs.len(), d]
+    };
+    T::output(u.py(), &shape, |py, out| {
+        chunked(py, out, row, &|range, block| {
+            s.eval_grid_into(&us[range], &vs, block)
+        })
+    })
+}
+
+/// A point as a 1-D array.
+pub fn point_out<'py, T: Num>(py: Python<'py>, p: &DVector<T>) -> PyResult<Bound<'py, PyAny>> {
+    crate::convert::vector_out(py, p.as_slice())
+}
+
+/// A point `(d,)` (or a list of numbers) as a vector.
+pub fn point_in<T: Num>(obj: &Bound<'_, PyAny>, what: &'static str) -> PyResult<DVector<T>> {
+    let (_, v) = params::<T>(obj, what)?;
+    Ok(DVector::from_vec(v))
+}
+
+/// A pair of numbers as a tuple.
+pub fn pair_out<'py, T: Num>(
+    py: Python<'py>,
+    (a, b): (T, T),
+) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+    Ok((a.to_py(py)?, b.to_py(py)?))
+}
+
+/// Registers every class and function.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    bezier::register(m)?;
+    splines::register(m)?;
+    interp::register(m)?;
+    patches::register(m)?;
+    tools::register(m)?;
+    steps::register(m)?;
+    Ok(())
+}
+
+/// `BigRational` and `f64` are the two arithmetics.
+pub type Exact = BigRational;
