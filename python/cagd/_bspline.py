@@ -14,6 +14,24 @@ import numpy as np
 from . import _cagd
 
 
+def _error(argument, message):
+    """A ``cagd.CagdError`` for a Python value the core never sees (kind ``Conversion``)."""
+    error = _cagd.CagdError(f"{argument}: {message}")
+    error.kind, error.argument = "Conversion", argument
+    return error
+
+
+def _floats(x, argument):
+    """``x`` as a contiguous float64 array (``CagdError`` for what is not real numbers)."""
+    try:
+        a = np.asarray(x)
+        if a.dtype.kind == "c":
+            raise TypeError("complex numbers are not supported")
+        return np.ascontiguousarray(a, dtype=np.float64)
+    except (TypeError, ValueError) as e:
+        raise _error(argument, f"expected real numbers ({e})") from None
+
+
 def _mode(extrapolate):
     return "periodic" if isinstance(extrapolate, str) and extrapolate == "periodic" else bool(extrapolate)
 
@@ -49,12 +67,12 @@ class BSpline:
     def __init__(self, t, c, k, extrapolate=True, axis=0):
         self.k = operator.index(k)
         if self.k < 0:
-            raise _cagd.CagdError("k: the degree must be non-negative")
-        self._t = np.ascontiguousarray(t, dtype=np.float64)
+            raise _error("k", "the degree must be non-negative")
+        self._t = _floats(t, "t")
         c = np.asarray(c)
         self.extrapolate = "periodic" if _mode(extrapolate) == "periodic" else bool(extrapolate)
         if c.ndim < 1:
-            raise _cagd.CagdError("c: coefficients must be at least 1-dimensional")
+            raise _error("c", "coefficients must be at least 1-dimensional")
         self.axis = _normalize_axis(axis, c.ndim)
         if self.axis != 0:
             c = np.moveaxis(c, self.axis, 0)
@@ -62,7 +80,7 @@ class BSpline:
             c = c.astype(np.float64)
         self._c = np.ascontiguousarray(c)
         if self._t.ndim != 1:
-            raise _cagd.CagdError("t: the knot vector must be one-dimensional")
+            raise _error("t", "the knot vector must be one-dimensional")
         _cagd.bspline_check(self._t, self._pairs(), self.k)
 
     @classmethod
@@ -122,10 +140,10 @@ class BSpline:
             extrapolate = self.extrapolate
         x = np.asarray(x)
         x_shape, x_ndim = x.shape, x.ndim
-        flat = np.ascontiguousarray(x.ravel(), dtype=np.float64)
+        flat = _floats(x.ravel(), "x")
         nu = operator.index(nu)
         if nu < 0:
-            raise _cagd.CagdError("nu: the derivative order must be non-negative")
+            raise _error("nu", "the derivative order must be non-negative")
         out = _cagd.bspline_eval(self._t, self._pairs(), self.k, flat, nu, _mode(extrapolate))
         out = self._values(out, x_shape + self._c.shape[1:])
         if self.axis != 0:
@@ -169,7 +187,7 @@ class BSpline:
     @classmethod
     def basis_element(cls, t, extrapolate=True):
         """The single B-spline ``B(x | t[0], ..., t[k+1])`` of degree ``k = len(t) - 2``."""
-        t2, c2, k = _cagd.bspline_basis_element(np.asarray(t, dtype=np.float64).ravel())
+        t2, c2, k = _cagd.bspline_basis_element(_floats(t, "t").ravel())
         return cls(t2, c2.ravel(), k, extrapolate)
 
     @classmethod
@@ -177,13 +195,11 @@ class BSpline:
         """The design matrix ``A[r, j] = B_j(x[r])`` as a ``scipy.sparse.csr_array``."""
         from scipy.sparse import csr_array
 
-        x = np.asarray(x, dtype=np.float64).ravel()
+        x = _floats(x, "x").ravel()
         k = operator.index(k)
         if k < 0:
-            raise _cagd.CagdError("k: the degree must be non-negative")
-        data, first, n = _cagd.bspline_design_matrix(
-            x, np.asarray(t, dtype=np.float64), k, _mode(extrapolate)
-        )
+            raise _error("k", "the degree must be non-negative")
+        data, first, n = _cagd.bspline_design_matrix(x, _floats(t, "t"), k, _mode(extrapolate))
         width = k + 1
         index = np.int32 if x.size * width < np.iinfo(np.int32).max else np.int64
         indices = (first.astype(index)[:, None] + np.arange(width, dtype=index)).ravel()

@@ -20,17 +20,17 @@ array([3.5 , 1.5 , 0.75])
 ``load(path)`` reads an Octave text file (``save -text``) into a dict of arrays.
 """
 
-from ._cagd import (
-    deCasteljau,
-    ploskevB,
-    bilinearna,
-    tenzor,
-    krpaCoons,
-    vrednostCoons,
-    krpaGordon,
-    Lagrange,
-    load,
-)
+from ._cagd import octave as _octave
+
+deCasteljau = _octave.deCasteljau
+ploskevB = _octave.ploskevB
+bilinearna = _octave.bilinearna
+tenzor = _octave.tenzor
+krpaCoons = _octave.krpaCoons
+vrednostCoons = _octave.vrednostCoons
+krpaGordon = _octave.krpaGordon
+Lagrange = _octave.Lagrange
+load = _octave.load
 
 __all__ = [
     "deCasteljau",

@@ -23,7 +23,9 @@ pub mod scipy_bspline;
 #[pymodule]
 fn _cagd(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("CagdError", m.py().get_type::<error::CagdError>())?;
-    octave::register(m)?;
+    let sub = PyModule::new(m.py(), "octave")?;
+    octave::register(&sub)?;
+    m.add_submodule(&sub)?;
     limits::register(m)?;
     scipy_bspline::register(m)?;
     classes::register(m)?;

@@ -50,7 +50,7 @@ impl PyBezierCurve {
     }
 
     /// The points at `t` (a number: `(d,)`; an array of shape `S`: `S + (d,)`), by de
-    /// Casteljau's algorithm (outside `[0, 1]` the polynomial continues).
+    /// Casteljau's algorithm (outside its interval the polynomial continues).
     fn __call__<'py>(&self, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
         on!(self.inner, c => eval_curve(c, t))
     }
@@ -71,6 +71,12 @@ impl PyBezierCurve {
     #[getter]
     fn exact(&self) -> bool {
         matches!(self.inner, Ex::E(_))
+    }
+
+    /// The parameter interval `(a, b)` (`(0, 1)` unless the curve is a piece of another).
+    #[getter]
+    fn domain<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+        on!(self.inner, c => super::pair_out(py, c.domain()))
     }
 
     /// The control points, `(n+1, d)`.
