@@ -305,6 +305,9 @@ fn type_name(obj: &Bound<'_, PyAny>) -> String {
         .unwrap_or_else(|_| "?".into())
 }
 
+/// Writes the points of a range into a block of the output.
+pub type Fill<'a, T> = dyn Fn(Range<usize>, &mut [T]) -> cagd::Result<()> + Sync + 'a;
+
 /// Runs `fill` over `out` (`points` blocks of `width` values) in chunks with the lock
 /// released, checking for Ctrl-C between chunks. `fill(range, block)` writes the points
 /// `range` into `block`.
@@ -315,9 +318,9 @@ pub fn chunked<T: Num>(
     py: Python<'_>,
     out: &mut [T],
     width: usize,
-    fill: &(dyn Fn(Range<usize>, &mut [T]) -> cagd::Result<()> + Sync),
+    fill: &Fill<'_, T>,
 ) -> PyResult<()> {
-    let points = if width == 0 { 0 } else { out.len() / width };
+    let points = out.len().checked_div(width).unwrap_or(0);
     if points == 0 {
         return py.detach(|| fill(0..0, out)).py();
     }
@@ -392,7 +395,7 @@ pub fn rows_out<'py, T: Num>(py: Python<'py>, m: &DMatrix<T>) -> PyResult<Bound<
 /// # Errors
 /// `MemoryError`; conversion of a big integer.
 pub fn columns_out<'py, T: Num>(py: Python<'py>, m: &DMatrix<T>) -> PyResult<Bound<'py, PyAny>> {
-    Ok(rows_out(py, m)?.getattr("T")?)
+    rows_out(py, m)?.getattr("T")
 }
 
 /// A vector as a 1-D array.

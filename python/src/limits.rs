@@ -15,7 +15,7 @@ static LIMITS: Mutex<Option<Limits>> = Mutex::new(None);
 /// The limits in force.
 pub fn current() -> Limits {
     let guard = LIMITS.lock().unwrap_or_else(|e| e.into_inner());
-    guard.clone().unwrap_or_default()
+    (*guard).unwrap_or_default()
 }
 
 /// The limits in force, by name (`max_samples`, `max_grid_points`, `max_degree`, `max_work`, …).

@@ -54,10 +54,11 @@ fn any_curve(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Ex<AnyCurve<f64>, A
     ))
 }
 
+/// Curves in doubles or in exact rationals.
+type Curves = Ex<Vec<AnyCurve<f64>>, Vec<AnyCurve<Exact>>>;
+
 /// The curves `objs`, all in one arithmetic.
-fn curves(
-    objs: &[(&Bound<'_, PyAny>, &str)],
-) -> PyResult<Ex<Vec<AnyCurve<f64>>, Vec<AnyCurve<Exact>>>> {
+fn curves(objs: &[(&Bound<'_, PyAny>, &str)]) -> PyResult<Curves> {
     let mut floats = Vec::new();
     let mut exacts = Vec::new();
     for (obj, what) in objs {
@@ -81,7 +82,7 @@ pub enum Coons<T: cagd::Scalar> {
     /// Blended by the pair `(f1, f2)` in both directions (thesis remark after (4.4)).
     Blended(GeneralizedCoonsPatch<AnyCurve<T>, T>),
     /// Bicubically blended with cross-boundary derivatives (thesis §4.3, (4.5)).
-    Bicubic(BicubicCoonsPatch<AnyCurve<T>, AnyCurve<T>, T>),
+    Bicubic(Box<BicubicCoonsPatch<AnyCurve<T>, AnyCurve<T>, T>>),
 }
 
 impl<T: cagd::Scalar> Coons<T> {
@@ -89,7 +90,7 @@ impl<T: cagd::Scalar> Coons<T> {
         match self {
             Coons::Bilinear(p) => p,
             Coons::Blended(p) => p,
-            Coons::Bicubic(p) => p,
+            Coons::Bicubic(p) => p.as_ref(),
         }
     }
 
@@ -160,9 +161,9 @@ fn bicubic_of<T: cagd::Scalar>(c: Vec<AnyCurve<T>>, twist: &str) -> PyResult<Coo
     };
     let boundary = CoonsBoundary::new(c1, c2, d1, d2, Tolerance::default()).py()?;
     let cross = CrossDerivatives { du0, du1, dv0, dv1 };
-    Ok(Coons::Bicubic(
+    Ok(Coons::Bicubic(Box::new(
         BicubicCoonsPatch::new(boundary, cross, twist).py()?,
-    ))
+    )))
 }
 
 fn parts_steps<T: Num>(

@@ -12,6 +12,9 @@ use super::{build, eval_curve, eval_surface, exactness, on, pair_out, point_out,
 use crate::convert::{params, points_as_rows, rows_out, vector_out, Num};
 use crate::error::IntoPy;
 
+/// A pair of Python numbers.
+type Pair<'py> = (Bound<'py, PyAny>, Bound<'py, PyAny>);
+
 /// Degree and knot checks shared by the constructors: the core's limit on the degree.
 fn check_degree(p: usize) -> PyResult<()> {
     crate::limits::current().check_degree("degree", p).py()
@@ -404,13 +407,7 @@ impl PyBSplineSurface {
 
     /// The domain `((u_p, u_n), (v_q, v_m))`.
     #[getter]
-    fn domain<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> PyResult<(
-        (Bound<'py, PyAny>, Bound<'py, PyAny>),
-        (Bound<'py, PyAny>, Bound<'py, PyAny>),
-    )> {
+    fn domain<'py>(&self, py: Python<'py>) -> PyResult<(Pair<'py>, Pair<'py>)> {
         on!(self.inner, s => {
             let (u, v) = s.domain();
             Ok((pair_out(py, u)?, pair_out(py, v)?))
@@ -501,13 +498,7 @@ impl PyNurbsSurface {
 
     /// The domain `((u_p, u_n), (v_q, v_m))`.
     #[getter]
-    fn domain<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> PyResult<(
-        (Bound<'py, PyAny>, Bound<'py, PyAny>),
-        (Bound<'py, PyAny>, Bound<'py, PyAny>),
-    )> {
+    fn domain<'py>(&self, py: Python<'py>) -> PyResult<(Pair<'py>, Pair<'py>)> {
         on!(self.inner, s => {
             let (u, v) = s.domain();
             Ok((pair_out(py, u)?, pair_out(py, v)?))
