@@ -15,6 +15,7 @@
 //! | `v = Lagrange(x, m, u)` | `v = cagd.octave.Lagrange(x, m, u)` |
 
 use cagd_octave::compat;
+use nalgebra::DMatrix;
 use ndarray::{ArrayView2, ArrayViewD, IxDyn};
 use num_rational::BigRational;
 use pyo3::prelude::*;
@@ -71,6 +72,33 @@ fn with_matrices<T: Num, R>(
     go(objs, &mut Vec::new(), f)
 }
 
+/// The size in bits of the largest number of `a` (0 in doubles, whose cost does not depend on
+/// the value).
+fn bits<T: Num>(a: &ArrayView2<'_, T>) -> u128 {
+    a.iter().map(|x| x.bits()).max().unwrap_or(0)
+}
+
+/// The size in bits of the samples `k/(N−1)` in exact arithmetic (0 in doubles).
+fn sample_bits<T: Num>(n: usize) -> u128 {
+    if T::EXACT {
+        2 * u128::from(usize::BITS - n.leading_zeros())
+    } else {
+        0
+    }
+}
+
+/// Refuses `points` evaluations of `cost` each above the limit on work (`what` drives it).
+fn check_work<T: Num>(what: &'static str, points: usize, cost: cagd::cost::Cost) -> PyResult<()> {
+    let work = (points as u128).saturating_mul(cost.weigh(T::EXACT));
+    limits().check_work(what, work).py()
+}
+
+/// The patch of a packed net, for its cost (the twin builds its own).
+fn patch_of<T: Num>(b: &ArrayView2<'_, T>) -> PyResult<cagd::BezierPatch<T>> {
+    let a = compat::tenzor(b.view()).py()?;
+    cagd_octave::arrays::patch_from_array3(&a).py()
+}
+
 /// The degrees `(m, n)` of a packed net with `cols / 3` points a row.
 fn net_degree(b: &ArrayView2<'_, impl Sized>) -> usize {
     b.nrows().max(b.ncols() / 3).saturating_sub(1)
@@ -91,6 +119,10 @@ fn de_casteljau_in<'py, T: Num>(p: &Bound<'py, PyAny>, n: usize) -> PyResult<Bou
         limits()
             .check_degree("kontrolneT (degree)", m[0].ncols().saturating_sub(1))
             .py()?;
+        let control = DMatrix::from_fn(m[0].nrows(), m[0].ncols(), |i, j| m[0][[i, j]].clone());
+        if let Ok(curve) = cagd::BezierCurve::new(control) {
+            check_work::<T>("N", n, curve.eval_cost(sample_bits::<T>(n), bits(&m[0])))?;
+        }
         let t = py.detach(|| compat::de_casteljau(m[0].view(), n)).py()?;
         T::from_array(py, t)
     })
@@ -111,6 +143,9 @@ fn ploskev_b_in<'py, T: Num>(b: &Bound<'py, PyAny>, n: usize) -> PyResult<Bound<
         limits()
             .check_degree("kontrolneT (degree)", net_degree(&m[0]))
             .py()?;
+        let (b, tb) = (bits(&m[0]), sample_bits::<T>(n));
+        let cost = patch_of(&m[0])?.scheme_cost(tb, tb, b);
+        check_work::<T>("N", n.saturating_mul(n), cost)?;
         let p = py.detach(|| compat::ploskev_b(m[0].view(), n)).py()?;
         T::from_array(py, p)
     })
@@ -141,6 +176,8 @@ fn bilinearna_in<'py, T: Num>(
         limits()
             .check_degree("B (degree)", net_degree(&m[0]))
             .py()?;
+        let cost = patch_of(&m[0])?.scheme_cost(u.bits(), v.bits(), bits(&m[0]));
+        check_work::<T>("B", 1, cost)?;
         let (u, v) = (u.clone(), v.clone());
         let l = py
             .detach(|| compat::bilinearna(m[0].view(), u, v, n))
@@ -312,6 +349,10 @@ fn lagrange_in<'py, T: Num>(
             .check_degree("x (nodes - 1)", nodes[0].len().saturating_sub(1))
             .py()?;
         T::with_values(u, "u", |shape, values| {
+            let u_bits = values.iter().map(|x| x.bits()).max().unwrap_or(0);
+            let (count, x_bits) = (nodes[0].len(), bits(&nodes[0]));
+            let cost = cagd::lagrange::Lagrange::<f64>::basis_cost(count, u_bits, x_bits);
+            check_work::<T>("u", values.len(), cost)?;
             let view = ArrayViewD::from_shape(IxDyn(shape), values)
                 .map_err(|e| crate::error::conversion("u", e.to_string()))?;
             let l = py.detach(|| compat::lagrange(nodes[0], m, view)).py()?;

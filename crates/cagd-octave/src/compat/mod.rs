@@ -8,6 +8,11 @@
 //! to the native types, calls the native API, and converts the result back. None of them holds a
 //! second implementation of the mathematics.
 //!
+//! Every twin is generic over the scalar ([`LiteralScalar`]): in `f64` it gives the numbers of the
+//! fixed Octave code; in exact `BigRational` the same construction without rounding, the samples
+//! `t = linspace(0,1,N)` then exactly `k/(N−1)` ([`samples`]; the Python package's
+//! `cagd.octave` calls the twins this way on `Fraction`s).
+//!
 //! | thesis (Octave) | twin | native function it wraps |
 //! |---|---|---|
 //! | `deCasteljau(kontrolneT, N)` (A, Alg. 1) | [`de_casteljau`] | [`BezierCurve::eval_many`](cagd::bezier::BezierCurve::eval_many) |
