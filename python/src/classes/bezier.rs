@@ -6,7 +6,7 @@ use nalgebra::DMatrix;
 use pyo3::prelude::*;
 
 use super::steps::Steps;
-use super::{build, eval_curve, eval_surface, exactness, on, point_out, Ex, Exact};
+use super::{build, exactness, on, point_out, Ex, Exact};
 use crate::convert::{points_as_rows, rank_error, rows_out, Num};
 use crate::error::IntoPy;
 
@@ -49,34 +49,10 @@ impl PyBezierCurve {
         Ok(wrap_curve(build!(exact, new_curve(points))))
     }
 
-    /// The points at `t` (a number: `(d,)`; an array of shape `S`: `S + (d,)`), by de
-    /// Casteljau's algorithm (outside its interval the polynomial continues).
-    fn __call__<'py>(&self, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
-        on!(self.inner, c => eval_curve(c, t))
-    }
-
     /// The degree `n`.
     #[getter]
     fn degree(&self) -> usize {
         on!(self.inner, c => c.degree())
-    }
-
-    /// The dimension `d` of the points.
-    #[getter]
-    fn dim(&self) -> usize {
-        on!(self.inner, c => c.dim())
-    }
-
-    /// Whether the curve computes in exact rationals.
-    #[getter]
-    fn exact(&self) -> bool {
-        matches!(self.inner, Ex::E(_))
-    }
-
-    /// The parameter interval `(a, b)` (`(0, 1)` unless the curve is a piece of another).
-    #[getter]
-    fn domain<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
-        on!(self.inner, c => super::pair_out(py, c.domain()))
     }
 
     /// The control points, `(n+1, d)`.
@@ -160,32 +136,10 @@ impl PyBezierCurve {
             Ex::E(c) => Ex::E(cagd::BSplineCurve::from_bezier(c)),
         })
     }
-
-    fn __repr__(&self) -> String {
-        let kind = if self.exact() { "exact" } else { "float" };
-        format!(
-            "BezierCurve(degree={}, dim={}, {kind})",
-            self.degree(),
-            self.dim()
-        )
-    }
-
-    /// A picture (SVG) of the curve with its control polygon.
-    fn _repr_svg_(slf: &Bound<'_, Self>) -> PyResult<String> {
-        slf.py()
-            .import("cagd._display")?
-            .call_method1("curve_svg", (slf,))?
-            .extract()
-    }
-
-    /// The control points (exact fractions as written) and the picture.
-    fn _repr_html_(slf: &Bound<'_, Self>) -> PyResult<String> {
-        slf.py()
-            .import("cagd._display")?
-            .call_method1("object_html", (slf,))?
-            .extract()
-    }
 }
+
+super::curve_methods!(PyBezierCurve, "BezierCurve");
+super::surface_methods!(PyBezierPatch, "BezierPatch");
 
 fn scheme_steps<T: Num>(
     py: Python<'_>,
@@ -274,31 +228,10 @@ impl PyBezierPatch {
         })
     }
 
-    /// The patch on the grid `u × v`, `(len(u), len(v), d)`; numbers give one point `(d,)`.
-    fn __call__<'py>(
-        &self,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        on!(self.inner, p => eval_surface(p, u, v))
-    }
-
     /// The degrees `(m, n)`.
     #[getter]
     fn degree(&self) -> (usize, usize) {
         on!(self.inner, p => p.degree())
-    }
-
-    /// The dimension `d`.
-    #[getter]
-    fn dim(&self) -> usize {
-        on!(self.inner, p => p.dim())
-    }
-
-    /// Whether the patch computes in exact rationals.
-    #[getter]
-    fn exact(&self) -> bool {
-        matches!(self.inner, Ex::E(_))
     }
 
     /// The control net, `(m+1, n+1, d)`.
@@ -337,28 +270,6 @@ impl PyBezierPatch {
             Ex::F(p) => Ex::F(p.boundary(e)),
             Ex::E(p) => Ex::E(p.boundary(e)),
         }))
-    }
-
-    fn __repr__(&self) -> String {
-        let (m, n) = self.degree();
-        let kind = if self.exact() { "exact" } else { "float" };
-        format!("BezierPatch(degree=({m}, {n}), dim={}, {kind})", self.dim())
-    }
-
-    /// A picture (SVG) of the patch's grid lines with its control net.
-    fn _repr_svg_(slf: &Bound<'_, Self>) -> PyResult<String> {
-        slf.py()
-            .import("cagd._display")?
-            .call_method1("surface_svg", (slf,))?
-            .extract()
-    }
-
-    /// The control net (exact fractions as written) and the picture.
-    fn _repr_html_(slf: &Bound<'_, Self>) -> PyResult<String> {
-        slf.py()
-            .import("cagd._display")?
-            .call_method1("object_html", (slf,))?
-            .extract()
     }
 }
 

@@ -8,7 +8,7 @@ use cagd::spline::{CubicSpline, EndCondition};
 use pyo3::prelude::*;
 
 use super::bezier::PyBezierCurve;
-use super::{build, eval_curve, exactness, on, point_in, point_out, Ex, Exact};
+use super::{build, exactness, on, point_in, point_out, Ex, Exact};
 use crate::convert::{params, points_as_rows, rows_out, vector_out, Num};
 use crate::error::{conversion, IntoPy};
 
@@ -48,11 +48,6 @@ impl PyHermiteCubic {
         })
     }
 
-    /// The points at `u`.
-    fn __call__<'py>(&self, u: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
-        on!(self.inner, c => eval_curve(c, u))
-    }
-
     /// The tangent `x'(u)`.
     fn tangent<'py>(&self, py: Python<'py>, u: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
         on!(self.inner, c => point_out(py, &c.eval_derivative(Num::scalar(u, "u")?)))
@@ -73,25 +68,6 @@ impl PyHermiteCubic {
     #[getter]
     fn geometry<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         on!(self.inner, c => rows_out(py, c.geometry()))
-    }
-
-    /// The parameter domain.
-    #[getter]
-    fn domain<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
-        on!(self.inner, c => super::pair_out(py, cagd::Curve::domain(c)))
-    }
-
-    /// Whether the cubic computes in exact rationals.
-    #[getter]
-    fn exact(&self) -> bool {
-        matches!(self.inner, Ex::E(_))
-    }
-
-    fn _repr_svg_(slf: &Bound<'_, Self>) -> PyResult<String> {
-        slf.py()
-            .import("cagd._display")?
-            .call_method1("curve_svg", (slf,))?
-            .extract()
     }
 }
 
@@ -154,11 +130,6 @@ impl PyCubicSpline {
         })
     }
 
-    /// The points at `t`.
-    fn __call__<'py>(&self, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
-        on!(self.inner, c => eval_curve(c, t))
-    }
-
     /// The tangents at the points, `(m, d)`.
     #[getter]
     fn tangents<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
@@ -179,25 +150,6 @@ impl PyCubicSpline {
                 Ex::E(c) => Ex::E(c.segment(k).py()?),
             },
         })
-    }
-
-    /// The parameter domain.
-    #[getter]
-    fn domain<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
-        on!(self.inner, c => super::pair_out(py, cagd::Curve::domain(c)))
-    }
-
-    /// Whether the spline computes in exact rationals.
-    #[getter]
-    fn exact(&self) -> bool {
-        matches!(self.inner, Ex::E(_))
-    }
-
-    fn _repr_svg_(slf: &Bound<'_, Self>) -> PyResult<String> {
-        slf.py()
-            .import("cagd._display")?
-            .call_method1("curve_svg", (slf,))?
-            .extract()
     }
 }
 
@@ -237,11 +189,6 @@ impl PyLagrange {
         })
     }
 
-    /// The points at `t`.
-    fn __call__<'py>(&self, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
-        on!(self.inner, c => eval_curve(c, t))
-    }
-
     /// The basis values `L_0(t) … L_m(t)`.
     fn basis<'py>(&self, py: Python<'py>, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
         on!(self.inner, c => vector_out(py, &c.basis().basis(&Num::scalar(t, "t")?)))
@@ -252,26 +199,11 @@ impl PyLagrange {
     fn weights<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         on!(self.inner, c => vector_out(py, c.basis().weights()))
     }
-
-    /// The parameter domain.
-    #[getter]
-    fn domain<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
-        on!(self.inner, c => super::pair_out(py, cagd::Curve::domain(c)))
-    }
-
-    /// Whether the curve computes in exact rationals.
-    #[getter]
-    fn exact(&self) -> bool {
-        matches!(self.inner, Ex::E(_))
-    }
-
-    fn _repr_svg_(slf: &Bound<'_, Self>) -> PyResult<String> {
-        slf.py()
-            .import("cagd._display")?
-            .call_method1("curve_svg", (slf,))?
-            .extract()
-    }
 }
+
+super::curve_methods!(PyHermiteCubic, "HermiteCubic");
+super::curve_methods!(PyCubicSpline, "CubicSpline");
+super::curve_methods!(PyLagrange, "Lagrange");
 
 /// Registers the classes.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {

@@ -57,6 +57,128 @@ macro_rules! build {
 }
 pub(crate) use build;
 
+/// The methods every curve class shares, from the core's [`Curve`] trait: `c(t)`, `dim`,
+/// `domain`, `exact`, `repr`, and the pictures in Jupyter.
+macro_rules! curve_methods {
+    ($ty:ident, $name:literal) => {
+        #[pyo3::pymethods]
+        impl $ty {
+            /// The points at `t`: a number gives one point `(d,)`, an array of shape `S` gives
+            /// `S + (d,)` (outside the domain the curve continues, as the core's `eval`).
+            fn __call__<'py>(
+                &self,
+                t: &pyo3::Bound<'py, pyo3::PyAny>,
+            ) -> pyo3::PyResult<pyo3::Bound<'py, pyo3::PyAny>> {
+                $crate::classes::on!(self.inner, c => $crate::classes::eval_curve(c, t))
+            }
+
+            /// The dimension `d` of the points.
+            #[getter]
+            fn dim(&self) -> usize {
+                $crate::classes::on!(self.inner, c => cagd::Curve::dim(c))
+            }
+
+            /// The parameter domain `(a, b)`.
+            #[getter]
+            fn domain<'py>(&self, py: pyo3::Python<'py>) -> pyo3::PyResult<$crate::classes::Pair<'py>> {
+                $crate::classes::on!(self.inner, c => $crate::classes::pair_out(py, cagd::Curve::domain(c)))
+            }
+
+            /// Whether the object computes in exact rationals.
+            #[getter]
+            fn exact(&self) -> bool {
+                matches!(self.inner, $crate::classes::Ex::E(_))
+            }
+
+            fn __repr__(&self) -> String {
+                let kind = if self.exact() { "exact" } else { "float" };
+                format!("{}(dim={}, {kind})", $name, self.dim())
+            }
+
+            /// A picture (SVG) of the curve with its control polygon.
+            fn _repr_svg_(slf: &pyo3::Bound<'_, Self>) -> pyo3::PyResult<String> {
+                $crate::classes::display(slf, "curve_svg")
+            }
+
+            /// The control points (exact fractions as written) and the picture.
+            fn _repr_html_(slf: &pyo3::Bound<'_, Self>) -> pyo3::PyResult<String> {
+                $crate::classes::display(slf, "object_html")
+            }
+        }
+    };
+}
+pub(crate) use curve_methods;
+
+/// The methods every surface class shares, from the core's [`Surface`] trait: `s(u, v)` on a
+/// grid, `dim`, `domain`, `exact`, `repr`, and the pictures in Jupyter.
+macro_rules! surface_methods {
+    ($ty:ident, $name:literal) => {
+        #[pyo3::pymethods]
+        impl $ty {
+            /// The surface on the grid `u × v`, `(len(u), len(v), d)`; numbers give one point
+            /// `(d,)`.
+            fn __call__<'py>(
+                &self,
+                u: &pyo3::Bound<'py, pyo3::PyAny>,
+                v: &pyo3::Bound<'py, pyo3::PyAny>,
+            ) -> pyo3::PyResult<pyo3::Bound<'py, pyo3::PyAny>> {
+                $crate::classes::on!(self.inner, s => $crate::classes::eval_surface(s, u, v))
+            }
+
+            /// The dimension `d` of the points.
+            #[getter]
+            fn dim(&self) -> usize {
+                $crate::classes::on!(self.inner, s => cagd::Surface::dim(s))
+            }
+
+            /// The parameter domain `((u0, u1), (v0, v1))`.
+            #[getter]
+            fn domain<'py>(
+                &self,
+                py: pyo3::Python<'py>,
+            ) -> pyo3::PyResult<($crate::classes::Pair<'py>, $crate::classes::Pair<'py>)> {
+                $crate::classes::on!(self.inner, s => {
+                    let (u, v) = cagd::Surface::domain(s);
+                    Ok(($crate::classes::pair_out(py, u)?, $crate::classes::pair_out(py, v)?))
+                })
+            }
+
+            /// Whether the object computes in exact rationals.
+            #[getter]
+            fn exact(&self) -> bool {
+                matches!(self.inner, $crate::classes::Ex::E(_))
+            }
+
+            fn __repr__(&self) -> String {
+                let kind = if self.exact() { "exact" } else { "float" };
+                format!("{}(dim={}, {kind})", $name, self.dim())
+            }
+
+            /// A picture (SVG): eleven lines of the surface each way, with its control net.
+            fn _repr_svg_(slf: &pyo3::Bound<'_, Self>) -> pyo3::PyResult<String> {
+                $crate::classes::display(slf, "surface_svg")
+            }
+
+            /// The control net (exact fractions as written) and the picture.
+            fn _repr_html_(slf: &pyo3::Bound<'_, Self>) -> pyo3::PyResult<String> {
+                $crate::classes::display(slf, "object_html")
+            }
+        }
+    };
+}
+pub(crate) use surface_methods;
+
+/// A pair of Python numbers.
+pub type Pair<'py> = (Bound<'py, PyAny>, Bound<'py, PyAny>);
+
+/// What `cagd._display.<function>(obj)` draws or writes for Jupyter.
+pub fn display<T: pyo3::PyClass>(obj: &Bound<'_, T>, function: &str) -> PyResult<String> {
+    obj.py()
+        .import("cagd._display")?
+        .call_method1(function, (obj,))?
+        .extract()
+}
+
 /// Whether a constructor computes exactly: `exact=True`/`False` as given, else as the
 /// arguments are ([`crate::convert::any_exact`]).
 pub fn exactness(exact: Option<bool>, objs: &[&Bound<'_, PyAny>]) -> PyResult<bool> {
@@ -121,10 +243,7 @@ pub fn point_in<T: Num>(obj: &Bound<'_, PyAny>, what: &'static str) -> PyResult<
 }
 
 /// A pair of numbers as a tuple.
-pub fn pair_out<'py, T: Num>(
-    py: Python<'py>,
-    (a, b): (T, T),
-) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+pub fn pair_out<'py, T: Num>(py: Python<'py>, (a, b): (T, T)) -> PyResult<Pair<'py>> {
     Ok((a.to_py(py)?, b.to_py(py)?))
 }
 

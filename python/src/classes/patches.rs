@@ -15,7 +15,7 @@ use super::bezier::{net_in, net_out, PyBezierCurve};
 use super::interp::{PyCubicSpline, PyHermiteCubic, PyLagrange};
 use super::splines::{PyBSplineCurve, PyNurbsCurve};
 use super::steps::Steps;
-use super::{eval_surface, on, point_out, Ex, Exact};
+use super::{on, point_out, Ex, Exact};
 use crate::convert::{params, Num};
 use crate::error::{conversion, IntoPy};
 
@@ -110,6 +110,25 @@ impl<T: cagd::Scalar> Coons<T> {
                 vec![("hc", x.hc), ("hd", x.hd), ("hcd", x.hcd), ("x", x.x)]
             }
         }
+    }
+}
+
+/// Each kind of Coons patch is a surface of the core: the calls go to it.
+impl<T: cagd::Scalar> Surface<T> for Coons<T> {
+    fn dim(&self) -> usize {
+        self.surface().dim()
+    }
+
+    fn domain(&self) -> ((T, T), (T, T)) {
+        self.surface().domain()
+    }
+
+    fn eval(&self, u: T, v: T) -> DVector<T> {
+        self.surface().eval(u, v)
+    }
+
+    fn eval_grid_into(&self, us: &[T], vs: &[T], out: &mut [T]) -> cagd::Result<()> {
+        self.surface().eval_grid_into(us, vs, out)
     }
 }
 
@@ -233,32 +252,10 @@ impl PyCoonsPatch {
         })
     }
 
-    /// The patch on the grid `u × v`, `(len(u), len(v), d)`; numbers give one point `(d,)`.
-    fn __call__<'py>(
-        &self,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        on!(self.inner, p => eval_surface(p.surface(), u, v))
-    }
-
     /// The point at `(u, v)` with its parts: `rc`, `rd`, `rcd`, `x` (`hc`, `hd`, `hcd`, `x` for
     /// the bicubic patch).
     fn parts(&self, py: Python<'_>, u: &Bound<'_, PyAny>, v: &Bound<'_, PyAny>) -> PyResult<Steps> {
         on!(self.inner, p => parts_steps(py, p.parts(Num::scalar(u, "u")?, Num::scalar(v, "v")?), "Coons patch point"))
-    }
-
-    /// Whether the patch computes in exact rationals.
-    #[getter]
-    fn exact(&self) -> bool {
-        matches!(self.inner, Ex::E(_))
-    }
-
-    fn _repr_svg_(slf: &Bound<'_, Self>) -> PyResult<String> {
-        slf.py()
-            .import("cagd._display")?
-            .call_method1("surface_svg", (slf,))?
-            .extract()
     }
 }
 
@@ -313,34 +310,12 @@ impl PyGordonSurface {
         })
     }
 
-    /// The surface on the grid `u × v`, `(len(u), len(v), d)`.
-    fn __call__<'py>(
-        &self,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        on!(self.inner, s => eval_surface(s, u, v))
-    }
-
     /// The point at `(u, v)` with its parts `g1`, `g2`, `g12`, `g`.
     fn parts(&self, py: Python<'_>, u: &Bound<'_, PyAny>, v: &Bound<'_, PyAny>) -> PyResult<Steps> {
         on!(self.inner, s => {
             let p = s.eval_parts(Num::scalar(u, "u")?, Num::scalar(v, "v")?);
             parts_steps(py, vec![("g1", p.g1), ("g2", p.g2), ("g12", p.g12), ("g", p.g)], "Gordon surface point")
         })
-    }
-
-    /// Whether the surface computes in exact rationals.
-    #[getter]
-    fn exact(&self) -> bool {
-        matches!(self.inner, Ex::E(_))
-    }
-
-    fn _repr_svg_(slf: &Bound<'_, Self>) -> PyResult<String> {
-        slf.py()
-            .import("cagd._display")?
-            .call_method1("surface_svg", (slf,))?
-            .extract()
     }
 }
 
@@ -368,6 +343,9 @@ fn discrete_coons<'py>(
         run::<f64>(net)
     }
 }
+
+super::surface_methods!(PyCoonsPatch, "CoonsPatch");
+super::surface_methods!(PyGordonSurface, "GordonSurface");
 
 /// Registers the classes and functions.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {

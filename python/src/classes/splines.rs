@@ -8,12 +8,9 @@ use pyo3::prelude::*;
 
 use super::bezier::{net_in, net_out};
 use super::steps::Steps;
-use super::{build, eval_curve, eval_surface, exactness, on, pair_out, point_out, Ex, Exact};
+use super::{build, exactness, on, point_out, Ex, Exact};
 use crate::convert::{params, points_as_rows, rows_out, vector_out, Num};
 use crate::error::IntoPy;
-
-/// A pair of Python numbers.
-type Pair<'py> = (Bound<'py, PyAny>, Bound<'py, PyAny>);
 
 /// Degree and knot checks shared by the constructors: the core's limit on the degree.
 fn check_degree(p: usize) -> PyResult<()> {
@@ -92,27 +89,10 @@ impl PyBSplineCurve {
         Ok(Self::from_inner(build!(exact, clamped(degree, points))))
     }
 
-    /// The points at `u` (`(d,)` for a number, `S + (d,)` for an array of shape `S`).
-    fn __call__<'py>(&self, u: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
-        on!(self.inner, c => eval_curve(c, u))
-    }
-
     /// The degree `p`.
     #[getter]
     fn degree(&self) -> usize {
         on!(self.inner, c => c.degree())
-    }
-
-    /// The dimension `d`.
-    #[getter]
-    fn dim(&self) -> usize {
-        on!(self.inner, c => c.dim())
-    }
-
-    /// Whether the curve computes in exact rationals.
-    #[getter]
-    fn exact(&self) -> bool {
-        matches!(self.inner, Ex::E(_))
     }
 
     /// The knots `u_0 … u_{n+p}`.
@@ -125,12 +105,6 @@ impl PyBSplineCurve {
     #[getter]
     fn control_points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         on!(self.inner, c => rows_out(py, c.control()))
-    }
-
-    /// The domain `(u_p, u_n)`.
-    #[getter]
-    fn domain<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
-        on!(self.inner, c => pair_out(py, c.domain()))
     }
 
     /// The values `N_{0,p}(u) … N_{n−1,p}(u)` of all basis functions at `u` (in the domain).
@@ -175,29 +149,6 @@ impl PyBSplineCurve {
     /// `∫_{u_p}^{u_n} C(u) du`, a point.
     fn integral<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         on!(self.inner, c => point_out(py, &cagd::integral::bspline_integral(c).py()?))
-    }
-
-    fn __repr__(&self) -> String {
-        let kind = if self.exact() { "exact" } else { "float" };
-        format!(
-            "BSplineCurve(degree={}, dim={}, {kind})",
-            self.degree(),
-            self.dim()
-        )
-    }
-
-    fn _repr_svg_(slf: &Bound<'_, Self>) -> PyResult<String> {
-        slf.py()
-            .import("cagd._display")?
-            .call_method1("curve_svg", (slf,))?
-            .extract()
-    }
-
-    fn _repr_html_(slf: &Bound<'_, Self>) -> PyResult<String> {
-        slf.py()
-            .import("cagd._display")?
-            .call_method1("object_html", (slf,))?
-            .extract()
     }
 }
 
@@ -257,11 +208,6 @@ impl PyNurbsCurve {
         })
     }
 
-    /// The points at `u`.
-    fn __call__<'py>(&self, u: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
-        on!(self.inner, c => eval_curve(c, u))
-    }
-
     /// The first derivative `C'(u)` (in the domain).
     fn tangent<'py>(&self, py: Python<'py>, u: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
         on!(self.inner, c => point_out(py, &c.try_eval_derivative(Num::scalar(u, "u")?).py()?))
@@ -271,18 +217,6 @@ impl PyNurbsCurve {
     #[getter]
     fn degree(&self) -> usize {
         on!(self.inner, c => c.degree())
-    }
-
-    /// The dimension `d`.
-    #[getter]
-    fn dim(&self) -> usize {
-        on!(self.inner, c => c.dim())
-    }
-
-    /// Whether the curve computes in exact rationals.
-    #[getter]
-    fn exact(&self) -> bool {
-        matches!(self.inner, Ex::E(_))
     }
 
     /// The knots.
@@ -303,12 +237,6 @@ impl PyNurbsCurve {
         on!(self.inner, c => vector_out(py, &c.weights()))
     }
 
-    /// The domain `(u_p, u_n)`.
-    #[getter]
-    fn domain<'py>(&self, py: Python<'py>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
-        on!(self.inner, c => pair_out(py, c.domain()))
-    }
-
     /// The same curve with the knots `u` inserted.
     fn insert_knots(&self, u: &Bound<'_, PyAny>) -> PyResult<Self> {
         Ok(PyNurbsCurve {
@@ -317,29 +245,6 @@ impl PyNurbsCurve {
                 Ex::E(c) => Ex::E(c.insert_knots(&params::<Exact>(u, "u")?.1).py()?),
             },
         })
-    }
-
-    fn __repr__(&self) -> String {
-        let kind = if self.exact() { "exact" } else { "float" };
-        format!(
-            "NurbsCurve(degree={}, dim={}, {kind})",
-            self.degree(),
-            self.dim()
-        )
-    }
-
-    fn _repr_svg_(slf: &Bound<'_, Self>) -> PyResult<String> {
-        slf.py()
-            .import("cagd._display")?
-            .call_method1("curve_svg", (slf,))?
-            .extract()
-    }
-
-    fn _repr_html_(slf: &Bound<'_, Self>) -> PyResult<String> {
-        slf.py()
-            .import("cagd._display")?
-            .call_method1("object_html", (slf,))?
-            .extract()
     }
 }
 
@@ -378,15 +283,6 @@ impl PyBSplineSurface {
         })
     }
 
-    /// The surface on the grid `u × v`, `(len(u), len(v), d)`.
-    fn __call__<'py>(
-        &self,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        on!(self.inner, s => eval_surface(s, u, v))
-    }
-
     /// The degrees `(p, q)`.
     #[getter]
     fn degree(&self) -> (usize, usize) {
@@ -397,28 +293,6 @@ impl PyBSplineSurface {
     #[getter]
     fn control_points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         on!(self.inner, s => net_out(py, s.coordinates()))
-    }
-
-    /// Whether the surface computes in exact rationals.
-    #[getter]
-    fn exact(&self) -> bool {
-        matches!(self.inner, Ex::E(_))
-    }
-
-    /// The domain `((u_p, u_n), (v_q, v_m))`.
-    #[getter]
-    fn domain<'py>(&self, py: Python<'py>) -> PyResult<(Pair<'py>, Pair<'py>)> {
-        on!(self.inner, s => {
-            let (u, v) = s.domain();
-            Ok((pair_out(py, u)?, pair_out(py, v)?))
-        })
-    }
-
-    fn _repr_svg_(slf: &Bound<'_, Self>) -> PyResult<String> {
-        slf.py()
-            .import("cagd._display")?
-            .call_method1("surface_svg", (slf,))?
-            .extract()
     }
 }
 
@@ -480,38 +354,12 @@ impl PyNurbsSurface {
         };
         Ok(PyNurbsSurface { inner })
     }
-
-    /// The surface on the grid `u × v`, `(len(u), len(v), d)`.
-    fn __call__<'py>(
-        &self,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        on!(self.inner, s => eval_surface(s, u, v))
-    }
-
-    /// Whether the surface computes in exact rationals.
-    #[getter]
-    fn exact(&self) -> bool {
-        matches!(self.inner, Ex::E(_))
-    }
-
-    /// The domain `((u_p, u_n), (v_q, v_m))`.
-    #[getter]
-    fn domain<'py>(&self, py: Python<'py>) -> PyResult<(Pair<'py>, Pair<'py>)> {
-        on!(self.inner, s => {
-            let (u, v) = s.domain();
-            Ok((pair_out(py, u)?, pair_out(py, v)?))
-        })
-    }
-
-    fn _repr_svg_(slf: &Bound<'_, Self>) -> PyResult<String> {
-        slf.py()
-            .import("cagd._display")?
-            .call_method1("surface_svg", (slf,))?
-            .extract()
-    }
 }
+
+super::curve_methods!(PyBSplineCurve, "BSplineCurve");
+super::curve_methods!(PyNurbsCurve, "NurbsCurve");
+super::surface_methods!(PyBSplineSurface, "BSplineSurface");
+super::surface_methods!(PyNurbsSurface, "NurbsSurface");
 
 /// Registers the classes.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
