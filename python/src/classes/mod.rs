@@ -194,6 +194,97 @@ pub fn eval_curve<'py, T: Num, C: Curve<T> + Sync + ?Sized>(
     c: &C,
     t: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyAny>> {
+    // The parameters are read in place (float64, contiguous) and the points written straight
+    // into the array returned.
+    T::with_values(t, "t", |shape, ts| {
+        let d = c.dim();
+        let mut out_shape = shape.to_vec();
+        out_shape.push(d);
+        T::output(t.py(), &out_shape, |py, out| {
+            chunked(py, out, d, &|range, block| c.eval_many_into(&ts[range], block))
+        })
+    })
+}
+
+/// The surface on the grid `u × v`, `(len(u), len(v), d)`; numbers give one point
+            /// `(d,)`.
+            fn __call__<'py>(
+                &self,
+                u: &pyo3::Bound<'py, pyo3::PyAny>,
+                v: &pyo3::Bound<'py, pyo3::PyAny>,
+            ) -> pyo3::PyResult<pyo3::Bound<'py, pyo3::PyAny>> {
+                $crate::classes::on!(self.inner, s => $crate::classes::eval_surface(s, u, v))
+            }
+
+            /// The dimension `d` of the points.
+            #[getter]
+            fn dim(&self) -> usize {
+                $crate::classes::on!(self.inner, s => cagd::Surface::dim(s))
+            }
+
+            /// The parameter domain `((u0, u1), (v0, v1))`.
+            #[getter]
+            fn domain<'py>(
+                &self,
+                py: pyo3::Python<'py>,
+            ) -> pyo3::PyResult<($crate::classes::Pair<'py>, $crate::classes::Pair<'py>)> {
+                $crate::classes::on!(self.inner, s => {
+                    let (u, v) = cagd::Surface::domain(s);
+                    Ok(($crate::classes::pair_out(py, u)?, $crate::classes::pair_out(py, v)?))
+                })
+            }
+
+            /// Whether the object computes in exact rationals.
+            #[getter]
+            fn exact(&self) -> bool {
+                matches!(self.inner, $crate::classes::Ex::E(_))
+            }
+
+            fn __repr__(&self) -> String {
+                let kind = if self.exact() { "exact" } else { "float" };
+                format!("{}(dim={}, {kind})", $name, self.dim())
+            }
+
+            /// A picture (SVG): eleven lines of the surface each way, with its control net.
+            fn _repr_svg_(slf: &pyo3::Bound<'_, Self>) -> pyo3::PyResult<String> {
+                $crate::classes::display(slf, "surface_svg")
+            }
+
+            /// The control net (exact fractions as written) and the picture.
+            fn _repr_html_(slf: &pyo3::Bound<'_, Self>) -> pyo3::PyResult<String> {
+                $crate::classes::display(slf, "object_html")
+            }
+        }
+    };
+}
+pub(crate) use surface_methods;
+
+/// A pair of Python numbers.
+pub type Pair<'py> = (Bound<'py, PyAny>, Bound<'py, PyAny>);
+
+/// What `cagd._display.<function>(obj)` draws or writes for Jupyter.
+pub fn display<T: pyo3::PyClass>(obj: &Bound<'_, T>, function: &str) -> PyResult<String> {
+    obj.py()
+        .import("cagd._display")?
+        .call_method1(function, (obj,))?
+        .extract()
+}
+
+/// Whether a constructor computes exactly: `exact=True`/`False` as given, else as the
+/// arguments are ([`crate::convert::any_exact`]).
+pub fn exactness(exact: Option<bool>, objs: &[&Bound<'_, PyAny>]) -> PyResult<bool> {
+    match exact {
+        Some(e) => Ok(e),
+        None => crate::convert::any_exact(objs),
+    }
+}
+
+/// The curve at the parameters `t` (a number: one point `(d,)`; an array of shape `S`:
+/// `S + (d,)`), by the core's batch evaluation, in chunks that Ctrl-C can stop.
+pub fn eval_curve<'py, T: Num, C: Curve<T> + Sync + ?Sized>(
+    c: &C,
+    t: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyAny>> {
     let (shape, ts) = params::<T>(t, "t")?;
     let d = c.dim();
     let mut out_shape = shape.clone();
