@@ -408,3 +408,29 @@ pub fn vector_out<'py, T: Num>(py: Python<'py>, v: &[T]) -> PyResult<Bound<'py, 
         Ok(())
     })
 }
+
+/// A `(rows, cols, d)` array as `d` coordinate matrices.
+pub fn net_in<T: Num>(obj: &Bound<'_, PyAny>, what: &'static str) -> PyResult<Vec<DMatrix<T>>> {
+    T::with_values(obj, what, |shape, v| match *shape {
+        [rows, cols, d] => Ok((0..d)
+            .map(|c| DMatrix::from_fn(rows, cols, |i, j| v[(i * cols + j) * d + c].clone()))
+            .collect()),
+        _ => Err(rank_error(what, "an (m+1, n+1, d) array of points", shape)),
+    })
+}
+
+/// `d` coordinate matrices as a `(rows, cols, d)` array.
+pub fn net_out<'py, T: Num>(py: Python<'py>, coords: &[DMatrix<T>]) -> PyResult<Bound<'py, PyAny>> {
+    let (rows, cols) = coords.first().map_or((0, 0), |m| (m.nrows(), m.ncols()));
+    let d = coords.len();
+    T::output(py, &[rows, cols, d], |_, out| {
+        for (c, m) in coords.iter().enumerate() {
+            for i in 0..rows {
+                for j in 0..cols {
+                    out[(i * cols + j) * d + c] = m[(i, j)].clone();
+                }
+            }
+        }
+        Ok(())
+    })
+}

@@ -2,12 +2,11 @@
 //! [`BezierPatch`], points as rows.
 
 use cagd::bezier::{BezierCurve, BezierPatch, Edge};
-use nalgebra::DMatrix;
 use pyo3::prelude::*;
 
 use super::steps::Steps;
 use super::{build, exactness, on, point_out, Ex, Exact};
-use crate::convert::{points_as_rows, rank_error, rows_out, Num};
+use crate::convert::{net_in, net_out, points_as_rows, rows_out, Num};
 use crate::error::IntoPy;
 
 type CurveEx = Ex<BezierCurve<f64>, BezierCurve<Exact>>;
@@ -167,32 +166,6 @@ fn scheme_steps<T: Num>(
 #[derive(Clone)]
 pub struct PyBezierPatch {
     pub(crate) inner: PatchEx,
-}
-
-/// A `(rows, cols, d)` array as `d` coordinate matrices.
-pub fn net_in<T: Num>(obj: &Bound<'_, PyAny>, what: &'static str) -> PyResult<Vec<DMatrix<T>>> {
-    T::with_values(obj, what, |shape, v| match *shape {
-        [rows, cols, d] => Ok((0..d)
-            .map(|c| DMatrix::from_fn(rows, cols, |i, j| v[(i * cols + j) * d + c].clone()))
-            .collect()),
-        _ => Err(rank_error(what, "an (m+1, n+1, d) array of points", shape)),
-    })
-}
-
-/// `d` coordinate matrices as a `(rows, cols, d)` array.
-pub fn net_out<'py, T: Num>(py: Python<'py>, coords: &[DMatrix<T>]) -> PyResult<Bound<'py, PyAny>> {
-    let (rows, cols) = coords.first().map_or((0, 0), |m| (m.nrows(), m.ncols()));
-    let d = coords.len();
-    T::output(py, &[rows, cols, d], |_, out| {
-        for (c, m) in coords.iter().enumerate() {
-            for i in 0..rows {
-                for j in 0..cols {
-                    out[(i * cols + j) * d + c] = m[(i, j)].clone();
-                }
-            }
-        }
-        Ok(())
-    })
 }
 
 fn new_patch<T: Num>(net: &Bound<'_, PyAny>) -> PyResult<BezierPatch<T>> {

@@ -179,6 +179,14 @@ pub fn display<T: pyo3::PyClass>(obj: &Bound<'_, T>, function: &str) -> PyResult
         .extract()
 }
 
+/// The error for objects of both arithmetics in one construction.
+pub fn mixed(what: &str) -> PyErr {
+    crate::error::conversion(
+        what,
+        "mixes exact and float curves: build all of them exact (or all in floats)",
+    )
+}
+
 /// Whether a constructor computes exactly: `exact=True`/`False` as given, else as the
 /// arguments are ([`crate::convert::any_exact`]).
 pub fn exactness(exact: Option<bool>, objs: &[&Bound<'_, PyAny>]) -> PyResult<bool> {

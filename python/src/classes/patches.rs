@@ -11,24 +11,17 @@ use cagd::param::{Curve, Surface};
 use nalgebra::DVector;
 use pyo3::prelude::*;
 
-use super::bezier::{net_in, net_out, PyBezierCurve};
+use super::bezier::PyBezierCurve;
 use super::interp::{PyCubicSpline, PyHermiteCubic, PyLagrange};
+use super::mixed;
 use super::splines::{PyBSplineCurve, PyNurbsCurve};
 use super::steps::Steps;
 use super::{on, point_out, Ex, Exact};
-use crate::convert::{params, Num};
+use crate::convert::{net_in, net_out, params, Num};
 use crate::error::{conversion, IntoPy};
 
 /// Any curve of the package, in the core's arithmetic `T`.
 pub type AnyCurve<T> = Box<dyn Curve<T> + Send + Sync>;
-
-/// The error for curves of both arithmetics in one construction.
-pub fn mixed(what: &str) -> PyErr {
-    conversion(
-        what,
-        "mixes exact and float curves: build all of them exact (or all in floats)",
-    )
-}
 
 /// A curve object as the core's curve in `f64` (`Ok(Err(..))` for an exact one).
 fn any_curve(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Ex<AnyCurve<f64>, AnyCurve<Exact>>> {

@@ -6,10 +6,9 @@ use cagd::nurbs::{NurbsCurve, NurbsSurface};
 use nalgebra::DMatrix;
 use pyo3::prelude::*;
 
-use super::bezier::{net_in, net_out};
 use super::steps::Steps;
 use super::{build, exactness, on, point_out, Ex, Exact};
-use crate::convert::{params, points_as_rows, rows_out, vector_out, Num};
+use crate::convert::{net_in, net_out, params, points_as_rows, rows_out, vector_out, Num};
 use crate::error::IntoPy;
 
 /// Degree and knot checks shared by the constructors: the core's limit on the degree.
@@ -350,7 +349,7 @@ impl PyNurbsSurface {
         let inner = match (&c1.inner, &c2.inner) {
             (Ex::F(a), Ex::F(b)) => Ex::F(NurbsSurface::ruled(a, b).py()?),
             (Ex::E(a), Ex::E(b)) => Ex::E(NurbsSurface::ruled(a, b).py()?),
-            _ => return Err(super::patches::mixed("c2")),
+            _ => return Err(super::mixed("c2")),
         };
         Ok(PyNurbsSurface { inner })
     }
