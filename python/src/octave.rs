@@ -93,6 +93,18 @@ fn check_work<T: Num>(what: &'static str, points: usize, cost: cagd::cost::Cost)
     limits().check_work(what, work).py()
 }
 
+/// The cost of one look-up on a curve of `samples` samples of `bits` bits (the sampled
+/// curves of `krpaCoons` and `krpaGordon`).
+fn sampled_cost<T: Num>(samples: usize, bits: u128) -> cagd::cost::Cost {
+    let k = samples.max(2);
+    cagd::param::SampledCurve::new(
+        compat::samples::<T>(k),
+        DMatrix::from_element(1, k, T::zero()),
+    )
+    .map(|c| c.eval_cost(sample_bits::<T>(k), bits))
+    .unwrap_or_default()
+}
+
 /// The patch of a packed net, for its cost (the twin builds its own).
 fn patch_of<T: Num>(b: &ArrayView2<'_, T>) -> PyResult<cagd::BezierPatch<T>> {
     let a = compat::tenzor(b.view()).py()?;
@@ -227,6 +239,10 @@ fn krpa_coons_in<'py, T: Num>(args: &[&Bound<'py, PyAny>; 8]) -> PyResult<Bound<
     with_matrices::<T, _>(&objs, &mut |m| {
         let n = m[0].ncols();
         limits().check_grid("c1 (samples N)", n, n).py()?;
+        let b = m.iter().map(bits).max().unwrap_or(0);
+        let tb = sample_bits::<T>(n);
+        let cost = cagd::coons::coons_point_cost([sampled_cost::<T>(n, b); 4], 3, tb, tb);
+        check_work::<T>("c1 (samples N)", n.saturating_mul(n), cost)?;
         let s = py
             .detach(|| compat::krpa_coons(m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7]))
             .py()?;
@@ -319,11 +335,36 @@ fn krpa_gordon_in<'py, T: Num>(
         limits()
             .check_degree("x_v (nodes - 1)", m[4].len().saturating_sub(1))
             .py()?;
+        check_gordon_work::<T>(m, n)?;
         let s = py
             .detach(|| compat::krpa_gordon(m[0], m[1], m[2], m[3], m[4], n))
             .py()?;
         PyTuple::new(py, [T::from_array(py, s.r)?, T::from_array(py, s.p)?])
     })
+}
+
+/// Refuses a Gordon surface whose set-up and `N × N` points cost more than the limit on work
+/// (the core's [`gordon_point_cost`](cagd::gordon::gordon_point_cost) and
+/// [`gordon_setup_cost`](cagd::gordon::gordon_setup_cost) of the sampled network).
+fn check_gordon_work<T: Num>(m: &[ArrayView2<'_, T>], n: usize) -> PyResult<()> {
+    let (k_u, k_v) = (m[3].len(), m[4].len());
+    let b = m[..3].iter().map(bits).max().unwrap_or(0);
+    let x_bits = bits(&m[3]).max(bits(&m[4]));
+    let at_v = sampled_cost::<T>(m[0].ncols() / k_v.max(1), b);
+    let at_u = sampled_cost::<T>(m[1].ncols() / k_u.max(1), b);
+    let curves = || std::iter::repeat_n(at_u, k_u).chain(std::iter::repeat_n(at_v, k_v));
+    let tb = sample_bits::<T>(n);
+    let point =
+        cagd::gordon::gordon_point_cost(curves(), (k_u, k_v), 3, (tb, x_bits), (tb, x_bits));
+    let setup = cagd::gordon::gordon_setup_cost(
+        std::iter::repeat_n(at_u, k_u),
+        std::iter::repeat_n(at_v, k_v),
+        (x_bits, x_bits),
+    );
+    let work = (n.saturating_mul(n) as u128)
+        .saturating_mul(point.weigh(T::EXACT))
+        .saturating_add(setup.weigh(T::EXACT));
+    limits().check_work("N", work).py()
 }
 
 /// `v = Lagrange(x, m, u)`: the `m`-th (from 1) Lagrange basis polynomial of the nodes `x` at

@@ -30,6 +30,7 @@ CASES = {
     "deCasteljau N over the limit": (lambda: octave.deCasteljau(P, 10**7), "TooLarge"),
     "deCasteljau work over the limit": (lambda: octave.deCasteljau(np.zeros((3, 1000)), 10**6), "TooLarge"),
     "ploskevB work over the limit": (lambda: octave.ploskevB(np.zeros((200, 600)), 3000), "TooLarge"),
+    "krpaGordon work over the limit": (lambda: octave.krpaGordon(np.zeros((3, 1000 * 10)), np.zeros((3, 1000 * 10)), np.zeros((1000, 3000)), np.linspace(0, 1, 1000), np.linspace(0, 1, 1000), 3000), "TooLarge"),
     "Lagrange work over the limit": (lambda: octave.Lagrange(np.linspace(0, 1, 1000), 1, np.zeros(10**6)), "TooLarge"),
     "deCasteljau complex": (lambda: octave.deCasteljau(P + 1j, 3), "Conversion"),
     "deCasteljau text": (lambda: octave.deCasteljau([["a", "b"]], 3), "Conversion"),
