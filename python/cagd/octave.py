@@ -17,7 +17,8 @@ parameters, give exact ``Fraction`` results (samples ``t = k/(N-1)`` exactly).
 >>> deCasteljau(B, 3)[:, 1]                                     # b(1/2)
 array([3.5 , 1.5 , 0.75])
 
-``load(path)`` reads an Octave text file (``save -text``) into a dict of arrays.
+``load(path)`` reads an Octave text file (``save -text``) into a dict of arrays;
+``save(path, T=T, P=P)`` writes one that Octave's ``load`` reads, every bit kept.
 """
 
 from ._cagd import octave as _octave
@@ -31,6 +32,7 @@ vrednostCoons = _octave.vrednostCoons
 krpaGordon = _octave.krpaGordon
 Lagrange = _octave.Lagrange
 load = _octave.load
+save = _octave.save
 
 __all__ = [
     "deCasteljau",
@@ -42,4 +44,5 @@ __all__ = [
     "krpaGordon",
     "Lagrange",
     "load",
+    "save",
 ]

@@ -27,3 +27,5 @@ def Lagrange(x: ArrayLike, m: int, u: Union[Number, ArrayLike]) -> Any:
     """``v = Lagrange(x, m, u)``: the ``m``-th (from 1) Lagrange basis polynomial at ``u``."""
 def load(path: Union[str, PathLike[str]]) -> dict[str, Any]:
     """The variables of an Octave text file (``save -text``)."""
+def save(path: Union[str, PathLike[str]], **variables: ArrayLike) -> None:
+    """Writes the variables as an Octave text file (``save -text``)."""

@@ -425,6 +425,30 @@ fn load<'py>(py: Python<'py>, path: std::path::PathBuf) -> PyResult<Bound<'py, P
     Ok(out)
 }
 
+/// Writes the keyword arguments as the variables of an Octave text file (`save -text`; `load`
+/// in Octave reads them back): numbers and arrays of real numbers (1-D arrays as rows), every
+/// bit of every double kept.
+#[pyfunction]
+#[pyo3(signature = (path, **variables))]
+fn save(path: std::path::PathBuf, variables: Option<&Bound<'_, PyDict>>) -> PyResult<()> {
+    let mut ws = cagd_octave::Workspace::new();
+    for (name, value) in variables.into_iter().flatten() {
+        let name: String = name.extract()?;
+        let array = f64::with_values(&value, "variables", |shape, v| {
+            let shape = match *shape {
+                [] => vec![1, 1],
+                [n] => vec![1, n],
+                _ => shape.to_vec(),
+            };
+            ndarray::ArrayD::from_shape_vec(IxDyn(&shape), v.to_vec())
+                .map_err(|e| crate::error::conversion("variables", e.to_string()))
+        })?;
+        ws.insert(name, array);
+    }
+    cagd_octave::write_text_file(&path, &ws)
+        .map_err(|e| crate::error::cagd_error("TextFormat", Some("path"), e.to_string()))
+}
+
 /// Registers the functions in the module `m` (`cagd._cagd`, re-exported as `cagd.octave`).
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(de_casteljau, m)?)?;
@@ -436,5 +460,6 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(krpa_gordon, m)?)?;
     m.add_function(wrap_pyfunction!(lagrange, m)?)?;
     m.add_function(wrap_pyfunction!(load, m)?)?;
+    m.add_function(wrap_pyfunction!(save, m)?)?;
     Ok(())
 }

@@ -148,3 +148,11 @@ def test_exact_agrees_with_octave(expected):
     assert_close("exact P", p.astype(float), ws["snap_P_B_N5"])
     l = octave.bilinearna(b, Fraction(1, 2), Fraction(1, 4), 5)
     assert_close("exact L", l.astype(float), ws["snap_L_B"])
+
+
+def test_save_and_load_keep_every_bit(tmp_path):
+    t = octave.deCasteljau(np.random.default_rng(7).random((3, 5)), 11)
+    octave.save(tmp_path / "out.txt", T=t, N=11.0, row=np.array([0.1, 0.2]))
+    back = octave.load(tmp_path / "out.txt")
+    assert np.array_equal(back["T"], t)
+    assert back["N"].tolist() == [[11.0]] and back["row"].tolist() == [[0.1, 0.2]]
