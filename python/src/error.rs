@@ -47,7 +47,6 @@ fn argument_of(e: &cagd::Error) -> Option<&'static str> {
         | E::DuplicateNodes { what, .. }
         | E::UnsortedNodes { what, .. }
         | E::TooFewCurves { what, .. }
-        | E::MissingDerivative { what, .. }
         | E::TooLarge { what, .. } => Some(what),
         E::BlendingCondition { function, .. } => Some(function),
         _ => None,

@@ -21,7 +21,7 @@ use crate::convert::{net_in, net_out, params, Num};
 use crate::error::{conversion, IntoPy};
 
 /// Any curve of the package, in the core's arithmetic `T`.
-pub type AnyCurve<T> = Box<dyn Curve<T> + Send + Sync>;
+pub type AnyCurve<T> = Box<dyn cagd::CurveDeriv<T> + Send + Sync>;
 
 /// A curve object as the core's curve in `f64` (`Ok(Err(..))` for an exact one).
 fn any_curve(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Ex<AnyCurve<f64>, AnyCurve<Exact>>> {
