@@ -41,15 +41,16 @@ mod serve {
         #[arg(long, value_name = "P", default_value_t = 8000)]
         pub port: u16,
         /// The folder of the built page.
-        #[arg(long, value_name = "DIR")]
+        #[arg(long, value_name = "DIR", value_parser = crate::args::path_value)]
         pub dir: Option<std::path::PathBuf>,
     }
 }
 pub mod slips;
+pub mod temporaries;
 
 pub use app::{run, serve_request, subcommands, Outcome};
 pub use atomic::{write_atomic, PendingWrites};
-pub use error::{CliError, ErrorKind};
+pub use error::{escape_path, escape_text, CliError, ErrorKind};
 pub use input::{
     load_expression, load_matrix, load_net, load_params, load_script, parse_data_text,
     parse_data_text_variable, parse_numeric_text, read_octave_array, read_text, samples,

@@ -6,6 +6,7 @@ mod bad_inputs;
 mod cli;
 mod course;
 mod error_catalogue;
+mod file_rules;
 mod hostile;
 mod limits;
 mod mesh;
