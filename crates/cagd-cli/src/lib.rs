@@ -29,11 +29,14 @@ pub mod mesh;
 mod output;
 pub mod outputs;
 pub mod plot;
-#[cfg(not(target_arch = "wasm32"))]
+#[cfg(all(feature = "serve", not(target_arch = "wasm32")))]
 pub mod serve;
-#[cfg(target_arch = "wasm32")]
-mod serve {
-    //! `cagd serve` exists only in the program; in the browser its arguments still parse.
+#[cfg(not(all(feature = "serve", not(target_arch = "wasm32"))))]
+pub mod serve {
+    //! `cagd serve` exists only in the program built with the feature `serve`; elsewhere (the
+    //! browser, the fuzz targets) its arguments still parse and serving is refused.
+    use crate::{CliError, ErrorKind};
+
     /// Serve the web page on localhost.
     #[derive(Debug, Clone, clap::Args)]
     pub struct ServeCommand {
@@ -43,6 +46,19 @@ mod serve {
         /// The folder of the built page.
         #[arg(long, value_name = "DIR", value_parser = crate::args::path_value)]
         pub dir: Option<std::path::PathBuf>,
+    }
+
+    /// Refuses: this build has no server.
+    ///
+    /// # Errors
+    /// Always, [`ErrorKind::Unsupported`].
+    pub fn serve(_: &ServeCommand) -> Result<(), CliError> {
+        Err(CliError::new(
+            "serve",
+            "this build of cagd has no page server (built without the feature `serve`)",
+            "a cagd built with its default features",
+            ErrorKind::Unsupported,
+        ))
     }
 }
 pub mod slips;

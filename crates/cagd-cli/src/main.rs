@@ -158,7 +158,10 @@ mod stdout {
     extern "C" fn record() {
         let missing = std::fs::symlink_metadata("/proc/self/fd/1").is_err();
         let proc_mounted = std::fs::symlink_metadata("/proc/self/fd").is_ok();
-        CLOSED.store(missing && proc_mounted, std::sync::atomic::Ordering::Relaxed);
+        CLOSED.store(
+            missing && proc_mounted,
+            std::sync::atomic::Ordering::Relaxed,
+        );
     }
 
     /// Runs [`record`] before `main`, as the C runtime runs every entry of `.init_array`

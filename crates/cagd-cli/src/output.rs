@@ -272,7 +272,10 @@ fn render_octave<T: LiteralScalar>(report: &Report<T>) -> Result<String, CliErro
     use cagd_octave::text_format::{self, Workspace};
     let mut ws = Workspace::new();
     for item in &report.items {
-        ws.insert(octave_name(&item.name), octave_value(&item.name, &item.value)?);
+        ws.insert(
+            octave_name(&item.name),
+            octave_value(&item.name, &item.value)?,
+        );
     }
     text_format::write_text(&ws).map_err(|e| {
         CliError::new(

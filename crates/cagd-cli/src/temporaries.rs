@@ -3,7 +3,7 @@
 //! registered one when SIGINT, SIGTERM or SIGHUP arrives, then ends the process by that signal.
 //!
 //! The renames that put staged files into place form one step that a signal does not cut in
-//! two: while [`Renaming`] is held, the signal waits for it (renames take microseconds).
+//! two: while they are under way, the signal waits for them (renames take microseconds).
 
 use std::path::{Path, PathBuf};
 use std::sync::{Condvar, Mutex, MutexGuard};
@@ -30,7 +30,10 @@ fn registry() -> MutexGuard<'static, Registry> {
 }
 
 fn ending() -> std::io::Error {
-    std::io::Error::new(std::io::ErrorKind::Interrupted, "the program is being stopped")
+    std::io::Error::new(
+        std::io::ErrorKind::Interrupted,
+        "the program is being stopped",
+    )
 }
 
 /// A temporary file named `.cagd-…` in a folder, removed when dropped (or by a signal).
@@ -110,7 +113,10 @@ impl Renaming {
 
     /// Renames the temporary onto `target` (replacing it).
     pub fn persist(&mut self, mut temporary: Temporary, target: &Path) -> std::io::Result<()> {
-        let file = temporary.file.take().expect("a temporary is persisted once");
+        let file = temporary
+            .file
+            .take()
+            .expect("a temporary is persisted once");
         match file.persist(target) {
             Ok(_) => Ok(()),
             Err(e) => {

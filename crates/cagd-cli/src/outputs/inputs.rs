@@ -6,10 +6,10 @@
 
 use std::path::Path;
 
-use clap::ArgMatches;
 use clap::parser::ValueSource;
+use clap::ArgMatches;
 
-use super::target::{FileId, file_id};
+use super::target::{file_id, FileId};
 
 /// The text arguments of `sub` (as typed) that name the file `output`, if any: the first one.
 pub fn input_naming(sub: &ArgMatches, output: &FileId) -> Option<String> {

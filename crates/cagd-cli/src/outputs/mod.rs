@@ -22,7 +22,7 @@ use crate::{CliError, ErrorKind};
 mod inputs;
 mod target;
 
-pub use target::{FileId, MAX_LINKS, destination, directory_of, file_id, not_regular, refusal};
+pub use target::{destination, directory_of, file_id, not_regular, refusal, FileId, MAX_LINKS};
 
 /// The output options of every subcommand: (argument id, how the error names it).
 const OUTPUTS: [(&str, &str); 3] = [("output", "-o"), ("plot", "--plot"), ("mesh", "--mesh")];

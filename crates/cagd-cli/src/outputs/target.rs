@@ -77,7 +77,10 @@ pub fn refusal(path: &Path) -> Option<(String, ErrorKind)> {
         let dir = directory_of(&target);
         if !dir.is_dir() {
             return Some((
-                format!("the folder {} does not exist{link}", crate::escape_path(dir)),
+                format!(
+                    "the folder {} does not exist{link}",
+                    crate::escape_path(dir)
+                ),
                 ErrorKind::Io(io::ErrorKind::NotFound),
             ));
         }
@@ -100,7 +103,10 @@ pub fn refusal(path: &Path) -> Option<(String, ErrorKind)> {
     match std::fs::OpenOptions::new().write(true).open(&target) {
         Ok(_) => None,
         Err(e) => Some((
-            format!("cannot be written{link}: {}", crate::error::io_problem(&e).0),
+            format!(
+                "cannot be written{link}: {}",
+                crate::error::io_problem(&e).0
+            ),
             ErrorKind::Io(e.kind()),
         )),
     }
@@ -197,12 +203,18 @@ mod tests {
         let (problem, _) = refusal(&p("self.txt")).unwrap();
         assert!(problem.contains("loop of symbolic links"), "{problem}");
         let (problem, kind) = refusal(&p("astray.txt")).unwrap();
-        assert!(problem.contains("does not exist (the link's target"), "{problem}");
+        assert!(
+            problem.contains("does not exist (the link's target"),
+            "{problem}"
+        );
         assert_eq!(kind, ErrorKind::Io(io::ErrorKind::NotFound));
         use std::os::unix::fs::PermissionsExt;
         std::fs::set_permissions(p("file.txt"), std::fs::Permissions::from_mode(0o444)).unwrap();
         let (problem, kind) = refusal(&p("link.txt")).unwrap();
-        assert!(problem.starts_with("is read-only (mode 0444) (the link's target"), "{problem}");
+        assert!(
+            problem.starts_with("is read-only (mode 0444) (the link's target"),
+            "{problem}"
+        );
         assert_eq!(kind, ErrorKind::Io(io::ErrorKind::PermissionDenied));
         assert_eq!(file_id(&p("link2.txt")), file_id(&p("file.txt")));
     }

@@ -5,10 +5,10 @@ use std::convert::Infallible;
 use std::io;
 use std::pin::Pin;
 use std::sync::Arc;
-use std::task::{Context, Poll, ready};
+use std::task::{ready, Context, Poll};
 use std::time::Duration;
 
-use http_body_util::{BodyExt, Full, combinators::BoxBody};
+use http_body_util::{combinators::BoxBody, BodyExt, Full};
 use hyper::body::{Body, Bytes, Frame, Incoming, SizeHint};
 use hyper::header::{self, HeaderValue};
 use hyper::{Method, Request, Response, StatusCode};
@@ -18,7 +18,7 @@ use tokio::net::{TcpListener, TcpStream};
 use tokio::sync::Semaphore;
 use tokio::time::{Instant, Sleep};
 
-use super::files::{self, Accepts, Found, Page};
+use super::files::{self, Accepts, Found, Large, Page, Variant};
 use super::{HEADER_TIMEOUT, MAX_CONNECTIONS, STALL_TIMEOUT};
 
 type Answer = Response<BoxBody<Bytes, io::Error>>;
@@ -61,6 +61,25 @@ async fn connection(stream: TcpStream, page: Arc<Page>) {
         .await;
 }
 
+/// What a request gets: a file from memory, in the form chosen for the client, or a file
+/// streamed from disk.
+enum Sendable {
+    Memory {
+        variant: Variant,
+        file: Arc<files::Cached>,
+    },
+    Stream(Large),
+}
+
+impl Sendable {
+    fn tag(&self) -> &str {
+        match self {
+            Sendable::Memory { variant, .. } => &variant.tag,
+            Sendable::Stream(l) => &l.tag,
+        }
+    }
+}
+
 /// The answer to one request.
 async fn respond(page: Arc<Page>, request: Request<Incoming>) -> Answer {
     if !matches!(*request.method(), Method::GET | Method::HEAD) {
@@ -81,44 +100,54 @@ async fn respond(page: Arc<Page>, request: Request<Incoming>) -> Answer {
     let if_none_match = header_text(header::IF_NONE_MATCH);
     let url = request.uri().path().to_string();
     // Reading and compressing a file blocks: it runs on the runtime's file threads.
-    let found = tokio::task::spawn_blocking(move || {
-        page.find(&url).map(|found| {
-            found.map(|f| match f {
-                Found::Cached(c) => {
-                    let variant = c.variant(accepts);
-                    (Some(c), variant.tag.clone(), Some(variant), None)
-                }
-                Found::Large(l) => (None, l.tag.clone(), None, Some(l)),
-            })
-        })
-    })
-    .await;
-    let (cached, tag, variant, large) = match found {
-        Ok(Ok(Some(f))) => f,
-        Ok(Ok(None)) | Ok(Err(_)) => return text(StatusCode::NOT_FOUND, "not found\n"),
+    let sendable = match tokio::task::spawn_blocking(move || lookup(&page, &url, accepts)).await {
+        Ok(Some(s)) => s,
+        Ok(None) => return text(StatusCode::NOT_FOUND, "not found\n"),
         Err(_) => return text(StatusCode::INTERNAL_SERVER_ERROR, "cannot read\n"),
     };
-    let (content_type, cache_control, varies) = match (&cached, &large) {
-        (Some(c), _) => (c.content_type(), c.cache_control(), c.varies()),
-        (None, Some(l)) => (
+    if if_none_match.is_some_and(|h| files::none_match(&h, sendable.tag())) {
+        return with_headers(StatusCode::NOT_MODIFIED, empty(), &sendable);
+    }
+    let body = match &sendable {
+        Sendable::Memory { variant, .. } => full(variant.bytes.clone()),
+        Sendable::Stream(l) => match tokio::fs::File::open(&l.path).await {
+            Ok(file) => FileBody::new(file, l.len).boxed(),
+            Err(_) => return text(StatusCode::NOT_FOUND, "not found\n"),
+        },
+    };
+    with_headers(StatusCode::OK, body, &sendable)
+}
+
+/// The file that `url` names, in the form for a client that accepts `accepts` (blocking).
+fn lookup(page: &Page, url: &str, accepts: Accepts) -> Option<Sendable> {
+    match page.find(url).ok()?? {
+        Found::Cached(file) => Some(Sendable::Memory {
+            variant: file.variant(accepts),
+            file,
+        }),
+        Found::Large(large) => Some(Sendable::Stream(large)),
+    }
+}
+
+/// An answer with the headers of the file: its type, tag, caching and coding.
+fn with_headers(
+    status: StatusCode,
+    body: BoxBody<Bytes, io::Error>,
+    sendable: &Sendable,
+) -> Answer {
+    let (content_type, cache_control, varies, encoding) = match sendable {
+        Sendable::Memory { variant, file } => (
+            file.content_type(),
+            file.cache_control(),
+            file.varies(),
+            variant.encoding,
+        ),
+        Sendable::Stream(l) => (
             files::content_type(&l.path),
             files::cache_control(&l.path),
             false,
+            None,
         ),
-        (None, None) => return text(StatusCode::INTERNAL_SERVER_ERROR, "cannot read\n"),
-    };
-    let not_modified = if_none_match.is_some_and(|h| files::none_match(&h, &tag));
-    let (status, encoding, body) = if not_modified {
-        (StatusCode::NOT_MODIFIED, None, empty())
-    } else if let Some(v) = variant {
-        (StatusCode::OK, v.encoding, full(v.bytes))
-    } else if let Some(l) = large {
-        match tokio::fs::File::open(&l.path).await {
-            Ok(file) => (StatusCode::OK, None, FileBody::new(file, l.len).boxed()),
-            Err(_) => return text(StatusCode::NOT_FOUND, "not found\n"),
-        }
-    } else {
-        return text(StatusCode::INTERNAL_SERVER_ERROR, "cannot read\n");
     };
     let mut answer = Response::new(body);
     *answer.status_mut() = status;
@@ -130,7 +159,7 @@ async fn respond(page: Arc<Page>, request: Request<Incoming>) -> Answer {
     };
     set(header::CONTENT_TYPE, content_type);
     set(header::CACHE_CONTROL, cache_control);
-    set(header::ETAG, &tag);
+    set(header::ETAG, sendable.tag());
     set(header::X_CONTENT_TYPE_OPTIONS, "nosniff");
     if varies {
         set(header::VARY, "Accept-Encoding");
@@ -189,7 +218,10 @@ impl Body for FileBody {
         if this.remaining == 0 {
             return Poll::Ready(None);
         }
-        let want = this.buffer.len().min(usize::try_from(this.remaining).unwrap_or(usize::MAX));
+        let want = this
+            .buffer
+            .len()
+            .min(usize::try_from(this.remaining).unwrap_or(usize::MAX));
         let mut buf = ReadBuf::new(&mut this.buffer[..want]);
         ready!(Pin::new(&mut this.file).poll_read(cx, &mut buf))?;
         let n = buf.filled().len();
@@ -243,7 +275,12 @@ impl<S> Patient<S> {
         }
     }
 
-    fn after<T>(&mut self, cx: &mut Context<'_>, poll: Poll<io::Result<T>>, moved: bool) -> Poll<io::Result<T>> {
+    fn after<T>(
+        &mut self,
+        cx: &mut Context<'_>,
+        poll: Poll<io::Result<T>>,
+        moved: bool,
+    ) -> Poll<io::Result<T>> {
         match poll {
             Poll::Pending => self.waiting(cx),
             Poll::Ready(result) => {

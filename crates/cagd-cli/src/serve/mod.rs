@@ -18,7 +18,7 @@
 //! request handler ends that task only (the panic hook of the program exits only for its
 //! command thread).
 //!
-//! **Caching and compression** (see [`files`](self#caching-and-compression)):
+//! **Caching and compression**:
 //! - every answer carries a strong `ETag` (a hash of the bytes sent); a request whose
 //!   `If-None-Match` names it gets `304 Not Modified` without a body;
 //! - text, JavaScript, CSS, JSON, SVG and WebAssembly go out compressed when the client

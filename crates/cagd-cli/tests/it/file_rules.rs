@@ -45,12 +45,24 @@ fn a_failed_write_to_standard_output_replaces_no_file() {
     // The picture to a full standard output, the result to keep.txt.
     let out = cagd(
         d,
-        &["decasteljau", CURVE, "--t", "0:0.5:1", "--plot", "-", "-o", "keep.txt"],
+        &[
+            "decasteljau",
+            CURVE,
+            "--t",
+            "0:0.5:1",
+            "--plot",
+            "-",
+            "-o",
+            "keep.txt",
+        ],
     )
     .stdout(full())
     .output()
     .unwrap();
-    refused(&out, "no space left on the device; no output file was replaced");
+    refused(
+        &out,
+        "no space left on the device; no output file was replaced",
+    );
     assert_eq!(std::fs::read_to_string(d.join("keep.txt")).unwrap(), "old");
     // The result to a full standard output, the picture to a file that exists.
     std::fs::write(d.join("p.svg"), "old picture").unwrap();
@@ -95,9 +107,14 @@ fn a_closed_standard_output_is_an_error_and_replaces_no_file() {
     assert!(!d.join("p.svg").exists());
     no_temporaries(d);
     // Nothing for standard output: the command succeeds.
-    let out = with_stdout_closed(d, &["bernstein", "--degree", "1", "--t", "0.5", "-o", "r.txt"]);
+    let out = with_stdout_closed(
+        d,
+        &["bernstein", "--degree", "1", "--t", "0.5", "-o", "r.txt"],
+    );
     assert_eq!(out.status.code(), Some(0), "{out:?}");
-    assert!(std::fs::read_to_string(d.join("r.txt")).unwrap().contains("0.5"));
+    assert!(std::fs::read_to_string(d.join("r.txt"))
+        .unwrap()
+        .contains("0.5"));
     // A standard output sent to /dev/null is not closed.
     let out = cagd(d, &["bernstein", "--degree", "1", "--t", "0.5"])
         .stdout(Stdio::null())
@@ -132,7 +149,11 @@ fn symbolic_links_are_followed_and_stay_links() {
     ];
     let out = cagd(d, &args).output().unwrap();
     assert_eq!(out.status.code(), Some(0), "{out:?}");
-    for (name, part) in [("r.txt", "result(:,:,3)"), ("p.svg", "<svg"), ("m.obj", "\nf ")] {
+    for (name, part) in [
+        ("r.txt", "result(:,:,3)"),
+        ("p.svg", "<svg"),
+        ("m.obj", "\nf "),
+    ] {
         let link = d.join(format!("link-{name}"));
         assert!(link.symlink_metadata().unwrap().file_type().is_symlink());
         let text = std::fs::read_to_string(d.join("elsewhere").join(name)).unwrap();
@@ -141,16 +162,40 @@ fn symbolic_links_are_followed_and_stay_links() {
     no_temporaries(d);
     no_temporaries(&d.join("elsewhere"));
     // A chain of links; a dangling link creates its target.
-    let out = cagd(d, &["bernstein", "--degree", "1", "--t", "0.5", "-o", "chain.txt"])
-        .output()
-        .unwrap();
+    let out = cagd(
+        d,
+        &[
+            "bernstein",
+            "--degree",
+            "1",
+            "--t",
+            "0.5",
+            "-o",
+            "chain.txt",
+        ],
+    )
+    .output()
+    .unwrap();
     assert_eq!(out.status.code(), Some(0));
     assert!(d.join("chain.txt").symlink_metadata().unwrap().is_symlink());
-    assert!(std::fs::read_to_string(d.join("elsewhere/r.txt")).unwrap().contains("0.5"));
+    assert!(std::fs::read_to_string(d.join("elsewhere/r.txt"))
+        .unwrap()
+        .contains("0.5"));
     symlink("elsewhere/new.txt", d.join("dangling.txt")).unwrap();
-    let out = cagd(d, &["bernstein", "--degree", "1", "--t", "0.5", "-o", "dangling.txt"])
-        .output()
-        .unwrap();
+    let out = cagd(
+        d,
+        &[
+            "bernstein",
+            "--degree",
+            "1",
+            "--t",
+            "0.5",
+            "-o",
+            "dangling.txt",
+        ],
+    )
+    .output()
+    .unwrap();
     assert_eq!(out.status.code(), Some(0));
     assert!(d.join("elsewhere/new.txt").is_file());
     // A loop of links, and a link into a missing folder, are refused before any work.
@@ -161,10 +206,16 @@ fn symbolic_links_are_followed_and_stay_links() {
         .output()
         .unwrap();
     refused(&out, "--plot loop-a: is a loop of symbolic links");
-    let out = cagd(d, &["decasteljau", CURVE, "--plot", "astray.svg", "--t", "1"])
-        .output()
-        .unwrap();
-    refused(&out, "the folder nowhere does not exist (the link's target nowhere/x.svg)");
+    let out = cagd(
+        d,
+        &["decasteljau", CURVE, "--plot", "astray.svg", "--t", "1"],
+    )
+    .output()
+    .unwrap();
+    refused(
+        &out,
+        "the folder nowhere does not exist (the link's target nowhere/x.svg)",
+    );
     assert!(d.join("astray.svg").is_symlink());
 }
 
@@ -186,16 +237,57 @@ fn an_output_that_is_an_input_is_refused_before_any_work() {
     let absolute = d.join("pts.txt").to_str().unwrap().to_string();
     // The work would fail on --t: the refusal of -o comes first, before any work.
     let cases: Vec<(Vec<&str>, &str)> = vec![
-        (vec!["decasteljau", "pts.txt", "--t", "[0.5", "-o", "pts.txt"], "-o pts.txt"),
-        (vec!["decasteljau", "pts.txt", "--t", "[0.5", "-o", "./pts.txt"], "-o ./pts.txt"),
-        (vec!["decasteljau", "pts.txt", "--t", "[0.5", "-o", "sub/../pts.txt"], "-o sub/"),
-        (vec!["decasteljau", &absolute, "--t", "[0.5", "-o", "pts.txt"], "-o pts.txt"),
-        (vec!["decasteljau", "pts.txt", "--t", "[0.5", "-o", "hard.txt"], "-o hard.txt"),
-        (vec!["decasteljau", "soft.txt", "--t", "[0.5", "-o", "pts.txt"], "-o pts.txt"),
-        (vec!["decasteljau", "pts.txt", "--t", "[0.5", "--plot", "soft.txt"], "--plot soft.txt"),
-        (vec!["decasteljau", "net.txt:B", "--t", "[0.5", "-o", "net.txt"], "-o net.txt"),
         (
-            vec!["coons", "--c1", "pts.txt", "--c2", "[u;1]", "--d1", "[0;v]", "--d2", "[1;v]", "-o", "pts.txt"],
+            vec!["decasteljau", "pts.txt", "--t", "[0.5", "-o", "pts.txt"],
+            "-o pts.txt",
+        ),
+        (
+            vec!["decasteljau", "pts.txt", "--t", "[0.5", "-o", "./pts.txt"],
+            "-o ./pts.txt",
+        ),
+        (
+            vec![
+                "decasteljau",
+                "pts.txt",
+                "--t",
+                "[0.5",
+                "-o",
+                "sub/../pts.txt",
+            ],
+            "-o sub/",
+        ),
+        (
+            vec!["decasteljau", &absolute, "--t", "[0.5", "-o", "pts.txt"],
+            "-o pts.txt",
+        ),
+        (
+            vec!["decasteljau", "pts.txt", "--t", "[0.5", "-o", "hard.txt"],
+            "-o hard.txt",
+        ),
+        (
+            vec!["decasteljau", "soft.txt", "--t", "[0.5", "-o", "pts.txt"],
+            "-o pts.txt",
+        ),
+        (
+            vec![
+                "decasteljau",
+                "pts.txt",
+                "--t",
+                "[0.5",
+                "--plot",
+                "soft.txt",
+            ],
+            "--plot soft.txt",
+        ),
+        (
+            vec!["decasteljau", "net.txt:B", "--t", "[0.5", "-o", "net.txt"],
+            "-o net.txt",
+        ),
+        (
+            vec![
+                "coons", "--c1", "pts.txt", "--c2", "[u;1]", "--d1", "[0;v]", "--d2", "[1;v]",
+                "-o", "pts.txt",
+            ],
             "-o pts.txt",
         ),
     ];
@@ -208,8 +300,8 @@ fn an_output_that_is_an_input_is_refused_before_any_work() {
     // In-process (`cagd_cli::run`), the same refusal.
     let p = |name: &str| d.join(name).to_str().unwrap().to_string();
     let (input, output) = (p("pts.txt"), p("hard.txt"));
-    let err = cagd_cli::run(["cagd", "decasteljau", &input, "--t", "[0.5", "-o", &output])
-        .unwrap_err();
+    let err =
+        cagd_cli::run(["cagd", "decasteljau", &input, "--t", "[0.5", "-o", &output]).unwrap_err();
     assert_eq!(err.kind, cagd_cli::ErrorKind::Usage);
     assert!(err.problem.starts_with("is also an input"), "{err}");
     // Standard input redirected from the output file.
@@ -220,9 +312,12 @@ fn an_output_that_is_an_input_is_refused_before_any_work() {
     refused(&out, "is also an input (`-`)");
     assert_eq!(std::fs::read_to_string(d.join("pts.txt")).unwrap(), points);
     // A different file is fine.
-    let out = cagd(d, &["decasteljau", "pts.txt", "--t", "0.5", "-o", "out.txt"])
-        .output()
-        .unwrap();
+    let out = cagd(
+        d,
+        &["decasteljau", "pts.txt", "--t", "0.5", "-o", "out.txt"],
+    )
+    .output()
+    .unwrap();
     assert_eq!(out.status.code(), Some(0), "{out:?}");
 }
 
@@ -237,9 +332,12 @@ fn read_only_outputs_are_refused_and_permissions_kept() {
     std::fs::set_permissions(d.join("ro.txt"), std::fs::Permissions::from_mode(0o444)).unwrap();
     std::os::unix::fs::symlink("ro.txt", d.join("ro-link.txt")).unwrap();
     for target in ["ro.txt", "ro-link.txt"] {
-        let out = cagd(d, &["bernstein", "--degree", "1", "--t", "0.5", "-o", target])
-            .output()
-            .unwrap();
+        let out = cagd(
+            d,
+            &["bernstein", "--degree", "1", "--t", "0.5", "-o", target],
+        )
+        .output()
+        .unwrap();
         refused(&out, "is read-only (mode 0444)");
         assert_eq!(std::fs::read_to_string(d.join("ro.txt")).unwrap(), "old");
     }
@@ -250,9 +348,12 @@ fn read_only_outputs_are_refused_and_permissions_kept() {
     // A writable file keeps its mode when it is replaced.
     std::fs::write(d.join("rw.txt"), "old").unwrap();
     std::fs::set_permissions(d.join("rw.txt"), std::fs::Permissions::from_mode(0o640)).unwrap();
-    let out = cagd(d, &["bernstein", "--degree", "1", "--t", "0.5", "-o", "rw.txt"])
-        .output()
-        .unwrap();
+    let out = cagd(
+        d,
+        &["bernstein", "--degree", "1", "--t", "0.5", "-o", "rw.txt"],
+    )
+    .output()
+    .unwrap();
     assert_eq!(out.status.code(), Some(0));
     assert_eq!(mode(&d.join("rw.txt")), 0o640);
     assert_eq!(mode(&d.join("ro.txt")), 0o444);
@@ -271,7 +372,17 @@ fn a_signal_during_a_write_leaves_no_temporary_file() {
         std::fs::write(d.join("big.csv"), "old").unwrap();
         let mut child = cagd(
             d,
-            &["bernstein", "--degree", "3", "--n", "400000", "--format", "csv", "-o", "big.csv"],
+            &[
+                "bernstein",
+                "--degree",
+                "3",
+                "--n",
+                "400000",
+                "--format",
+                "csv",
+                "-o",
+                "big.csv",
+            ],
         )
         .stderr(Stdio::null())
         .spawn()
@@ -318,13 +429,26 @@ fn messages_quote_paths_escaped_on_one_line() {
         // The same text as an input (a literal that does not parse, or a missing file).
         let out = cagd(d, &["decasteljau", path]).output().unwrap();
         let line = refused(&out, "CONTROL");
-        assert!(!line.trim_end().contains(|c: char| c.is_control()), "{line:?}");
+        assert!(
+            !line.trim_end().contains(|c: char| c.is_control()),
+            "{line:?}"
+        );
     }
-    let out = cagd(d, &["decasteljau", "in\x1bdir/x.txt"]).output().unwrap();
-    refused(&out, "CONTROL in\\u{1b}dir/x.txt: no such file or directory");
+    let out = cagd(d, &["decasteljau", "in\x1bdir/x.txt"])
+        .output()
+        .unwrap();
+    refused(
+        &out,
+        "CONTROL in\\u{1b}dir/x.txt: no such file or directory",
+    );
     // An empty path, and a folder given as an input file.
-    let out = cagd(d, &["bernstein", "--degree", "1", "-o", ""]).output().unwrap();
-    let line = refused(&out, "--output: invalid value '' (an empty path names no file)");
+    let out = cagd(d, &["bernstein", "--degree", "1", "-o", ""])
+        .output()
+        .unwrap();
+    let line = refused(
+        &out,
+        "--output: invalid value '' (an empty path names no file)",
+    );
     assert!(!line.contains("one of"), "{line}");
     std::fs::create_dir(d.join("points")).unwrap();
     let out = cagd(d, &["decasteljau", "/etc"]).output().unwrap();

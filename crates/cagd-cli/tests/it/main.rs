@@ -13,4 +13,5 @@ mod mesh;
 mod non_finite;
 mod packed_network;
 mod regressions;
+#[cfg(feature = "serve")]
 mod serve;

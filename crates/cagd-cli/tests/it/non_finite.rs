@@ -320,7 +320,15 @@ fn exact_results_beyond_the_doubles_are_refused_in_octave_format() {
             "result(1,1,1) is",
         ),
         (
-            vec!["lagrange", "--nodes", "[0 1]", "--points", "[0 1e308]", "--t", "5"],
+            vec![
+                "lagrange",
+                "--nodes",
+                "[0 1]",
+                "--points",
+                "[0 1e308]",
+                "--t",
+                "5",
+            ],
             "result(1,1)",
         ),
         (
@@ -352,7 +360,11 @@ fn exact_results_beyond_the_doubles_are_refused_in_octave_format() {
         exact.truncate(args.len() - 1);
         exact.push("json");
         let out = run(&exact).unwrap_or_else(|e| panic!("{case:?} in json: {e}"));
-        assert!(out.stdout.contains("0000000000\""), "{case:?}: {}", out.stdout);
+        assert!(
+            out.stdout.contains("0000000000\""),
+            "{case:?}: {}",
+            out.stdout
+        );
     }
     // Within the doubles, Octave's format is written as before.
     let out = run([

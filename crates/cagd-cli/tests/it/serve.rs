@@ -175,7 +175,13 @@ fn files_go_out_compressed_tagged_and_cached_by_their_names() {
     assert_eq!(plain.header("vary"), Some("Accept-Encoding"));
     let tag = plain.header("etag").expect("an ETag").to_string();
 
-    let gz = ask(a, "GET", "/app.js", "Accept-Encoding: gzip, deflate\r\n", wait);
+    let gz = ask(
+        a,
+        "GET",
+        "/app.js",
+        "Accept-Encoding: gzip, deflate\r\n",
+        wait,
+    );
     assert_eq!(gz.header("content-encoding"), Some("gzip"));
     assert!(gz.body.len() * 20 < script.len(), "{} bytes", gz.body.len());
     let mut unpacked = Vec::new();
@@ -191,7 +197,13 @@ fn files_go_out_compressed_tagged_and_cached_by_their_names() {
     assert_eq!(br.body, b"pretend brotli");
 
     // Revalidation: the same tag gets 304 without a body; another tag gets the file.
-    let again = ask(a, "GET", "/app.js", &format!("If-None-Match: {tag}\r\n"), wait);
+    let again = ask(
+        a,
+        "GET",
+        "/app.js",
+        &format!("If-None-Match: {tag}\r\n"),
+        wait,
+    );
     assert!(again.status.contains("304"), "{}", again.status);
     assert!(again.body.is_empty());
     assert_eq!(again.header("etag"), Some(tag.as_str()));
@@ -230,7 +242,10 @@ fn large_files_are_streamed() {
     let server = start(&root);
     let answer = get(&server.address, "GET", "/big.bin");
     assert!(answer.status.contains("200"));
-    assert_eq!(answer.header("content-length"), Some(len.to_string().as_str()));
+    assert_eq!(
+        answer.header("content-length"),
+        Some(len.to_string().as_str())
+    );
     assert!(answer.body == data, "the streamed file differs");
 }
 
@@ -273,7 +288,11 @@ fn hostile_clients_cannot_take_the_server_down_or_stall_it() {
         let started = Instant::now();
         let answer = ask(&a, "GET", path, "", second);
         assert!(answer.status.contains("200"), "{path}: {}", answer.status);
-        assert!(started.elapsed() < second, "{path}: {:?}", started.elapsed());
+        assert!(
+            started.elapsed() < second,
+            "{path}: {:?}",
+            started.elapsed()
+        );
     }
     // Many clients at once are all answered.
     let clients: Vec<_> = (0..64)
