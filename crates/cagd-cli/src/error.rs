@@ -159,6 +159,7 @@ pub(crate) fn io_problem(error: &std::io::Error) -> (String, std::io::ErrorKind)
         K::PermissionDenied => "permission denied",
         K::StorageFull => "no space left on the device",
         K::ReadOnlyFilesystem => "the file system is read-only",
+        K::NotADirectory => "a part of the path is not a folder",
         _ => return (error.to_string(), error.kind()),
     };
     (problem.to_string(), error.kind())

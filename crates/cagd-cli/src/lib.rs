@@ -23,6 +23,7 @@ mod atomic;
 mod error;
 #[doc = include_str!("../../../docs/ERRORS.md")]
 pub mod error_catalogue {}
+pub mod faults;
 mod input;
 pub mod limits;
 pub mod mesh;

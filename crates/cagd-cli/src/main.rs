@@ -10,34 +10,10 @@ use std::io::Write;
 
 use cagd_cli::{escape_text, CliError, Outcome};
 
-/// The name of the thread that runs the command; a fault on it ends the program.
-const COMMAND_THREAD: &str = "cagd";
+use cagd_cli::faults::COMMAND_THREAD;
 
 fn main() {
-    std::panic::set_hook(Box::new(|info| {
-        let payload = info
-            .payload()
-            .downcast_ref::<&str>()
-            .map(|s| s.to_string())
-            .or_else(|| info.payload().downcast_ref::<String>().cloned())
-            .unwrap_or_else(|| "unexpected fault".to_string());
-        let place = info
-            .location()
-            .map(|l| format!(" ({}:{})", l.file(), l.line()))
-            .unwrap_or_default();
-        let message = payload.split_whitespace().collect::<Vec<_>>().join(" ");
-        let _ = writeln!(
-            std::io::stderr(),
-            "cagd: internal error: {}{place}; this is a bug in cagd",
-            escape_text(&message)
-        );
-        // Only the command thread's fault ends the program. A worker's (a connection of
-        // `cagd serve`, a thread of a parallel evaluation) ends that worker: its owner sees
-        // it (the server drops the connection, the evaluation passes it on to the command).
-        if std::thread::current().name() == Some(COMMAND_THREAD) {
-            std::process::exit(1);
-        }
-    }));
+    cagd_cli::faults::report_faults();
     if let Err(e) = cagd_cli::temporaries::remove_on_signals() {
         let _ = writeln!(
             std::io::stderr(),

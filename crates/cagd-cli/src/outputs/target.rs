@@ -51,7 +51,14 @@ pub fn destination(path: &Path) -> io::Result<PathBuf> {
                 };
             }
             Ok(_) => return Ok(current),
-            Err(e) if e.kind() == io::ErrorKind::NotFound => return Ok(current),
+            Err(e)
+                if matches!(
+                    e.kind(),
+                    io::ErrorKind::NotFound | io::ErrorKind::NotADirectory
+                ) =>
+            {
+                return Ok(current);
+            }
             Err(e) => return Err(e),
         }
     }
@@ -62,10 +69,13 @@ pub fn destination(path: &Path) -> io::Result<PathBuf> {
 
 /// Why `path` (an output, not `-`) cannot be written, with the kind of the refusal: a loop of
 /// links; an existing target that is not a regular file, is read-only, or cannot be opened
-/// for writing; a target whose folder does not exist.
+/// for writing; a target whose folder does not exist. Without a file system (the browser)
+/// there is nothing to refuse.
 pub fn refusal(path: &Path) -> Option<(String, ErrorKind)> {
+    let unsupported = |e: &io::Error| e.kind() == io::ErrorKind::Unsupported;
     let target = match destination(path) {
         Ok(t) => t,
+        Err(e) if unsupported(&e) => return None,
         Err(e) => return Some((e.to_string(), ErrorKind::Io(e.kind()))),
     };
     let link = if target == path {
@@ -73,18 +83,18 @@ pub fn refusal(path: &Path) -> Option<(String, ErrorKind)> {
     } else {
         format!(" (the link's target {})", crate::escape_path(&target))
     };
-    let Ok(meta) = std::fs::metadata(&target) else {
-        let dir = directory_of(&target);
-        if !dir.is_dir() {
-            return Some((
-                format!(
-                    "the folder {} does not exist{link}",
-                    crate::escape_path(dir)
-                ),
-                ErrorKind::Io(io::ErrorKind::NotFound),
-            ));
+    let meta = match std::fs::metadata(&target) {
+        Ok(meta) => meta,
+        Err(e)
+            if matches!(
+                e.kind(),
+                io::ErrorKind::NotFound | io::ErrorKind::NotADirectory
+            ) =>
+        {
+            return folder_refusal(&target, &link);
         }
-        return None;
+        Err(e) if unsupported(&e) => return None,
+        Err(e) => return Some(cannot_write(&e, &link)),
     };
     if let Some(kind) = not_regular(&target) {
         return Some((
@@ -102,14 +112,42 @@ pub fn refusal(path: &Path) -> Option<(String, ErrorKind)> {
     // read-only mount, the immutable attribute). Opening changes nothing.
     match std::fs::OpenOptions::new().write(true).open(&target) {
         Ok(_) => None,
-        Err(e) => Some((
-            format!(
-                "cannot be written{link}: {}",
-                crate::error::io_problem(&e).0
-            ),
-            ErrorKind::Io(e.kind()),
-        )),
+        Err(e) => Some(cannot_write(&e, &link)),
     }
+}
+
+/// Why a new file `target` cannot be created: its folder is missing or is not a folder.
+fn folder_refusal(target: &Path, link: &str) -> Option<(String, ErrorKind)> {
+    let dir = directory_of(target);
+    let shown = crate::escape_path(dir);
+    match std::fs::metadata(dir) {
+        Ok(meta) if meta.is_dir() => None,
+        Ok(_) => Some((
+            format!("{shown} is not a folder{link}"),
+            ErrorKind::Io(io::ErrorKind::NotADirectory),
+        )),
+        Err(e) if e.kind() == io::ErrorKind::Unsupported => None,
+        Err(e)
+            if matches!(
+                e.kind(),
+                io::ErrorKind::NotFound | io::ErrorKind::NotADirectory
+            ) =>
+        {
+            Some((
+                format!("the folder {shown} does not exist{link}"),
+                ErrorKind::Io(io::ErrorKind::NotFound),
+            ))
+        }
+        Err(e) => Some(cannot_write(&e, link)),
+    }
+}
+
+fn cannot_write(e: &io::Error, link: &str) -> (String, ErrorKind) {
+    let (problem, kind) = crate::error::io_problem(e);
+    (
+        format!("cannot be written{link}: {problem}"),
+        ErrorKind::Io(kind),
+    )
 }
 
 /// ` (mode 0444)` on Unix.

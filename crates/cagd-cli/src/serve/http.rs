@@ -19,7 +19,7 @@ use tokio::sync::Semaphore;
 use tokio::time::{Instant, Sleep};
 
 use super::files::{self, Accepts, Found, Large, Page, Variant};
-use super::{HEADER_TIMEOUT, MAX_CONNECTIONS, STALL_TIMEOUT};
+use super::{HEADER_TIMEOUT, MAX_CONNECTIONS, MAX_CONNECTION_TIME, STALL_TIMEOUT};
 
 type Answer = Response<BoxBody<Bytes, io::Error>>;
 
@@ -54,11 +54,11 @@ async fn connection(stream: TcpStream, page: Arc<Page>) {
         let page = page.clone();
         async move { Ok::<_, Infallible>(respond(page, request).await) }
     });
-    let _ = hyper::server::conn::http1::Builder::new()
+    let serving = hyper::server::conn::http1::Builder::new()
         .timer(TokioTimer::new())
         .header_read_timeout(HEADER_TIMEOUT)
-        .serve_connection(io, service)
-        .await;
+        .serve_connection(io, service);
+    let _ = tokio::time::timeout(MAX_CONNECTION_TIME, serving).await;
 }
 
 /// What a request gets: a file from memory, in the form chosen for the client, or a file

@@ -13,7 +13,8 @@
 //! at once (further clients wait in the listening queue), so a client that pipelines
 //! requests and never reads its answers, or reads a large file slowly, holds one task and
 //! nobody else. A connection that makes no progress for [`STALL_TIMEOUT`] in either direction,
-//! or takes longer than [`HEADER_TIMEOUT`] to send a request head, is closed. An error on one
+//! takes longer than [`HEADER_TIMEOUT`] to send a request head, or has been open for
+//! [`MAX_CONNECTION_TIME`], is closed. An error on one
 //! connection (a reset, a malformed request) ends that connection only, and a fault inside a
 //! request handler ends that task only (the panic hook of the program exits only for its
 //! command thread).
@@ -47,8 +48,21 @@ mod http;
 
 pub use files::{content_type, is_hashed_name, resolve};
 
-/// Serve the web page on localhost.
+/// Serve the web page (every construction, in the browser) on localhost.
 #[derive(Debug, Clone, Args)]
+#[command(after_help = "\
+Serves the page built by `bash web/build.sh` (web/dist/) on http://127.0.0.1:P/ until stopped
+with Ctrl-C; the page computes in the browser, the server only hands out its files. A link
+such as http://127.0.0.1:8000/#cmd=cagd%20bernstein%20--degree%203%20--t%200.5 opens the page
+with that command run.
+
+Files go out gzip-compressed when the browser accepts it (or as a precompressed FILE.br or
+FILE.gz beside them), with an ETag; a name with a content hash (a dot-separated part of 8 to
+64 hexadecimal digits, as in cagd_web_bg.3f9a1c2e.wasm) is cached as immutable.
+
+Examples:
+  cagd serve
+  cagd serve --port 8080 --dir web/dist")]
 pub struct ServeCommand {
     /// The port on 127.0.0.1 (0 picks a free one; the address is printed).
     #[arg(long, value_name = "P", default_value_t = 8000)]
@@ -70,6 +84,8 @@ pub const MAX_CONNECTIONS: usize = 256;
 pub const STALL_TIMEOUT: Duration = Duration::from_secs(15);
 /// The longest a client may take to send the head of a request (a slow-loris client).
 pub const HEADER_TIMEOUT: Duration = Duration::from_secs(10);
+/// The longest one connection is served, however busy (a client trickling bytes forever).
+pub const MAX_CONNECTION_TIME: Duration = Duration::from_secs(600);
 /// Files up to this size are kept in memory (and compressed there); larger ones are streamed.
 pub const MAX_CACHED_FILE_BYTES: u64 = 32 << 20;
 
