@@ -18,7 +18,9 @@ use tokio::net::{TcpListener, TcpStream};
 use tokio::sync::Semaphore;
 use tokio::time::{Instant, Sleep};
 
-use super::files::{self, Accepts, Found, Large, Page, Variant};
+use super::cache::{self, Found, Large, Page, Variant};
+use super::files;
+use super::negotiate::{self, Accepts};
 use super::{HEADER_TIMEOUT, MAX_CONNECTIONS, MAX_CONNECTION_TIME, STALL_TIMEOUT};
 
 type Answer = Response<BoxBody<Bytes, io::Error>>;
@@ -66,7 +68,7 @@ async fn connection(stream: TcpStream, page: Arc<Page>) {
 enum Sendable {
     Memory {
         variant: Variant,
-        file: Arc<files::Cached>,
+        file: Arc<cache::Cached>,
     },
     Stream(Large),
 }
@@ -105,7 +107,7 @@ async fn respond(page: Arc<Page>, request: Request<Incoming>) -> Answer {
         Ok(None) => return text(StatusCode::NOT_FOUND, "not found\n"),
         Err(_) => return text(StatusCode::INTERNAL_SERVER_ERROR, "cannot read\n"),
     };
-    if if_none_match.is_some_and(|h| files::none_match(&h, sendable.tag())) {
+    if if_none_match.is_some_and(|h| negotiate::none_match(&h, sendable.tag())) {
         return with_headers(StatusCode::NOT_MODIFIED, empty(), &sendable);
     }
     let body = match &sendable {

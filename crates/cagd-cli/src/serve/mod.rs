@@ -43,8 +43,10 @@ use clap::Args;
 
 use crate::{CliError, ErrorKind};
 
+mod cache;
 mod files;
 mod http;
+mod negotiate;
 
 pub use files::{content_type, is_hashed_name, resolve};
 
@@ -138,7 +140,7 @@ pub fn serve(cmd: &ServeCommand) -> Result<(), CliError> {
     use std::io::Write;
 
     let root = page_dir(cmd.dir.as_deref())?;
-    let page = files::Page::new(&root).map_err(|e| {
+    let page = cache::Page::new(&root).map_err(|e| {
         CliError::io(
             format!("--dir {}", crate::escape_path(&root)),
             &e,
