@@ -9,6 +9,11 @@
 //!   of `FILE:NAME`; standard input redirected from it) is refused;
 //! - no two outputs may share a file, and standard output carries one thing.
 //!
+//! Where atomic replacement differs from `>` (which writes into the existing file): the new
+//! file is written beside the old one and renamed over it, so its folder must be writable,
+//! and another hard link to the old file keeps the old contents. A file without any write
+//! permission bit is refused even for root, whom `>` would let through.
+//!
 //! [`check`] runs them for every subcommand from its parsed arguments ([`crate::run`] calls it
 //! before any work); the files are written by [`crate::PendingWrites::commit`], which applies
 //! the same rules again at the moment of writing.
