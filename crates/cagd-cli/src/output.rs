@@ -104,7 +104,10 @@ fn render_octave<T: LiteralScalar>(report: &Report<T>) -> Result<String, CliErro
     use cagd_octave::text_format::{self, Workspace};
     let mut ws = Workspace::new();
     for item in &report.items {
-        ws.insert(octave_name(&item.name), octave_value(&item.value));
+        ws.insert(
+            octave_name(&item.name),
+            octave_value(&item.name, &item.value)?,
+        );
     }
     text_format::write_text(&ws).map_err(|e| {
         CliError::new(
@@ -117,16 +120,32 @@ fn render_octave<T: LiteralScalar>(report: &Report<T>) -> Result<String, CliErro
 }
 
 /// A value as Octave stores it: matrices and grids as doubles, text as a char matrix, a
-/// record as a struct.
-fn octave_value<T: LiteralScalar>(value: &Value<T>) -> cagd_octave::text_format::Value {
+/// record as a struct (`name` names it in errors).
+fn octave_value<T: LiteralScalar>(
+    name: &str,
+    value: &Value<T>,
+) -> Result<cagd_octave::text_format::Value, CliError> {
     use cagd_octave::text_format::{CharMatrix, Value as OValue};
-    match value {
+    Ok(match value {
         Value::Matrix(m) => {
-            let a = ndarray::Array2::from_shape_fn(m.shape(), |(i, j)| m[(i, j)].to_f64());
+            let mut a = ndarray::Array2::zeros(m.shape());
+            for ((i, j), x) in a.indexed_iter_mut() {
+                let at = || (format!("{name}({},{})", i + 1, j + 1), j * m.nrows() + i);
+                *x = octave_double(&m[(i, j)], at)?;
+            }
             OValue::from(a)
         }
         Value::Grid(g) => {
-            OValue::Matrix(cagd_octave::arrays::to_array3(g.map(|x| x.to_f64())).into_dyn())
+            let (nu, nv, d) = g.dim();
+            let mut a = ndarray::Array3::zeros((nu, nv, d));
+            for ((i, j, k), x) in a.indexed_iter_mut() {
+                let at = || {
+                    let place = format!("{name}({},{},{})", i + 1, j + 1, k + 1);
+                    (place, (i * nv + j) * d + k)
+                };
+                *x = octave_double(&g[[i, j, k]], at)?;
+            }
+            OValue::Matrix(a.into_dyn())
         }
         Value::Text(t) => {
             // A char matrix needs rows of one length: pad with spaces, as Octave's char().
@@ -139,11 +158,44 @@ fn octave_value<T: LiteralScalar>(value: &Value<T>) -> cagd_octave::text_format:
         Value::Record(items) => OValue::Struct(
             items
                 .iter()
-                .map(|i| (octave_name(&i.name), octave_value(&i.value)))
-                .collect(),
+                .map(|i| {
+                    let inner = format!("{name}.{}", i.name);
+                    Ok((octave_name(&i.name), octave_value(&inner, &i.value)?))
+                })
+                .collect::<Result<_, CliError>>()?,
         ),
-        Value::Shown { data, .. } => octave_value(data),
+        Value::Shown { data, .. } => octave_value(name, data)?,
+    })
+}
+
+/// The double Octave's format stores for `x`. An exact value is finite, but its double may
+/// not be (beyond ±1.8e308): that is refused, naming the entry (`at`: its name and flat
+/// index) and the value,
+/// rather than written as `Inf`. (Doubles that are not finite are refused before rendering,
+/// with the input they came from.)
+fn octave_double<T: LiteralScalar>(
+    x: &T,
+    at: impl Fn() -> (String, usize),
+) -> Result<f64, CliError> {
+    let v = x.to_f64();
+    if v.is_finite() || !T::EXACT {
+        return Ok(v);
     }
+    let sign = if v > 0.0 { "Inf" } else { "-Inf" };
+    let (place, index) = at();
+    Err(CliError::new(
+        "--format octave",
+        format!(
+            "{place} is the exact value `{}`, beyond the range of doubles (it would be written as {sign})",
+            number_text(x)
+        ),
+        "results within ±1.8e308 for Octave's doubles (--format text, csv or json write the exact fractions)",
+        ErrorKind::Library(Box::new(cagd::Error::NonFinite {
+            what: "exact result as a double",
+            index,
+            value: v,
+        })),
+    ))
 }
 
 /// Right-aligned columns with two spaces before each, indented by two more.

@@ -66,6 +66,20 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
         .unwrap()
         .to_string();
     let deep = format!("{}u{}", "(".repeat(200), ")".repeat(200));
+    let points = file("points.txt", "0 1 3\n0 2 0\n");
+    let read_only = {
+        let p = file("read-only.txt", "old");
+        let mut perm = std::fs::metadata(&p).unwrap().permissions();
+        perm.set_readonly(true);
+        std::fs::set_permissions(&p, perm).unwrap();
+        p
+    };
+    #[cfg(unix)]
+    let looping = {
+        let p = dir.join("loop.svg");
+        std::os::unix::fs::symlink(&p, &p).unwrap();
+        p.to_str().unwrap().to_string()
+    };
     let nrb_bad = file(
         "nrb_bad.txt",
         "# name: srf\n# type: scalar struct\n# ndims: 2\n 1 1\n# length: 1\n# name: coefs\n# type: matrix\n# rows: 1\n# columns: 2\n 1 2\n\n\n",
@@ -1022,6 +1036,44 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
             "--p0/--p1/--t0/--t1",
             "Library::NonFinite",
         ),
+        // Output files with the shell's rules, refused before any work.
+        (
+            s(&["bernstein", "--degree", "1", "-o", ""]),
+            "--output",
+            "Usage",
+        ),
+        (
+            s(&["decasteljau", &points, "--t", "0.5", "-o", &points]),
+            "-o",
+            "Usage",
+        ),
+        (
+            s(&["decasteljau", &points, "--t", "0.5", "-o", &read_only]),
+            "-o",
+            "Io::PermissionDenied",
+        ),
+        #[cfg(unix)]
+        (
+            s(&["decasteljau", &points, "--t", "0.5", "--plot", &looping]),
+            "--plot",
+            "Io::Other",
+        ),
+        // A folder given as an input file.
+        (s(&["decasteljau", &folder]), "CONTROL", "Io::IsADirectory"),
+        // An exact value whose double overflows, in Octave's format of doubles.
+        (
+            s(&[
+                "decasteljau",
+                "[1e308 -1e308; 0 1]",
+                "--t",
+                "5",
+                "--exact",
+                "--format",
+                "octave",
+            ]),
+            "--format",
+            "Library::NonFinite",
+        ),
         // Pictures and meshes of values too large to draw or to store.
         (
             s(&[
@@ -1047,7 +1099,7 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
 fn every_bad_input_names_its_argument_and_kind_exits_2_and_writes_nothing() {
     let inputs = tempfile::tempdir().unwrap();
     let table = cases(inputs.path());
-    assert!(table.len() >= 83, "{} cases", table.len());
+    assert!(table.len() >= 89, "{} cases", table.len());
     let subcommands: std::collections::BTreeSet<&str> = table
         .iter()
         .filter_map(|(a, _, _)| a.first().map(String::as_str))

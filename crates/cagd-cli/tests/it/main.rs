@@ -7,10 +7,12 @@ mod cli;
 mod course;
 mod curvature;
 mod error_catalogue;
+mod file_rules;
 mod hostile;
 mod limits;
 mod mesh;
 mod non_finite;
 mod packed_network;
 mod regressions;
+#[cfg(feature = "serve")]
 mod serve;
