@@ -649,6 +649,26 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
             "Library::TooLarge",
         ),
         (
+            s(&["curvature", "[1 1 1; 2 2 2]", "--t", "0.5"]),
+            "--t",
+            "Library::InvalidArgument",
+        ),
+        (
+            s(&["curvature", "bspline([0 1; 0 1], [0 1])"]),
+            "CURVE",
+            "Shape",
+        ),
+        (
+            s(&["curvature", "[0 1 2 3; 0 1 0 1; 0 0 1 1; 1 1 1 1]", "--t", "0.5"]),
+            "CURVE",
+            "Library::ShapeMismatch",
+        ),
+        (
+            s(&["curvature", "nurbs([1 1 0; 0 1 1], [1 -1 2], [0 0 0 1 1 1])"]),
+            "CURVE",
+            "Library::NonPositiveWeight",
+        ),
+        (
             s(&["continuity", "[0 1]", "[1 2; 3 4]"]),
             "FIRST/SECOND",
             "Shape",
