@@ -5,6 +5,13 @@
 //! |---|---|
 //! | [`DeCasteljau`] | points of a Bézier curve, with the de Casteljau scheme |
 //! | [`Coons`] | a Coons patch of any four boundary curves, with its parts |
+//! | [`BSpline`] | points of a B-spline curve, with its basis and de Boor's scheme |
+//! | [`Nurbs`] | points of a NURBS curve, with its rational basis |
+//! | [`InsertKnot`] | knots inserted into a B-spline or NURBS curve, Boehm's steps |
+//! | [`BSplineBasis`] | the basis functions of a knot vector, the Cox–de Boor triangle |
+//! | [`Lagrange`] | the Lagrange basis, or the polynomial through values at nodes |
+//! | [`Hermite`] | a Hermite (Ferguson) cubic, with its basis and Bézier points |
+//! | [`Spline`] | an interpolating cubic spline, with its system and segments |
 
 use cagd::{Curve, Scalar};
 use nalgebra::DMatrix;
@@ -12,18 +19,37 @@ use nalgebra::DMatrix;
 use crate::error::{lib, Result};
 use crate::{number_text, Context, Role};
 
+mod bspline;
+mod bspline_basis;
 pub mod coons;
 mod decasteljau;
+mod hermite;
+mod insert_knot;
+mod lagrange;
+mod nurbs;
+pub mod spline;
 pub mod surface;
 
+pub use bspline::BSpline;
+pub use bspline_basis::BSplineBasis;
 pub use coons::{Blend, Coons};
 pub use decasteljau::DeCasteljau;
+pub use hermite::Hermite;
+pub use insert_knot::InsertKnot;
+pub use lagrange::Lagrange;
+pub use nurbs::Nurbs;
+pub use spline::Spline;
 
 /// How much more steps cost than the points alone: each scheme is computed again and laid out
 /// as text, about as many numbers as operations, each number some 50 operations to format
 /// and about 16 bytes of text. So a request whose schemes would fill gigabytes of memory is
 /// refused up front like any other large work.
 pub const STEPS_FACTOR: u128 = 50;
+
+/// The operations of writing one number of an answer out as text: an answer that is mostly
+/// numbers (a basis matrix) counts them with its work, so that a request whose output would
+/// fill gigabytes is refused up front.
+pub const WRITE_OPS: u128 = 100;
 
 /// Points evaluated between two interrupt checks.
 const CHUNK: usize = 4096;
