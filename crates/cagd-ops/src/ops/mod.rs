@@ -12,6 +12,9 @@
 //! | [`Lagrange`] | the Lagrange basis, or the polynomial through values at nodes |
 //! | [`Hermite`] | a Hermite (Ferguson) cubic, with its basis and Bézier points |
 //! | [`Spline`] | an interpolating cubic spline, with its system and segments |
+//! | [`BSplineSurface`] | a tensor-product B-spline surface, with its bases |
+//! | [`NurbsSurface`] | a tensor-product NURBS surface |
+//! | [`Circle`] | a circle or a circular arc as an exact NURBS curve |
 
 use cagd::{Curve, Scalar};
 use nalgebra::DMatrix;
@@ -21,23 +24,29 @@ use crate::{number_text, Context, Role};
 
 mod bspline;
 mod bspline_basis;
+mod bspline_surface;
+mod circle;
 pub mod coons;
 mod decasteljau;
 mod hermite;
 mod insert_knot;
 mod lagrange;
 mod nurbs;
+mod nurbs_surface;
 pub mod spline;
 pub mod surface;
 
 pub use bspline::BSpline;
 pub use bspline_basis::BSplineBasis;
+pub use bspline_surface::BSplineSurface;
+pub use circle::Circle;
 pub use coons::{Blend, Coons};
 pub use decasteljau::DeCasteljau;
 pub use hermite::Hermite;
 pub use insert_knot::InsertKnot;
 pub use lagrange::Lagrange;
 pub use nurbs::Nurbs;
+pub use nurbs_surface::NurbsSurface;
 pub use spline::Spline;
 
 /// How much more steps cost than the points alone: each scheme is computed again and laid out
