@@ -29,8 +29,8 @@ pub enum End {
 #[derive(Debug, Args)]
 #[command(after_help = "\
 Input: points as columns (rows with --rows); --end clamped (with --start-tangent and
---end-tangent; the default when both are given), natural or closed (a tangent with natural or
-closed is an error). --params uniform (t_k = k, the lecture notes: segment k over [k, k+1]),
+--end-tangent; the default when a tangent is given), natural (the default without tangents)
+or closed (a tangent with natural or closed is an error). --params uniform (t_k = k, the lecture notes: segment k over [k, k+1]),
 chord, centripetal or a list of values. A closed spline is periodic: every t is on the curve.
 Layout: tangents is d×m (one per point); result d×k at --t (default: 10 samples per segment).
 --steps prints params, the linear system (system, m×m, and rhs, d×m: system · tangentsᵀ = rhsᵀ,
@@ -43,7 +43,7 @@ pub struct SplineCommand {
     /// The points to interpolate, one per column.
     #[arg(value_name = "POINTS", allow_hyphen_values = true)]
     pub points: String,
-    /// The end condition (default: clamped when both tangents are given, else natural).
+    /// The end condition (default: clamped when a tangent is given, else natural).
     #[arg(long, value_enum)]
     pub end: Option<End>,
     /// The tangent at the first point (clamped ends).

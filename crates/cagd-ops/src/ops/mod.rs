@@ -28,7 +28,7 @@ mod bspline_surface;
 mod circle;
 pub mod coons;
 mod decasteljau;
-mod hermite;
+pub mod hermite;
 mod insert_knot;
 mod lagrange;
 mod nurbs;

@@ -69,7 +69,7 @@ pub enum Knots<T> {
 pub struct Spline<T> {
     /// The points to interpolate, one per column.
     pub points: DMatrix<T>,
-    /// The end condition (default: clamped when both tangents are given, else natural).
+    /// The end condition (default: clamped when a tangent is given, else natural).
     pub ends: Option<Ends>,
     /// The tangent at the first point (clamped ends).
     pub start_tangent: Option<DMatrix<T>>,
@@ -104,8 +104,8 @@ impl<T: Scalar> Spline<T> {
     /// The end condition: chosen or by default, its tangents checked.
     fn end_condition(&self) -> Result<EndCondition<T>> {
         let given = [(Role::T0, &self.start_tangent), (Role::T1, &self.end_tangent)];
-        let both = given.iter().all(|(_, t)| t.is_some());
-        let chosen = self.ends.unwrap_or(if both { Ends::Clamped } else { Ends::Natural });
+        let any = given.iter().any(|(_, t)| t.is_some());
+        let chosen = self.ends.unwrap_or(if any { Ends::Clamped } else { Ends::Natural });
         if chosen == Ends::Clamped {
             let need = |(role, t): (Role, &Option<DMatrix<T>>)| match t {
                 Some(m) => vector(role, m),
