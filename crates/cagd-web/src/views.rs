@@ -415,4 +415,58 @@ mod tests {
             assert!((s - 1.0).abs() < 1e-14);
         }
     }
+
+    /// The command line's words after `argument: ` for `args`.
+    fn cli_words(args: &[&str], argument: &str) -> String {
+        let e = cagd_cli::run(std::iter::once("cagd").chain(args.iter().copied())).unwrap_err();
+        let text = e.to_string();
+        text.strip_prefix(&format!("{argument}: "))
+            .unwrap_or_else(|| panic!("{text}"))
+            .to_string()
+    }
+
+    /// The page's words after `cagd: error: name: `.
+    fn page_words(answer: &str, name: &str) -> String {
+        let v = parse(answer);
+        let e = v["error"].as_str().unwrap_or_else(|| panic!("{v}"));
+        e.strip_prefix(&format!("cagd: error: {name}: "))
+            .unwrap_or_else(|| panic!("{e}"))
+            .to_string()
+    }
+
+    #[test]
+    fn bad_knots_and_weights_read_as_on_the_command_line() {
+        let cases = [
+            // knots decreasing, too few, too many; too few control points; a point domain.
+            (vec![0., 1., 0.5, 1.], "[0 1 0.5 1]", 1, "--knots", "knots"),
+            (vec![0., 0., 1., 1.], "[0 0 1 1]", 2, "--knots", "knots"),
+            (vec![0., 0., 0., 0.5, 1., 1., 1.], "[0 0 0 0.5 1 1 1]", 1, "--knots", "knots"),
+            (vec![], "", 3, "CONTROL", "control"),
+            (vec![0., 0., 0., 0., 0.], "[0 0 0 0 0]", 1, "--knots", "knots"),
+        ];
+        for (knots, text, degree, cli_name, page_name) in cases {
+            let control = vec![0., 0., 1., 2., 3., 0.];
+            let p = degree.to_string();
+            let mut args = vec!["bspline", "[0 1 3; 0 2 0]", "--degree", p.as_str()];
+            if !text.is_empty() {
+                args.extend(["--knots", text]);
+            }
+            let page = bspline_view(control, 2, degree, knots, 11);
+            assert_eq!(page_words(&page, page_name), cli_words(&args, cli_name));
+        }
+        let w = bspline_view(vec![0., 0., 1., 2.], 2, 1, vec![], 1);
+        assert!(page_words(&w, "samples").starts_with("1 samples"), "{w}");
+        // Weights first, then the knots: a zero weight, a missing weight.
+        for (weights, text) in [(vec![1., 0., 1.], "[1 0 1]"), (vec![1., 1.], "[1 1]")] {
+            let args = ["nurbs", "[0 1 3; 0 2 0]", "--weights", text, "--degree", "5"];
+            let page = nurbs_view(vec![0., 0., 1., 2., 3., 0.], 2, weights, 5, vec![], 11);
+            assert_eq!(page_words(&page, "weights"), cli_words(&args, "--weights"));
+        }
+        // The degree limit is the operation's, without the command line's way to raise it.
+        let page = bspline_view(vec![0., 0., 1., 2.], 2, 5000, vec![], 11);
+        let cli = cli_words(&["bspline", "[0 1; 0 2]", "--degree", "5000"], "--degree");
+        let raise = " (raise it with --max-degree or CAGD_MAX_DEGREE)";
+        assert_eq!(page_words(&page, "degree"), cli.replacen(raise, "", 1));
+        assert!(cli.contains(raise), "{cli}");
+    }
 }
