@@ -70,11 +70,7 @@ pub fn triangle_cost(p: usize, knot_count: usize, param_bits: u128, knot_bits: u
     let m = knot_count.saturating_sub(1) as u128;
     Cost::new(
         (p as u128 + 1).saturating_mul(m).saturating_mul(4),
-        polynomial_bits(
-            p,
-            param_bits.saturating_add(knot_bits.saturating_mul(3)),
-            0,
-        ),
+        polynomial_bits(p, param_bits.saturating_add(knot_bits.saturating_mul(3)), 0),
     )
 }
 

@@ -94,7 +94,9 @@ impl<T: Scalar> NodesInAnyOrder<T> {
                 found: format!("{} columns", values.ncols()),
             });
         }
-        let sorted = DMatrix::from_fn(values.nrows(), m1, |r, k| values[(r, self.order[k])].clone());
+        let sorted = DMatrix::from_fn(values.nrows(), m1, |r, k| {
+            values[(r, self.order[k])].clone()
+        });
         self.sorted.interpolate(&sorted, t)
     }
 }
@@ -111,7 +113,10 @@ mod tests {
         let sorted = Lagrange::new(vec![q(0, 1), q(1, 4), q(1, 2), q(1, 1)]).unwrap();
         let t = q(3, 5);
         let (a, b) = (given.basis(&t), sorted.basis(&t));
-        assert_eq!(a, vec![b[0].clone(), b[2].clone(), b[1].clone(), b[3].clone()]);
+        assert_eq!(
+            a,
+            vec![b[0].clone(), b[2].clone(), b[1].clone(), b[3].clone()]
+        );
         // Values follow their nodes: y = 2t at every node gives 2t everywhere.
         let values = DMatrix::from_row_slice(1, 4, &[q(0, 1), q(1, 1), q(1, 2), q(2, 1)]);
         assert_eq!(given.interpolate(&values, &t).unwrap()[0], q(6, 5));

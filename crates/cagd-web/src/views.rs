@@ -206,7 +206,10 @@ fn spline_view_json<O: Operation<f64>>(
             .ok_or_else(|| format!("cagd: internal error: the answer has no `{name}`"))
     };
     let (t, curve, basis) = (item("t")?, item("result")?, item("basis")?);
-    let rows: Vec<Vec<f64>> = basis.column_iter().map(|c| c.iter().copied().collect()).collect();
+    let rows: Vec<Vec<f64>> = basis
+        .column_iter()
+        .map(|c| c.iter().copied().collect())
+        .collect();
     Ok(json!({
         "t": t.as_slice(),
         "curve": curve.as_slice(),
@@ -251,7 +254,9 @@ pub fn bspline_view(
             .map_err(|e| op_error_text(&e))?;
         spline_view_json(&op, curve.knots().as_slice(), curve.domain())
     };
-    answer().unwrap_or_else(|e| json!({ "error": e })).to_string()
+    answer()
+        .unwrap_or_else(|e| json!({ "error": e }))
+        .to_string()
 }
 
 /// A NURBS curve (the CAD notes): as [`bspline_view`], with one positive weight per control
@@ -289,7 +294,9 @@ pub fn nurbs_view(
             .map_err(|e| op_error_text(&e))?;
         spline_view_json(&op, curve.knots(), curve.domain())
     };
-    answer().unwrap_or_else(|e| json!({ "error": e })).to_string()
+    answer()
+        .unwrap_or_else(|e| json!({ "error": e }))
+        .to_string()
 }
 
 #[cfg(test)]
@@ -440,9 +447,21 @@ mod tests {
             // knots decreasing, too few, too many; too few control points; a point domain.
             (vec![0., 1., 0.5, 1.], "[0 1 0.5 1]", 1, "--knots", "knots"),
             (vec![0., 0., 1., 1.], "[0 0 1 1]", 2, "--knots", "knots"),
-            (vec![0., 0., 0., 0.5, 1., 1., 1.], "[0 0 0 0.5 1 1 1]", 1, "--knots", "knots"),
+            (
+                vec![0., 0., 0., 0.5, 1., 1., 1.],
+                "[0 0 0 0.5 1 1 1]",
+                1,
+                "--knots",
+                "knots",
+            ),
             (vec![], "", 3, "CONTROL", "control"),
-            (vec![0., 0., 0., 0., 0.], "[0 0 0 0 0]", 1, "--knots", "knots"),
+            (
+                vec![0., 0., 0., 0., 0.],
+                "[0 0 0 0 0]",
+                1,
+                "--knots",
+                "knots",
+            ),
         ];
         for (knots, text, degree, cli_name, page_name) in cases {
             let control = vec![0., 0., 1., 2., 3., 0.];
@@ -458,7 +477,14 @@ mod tests {
         assert!(page_words(&w, "samples").starts_with("1 samples"), "{w}");
         // Weights first, then the knots: a zero weight, a missing weight.
         for (weights, text) in [(vec![1., 0., 1.], "[1 0 1]"), (vec![1., 1.], "[1 1]")] {
-            let args = ["nurbs", "[0 1 3; 0 2 0]", "--weights", text, "--degree", "5"];
+            let args = [
+                "nurbs",
+                "[0 1 3; 0 2 0]",
+                "--weights",
+                text,
+                "--degree",
+                "5",
+            ];
             let page = nurbs_view(vec![0., 0., 1., 2., 3., 0.], 2, weights, 5, vec![], 11);
             assert_eq!(page_words(&page, "weights"), cli_words(&args, "--weights"));
         }

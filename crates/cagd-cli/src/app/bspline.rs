@@ -7,8 +7,8 @@ use clap::Args;
 use super::answer::{respond, Destinations};
 use super::cx::Cx;
 use super::read::{curve_params, points};
-use super::spline_args::{degree, values};
 use super::run::{Names, Run};
+use super::spline_args::{degree, values};
 use crate::args::{CurveParamArgs, OutputArgs, PlotArgs, RowsArgs, StepsArgs};
 use crate::{CliError, Outcome};
 

@@ -44,8 +44,10 @@ pub struct CircleArgs {
 
 /// How `circle` and `arc` name the roles: the radius and the centre together, as the library
 /// checks them, and the angles.
-pub(crate) const SPECIAL: &[(Role, &str)] =
-    &[(Role::Radius, "--radius/--center"), (Role::Angles, "--start/--end")];
+pub(crate) const SPECIAL: &[(Role, &str)] = &[
+    (Role::Radius, "--radius/--center"),
+    (Role::Angles, "--start/--end"),
+];
 
 impl CircleArgs {
     /// The circle (or, with `angles`, the arc) in doubles: its NURBS weights are irrational.

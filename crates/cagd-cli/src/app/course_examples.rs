@@ -251,8 +251,8 @@ fn splines(out: &mut String, files: &mut Files) -> Result<(), CliError> {
     let colours = [Colour::Blue, Colour::Orange, Colour::Purple];
     let mut figure = Figure::new("Lecture notes: clamped, natural and closed cubic splines");
     for (k, (title, end, note)) in cases.into_iter().enumerate() {
-        let s = CubicSpline::interpolate(pts.clone(), end.clone())
-            .map_err(lib("course", INTERNAL))?;
+        let s =
+            CubicSpline::interpolate(pts.clone(), end.clone()).map_err(lib("course", INTERNAL))?;
         let (a, rhs) = s.system(&end);
         let _ = writeln!(out, "{title}:\n");
         let mut r = Report::<Q>::new();

@@ -89,7 +89,10 @@ impl Run for SplineCommand {
 
     fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
         let tangent = |cx: &Cx, argument: &str, given: &Option<String>| {
-            given.as_ref().map(|text| matrix(cx, argument, text)).transpose()
+            given
+                .as_ref()
+                .map(|text| matrix(cx, argument, text))
+                .transpose()
         };
         let op = Spline {
             points: points(cx, "POINTS", &self.points, None, self.rows.rows)?,

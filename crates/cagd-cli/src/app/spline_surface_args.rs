@@ -145,7 +145,10 @@ impl SplineSurfaceArgs {
                 .map(|text| load_params::<T>(&cx.limits, argument, text))
                 .transpose()
         };
-        Ok([read("--uknots", &self.uknots)?, read("--vknots", &self.vknots)?])
+        Ok([
+            read("--uknots", &self.uknots)?,
+            read("--vknots", &self.vknots)?,
+        ])
     }
 
     /// The net, degrees, knots and weights of an nrbmak struct (which has its own knots).
@@ -153,8 +156,15 @@ impl SplineSurfaceArgs {
     fn struct_parts<T: LiteralScalar>(
         &self,
         s: NrbStruct<T>,
-    ) -> Result<(PointGrid<T>, [Degree; 2], [Option<Vec<T>>; 2], Option<DMatrix<T>>), CliError>
-    {
+    ) -> Result<
+        (
+            PointGrid<T>,
+            [Degree; 2],
+            [Option<Vec<T>>; 2],
+            Option<DMatrix<T>>,
+        ),
+        CliError,
+    > {
         for (arg, set) in [("--uknots", &self.uknots), ("--vknots", &self.vknots)] {
             if set.is_some() {
                 return Err(usage(
@@ -183,12 +193,16 @@ impl SplineSurfaceArgs {
                 .map(|text| whole_numbers(cx, argument, text))
                 .transpose()
         };
-        let (degree, order) = (parse("--degree", &self.degree)?, parse("--order", &self.order)?);
+        let (degree, order) = (
+            parse("--degree", &self.degree)?,
+            parse("--order", &self.order)?,
+        );
         if degree.is_none() && order.is_none() {
             return Ok(None);
         }
         let direction = |k: usize| {
-            let pick = |v: &Option<Vec<usize>>| v.as_ref().map(|v| v.get(k).copied().unwrap_or(v[0]));
+            let pick =
+                |v: &Option<Vec<usize>>| v.as_ref().map(|v| v.get(k).copied().unwrap_or(v[0]));
             Degree::either(pick(&degree), pick(&order)).map_err(|e| op_error(names, e))
         };
         Ok(Some([direction(0)?, direction(1)?]))
@@ -232,8 +246,7 @@ fn read_struct<T: LiteralScalar>(cx: &Cx, text: &str) -> Result<Option<NrbStruct
     }
     let shown = format!("NET {trimmed}");
     let data = |problem: String| CliError::new(&shown, problem, STRUCT_FORM, ErrorKind::Data);
-    let ws =
-        text_format::read_text_with(&contents, &cx.limits).map_err(|e| data(e.to_string()))?;
+    let ws = text_format::read_text_with(&contents, &cx.limits).map_err(|e| data(e.to_string()))?;
     let found = ws.iter().find(|(n, v)| {
         matches!(v, OValue::Struct(_)) && v.field("coefs").is_some() && name.is_none_or(|m| m == *n)
     });
@@ -256,7 +269,9 @@ fn nrb_struct<T: LiteralScalar>(
         .ok_or_else(|| data("`coefs` is not numeric".into()))?;
     let shape = coefs.shape().to_vec();
     if shape.len() != 3 || shape[0] != 4 {
-        return Err(data(format!("`coefs` is {shape:?}, not a surface's 4×nu×nv")));
+        return Err(data(format!(
+            "`coefs` is {shape:?}, not a surface's 4×nu×nv"
+        )));
     }
     let (nu, nv) = (shape[1], shape[2]);
     let mut homogeneous = Vec::with_capacity(4);

@@ -92,7 +92,10 @@ fn spline_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     )?;
     let (ends, tangents) = ends::<T>(call, q.nrows())?;
     let (start_tangent, end_tangent) = match tangents {
-        Some(m) => (Some(m.columns(0, 1).into_owned()), Some(m.columns(1, 1).into_owned())),
+        Some(m) => (
+            Some(m.columns(0, 1).into_owned()),
+            Some(m.columns(1, 1).into_owned()),
+        ),
         None => (None, None),
     };
     let op = Spline {
@@ -310,7 +313,11 @@ mod tests {
             real(&three, &[0.0, 0.5, 1.0]),
         ];
         let mut sink = VecSink::default();
-        bspline(&Call::new("cagd_bspline", &args, 1, Limits::default()), &mut sink).unwrap();
+        bspline(
+            &Call::new("cagd_bspline", &args, 1, Limits::default()),
+            &mut sink,
+        )
+        .unwrap();
         assert_eq!(sink.get(0).data(), &[0.0, 1.5, 3.0]);
         // A zero weight: the weights are checked first, with the request's words.
         let args = [
@@ -326,7 +333,10 @@ mod tests {
         )
         .unwrap_err();
         assert_eq!(e.identifier(), "cagd:weights");
-        assert!(e.message.starts_with("w: NURBS weights: weight 1 is 0"), "{e}");
+        assert!(
+            e.message.starts_with("w: NURBS weights: weight 1 is 0"),
+            "{e}"
+        );
     }
 
     #[test]
@@ -339,7 +349,11 @@ mod tests {
             chars(&[1, 7], "natural"),
         ];
         let mut sink = VecSink::default();
-        spline(&Call::new("cagd_spline", &args, 2, Limits::default()), &mut sink).unwrap();
+        spline(
+            &Call::new("cagd_spline", &args, 2, Limits::default()),
+            &mut sink,
+        )
+        .unwrap();
         assert_eq!(sink.get(0).data(), &[-0.6875]);
         assert_eq!(sink.get(1).data(), &[1.5, 0.0, -1.5]);
         let col = [2usize, 1];
@@ -351,7 +365,11 @@ mod tests {
             real(&one, &[0.5]),
         ];
         let mut sink = VecSink::default();
-        hermite(&Call::new("cagd_hermite", &args, 2, Limits::default()), &mut sink).unwrap();
+        hermite(
+            &Call::new("cagd_hermite", &args, 2, Limits::default()),
+            &mut sink,
+        )
+        .unwrap();
         assert_eq!(sink.get(0).data(), &[0.5, 0.25]);
         let third = 1.0 / 3.0;
         assert_eq!(
@@ -372,6 +390,10 @@ mod tests {
             &mut VecSink::default(),
         )
         .unwrap_err();
-        assert!(e.message.starts_with("p0, p1, t0, t1: Hermite cubic: expected four vectors"), "{e}");
+        assert!(
+            e.message
+                .starts_with("p0, p1, t0, t1: Hermite cubic: expected four vectors"),
+            "{e}"
+        );
     }
 }

@@ -110,11 +110,16 @@ impl<T: Scalar> Operation<T> for BSpline<T> {
         let mut report = Report::new();
         if self.basis || self.steps {
             let rows = (0..ts.len()).map(|k| curve.basis(&ts[k]));
-            report.push("basis", basis_matrix(rows, ts.len(), curve.control().ncols())?);
+            report.push(
+                "basis",
+                basis_matrix(rows, ts.len(), curve.control().ncols())?,
+            );
         }
         if self.steps {
             for (k, t) in ts.iter().enumerate() {
-                let scheme = curve.de_boor_scheme(t.clone()).map_err(lib(Role::T, DOMAIN_FORM))?;
+                let scheme = curve
+                    .de_boor_scheme(t.clone())
+                    .map_err(lib(Role::T, DOMAIN_FORM))?;
                 report.push(step_name("de_boor", k, ts.len()), de_boor(t, &scheme));
             }
         }
@@ -122,7 +127,12 @@ impl<T: Scalar> Operation<T> for BSpline<T> {
         report.push("result", Value::Matrix(values.clone()));
         let drawing = if self.drawing {
             let line = points_in_order(curve.dim(), &dense, cx, &fill)?;
-            Some(picture("B-spline curve", line, curve.control(), (&values, &ts)))
+            Some(picture(
+                "B-spline curve",
+                line,
+                curve.control(),
+                (&values, &ts),
+            ))
         } else {
             None
         };

@@ -84,7 +84,10 @@ impl<T: Scalar> Operation<T> for BSplineBasis<T> {
                 report.push(step_name("triangle", k, ts.len()), self.triangle(p, t));
             }
         }
-        report.push("t", Value::Matrix(DMatrix::from_column_slice(ts.len(), 1, &ts)));
+        report.push(
+            "t",
+            Value::Matrix(DMatrix::from_column_slice(ts.len(), 1, &ts)),
+        );
         let result = DMatrix::from_fn(ts.len(), n, |i, j| rows[i][j].clone());
         report.push("result", Value::Matrix(result.clone()));
         let drawing = if self.drawing {
@@ -104,7 +107,13 @@ impl<T: Scalar> Operation<T> for BSplineBasis<T> {
 impl<T: Scalar> BSplineBasis<T> {
     /// The triangles at `ts` (twice with steps) and at the picture's `dense`, and the numbers
     /// written: refused above the limit, about the parameters.
-    fn check_cost(&self, p: usize, n: usize, (ts, dense): (&[T], &[T]), cx: &Context) -> Result<()> {
+    fn check_cost(
+        &self,
+        p: usize,
+        n: usize,
+        (ts, dense): (&[T], &[T]),
+        cx: &Context,
+    ) -> Result<()> {
         let knot_bits = max_bits(&self.knots);
         let m = self.knots.len();
         let at = |params: &[T]| {
@@ -112,8 +121,15 @@ impl<T: Scalar> BSplineBasis<T> {
         };
         let times = if self.steps { 2 } else { 1 };
         let work = at(ts).times(times).and(at(dense)).weigh(T::EXACT);
-        let per_t = n as u128 + if self.steps { (p as u128 + 1) * m as u128 } else { 0 };
-        let written = (ts.len() as u128).saturating_mul(per_t).saturating_mul(WRITE_OPS);
+        let per_t = n as u128
+            + if self.steps {
+                (p as u128 + 1) * m as u128
+            } else {
+                0
+            };
+        let written = (ts.len() as u128)
+            .saturating_mul(per_t)
+            .saturating_mul(WRITE_OPS);
         cx.check_work(Role::T, work.saturating_add(written))
     }
 

@@ -165,7 +165,13 @@ pub(crate) fn answer<T: Scalar>(
         let point = DMatrix::from_fn(dim, 1, |k, _| grid[[0, 0, k]].clone());
         report.push("result", Value::Matrix(point));
     } else {
-        push_surface(&mut report, "result", (&us, &vs), grid.clone(), args.at.list);
+        push_surface(
+            &mut report,
+            "result",
+            (&us, &vs),
+            grid.clone(),
+            args.at.list,
+        );
     }
     let mut answer = Answer {
         report,
@@ -173,11 +179,17 @@ pub(crate) fn answer<T: Scalar>(
         mesh: None,
     };
     if pictures {
-        let g = grid_f64(&if single { eval_grid(s.surface, &pus, &pvs)? } else { grid });
+        let g = grid_f64(&if single {
+            eval_grid(s.surface, &pus, &pvs)?
+        } else {
+            grid
+        });
         if args.drawing {
-            let drawing = Drawing::new(s.title)
-                .surface(g.clone(), "surface")
-                .net(net, Colour::Red, "control net");
+            let drawing = Drawing::new(s.title).surface(g.clone(), "surface").net(
+                net,
+                Colour::Red,
+                "control net",
+            );
             answer.drawing = Some(drawing);
         }
         if args.mesh {
@@ -191,9 +203,15 @@ pub(crate) fn answer<T: Scalar>(
 fn eval_grid<T: Scalar>(s: &dyn cagd::Surface<T>, us: &[T], vs: &[T]) -> Result<PointGrid<T>> {
     let shape = (us.len(), vs.len(), s.dim());
     let mut out = vec![T::zero(); shape.0 * shape.1 * shape.2];
-    s.eval_grid_into(us, vs, &mut out).map_err(lib(Role::Grid, DOMAIN_FORM))?;
+    s.eval_grid_into(us, vs, &mut out)
+        .map_err(lib(Role::Grid, DOMAIN_FORM))?;
     PointGrid::from_vec(shape, out).ok_or_else(|| {
-        crate::OpError::new(Role::Grid, crate::Kind::Internal, "a grid of the wrong length", "a grid")
+        crate::OpError::new(
+            Role::Grid,
+            crate::Kind::Internal,
+            "a grid of the wrong length",
+            "a grid",
+        )
     })
 }
 

@@ -65,10 +65,12 @@ impl Circle {
     /// The curve: a radius or centre at fault is about the radius; an arc whose full circle
     /// exists but which does not, about its angles.
     fn curve(&self) -> Result<NurbsCurve<f64>> {
-        let circle = NurbsCurve::circle(self.radius, &self.center).map_err(lib(Role::Radius, CIRCLE_FORM))?;
+        let circle = NurbsCurve::circle(self.radius, &self.center)
+            .map_err(lib(Role::Radius, CIRCLE_FORM))?;
         match self.angles {
             None => Ok(circle),
-            Some((a, b)) => NurbsCurve::arc(self.radius, &self.center, a, b).map_err(lib(Role::Angles, ANGLES_FORM)),
+            Some((a, b)) => NurbsCurve::arc(self.radius, &self.center, a, b)
+                .map_err(lib(Role::Angles, ANGLES_FORM)),
         }
     }
 }
@@ -76,7 +78,14 @@ impl Circle {
 impl Operation<f64> for Circle {
     fn run(&self, cx: &mut Context) -> Result<Answer<f64>> {
         let curve = self.curve()?;
-        let what = (if self.angles.is_some() { "circular arc" } else { "circle" }, DOMAIN_FORM);
+        let what = (
+            if self.angles.is_some() {
+                "circular arc"
+            } else {
+                "circle"
+            },
+            DOMAIN_FORM,
+        );
         let ts = knots::params_within(&self.t, Role::T, (&0.0, &1.0), what, cx)?;
         let dense = picture_params(self.drawing, (&0.0, &1.0))?;
         let per = curve.point_cost(max_bits(&ts));
@@ -85,7 +94,10 @@ impl Operation<f64> for Circle {
         let values = points_in_order(curve.dim(), &ts, cx, &fill)?;
         let mut report = Report::new();
         if self.steps {
-            report.push("coefs", Value::Matrix(curve.homogeneous().control().clone()));
+            report.push(
+                "coefs",
+                Value::Matrix(curve.homogeneous().control().clone()),
+            );
         }
         report.push("knots", Value::row(curve.knots()));
         report.push("control", Value::Matrix(curve.points()));
@@ -94,7 +106,11 @@ impl Operation<f64> for Circle {
         report.push("result", Value::Matrix(values.clone()));
         let drawing = if self.drawing {
             let line: DMatrix<f64> = points_in_order(curve.dim(), &dense, cx, &fill)?;
-            let title = if self.angles.is_some() { "circular arc (NURBS)" } else { "circle (NURBS)" };
+            let title = if self.angles.is_some() {
+                "circular arc (NURBS)"
+            } else {
+                "circle (NURBS)"
+            };
             Some(picture(title, line, &curve.points(), (&values, &ts)))
         } else {
             None

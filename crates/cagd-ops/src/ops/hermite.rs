@@ -78,9 +78,12 @@ impl<T: Scalar> Operation<T> for Hermite<T> {
     fn run(&self, cx: &mut Context) -> Result<Answer<T>> {
         let h = self.cubic()?;
         let (zero, one) = (T::zero(), T::one());
-        let ts = self
-            .t
-            .resolve(Role::T, (&zero, &one), "the cubic is extrapolated there", cx)?;
+        let ts = self.t.resolve(
+            Role::T,
+            (&zero, &one),
+            "the cubic is extrapolated there",
+            cx,
+        )?;
         // The Bézier form (drawn, and printed with steps): its inner points x ± x'/3 overflow
         // for end points and tangents near ±1.8e308.
         let bezier = h.to_bezier().map_err(lib(
@@ -88,7 +91,8 @@ impl<T: Scalar> Operation<T> for Hermite<T> {
             "end points and tangents whose Bézier points x ± x'/3 stay within ±1.8e308",
         ))?;
         let dense = if self.drawing {
-            cagd::linspace::linspace_in(&zero, &one, PICTURE_SAMPLES).map_err(lib(Role::T, "a curve"))?
+            cagd::linspace::linspace_in(&zero, &one, PICTURE_SAMPLES)
+                .map_err(lib(Role::T, "a curve"))?
         } else {
             Vec::new()
         };
@@ -100,7 +104,11 @@ impl<T: Scalar> Operation<T> for Hermite<T> {
             }
             per.times(params.len() as u128)
         };
-        cx.check_cost(Role::T, at(&ts, self.steps).and(at(&dense, false)), T::EXACT)?;
+        cx.check_cost(
+            Role::T,
+            at(&ts, self.steps).and(at(&dense, false)),
+            T::EXACT,
+        )?;
         let mut report = Report::new();
         if self.steps {
             let rows: Vec<[T; 4]> = ts.iter().map(|t| hermite_basis(t.clone())).collect();

@@ -22,7 +22,8 @@ use crate::params::check_given;
 use crate::{Answer, Context, Operation, Report, Role, Value};
 
 /// The form of the knots to insert.
-pub const INSERT_FORM: &str = "knots strictly inside the domain [u_p, u_n], each at most p + 1 times in the result";
+pub const INSERT_FORM: &str =
+    "knots strictly inside the domain [u_p, u_n], each at most p + 1 times in the result";
 
 /// Knots inserted into a B-spline or NURBS curve.
 ///
@@ -95,7 +96,9 @@ impl<T: Scalar> Operation<T> for InsertKnot<T> {
         let insertion = curve.insertion_cost(self.insert.len(), max_bits(&self.insert));
         let (a, b) = curve.domain();
         let dense = picture_params(self.drawing, (&a, &b))?;
-        let picture = curve.point_cost(max_bits(&dense)).times(dense.len() as u128 + 1);
+        let picture = curve
+            .point_cost(max_bits(&dense))
+            .times(dense.len() as u128 + 1);
         cx.check_cost(Role::At, insertion.times(times).and(picture), T::EXACT)?;
         let refined = curve
             .insert_knots(&self.insert)
@@ -146,7 +149,9 @@ impl<T: Scalar> InsertKnot<T> {
                 let c = projected(curve)?;
                 points_in_order(c.dim(), us, cx, &|u, out| c.try_eval_many_into(u, out))
             } else {
-                points_in_order(curve.dim(), us, cx, &|u, out| curve.try_eval_many_into(u, out))
+                points_in_order(curve.dim(), us, cx, &|u, out| {
+                    curve.try_eval_many_into(u, out)
+                })
             }
         };
         Ok(Drawing::new("knot insertion (Boehm)")

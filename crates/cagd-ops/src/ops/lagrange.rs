@@ -92,10 +92,15 @@ impl<T: Scalar> Operation<T> for Lagrange<T> {
             report.push("result", Value::Matrix(result.clone()));
             return Ok(self.answer(report, &ts, &result));
         }
-        let basis = NodesInAnyOrder::new(self.nodes.clone()).map_err(lib(Role::Nodes, NODES_FORM))?;
+        let basis =
+            NodesInAnyOrder::new(self.nodes.clone()).map_err(lib(Role::Nodes, NODES_FORM))?;
         if self.coefficients {
             let g = blending_matrix(&self.nodes).map_err(lib(Role::Nodes, NODES_FORM))?;
-            if let Some(v) = self.values.as_ref().filter(|v| v.ncols() == self.nodes.len()) {
+            if let Some(v) = self
+                .values
+                .as_ref()
+                .filter(|v| v.ncols() == self.nodes.len())
+            {
                 report.push("polynomial", Value::Matrix(T::mat_mul(v, &g)));
             }
             report.push("coefficients", Value::Matrix(g));
@@ -112,7 +117,11 @@ impl<T: Scalar> Operation<T> for Lagrange<T> {
                 }
                 let mut cols = Vec::with_capacity(ts.len());
                 for t in &ts {
-                    cols.push(basis.interpolate(values, t).map_err(lib(Role::Points, VALUES_FORM))?);
+                    cols.push(
+                        basis
+                            .interpolate(values, t)
+                            .map_err(lib(Role::Points, VALUES_FORM))?,
+                    );
                 }
                 DMatrix::from_columns(&cols)
             }
@@ -126,9 +135,13 @@ impl<T: Scalar> Lagrange<T> {
     /// The smallest and the largest node.
     fn span(&self) -> (T, T) {
         let pick = |keep: fn(&T, &T) -> bool| {
-            self.nodes
-                .iter()
-                .fold(self.nodes[0].clone(), |a, x| if keep(x, &a) { x.clone() } else { a })
+            self.nodes.iter().fold(self.nodes[0].clone(), |a, x| {
+                if keep(x, &a) {
+                    x.clone()
+                } else {
+                    a
+                }
+            })
         };
         (pick(|x, a| x < a), pick(|x, a| x > a))
     }
@@ -142,7 +155,13 @@ impl<T: Scalar> Lagrange<T> {
         let k = ts.len() as u128;
         let (per, written) = match &self.values {
             Some(v) => (
-                Barycentric::<T>::interpolation_cost(m1, v.nrows(), param_bits, node_bits, max_bits(v.iter())),
+                Barycentric::<T>::interpolation_cost(
+                    m1,
+                    v.nrows(),
+                    param_bits,
+                    node_bits,
+                    max_bits(v.iter()),
+                ),
                 0,
             ),
             None => (
@@ -159,18 +178,28 @@ impl<T: Scalar> Lagrange<T> {
     /// The piecewise-linear interpolant of every row of the values at `ts`.
     fn linear_values(&self, ts: &[T]) -> Result<DMatrix<T>> {
         let values = self.values.as_ref().ok_or_else(|| {
-            OpError::new(Role::Points, Kind::Usage, "missing", "values at the nodes to interpolate piecewise linearly")
+            OpError::new(
+                Role::Points,
+                Kind::Usage,
+                "missing",
+                "values at the nodes to interpolate piecewise linearly",
+            )
         })?;
         let mut rows = Vec::with_capacity(values.nrows());
         for r in 0..values.nrows() {
-            let f = PiecewiseLinear::new(self.nodes.clone(), values.row(r).iter().cloned().collect())
-                .map_err(|e| match e {
-                    cagd::Error::ShapeMismatch { .. } => OpError::library(Role::Points, e, VALUES_FORM),
+            let f =
+                PiecewiseLinear::new(self.nodes.clone(), values.row(r).iter().cloned().collect())
+                    .map_err(|e| match e {
+                    cagd::Error::ShapeMismatch { .. } => {
+                        OpError::library(Role::Points, e, VALUES_FORM)
+                    }
                     _ => OpError::library(Role::Nodes, e, "increasing nodes, at least two"),
                 })?;
             rows.push(ts.iter().map(|t| f.eval(t.clone())).collect::<Vec<T>>());
         }
-        Ok(DMatrix::from_fn(rows.len(), ts.len(), |r, k| rows[r][k].clone()))
+        Ok(DMatrix::from_fn(rows.len(), ts.len(), |r, k| {
+            rows[r][k].clone()
+        }))
     }
 
     /// The answer with its picture: the interpolant through the data (numbers as `(t, p(t))`
@@ -183,7 +212,11 @@ impl<T: Scalar> Lagrange<T> {
                 } else {
                     (to_f64(result), to_f64(values))
                 };
-                let title = if self.linear { "piecewise-linear interpolation" } else { "Lagrange interpolation" };
+                let title = if self.linear {
+                    "piecewise-linear interpolation"
+                } else {
+                    "Lagrange interpolation"
+                };
                 Some(
                     Drawing::new(title)
                         .curve(line.clone(), Colour::Blue, "interpolant")

@@ -79,7 +79,13 @@ impl<T: Scalar> Nurbs<T> {
     /// [`crate::Kind::Shape`], [`crate::Kind::Weights`] about the weights; the rules of
     /// [`crate::knots`].
     pub fn curve(&self, cx: &Context) -> Result<NurbsCurve<T>> {
-        curve(&self.control, &self.weights, self.degree, self.knots.as_deref(), cx)
+        curve(
+            &self.control,
+            &self.weights,
+            self.degree,
+            self.knots.as_deref(),
+            cx,
+        )
     }
 }
 
@@ -130,7 +136,12 @@ impl<T: Scalar> Operation<T> for Nurbs<T> {
         report.push("result", Value::Matrix(values.clone()));
         let drawing = if self.drawing {
             let line = points_in_order(curve.dim(), &dense, cx, &fill)?;
-            Some(picture("NURBS curve", line, &curve.points(), (&values, &ts)))
+            Some(picture(
+                "NURBS curve",
+                line,
+                &curve.points(),
+                (&values, &ts),
+            ))
         } else {
             None
         };

@@ -9,8 +9,8 @@ use cagd::Scalar;
 use nalgebra::DMatrix;
 
 use super::bspline_surface::{answer, BSplineSurface, Evaluated, NET_FORM};
-use super::surface::grid_f64;
 use super::nurbs::WEIGHTS_FORM;
+use super::surface::grid_f64;
 use crate::error::{OpError, Result};
 use crate::{Answer, Context, Operation, Role};
 
@@ -20,7 +20,8 @@ use crate::{Answer, Context, Operation, Role};
 /// use cagd_ops::ops::{BSplineSurface, NurbsSurface};
 /// use cagd_ops::knots::Degree;
 /// use cagd_ops::{Context, Operation, Params};
-/// /// use nalgebra::DMatrix;
+/// use cagd::grid::PointGrid;
+/// use nalgebra::DMatrix;
 /// // z = 0, 1, 1, 3 with the weight 3 on the last: S(½, ½) = (0 + 1 + 1 + 9)/6.
 /// let mut spline = BSplineSurface::new(PointGrid::from_vec((2, 2, 1), vec![0.0, 1.0, 1.0, 3.0]).unwrap());
 /// spline.degrees = [Degree::Degree(1); 2];

@@ -103,20 +103,34 @@ impl<T: Scalar> Spline<T> {
 
     /// The end condition: chosen or by default, its tangents checked.
     fn end_condition(&self) -> Result<EndCondition<T>> {
-        let given = [(Role::T0, &self.start_tangent), (Role::T1, &self.end_tangent)];
+        let given = [
+            (Role::T0, &self.start_tangent),
+            (Role::T1, &self.end_tangent),
+        ];
         let any = given.iter().any(|(_, t)| t.is_some());
-        let chosen = self.ends.unwrap_or(if any { Ends::Clamped } else { Ends::Natural });
+        let chosen = self
+            .ends
+            .unwrap_or(if any { Ends::Clamped } else { Ends::Natural });
         if chosen == Ends::Clamped {
             let need = |(role, t): (Role, &Option<DMatrix<T>>)| match t {
                 Some(m) => vector(role, m),
-                None => Err(OpError::new(role, Kind::Usage, "missing with clamped ends", "a tangent vector")),
+                None => Err(OpError::new(
+                    role,
+                    Kind::Usage,
+                    "missing with clamped ends",
+                    "a tangent vector",
+                )),
             };
             return Ok(EndCondition::Clamped {
                 start: need(given[0])?,
                 end: need(given[1])?,
             });
         }
-        let name = if chosen == Ends::Natural { "natural" } else { "closed" };
+        let name = if chosen == Ends::Natural {
+            "natural"
+        } else {
+            "closed"
+        };
         // A tangent that the end condition ignores is a slip, not a choice.
         if let Some((role, _)) = given.iter().find(|(_, t)| t.is_some()) {
             return Err(OpError::new(
@@ -126,7 +140,11 @@ impl<T: Scalar> Spline<T> {
                 "clamped ends with both tangents, or no tangents",
             ));
         }
-        Ok(if chosen == Ends::Natural { EndCondition::Natural } else { EndCondition::Closed })
+        Ok(if chosen == Ends::Natural {
+            EndCondition::Natural
+        } else {
+            EndCondition::Closed
+        })
     }
 
     /// The parameters of the points.
@@ -134,28 +152,31 @@ impl<T: Scalar> Spline<T> {
         let m = self.points.ncols();
         let count = m + usize::from(closed);
         match &self.knots {
-            Knots::Given(list) if list.len() != count => Err(OpError::new(
-                Role::Nodes,
-                Kind::Shape,
-                format!("{} value(s) for {m} point(s)", list.len()),
-                format!(
+            Knots::Given(list) if list.len() != count => {
+                Err(OpError::new(
+                    Role::Nodes,
+                    Kind::Shape,
+                    format!("{} value(s) for {m} point(s)", list.len()),
+                    format!(
                     "uniform, chord, centripetal, or {count} increasing values (one per point{})",
                     if closed { " and one for the return to the first" } else { "" }
                 ),
-            )),
-            Knots::Given(list) => Ok(list.clone()),
-            Knots::Chosen(Parametrization::Uniform) => {
-                Parametrization::Uniform.params(&self.points, closed).map_err(lib(Role::Points, POINTS_FORM))
+                ))
             }
+            Knots::Given(list) => Ok(list.clone()),
+            Knots::Chosen(Parametrization::Uniform) => Parametrization::Uniform
+                .params(&self.points, closed)
+                .map_err(lib(Role::Points, POINTS_FORM)),
             Knots::Chosen(_) if T::EXACT => Err(OpError::new(
                 Role::Nodes,
                 Kind::Usage,
                 "chord-length and centripetal parameters are sums of square roots, not rational",
                 "uniform parameters or a list of values in exact arithmetic",
             )),
-            Knots::Chosen(c) => c
-                .params(&self.points, closed)
-                .map_err(lib(Role::Points, "distinct consecutive points for chord-length or centripetal parameters")),
+            Knots::Chosen(c) => c.params(&self.points, closed).map_err(lib(
+                Role::Points,
+                "distinct consecutive points for chord-length or centripetal parameters",
+            )),
         }
     }
 }
@@ -176,9 +197,18 @@ impl<T: Scalar> Operation<T> for Spline<T> {
         let s = CubicSpline::interpolate_with_params(self.points.clone(), params, end.clone())
             .map_err(|e| {
                 let role = match &e {
-                    cagd::Error::InvalidArgument { what: "spline parameters", .. }
-                    | cagd::Error::ShapeMismatch { what: "spline parameters", .. } => Role::Nodes,
-                    cagd::Error::ShapeMismatch { what: "spline end tangents", .. } => Role::T0,
+                    cagd::Error::InvalidArgument {
+                        what: "spline parameters",
+                        ..
+                    }
+                    | cagd::Error::ShapeMismatch {
+                        what: "spline parameters",
+                        ..
+                    } => Role::Nodes,
+                    cagd::Error::ShapeMismatch {
+                        what: "spline end tangents",
+                        ..
+                    } => Role::T0,
                     _ => Role::Points,
                 };
                 OpError::library(role, e, POINTS_FORM)
@@ -201,8 +231,12 @@ impl<T: Scalar> Operation<T> for Spline<T> {
         report.push("result", Value::Matrix(values.clone()));
         let drawing = if self.drawing {
             let (first, last) = ends_of(&s);
-            let dense = cagd::linspace::linspace_in(&first, &last, SAMPLES_PER_SEGMENT * s.segment_count() + 1)
-                .map_err(lib(Role::T, "a curve"))?;
+            let dense = cagd::linspace::linspace_in(
+                &first,
+                &last,
+                SAMPLES_PER_SEGMENT * s.segment_count() + 1,
+            )
+            .map_err(lib(Role::T, "a curve"))?;
             let line = eval_points(&s, &dense, Role::T, cx)?;
             Some(
                 Drawing::new("interpolating cubic spline")
@@ -232,7 +266,10 @@ impl<T: Scalar> Spline<T> {
                 let count = SAMPLES_PER_SEGMENT * s.segment_count() + 1;
                 cx.limits
                     .check_samples("samples (10 per segment)", count)
-                    .map_err(lib(Role::Points, "fewer points (10 samples per segment), or given parameters"))?;
+                    .map_err(lib(
+                        Role::Points,
+                        "fewer points (10 samples per segment), or given parameters",
+                    ))?;
                 crate::params::samples(count, (&first, &last), cx)
             }
             // A closed spline is periodic: every parameter is on the curve.
@@ -240,7 +277,12 @@ impl<T: Scalar> Spline<T> {
                 crate::params::check_given(Role::T, ts, cx)?;
                 Ok(ts.clone())
             }
-            t => t.resolve(Role::T, (&first, &last), "the end segments are extended there", cx),
+            t => t.resolve(
+                Role::T,
+                (&first, &last),
+                "the end segments are extended there",
+                cx,
+            ),
         }
     }
 }
@@ -257,7 +299,9 @@ fn ends_of<T: Scalar>(s: &CubicSpline<T>) -> (T, T) {
 fn work<T: Scalar>(points: &DMatrix<T>, end: &EndCondition<T>, ts: Option<&[T]>) -> u128 {
     let (d, n) = (points.nrows(), points.ncols());
     let data_bits = match end {
-        EndCondition::Clamped { start, end } => max_bits(points.iter().chain(start.iter()).chain(end.iter())),
+        EndCondition::Clamped { start, end } => {
+            max_bits(points.iter().chain(start.iter()).chain(end.iter()))
+        }
         EndCondition::Closed | EndCondition::Natural => max_bits(points.iter()),
     };
     let default_samples = (SAMPLES_PER_SEGMENT * n) as u128 + 1;
@@ -267,7 +311,11 @@ fn work<T: Scalar>(points: &DMatrix<T>, end: &EndCondition<T>, ts: Option<&[T]>)
     });
     interpolation_cost(n, d, end, data_bits)
         .weigh(T::EXACT)
-        .saturating_add(sample_cost(n, d, data_bits, param_bits).times(samples).weigh(T::EXACT))
+        .saturating_add(
+            sample_cost(n, d, data_bits, param_bits)
+                .times(samples)
+                .weigh(T::EXACT),
+        )
 }
 
 /// Each segment's Hermite data `[x_k, x_{k+1}, h_k x'_k, h_k x'_{k+1}]` (over its own
