@@ -77,21 +77,12 @@ pub trait Operation<T: Scalar> {
 pub fn execute<T: Scalar, O: Operation<T> + ?Sized>(op: &O, cx: &mut Context) -> Result<Answer<T>> {
     let answer = op.run(cx)?;
     if let Some((name, index, value)) = answer.report.first_non_finite() {
-        // The library's words for a non-finite value underneath, as every front end had them.
-        let source = cagd::Error::NonFinite {
-            what: "result",
-            index,
-            value,
-        };
-        return Err(OpError {
-            source: Some(Box::new(source)),
-            ..OpError::new(
-                Role::Result,
-                Kind::Overflow,
-                format!("the result overflows the range of doubles ({name}, element {index}: {value})"),
-                "inputs whose result stays within ±1.8e308 (smaller coordinates, parameters or orders)",
-            )
-        });
+        return Err(OpError::new(
+            Role::Result,
+            Kind::Overflow,
+            format!("the result overflows the range of doubles ({name}, element {index}: {value})"),
+            "inputs whose result stays within ±1.8e308 (smaller coordinates, parameters or orders)",
+        ));
     }
     Ok(answer)
 }

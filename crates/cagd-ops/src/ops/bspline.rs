@@ -207,6 +207,9 @@ pub(crate) fn picture<T: Scalar>(
 /// Points evaluated between interrupt checks.
 const CHUNK: usize = 4096;
 
+/// An evaluation of a spline at parameters into a buffer (`d` values per parameter).
+pub(crate) type Fill<'a, T> = dyn Fn(&[T], &mut [T]) -> cagd::Result<()> + 'a;
+
 /// The points at `ts` (in the domain) by `fill` — a spline's evaluation in the operation
 /// order of octave-nurbs (`bspeval`, `nrbeval`), the values of `try_eval` bit for bit —
 /// `d × k`, a chunk at a time between which the front end may interrupt.
@@ -214,7 +217,7 @@ pub(crate) fn points_in_order<T: Scalar>(
     d: usize,
     ts: &[T],
     cx: &Context,
-    fill: &dyn Fn(&[T], &mut [T]) -> cagd::Result<()>,
+    fill: &Fill<'_, T>,
 ) -> Result<DMatrix<T>> {
     let mut out = DMatrix::from_element(d, ts.len(), T::zero());
     for (chunk, buffer) in ts

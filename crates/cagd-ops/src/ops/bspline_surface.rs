@@ -74,7 +74,7 @@ impl<T: Scalar> BSplineSurface<T> {
     }
 
     /// The degrees and the knots of both directions, checked.
-    pub(crate) fn knots(&self, cx: &Context) -> Result<((usize, usize), [Vec<T>; 2])> {
+    pub(crate) fn knots(&self, cx: &Context) -> Result<DegreesAndKnots<T>> {
         let (nu, nv, _) = self.net.dim();
         let (p, q) = (self.degrees[0].resolve(cx)?, self.degrees[1].resolve(cx)?);
         let ku = knots::knots_or_clamped(self.knots[0].as_deref(), p, nu, knots::SURFACE_U)?;
@@ -106,6 +106,9 @@ impl<T: Scalar> Operation<T> for BSplineSurface<T> {
         answer(self, evaluated, grid_f64(&self.net), cx)
     }
 }
+
+/// The degrees `(p, q)` and the knots along `u` and `v`.
+pub(crate) type DegreesAndKnots<T> = ((usize, usize), [Vec<T>; 2]);
 
 /// A surface as the answer needs it: the surface, the cost of a point at parameters of so
 /// many bits, its degrees and knots, the picture's title.
