@@ -18,6 +18,9 @@
 //! | a sampled curve looked up | [`SampledCurve::eval_cost`](crate::SampledCurve::eval_cost) |
 //! | Hermite basis, Ferguson cubic | [`hermite::basis_cost`](crate::hermite::basis_cost), [`HermiteCubic::eval_cost`](crate::HermiteCubic::eval_cost) |
 //! | B-spline (and NURBS) basis and curve | [`bspline::basis_cost`](crate::bspline::basis_cost), [`bspline::curve_point_cost`](crate::bspline::curve_point_cost) |
+//! | the Cox–de Boor triangle of a knot vector | [`bspline::triangle_cost`](crate::bspline::triangle_cost) |
+//! | knot insertion (Boehm) | [`BSplineCurve::insertion_cost`](crate::BSplineCurve::insertion_cost) |
+//! | B-spline and NURBS surfaces at a point | [`BSplineSurface::point_cost`](crate::bspline::BSplineSurface::point_cost), [`NurbsSurface::point_cost`](crate::nurbs::NurbsSurface::point_cost) |
 //! | interpolating cubic spline | [`spline::interpolation_cost`](crate::spline::interpolation_cost), [`spline::sample_cost`](crate::spline::sample_cost) |
 //! | Lagrange basis (barycentric) | [`Lagrange::weights_cost`](crate::lagrange::Lagrange::weights_cost), [`Lagrange::basis_cost`](crate::lagrange::Lagrange::basis_cost), [`Lagrange::interpolation_cost`](crate::lagrange::Lagrange::interpolation_cost) |
 //! | Coons patches, Gordon surfaces (blends of curves) | [`coons::coons_point_cost`](crate::coons::coons_point_cost), [`coons::bicubic_point_cost`](crate::coons::bicubic_point_cost), [`gordon::gordon_point_cost`](crate::gordon::gordon_point_cost), all through [`blended`] |

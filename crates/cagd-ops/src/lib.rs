@@ -30,6 +30,7 @@ pub mod curves;
 pub mod drawing;
 pub mod error;
 pub mod format;
+pub mod knots;
 pub mod layout;
 pub mod ops;
 pub mod output;

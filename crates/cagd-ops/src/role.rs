@@ -19,6 +19,10 @@ pub enum Role {
     Order,
     /// A knot vector.
     Knots,
+    /// The knot vector of a surface along `u`.
+    UKnots,
+    /// The knot vector of a surface along `v`.
+    VKnots,
     /// NURBS weights.
     Weights,
     /// The parameter interval `[a, b]` of a curve.
@@ -89,6 +93,8 @@ pub enum Role {
     T0,
     /// Hermite data: the end tangent.
     T1,
+    /// Hermite data together (`p0`, `p1`, `t0`, `t1`: where they must agree).
+    Hermite,
     /// A representation converted from.
     From,
     /// A representation converted to.
@@ -123,6 +129,8 @@ impl Role {
             Role::Degree => "degree",
             Role::Order => "order",
             Role::Knots => "knots",
+            Role::UKnots => "u_knots",
+            Role::VKnots => "v_knots",
             Role::Weights => "weights",
             Role::Interval => "interval",
             Role::T => "t",
@@ -158,6 +166,7 @@ impl Role {
             Role::P1 => "p1",
             Role::T0 => "t0",
             Role::T1 => "t1",
+            Role::Hermite => "hermite",
             Role::From => "from",
             Role::To => "to",
             Role::By => "by",

@@ -58,16 +58,6 @@ impl Run for patches::GordonCommand {
     }
 }
 
-impl Run for lagrange::LagrangeCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        lagrange::lagrange::<T>(&cx.limits, self)
-    }
-}
-
 impl Run for bezier::BernsteinCommand {
     fn exact(&self) -> bool {
         self.output.exact
@@ -85,46 +75,6 @@ impl Run for bezier::DerivativeCommand {
 
     fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
         bezier::derivative::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for course::SplineCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        course::spline::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for course::HermiteCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        course::hermite::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for course::BSplineCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        course::bspline::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for course::NurbsCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        course::nurbs::<T>(&cx.limits, self)
     }
 }
 
@@ -155,26 +105,6 @@ impl Run for subdivide::SubdivideCommand {
 
     fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
         subdivide::subdivide::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for insert_knot::InsertKnotCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        insert_knot::insert_knot::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for bspline_basis::BSplineBasisCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        bspline_basis::bspline_basis::<T>(&cx.limits, self)
     }
 }
 
@@ -215,38 +145,6 @@ impl Run for ferguson::FergusonCommand {
 
     fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
         ferguson::ferguson::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for bspline_surface::BSplineSurfaceCommand {
-    fn exact(&self) -> bool {
-        self.args.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        bspline_surface::bspline_surface::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for nurbs_surface::NurbsSurfaceCommand {
-    fn exact(&self) -> bool {
-        self.args.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        nurbs_surface::nurbs_surface::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for circle::CircleCommand {
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        circle::circle(&cx.limits, self)
-    }
-}
-
-impl Run for circle::ArcCommand {
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        circle::arc(&cx.limits, self)
     }
 }
 

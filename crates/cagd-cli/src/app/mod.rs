@@ -11,7 +11,11 @@ use nalgebra::DMatrix;
 
 mod answer;
 
+mod arc;
+
 mod bezier;
+
+mod bspline;
 
 mod boundary;
 
@@ -39,13 +43,13 @@ mod bspline_surface;
 
 mod circle;
 
+mod circle_args;
+
 mod common;
 
 mod continuity;
 
 mod convert;
-
-mod course;
 
 mod course_examples;
 
@@ -57,9 +61,13 @@ mod elevate;
 
 mod ferguson;
 
+mod hermite;
+
 mod insert_knot;
 
 mod integrate;
+
+mod nurbs;
 
 mod nurbs_surface;
 
@@ -73,7 +81,11 @@ mod ruled;
 
 mod scheme;
 
-mod spline_steps;
+mod spline;
+
+mod spline_args;
+
+mod spline_surface_args;
 
 mod subdivide;
 
@@ -135,10 +147,10 @@ subcommands! {
     Lagrange(lagrange::LagrangeCommand),
     Bernstein(bezier::BernsteinCommand),
     Derivative(bezier::DerivativeCommand),
-    Spline(course::SplineCommand),
-    Hermite(course::HermiteCommand),
-    Bspline(course::BSplineCommand),
-    Nurbs(course::NurbsCommand),
+    Spline(spline::SplineCommand),
+    Hermite(hermite::HermiteCommand),
+    Bspline(bspline::BSplineCommand),
+    Nurbs(nurbs::NurbsCommand),
     Convert(convert::ConvertCommand),
     Elevate(elevate::ElevateCommand),
     Subdivide(subdivide::SubdivideCommand),
@@ -152,7 +164,7 @@ subcommands! {
     BsplineSurface(bspline_surface::BSplineSurfaceCommand),
     NurbsSurface(nurbs_surface::NurbsSurfaceCommand),
     Circle(circle::CircleCommand),
-    Arc(circle::ArcCommand),
+    Arc(arc::ArcCommand),
     Curve(CurveCommand),
     Surface(SurfaceCommand),
     Serve(crate::serve::ServeCommand),

@@ -6,6 +6,16 @@
 //! | [`DeCasteljau`] | points of a Bézier curve, with the de Casteljau scheme |
 //! | [`Coons`] | a Coons patch of any four boundary curves, with its parts |
 //! | [`Curvature`] | the curvature and Frenet frame of a Bézier, B-spline or NURBS curve |
+//! | [`BSpline`] | points of a B-spline curve, with its basis and de Boor's scheme |
+//! | [`Nurbs`] | points of a NURBS curve, with its rational basis |
+//! | [`InsertKnot`] | knots inserted into a B-spline or NURBS curve, Boehm's steps |
+//! | [`BSplineBasis`] | the basis functions of a knot vector, the Cox–de Boor triangle |
+//! | [`Lagrange`] | the Lagrange basis, or the polynomial through values at nodes |
+//! | [`Hermite`] | a Hermite (Ferguson) cubic, with its basis and Bézier points |
+//! | [`Spline`] | an interpolating cubic spline, with its system and segments |
+//! | [`BSplineSurface`] | a tensor-product B-spline surface, with its bases |
+//! | [`NurbsSurface`] | a tensor-product NURBS surface |
+//! | [`Circle`] | a circle or a circular arc as an exact NURBS curve |
 
 use cagd::{Curve, Scalar};
 use nalgebra::DMatrix;
@@ -13,20 +23,45 @@ use nalgebra::DMatrix;
 use crate::error::{lib, Result};
 use crate::{number_text, Context, Role};
 
+mod bspline;
+mod bspline_basis;
+mod bspline_surface;
+mod circle;
 pub mod coons;
 mod curvature;
 mod decasteljau;
+pub mod hermite;
+mod insert_knot;
+mod lagrange;
+mod nurbs;
+mod nurbs_surface;
+pub mod spline;
 pub mod surface;
 
+pub use bspline::BSpline;
+pub use bspline_basis::BSplineBasis;
+pub use bspline_surface::BSplineSurface;
+pub use circle::Circle;
 pub use coons::{Blend, Coons};
 pub use curvature::Curvature;
 pub use decasteljau::DeCasteljau;
+pub use hermite::Hermite;
+pub use insert_knot::InsertKnot;
+pub use lagrange::Lagrange;
+pub use nurbs::Nurbs;
+pub use nurbs_surface::NurbsSurface;
+pub use spline::Spline;
 
 /// How much more steps cost than the points alone: each scheme is computed again and laid out
 /// as text, about as many numbers as operations, each number some 50 operations to format
 /// and about 16 bytes of text. So a request whose schemes would fill gigabytes of memory is
 /// refused up front like any other large work.
 pub const STEPS_FACTOR: u128 = 50;
+
+/// The operations of writing one number of an answer out as text: an answer that is mostly
+/// numbers (a basis matrix) counts them with its work, so that a request whose output would
+/// fill gigabytes is refused up front.
+pub const WRITE_OPS: u128 = 100;
 
 /// Points evaluated between two interrupt checks.
 const CHUNK: usize = 4096;
