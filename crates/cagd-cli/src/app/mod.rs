@@ -17,6 +17,8 @@ mod boundary;
 
 mod coons;
 
+mod coons_bicubic;
+
 mod curve_arg;
 
 mod cx;
@@ -49,11 +51,13 @@ mod course_examples;
 
 mod curve;
 
-mod discrete_parts;
+mod discrete_coons;
 
 mod elevate;
 
 mod ferguson;
+
+mod gordon;
 
 mod insert_knot;
 
@@ -127,9 +131,9 @@ subcommands! {
     Decasteljau(decasteljau::DecasteljauCommand),
     BezierPatch(bezier::BezierPatchCommand),
     Coons(coons::CoonsCommand),
-    CoonsBicubic(patches::CoonsBicubicCommand),
-    DiscreteCoons(patches::DiscreteCoonsCommand),
-    Gordon(patches::GordonCommand),
+    CoonsBicubic(coons_bicubic::CoonsBicubicCommand),
+    DiscreteCoons(discrete_coons::DiscreteCoonsCommand),
+    Gordon(gordon::GordonCommand),
     Lagrange(lagrange::LagrangeCommand),
     Bernstein(bezier::BernsteinCommand),
     Derivative(bezier::DerivativeCommand),

@@ -5,6 +5,11 @@
 //! |---|---|
 //! | [`DeCasteljau`] | points of a Bézier curve, with the de Casteljau scheme |
 //! | [`Coons`] | a Coons patch of any four boundary curves, with its parts |
+//! | [`CoonsBicubic`] | a bicubically blended Coons patch of any curves, with its parts |
+//! | [`DiscreteCoons`] | the interior of a net from its boundary, by formula or mask |
+//! | [`Gordon`] | a Gordon surface of a network of any curves, with its parts |
+//! | [`Ruled`] | the ruled surface between any two curves |
+//! | [`Ferguson`] | a Hermite bicubic patch of corner data or of four boundary curves |
 
 use cagd::{Curve, Scalar};
 use nalgebra::DMatrix;
@@ -13,11 +18,22 @@ use crate::error::{lib, Result};
 use crate::{number_text, Context, Role};
 
 pub mod coons;
+pub mod coons_bicubic;
 mod decasteljau;
+pub mod discrete_coons;
+pub mod ferguson;
+pub mod gordon;
+pub mod patch;
+pub mod ruled;
 pub mod surface;
 
 pub use coons::{Blend, Coons};
+pub use coons_bicubic::{CoonsBicubic, TwistChoice};
 pub use decasteljau::DeCasteljau;
+pub use discrete_coons::DiscreteCoons;
+pub use ferguson::{Ferguson, FergusonData};
+pub use gordon::Gordon;
+pub use ruled::Ruled;
 
 /// How much more steps cost than the points alone: each scheme is computed again and laid out
 /// as text, about as many numbers as operations, each number some 50 operations to format
