@@ -1,7 +1,11 @@
 //! `cagd ferguson`: the Hermite bicubic (Ferguson) patch of the lecture notes ("Hermitova
 //! plocha") from its corner points, tangents and twists, or from four boundary curves.
 
-use cagd_octave::literal::LiteralScalar;
+use std::cell::RefCell;
+use std::rc::Rc;
+
+use cagd_octave::literal::{Env, LiteralScalar};
+use cagd_octave::script::Script;
 use cagd_ops::curves::CurveArg;
 use cagd_ops::ops::{Ferguson, FergusonData};
 use cagd_ops::Role;
@@ -89,30 +93,7 @@ impl Run for FergusonCommand {
     fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
         let script = cx.script::<T>(&self.script, self.params.n)?;
         let env = expression_env(cx.limits, script.as_ref());
-        let b = &self.boundary;
-        let curves = b.samples || [&b.c1, &b.c2, &b.d1, &b.d2].iter().any(|c| c.is_some());
-        let data = if curves {
-            let given = [
-                ("--points", &self.points),
-                ("--du", &self.du),
-                ("--dv", &self.dv),
-            ];
-            if let Some((argument, _)) = given.iter().find(|(_, g)| g.is_some()) {
-                return Err(usage(
-                    argument,
-                    "has no effect with boundary curves (their ends and tangents are the corner data)",
-                    "either --points, --du and --dv, or --c1, --c2, --d1 and --d2",
-                ));
-            }
-            let curves: [CurveArg<T>; 4] = boundary(cx, b, script.as_ref(), self.rows.rows, &env)?;
-            FergusonData::Boundary(Box::new(curves))
-        } else {
-            FergusonData::Corners {
-                points: self.corners(cx, "--points", &self.points, script.as_ref())?,
-                du: self.corners(cx, "--du", &self.du, script.as_ref())?,
-                dv: self.corners(cx, "--dv", &self.dv, script.as_ref())?,
-            }
-        };
+        let data = self.data(cx, script.as_ref(), &env)?;
         let twists = match &self.twists {
             Some(text) => Some(points(
                 cx,
@@ -145,13 +126,44 @@ impl Run for FergusonCommand {
 }
 
 impl FergusonCommand {
+    /// The corner points and tangents: the matrices given, or the four boundary curves.
+    fn data<T: LiteralScalar>(
+        &self,
+        cx: &mut Cx,
+        script: Option<&Script<T>>,
+        env: &Rc<RefCell<Env<T>>>,
+    ) -> Result<FergusonData<T>, CliError> {
+        let b = &self.boundary;
+        if !(b.samples || [&b.c1, &b.c2, &b.d1, &b.d2].iter().any(|c| c.is_some())) {
+            return Ok(FergusonData::Corners {
+                points: self.corners(cx, "--points", &self.points, script)?,
+                du: self.corners(cx, "--du", &self.du, script)?,
+                dv: self.corners(cx, "--dv", &self.dv, script)?,
+            });
+        }
+        let given = [
+            ("--points", &self.points),
+            ("--du", &self.du),
+            ("--dv", &self.dv),
+        ];
+        if let Some((argument, _)) = given.iter().find(|(_, g)| g.is_some()) {
+            return Err(usage(
+                argument,
+                "has no effect with boundary curves (their ends and tangents are the corner data)",
+                "either --points, --du and --dv, or --c1, --c2, --d1 and --d2",
+            ));
+        }
+        let curves: [CurveArg<T>; 4] = boundary(cx, b, script, self.rows.rows, env)?;
+        Ok(FergusonData::Boundary(Box::new(curves)))
+    }
+
     /// A matrix of corner vectors (columns, rows with `--rows`), which must be given.
     fn corners<T: LiteralScalar>(
         &self,
         cx: &mut Cx,
         argument: &str,
         given: &Option<String>,
-        script: Option<&cagd_octave::script::Script<T>>,
+        script: Option<&Script<T>>,
     ) -> Result<DMatrix<T>, CliError> {
         let text = given
             .as_deref()

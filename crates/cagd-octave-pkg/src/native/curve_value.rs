@@ -97,7 +97,8 @@ fn nurbs_curve<T: Number>(
     }
     let degree = order as usize - 1;
     call.check_degree(what, degree)?;
-    let library = |e: cagd::Error| PkgError::arg(Kind::of(&e), what, e.to_string(), NURBS_CURVE_FORM);
+    let library =
+        |e: cagd::Error| PkgError::arg(Kind::of(&e), what, e.to_string(), NURBS_CURVE_FORM);
     cagd::error::check_finite("NURBS coefs", coefs.data.iter()).map_err(library)?;
     cagd::error::check_finite("NURBS knots", knots.data.iter()).map_err(library)?;
     let h = DMatrix::from_column_slice(4, coefs.cols(), coefs.data).map(T::from_input);
@@ -228,8 +229,7 @@ mod tests {
             dims: &[1, 2],
             items: vec![nurbs(&bad), nurbs(&a1)],
         };
-        let e = crate::call("cagd_gordon", &args, 1, &mut Limits::default(), &mut out)
-            .unwrap_err();
+        let e = crate::call("cagd_gordon", &args, 1, &mut Limits::default(), &mut out).unwrap_err();
         assert!(e.to_string().contains("cv: "), "{e}");
         assert_eq!(e.identifier(), "cagd:weights");
     }

@@ -101,7 +101,10 @@ fn gordon_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
         "[X, g1, g2, g12] = cagd_gordon (cu, cv, un, vn, u, v [, \"exact\"])",
     )?;
     call.nargout_max(4)?;
-    let mut op = Gordon::new(curve_cell::<T>(call, 0, "cu")?, curve_cell::<T>(call, 1, "cv")?);
+    let mut op = Gordon::new(
+        curve_cell::<T>(call, 0, "cu")?,
+        curve_cell::<T>(call, 1, "cv")?,
+    );
     op.u_nodes = Some(params::<T>(call, 2, "un")?);
     op.v_nodes = Some(params::<T>(call, 3, "vn")?);
     op.at = SurfaceParams {

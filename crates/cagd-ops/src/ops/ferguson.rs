@@ -166,13 +166,13 @@ impl<T: Scalar> Ferguson<T> {
                     .map_err(lib(Role::Points, CORNERS_FORM))?;
                 Ok((patch, None))
             }
-            FergusonData::Boundary(boundary) => self.from_boundary(cx, boundary),
+            FergusonData::Boundary(boundary) => self.of_boundary(cx, boundary),
         }
     }
 
     /// The patch of the boundary curves' corner data.
     #[allow(clippy::type_complexity)]
-    fn from_boundary(
+    fn of_boundary(
         &self,
         cx: &mut Context,
         boundary: &[CurveArg<T>; 4],
