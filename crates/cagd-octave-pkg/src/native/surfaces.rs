@@ -62,8 +62,10 @@ const COONS_NAMES: Names = &[
     (Role::C2, "c2"),
     (Role::D1, "d1"),
     (Role::D2, "d2"),
+    (Role::Boundary, "c1, c2, d1, d2"),
     (Role::U, "u"),
     (Role::V, "v"),
+    (Role::Grid, "u, v"),
     (Role::Result, "X"),
 ];
 
