@@ -16,8 +16,8 @@ use cagd::{Curve, Scalar, Surface, Tolerance};
 use nalgebra::DMatrix;
 
 use super::coons::{boundary_picture, realise_all, BOUNDARY_FORM, BOUNDARY_ROLES};
-use super::patch::{curve_costs, mark_result};
-use super::surface::{evaluated_points, grid_f64, picture_grid, push_terms, SurfaceParams};
+use super::patch::{answer, curve_costs, Pictures};
+use super::surface::{evaluated_points, picture_grid, push_terms, SurfaceParams};
 use crate::curves::{check_curves_work, needed, CurveArg, Realised};
 use crate::error::{Kind, OpError, Result};
 use crate::{Answer, Context, Operation, Report, Role, Value};
@@ -114,17 +114,9 @@ type Patch<'a, T> = BicubicCoonsPatch<Realised<'a, T>, Realised<'a, T>, T>;
 
 impl<T: Scalar> Operation<T> for CoonsBicubic<T> {
     fn run(&self, cx: &mut Context) -> Result<Answer<T>> {
-        let unit = (&T::zero(), &T::one());
-        let (us, vs) = self
-            .at
-            .resolve((unit, unit), "the patch is extrapolated there", cx)?;
+        let [us, vs, pus, pvs] = self.grids(cx)?;
         let single = self.at.single();
         let pictures = self.drawing || self.mesh;
-        let (pus, pvs) = if pictures {
-            picture_grid((&us, &vs), single, (unit, unit))?
-        } else {
-            (Vec::new(), Vec::new())
-        };
         let at_u = needed(&[&us, &pus]);
         let at_v = needed(&[&vs, &pvs]);
         let ats = [at_u.as_slice(), &at_u, &at_v, &at_v];
@@ -163,32 +155,34 @@ impl<T: Scalar> Operation<T> for CoonsBicubic<T> {
                 [p.hc, p.hd, p.hcd, p.x]
             },
         )?;
-        let mut answer = Answer {
-            report,
-            drawing: None,
-            mesh: None,
+        let pictures = Pictures {
+            at: (&us, &vs, single),
+            grid: (&pus, &pvs),
+            drawing: self.drawing,
+            mesh: self.mesh,
         };
-        if pictures {
-            let grid = grid_f64(&patch.eval_grid(&pus, &pvs));
-            if self.drawing {
-                let (c1, c2, d1, d2) = patch.boundary().curves();
-                let drawing = boundary_picture(
-                    "bicubic Coons patch",
-                    grid.clone(),
-                    [c1, c2, d1, d2],
-                    (&pus, &pvs),
-                )?;
-                answer.drawing = Some(mark_result(drawing, &answer.report, (&us, &vs), single));
-            }
-            if self.mesh {
-                answer.mesh = Some(grid);
-            }
-        }
-        Ok(answer)
+        answer(report, &patch, pictures, |grid| {
+            let (c1, c2, d1, d2) = patch.boundary().curves();
+            boundary_picture("bicubic Coons patch", grid, [c1, c2, d1, d2], (&pus, &pvs))
+        })
     }
 }
 
 impl<T: Scalar> CoonsBicubic<T> {
+    /// `u` and `v` (samples of `[0, 1]`), and the pictures' grid.
+    fn grids(&self, cx: &mut Context) -> Result<[Vec<T>; 4]> {
+        let unit = (&T::zero(), &T::one());
+        let (us, vs) = self
+            .at
+            .resolve((unit, unit), "the patch is extrapolated there", cx)?;
+        let (pus, pvs) = if self.drawing || self.mesh {
+            picture_grid((&us, &vs), self.at.single(), (unit, unit))?
+        } else {
+            (Vec::new(), Vec::new())
+        };
+        Ok([us, vs, pus, pvs])
+    }
+
     /// The patch: the boundary checked at the corners, the cross-boundary derivatives against
     /// the boundary's tangents there, the twists.
     fn patch<'a>(

@@ -13,8 +13,8 @@ use cagd::{Scalar, Surface, Tolerance};
 use nalgebra::{DMatrix, DVector};
 
 use super::coons::{boundary_line, realise_all, BOUNDARY_FORM, BOUNDARY_ROLES};
-use super::patch::{mark_result, push_result};
-use super::surface::{evaluated_points, grid_f64, picture_grid, SurfaceParams};
+use super::patch::{answer, push_result, Pictures};
+use super::surface::{evaluated_points, picture_grid, SurfaceParams};
 use super::to_f64;
 use crate::curves::{check_curves_work, CurveArg};
 use crate::drawing::{Colour, Drawing};
@@ -131,22 +131,15 @@ impl<T: Scalar> Operation<T> for Ferguson<T> {
         report.push("u", Value::row(&us));
         report.push("v", Value::row(&vs));
         push_result(&mut report, &patch, (&us, &vs), (single, self.at.list), cx)?;
-        let mut answer = Answer {
-            report,
-            drawing: None,
-            mesh: None,
+        let pictures = Pictures {
+            at: (&us, &vs, single),
+            grid: (&pus, &pvs),
+            drawing: self.drawing,
+            mesh: self.mesh,
         };
-        if pictures {
-            let grid = grid_f64(&patch.eval_grid(&pus, &pvs));
-            if self.drawing {
-                let drawing = picture(&patch, grid.clone(), curves);
-                answer.drawing = Some(mark_result(drawing, &answer.report, (&us, &vs), single));
-            }
-            if self.mesh {
-                answer.mesh = Some(grid);
-            }
-        }
-        Ok(answer)
+        answer(report, &patch, pictures, |grid| {
+            Ok(picture(&patch, grid, curves))
+        })
     }
 }
 

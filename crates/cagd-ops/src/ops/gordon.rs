@@ -14,8 +14,8 @@ use cagd::{Scalar, Surface, Tolerance};
 use nalgebra::DVector;
 
 use super::coons::boundary_line;
-use super::patch::{curve_costs, mark_result};
-use super::surface::{evaluated_points, grid_f64, picture_grid, push_terms, SurfaceParams};
+use super::patch::{answer, curve_costs, Pictures};
+use super::surface::{evaluated_points, picture_grid, push_terms, SurfaceParams};
 use crate::curves::{check_curves_work, needed, CurveArg, Realised};
 use crate::drawing::{Colour, Drawing};
 use crate::error::{Kind, OpError, Result};
@@ -155,7 +155,15 @@ impl<T: Scalar> Operation<T> for Gordon<T> {
         let points = evaluated_points((&g.us, &g.vs), pictures.then_some((&g.pus, &g.pvs)));
         cx.check_cost(Role::Grid, per_point.times(points), T::EXACT)?;
         let report = self.report(&surface, &g, d, cx)?;
-        self.answer(report, &surface, &g)
+        let pictures = Pictures {
+            at: (&g.us, &g.vs, self.at.single()),
+            grid: (&g.pus, &g.pvs),
+            drawing: self.drawing,
+            mesh: self.mesh,
+        };
+        answer(report, &surface, pictures, |grid| {
+            picture(&surface, grid, &g)
+        })
     }
 }
 
@@ -258,41 +266,25 @@ impl<T: Scalar> Gordon<T> {
         );
         Ok(report)
     }
+}
 
-    /// The answer with its picture and mesh.
-    fn answer(
-        &self,
-        report: Report<T>,
-        surface: &GordonSurface<Realised<'_, T>, T>,
-        g: &Grids<T>,
-    ) -> Result<Answer<T>> {
-        let mut answer = Answer {
-            report,
-            drawing: None,
-            mesh: None,
-        };
-        if !(self.drawing || self.mesh) {
-            return Ok(answer);
-        }
-        let grid = grid_f64(&surface.eval_grid(&g.pus, &g.pvs));
-        if self.drawing {
-            let mut drawing = Drawing::new("Gordon surface").surface(grid.clone(), "g(u,v)");
-            for (k, c) in surface.curves_at_u().iter().enumerate() {
-                let label = if k == 0 { "g(u_i, v)" } else { "" };
-                drawing = drawing.boundary(boundary_line(c, &g.pvs)?, Colour::Red, label);
-            }
-            for (k, c) in surface.curves_at_v().iter().enumerate() {
-                let label = if k == 0 { "g(u, v_j)" } else { "" };
-                drawing = drawing.boundary(boundary_line(c, &g.pus)?, Colour::Green, label);
-            }
-            let single = self.at.single();
-            answer.drawing = Some(mark_result(drawing, &answer.report, (&g.us, &g.vs), single));
-        }
-        if self.mesh {
-            answer.mesh = Some(grid);
-        }
-        Ok(answer)
+/// The picture: the surface, the curves `g(u_i, v)` in red and `g(u, v_j)` in green, each as
+/// the surface uses it (its domain mapped onto `[0, 1]`).
+fn picture<T: Scalar>(
+    surface: &GordonSurface<Realised<'_, T>, T>,
+    grid: cagd::grid::PointGrid<f64>,
+    g: &Grids<T>,
+) -> Result<Drawing> {
+    let mut drawing = Drawing::new("Gordon surface").surface(grid, "g(u,v)");
+    for (k, c) in surface.curves_at_u().iter().enumerate() {
+        let label = if k == 0 { "g(u_i, v)" } else { "" };
+        drawing = drawing.boundary(boundary_line(c, &g.pvs)?, Colour::Red, label);
     }
+    for (k, c) in surface.curves_at_v().iter().enumerate() {
+        let label = if k == 0 { "g(u, v_j)" } else { "" };
+        drawing = drawing.boundary(boundary_line(c, &g.pus)?, Colour::Green, label);
+    }
+    Ok(drawing)
 }
 
 /// The nodes of a direction with `count` curves: given (finite), or equally spaced on

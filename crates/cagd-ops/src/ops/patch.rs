@@ -5,12 +5,14 @@
 use cagd::cost::{max_bits, Cost};
 use cagd::{Curve, Scalar, Surface};
 
-use super::surface::push_surface;
+use cagd::grid::PointGrid;
+
+use super::surface::{grid_f64, push_surface};
 use super::{point_labels, to_f64};
 use crate::curves::Realised;
 use crate::drawing::Drawing;
 use crate::error::Result;
-use crate::{Context, Report, Value};
+use crate::{Answer, Context, Report, Value};
 
 /// Pushes `result`: at a single point (and no `list`) the `d × 1` column, else the grid
 /// `us × vs × d` (or with `list` one row `u v x y z` per point).
@@ -58,4 +60,46 @@ pub fn mark_result<T: Scalar>(
         }
         _ => drawing,
     }
+}
+
+/// What a surface request asks for besides its report.
+#[derive(Debug, Clone, Copy)]
+pub struct Pictures<'a, T> {
+    /// The result's parameters `(us, vs)` and whether it is a single point.
+    pub at: (&'a [T], &'a [T], bool),
+    /// The picture's grid `(pus, pvs)` (empty when neither a picture nor a mesh is asked for).
+    pub grid: (&'a [T], &'a [T]),
+    /// A picture.
+    pub drawing: bool,
+    /// A mesh.
+    pub mesh: bool,
+}
+
+/// The answer: `report`, and as asked for the picture `draw` makes of the surface sampled on
+/// the picture's grid (with the evaluated point marked, [`mark_result`]) and that grid as the
+/// mesh.
+pub fn answer<T: Scalar, S: Surface<T>>(
+    report: Report<T>,
+    surface: &S,
+    p: Pictures<'_, T>,
+    draw: impl FnOnce(PointGrid<f64>) -> Result<Drawing>,
+) -> Result<Answer<T>> {
+    let mut answer = Answer {
+        report,
+        drawing: None,
+        mesh: None,
+    };
+    if !(p.drawing || p.mesh) {
+        return Ok(answer);
+    }
+    let grid = grid_f64(&surface.eval_grid(p.grid.0, p.grid.1));
+    if p.drawing {
+        let (us, vs, single) = p.at;
+        let drawing = draw(grid.clone())?;
+        answer.drawing = Some(mark_result(drawing, &answer.report, (us, vs), single));
+    }
+    if p.mesh {
+        answer.mesh = Some(grid);
+    }
+    Ok(answer)
 }

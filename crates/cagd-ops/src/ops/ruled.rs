@@ -11,8 +11,8 @@ use cagd::{OnUnitInterval, Scalar, Surface};
 
 use super::coons::boundary_line;
 use super::eval_points;
-use super::patch::{curve_costs, mark_result, push_result};
-use super::surface::{evaluated_points, grid_f64, picture_grid, SurfaceParams};
+use super::patch::{answer, curve_costs, push_result, Pictures};
+use super::surface::{evaluated_points, picture_grid, SurfaceParams};
 use crate::curves::{check_curves_work, needed, CurveArg, Realised};
 use crate::drawing::{Colour, Drawing};
 use crate::error::{lib, Result};
@@ -74,25 +74,9 @@ impl<T: Scalar> Ruled<T> {
 
 impl<T: Scalar> Operation<T> for Ruled<T> {
     fn run(&self, cx: &mut Context) -> Result<Answer<T>> {
-        let unit = (&T::zero(), &T::one());
-        let us = self
-            .at
-            .u
-            .resolve(Role::U, unit, "the curves are extrapolated there", cx)?;
-        let vs = self.at.v.resolve(
-            Role::V,
-            unit,
-            "the surface is extrapolated beyond its curves",
-            cx,
-        )?;
-        cx.check_grid(Role::Grid, us.len(), vs.len())?;
+        let [us, vs, pus, pvs] = self.grids(cx)?;
         let single = self.at.single();
         let pictures = self.drawing || self.mesh;
-        let (pus, pvs) = if pictures {
-            picture_grid((&us, &vs), single, (unit, unit))?
-        } else {
-            (Vec::new(), Vec::new())
-        };
         let at_u = needed(&[&us, &pus]);
         check_curves_work(
             cx,
@@ -124,25 +108,37 @@ impl<T: Scalar> Operation<T> for Ruled<T> {
             (single, self.at.list),
             cx,
         )?;
-        let mut answer = Answer {
-            report,
-            drawing: None,
-            mesh: None,
+        let pictures = Pictures {
+            at: (&us, &vs, single),
+            grid: (&pus, &pvs),
+            drawing: self.drawing,
+            mesh: self.mesh,
         };
-        if pictures {
-            let grid = grid_f64(&surface.eval_grid(&pus, &pvs));
-            if self.drawing {
-                let drawing = Drawing::new("ruled surface")
-                    .surface(grid.clone(), "x(u,v)")
-                    .boundary(boundary_line(&a, &pus)?, Colour::Red, "¹x(u)")
-                    .boundary(boundary_line(&b, &pus)?, Colour::Green, "²x(u)");
-                answer.drawing = Some(mark_result(drawing, &answer.report, (&us, &vs), single));
-            }
-            if self.mesh {
-                answer.mesh = Some(grid);
-            }
-        }
-        Ok(answer)
+        answer(report, &surface, pictures, |grid| {
+            Ok(Drawing::new("ruled surface")
+                .surface(grid, "x(u,v)")
+                .boundary(boundary_line(&a, &pus)?, Colour::Red, "¹x(u)")
+                .boundary(boundary_line(&b, &pus)?, Colour::Green, "²x(u)"))
+        })
+    }
+}
+
+impl<T: Scalar> Ruled<T> {
+    /// `u` and `v` (samples of `[0, 1]`, each with its warning outside it), and the
+    /// pictures' grid.
+    fn grids(&self, cx: &mut Context) -> Result<[Vec<T>; 4]> {
+        let unit = (&T::zero(), &T::one());
+        let extrapolated = "the curves are extrapolated there";
+        let us = self.at.u.resolve(Role::U, unit, extrapolated, cx)?;
+        let beyond = "the surface is extrapolated beyond its curves";
+        let vs = self.at.v.resolve(Role::V, unit, beyond, cx)?;
+        cx.check_grid(Role::Grid, us.len(), vs.len())?;
+        let (pus, pvs) = if self.drawing || self.mesh {
+            picture_grid((&us, &vs), self.at.single(), (unit, unit))?
+        } else {
+            (Vec::new(), Vec::new())
+        };
+        Ok([us, vs, pus, pvs])
     }
 }
 
