@@ -3,7 +3,8 @@
 //! `ferguson`, exact where rational. The expected values are computed independently of the
 //! library, with Python's `fractions` from the textbook formulas (Cox–de Boor for the
 //! B-splines, the rational Bézier form for the NURBS, thesis (4.5) and Gregory's square for
-//! the bicubic patch); the derivations are in the comments.
+//! the bicubic patch); the derivations are in the comments, the computation in
+//! `any_curve_oracle.py` beside this file.
 
 use cagd_cli::run;
 use serde_json::Value as J;
