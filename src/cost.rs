@@ -25,7 +25,8 @@
 //! | Lagrange basis (barycentric) | [`Lagrange::weights_cost`](crate::lagrange::Lagrange::weights_cost), [`Lagrange::basis_cost`](crate::lagrange::Lagrange::basis_cost), [`Lagrange::interpolation_cost`](crate::lagrange::Lagrange::interpolation_cost) |
 //! | Coons patches, Gordon surfaces (blends of curves) | [`coons::coons_point_cost`](crate::coons::coons_point_cost), [`coons::bicubic_point_cost`](crate::coons::bicubic_point_cost), [`gordon::gordon_point_cost`](crate::gordon::gordon_point_cost), all through [`blended`] |
 //! | the set-up of a Gordon surface (crossings checked, Lagrange weights) | [`gordon::gordon_setup_cost`](crate::gordon::gordon_setup_cost) |
-//! | the discrete Coons formula | [`coons::discrete_coons_cost`](crate::coons::discrete_coons_cost) |
+//! | the discrete Coons formula, its three parts | [`coons::discrete_coons_cost`](crate::coons::discrete_coons_cost), [`coons::discrete_coons_parts_cost`](crate::coons::discrete_coons_parts_cost) |
+//! | ruled surfaces, Ferguson patches | [`surfaces::ruled_point_cost`](crate::surfaces::ruled_point_cost), [`surfaces::ferguson_point_cost`](crate::surfaces::ferguson_point_cost) |
 //! | the band solve of a discrete Coons mask | [`Mask::solve_cost`](crate::coons::Mask::solve_cost) |
 //!
 //! The sizes grow with the construction ([`polynomial_bits`]): a de Casteljau scheme of degree

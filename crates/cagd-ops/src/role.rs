@@ -81,6 +81,17 @@ pub enum Role {
     UNodes,
     /// The nodes `v_j` of a Gordon network.
     VNodes,
+    /// A Gordon network as a whole (where its curves cross, the work of setting it up).
+    Network,
+    /// The four cross-boundary derivatives of a bicubic Coons patch together (where they meet
+    /// the boundary's tangents).
+    Cross,
+    /// Tangents `∂x/∂u` at the corners of a patch.
+    Du,
+    /// Tangents `∂x/∂v` at the corners of a patch.
+    Dv,
+    /// The steps asked for (the parts of a construction).
+    Steps,
     /// The first curve (or point) of a pair.
     First,
     /// The second curve (or point) of a pair.
@@ -160,6 +171,11 @@ impl Role {
             Role::VCurves => "v_curves",
             Role::UNodes => "u_nodes",
             Role::VNodes => "v_nodes",
+            Role::Network => "network",
+            Role::Cross => "cross",
+            Role::Du => "tangents_u",
+            Role::Dv => "tangents_v",
+            Role::Steps => "steps",
             Role::First => "first",
             Role::Second => "second",
             Role::P0 => "p0",

@@ -28,36 +28,6 @@ impl Run for bezier::BezierPatchCommand {
     }
 }
 
-impl Run for patches::CoonsBicubicCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        patches::coons_bicubic::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for patches::DiscreteCoonsCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        patches::discrete::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for patches::GordonCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        patches::gordon::<T>(&cx.limits, self)
-    }
-}
-
 impl Run for bezier::BernsteinCommand {
     fn exact(&self) -> bool {
         self.output.exact
@@ -125,26 +95,6 @@ impl Run for integrate::IntegrateCommand {
 
     fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
         integrate::integrate::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for ruled::RuledCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        ruled::ruled::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for ferguson::FergusonCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        ferguson::ferguson::<T>(&cx.limits, self)
     }
 }
 

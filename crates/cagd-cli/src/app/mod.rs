@@ -21,6 +21,7 @@ mod boundary;
 
 mod coons;
 
+mod coons_bicubic;
 mod curvature;
 
 mod curve_arg;
@@ -55,12 +56,13 @@ mod course_examples;
 
 mod curve;
 
-mod discrete_parts;
+mod discrete_coons;
 
 mod elevate;
 
 mod ferguson;
 
+mod gordon;
 mod hermite;
 
 mod insert_knot;
@@ -141,9 +143,9 @@ subcommands! {
     Decasteljau(decasteljau::DecasteljauCommand),
     BezierPatch(bezier::BezierPatchCommand),
     Coons(coons::CoonsCommand),
-    CoonsBicubic(patches::CoonsBicubicCommand),
-    DiscreteCoons(patches::DiscreteCoonsCommand),
-    Gordon(patches::GordonCommand),
+    CoonsBicubic(coons_bicubic::CoonsBicubicCommand),
+    DiscreteCoons(discrete_coons::DiscreteCoonsCommand),
+    Gordon(gordon::GordonCommand),
     Lagrange(lagrange::LagrangeCommand),
     Bernstein(bezier::BernsteinCommand),
     Derivative(bezier::DerivativeCommand),

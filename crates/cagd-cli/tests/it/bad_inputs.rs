@@ -767,8 +767,8 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
                 "--dv",
                 "zeros(2,4)",
             ]),
-            "--points/--du/--dv/--twists",
-            "Library::ShapeMismatch",
+            "--dv",
+            "Shape",
         ),
         (
             s(&[

@@ -493,7 +493,7 @@ fn options_without_effect_are_errors_naming_them() {
                 "--mask=0,0.25",
                 "--steps",
             ],
-            "--steps: has no effect with --mask",
+            "--steps: has no effect with a mask",
         ),
         (
             &["gordon", "--script", odd, "--u-nodes", "[0 0.5 1]"],

@@ -16,6 +16,11 @@
 //! | [`BSplineSurface`] | a tensor-product B-spline surface, with its bases |
 //! | [`NurbsSurface`] | a tensor-product NURBS surface |
 //! | [`Circle`] | a circle or a circular arc as an exact NURBS curve |
+//! | [`CoonsBicubic`] | a bicubically blended Coons patch of any curves, with its parts |
+//! | [`DiscreteCoons`] | the interior of a net from its boundary, by formula or mask |
+//! | [`Gordon`] | a Gordon surface of a network of any curves, with its parts |
+//! | [`Ruled`] | the ruled surface between any two curves |
+//! | [`Ferguson`] | a Hermite bicubic patch of corner data or of four boundary curves |
 
 use cagd::{Curve, Scalar};
 use nalgebra::DMatrix;
@@ -28,13 +33,19 @@ mod bspline_basis;
 mod bspline_surface;
 mod circle;
 pub mod coons;
+pub mod coons_bicubic;
 mod curvature;
 mod decasteljau;
+pub mod discrete_coons;
+pub mod ferguson;
+pub mod gordon;
 pub mod hermite;
 mod insert_knot;
 mod lagrange;
 mod nurbs;
 mod nurbs_surface;
+pub mod patch;
+pub mod ruled;
 pub mod spline;
 pub mod surface;
 
@@ -43,13 +54,18 @@ pub use bspline_basis::BSplineBasis;
 pub use bspline_surface::BSplineSurface;
 pub use circle::Circle;
 pub use coons::{Blend, Coons};
+pub use coons_bicubic::{CoonsBicubic, TwistChoice};
 pub use curvature::Curvature;
 pub use decasteljau::DeCasteljau;
+pub use discrete_coons::DiscreteCoons;
+pub use ferguson::{Ferguson, FergusonData};
+pub use gordon::Gordon;
 pub use hermite::Hermite;
 pub use insert_knot::InsertKnot;
 pub use lagrange::Lagrange;
 pub use nurbs::Nurbs;
 pub use nurbs_surface::NurbsSurface;
+pub use ruled::Ruled;
 pub use spline::Spline;
 
 /// How much more steps cost than the points alone: each scheme is computed again and laid out
