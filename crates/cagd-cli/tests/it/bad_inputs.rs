@@ -659,12 +659,20 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
             "Shape",
         ),
         (
-            s(&["curvature", "[0 1 2 3; 0 1 0 1; 0 0 1 1; 1 1 1 1]", "--t", "0.5"]),
+            s(&[
+                "curvature",
+                "[0 1 2 3; 0 1 0 1; 0 0 1 1; 1 1 1 1]",
+                "--t",
+                "0.5",
+            ]),
             "CURVE",
             "Library::ShapeMismatch",
         ),
         (
-            s(&["curvature", "nurbs([1 1 0; 0 1 1], [1 -1 2], [0 0 0 1 1 1])"]),
+            s(&[
+                "curvature",
+                "nurbs([1 1 0; 0 1 1], [1 -1 2], [0 0 0 1 1 1])",
+            ]),
             "CURVE",
             "Library::NonPositiveWeight",
         ),
