@@ -1,20 +1,18 @@
-//! `decasteljau`, `bezier-patch`, `bernstein`, `derivative`.
+//! `bezier-patch`.
 
 use cagd::limits::Limits;
 use clap::Args;
-use nalgebra::DMatrix;
 
 use crate::args::{
-    CurveParamArgs, MeshArgs, OutputArgs, PlotArgs, RowsArgs, ScriptArgs, StepsArgs,
-    SurfaceParamArgs,
+    MeshArgs, OutputArgs, PlotArgs, ScriptArgs, StepsArgs, SurfaceParamArgs,
 };
 use crate::plot::{Colour, Figure};
 use crate::{load_net, CliError, PendingWrites, Report, Value};
-use cagd::bezier::{BezierCurve, BezierPatch};
+use cagd::bezier::BezierPatch;
 use cagd_octave::literal::{Env, LiteralScalar};
 
 use super::common::*;
-use super::work::{bits, check_work, plotted, weigh};
+use super::work::{bits, check_work, weigh};
 use super::{prepare_script, Outcome};
 
 /// The interval `a,b` of `--interval` (default `[0, 1]`).
@@ -46,26 +44,6 @@ pub fn interval<T: LiteralScalar>(
 /// command whose schemes would fill gigabytes of memory (a 10⁷-point grid of 3×3-net schemes
 /// is 6.6 GB of text) is refused up front like any other large work.
 const STEPS_FACTOR: u128 = 50;
-
-/// The work of evaluating `curve` by de Casteljau at `ts` and at `dense` (a picture),
-/// [`BezierCurve::eval_cost`] at each parameter; with `steps` [`STEPS_FACTOR`] times that at
-/// `ts`.
-fn curve_work<T: LiteralScalar>(
-    curve: &BezierCurve<T>,
-    ts: &[T],
-    steps: bool,
-    dense: &[T],
-) -> u128 {
-    let coefficients = bits(curve.control().iter());
-    let at = |params: &[T], times: u128| {
-        weigh::<T>(
-            curve
-                .eval_cost(bits(params), coefficients)
-                .times(params.len() as u128 * times),
-        )
-    };
-    at(ts, if steps { STEPS_FACTOR } else { 1 }).saturating_add(at(dense, 1))
-}
 
 /// Points of a Bézier patch (thesis algorithms 2-4, ploskevB/bilinearna/tenzor).
 #[derive(Debug, Args)]
@@ -278,202 +256,6 @@ pub fn bezier_patch<T: LiteralScalar>(
     }
     if let Some(path) = &cmd.mesh.mesh {
         add_mesh(&mut files, "--mesh", path, &grid_f64(&picture_grid))?;
-    }
-    finish(
-        &report,
-        &cmd.output,
-        files,
-        warnings(
-            &cmd.script.script,
-            script.as_ref(),
-            &mut Env::with_limits(*limits),
-        ),
-    )
-}
-
-/// Bernstein polynomial values B_i^n(t).
-#[derive(Debug, Args)]
-#[command(after_help = "\
-Layout: t is k×1, result k×(n+1) (row = parameter, column = B_0^n..B_n^n), or k×1 with --i.
---plot draws the polynomials over [0, 1].
-
-Examples:
-  cagd bernstein --degree 3 --t 0.5 --exact
-  cagd bernstein --degree 3 --i 1 --n 5")]
-pub struct BernsteinCommand {
-    /// The degree n.
-    #[arg(long, value_name = "N")]
-    pub degree: usize,
-    /// Only B_i^n (default: all of B_0^n..B_n^n).
-    #[arg(long, value_name = "I")]
-    pub i: Option<usize>,
-    #[command(flatten)]
-    pub params: CurveParamArgs,
-    #[command(flatten)]
-    pub output: OutputArgs,
-    #[command(flatten)]
-    pub plot: PlotArgs,
-}
-
-/// Bernstein polynomial values.
-pub fn bernstein<T: LiteralScalar>(
-    limits: &Limits,
-    cmd: &BernsteinCommand,
-) -> Result<Outcome, CliError> {
-    check_degree(limits, "--degree", cmd.degree)?;
-    let ts: Vec<T> =
-        params_or_samples(limits, "--t", &cmd.params.t, cmd.params.n, DEFAULT_SAMPLES)?;
-    // The triangular recurrence at every parameter (and at the 201 of a picture).
-    let picture = if cmd.plot.plot.is_some() { 201 } else { 0 };
-    check_work(
-        limits,
-        "--t",
-        weigh::<T>(
-            cagd::bernstein::basis_cost(cmd.degree, bits(&ts)).times(ts.len() as u128 + picture),
-        ),
-    )?;
-    crate::slips::outside(
-        "--t",
-        &ts,
-        &T::zero(),
-        &T::one(),
-        "the polynomials are extrapolated there",
-    );
-    let all = cagd::bernstein::basis_matrix(cmd.degree, &ts);
-    let result = match cmd.i {
-        Some(i) if i > cmd.degree => {
-            return Err(shape(
-                "--i",
-                format!("i = {i} exceeds the degree {}", cmd.degree),
-                "an index 0 ≤ i ≤ n",
-            ))
-        }
-        Some(i) => all.columns(i, 1).into_owned(),
-        None => all,
-    };
-    let mut report = Report::new();
-    report.push(
-        "t",
-        Value::Matrix(DMatrix::from_column_slice(ts.len(), 1, &ts)),
-    );
-    let mut files = PendingWrites::new();
-    if let Some(path) = &cmd.plot.plot {
-        // The functions over [0, 1], each as the plane curve (t, B_i^n(t)).
-        let dense: Vec<T> = T::linspace(&T::zero(), &T::one(), 201);
-        let values = cagd::bernstein::basis_matrix(cmd.degree, &dense);
-        let colours = [
-            Colour::Blue,
-            Colour::Red,
-            Colour::Green,
-            Colour::Orange,
-            Colour::Purple,
-            Colour::Black,
-        ];
-        let mut figure = Figure::new(format!("Bernstein polynomials of degree {}", cmd.degree));
-        let shown: Vec<usize> = match cmd.i {
-            Some(i) => vec![i],
-            None => (0..=cmd.degree).collect(),
-        };
-        for (k, &i) in shown.iter().enumerate() {
-            let line = DMatrix::from_fn(2, dense.len(), |r, c| {
-                if r == 0 {
-                    dense[c].to_f64()
-                } else {
-                    values[(c, i)].to_f64()
-                }
-            });
-            let label = match (shown.len() <= 6, k) {
-                (true, _) => format!("B_{i}^{}", cmd.degree),
-                (false, 0) => format!("B_i^{}, i = 0..{}", cmd.degree, cmd.degree),
-                _ => String::new(),
-            };
-            figure = figure.curve(line, colours[k % colours.len()], label);
-        }
-        add_plot(&mut files, "--plot", path, &figure)?;
-    }
-    report.push("result", Value::Matrix(result));
-    finish(&report, &cmd.output, files, Vec::new())
-}
-
-/// Control points (and values) of the r-th derivative of a Bézier curve.
-#[derive(Debug, Args)]
-#[command(after_help = "\
-Layout: control is d×(n-r+1), the points n!/(n-r)! Δ^r b_i as columns; with --t, result is d×k.
-
-Example:
-  cagd derivative \"[0 0 0; 0 2 2; 8 2 0; 4 0 0]'\" --order 1 --t 0.5 --exact")]
-pub struct DerivativeCommand {
-    /// Control points of the curve (columns), as for decasteljau.
-    #[arg(value_name = "CONTROL", allow_hyphen_values = true)]
-    pub control: String,
-    /// The order r of the derivative.
-    #[arg(long, short = 'r', value_name = "R", default_value_t = 1)]
-    pub order: usize,
-    /// Also the values of the derivative at these parameters.
-    #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
-    pub t: Option<String>,
-    #[command(flatten)]
-    pub rows: RowsArgs,
-    #[command(flatten)]
-    pub script: ScriptArgs,
-    #[command(flatten)]
-    pub output: OutputArgs,
-    #[command(flatten)]
-    pub plot: PlotArgs,
-}
-
-/// The r-th derivative of a Bézier curve.
-pub fn derivative<T: LiteralScalar>(
-    limits: &Limits,
-    cmd: &DerivativeCommand,
-) -> Result<Outcome, CliError> {
-    let script = prepare_script::<T>(limits, &cmd.script, None)?;
-    let control = points(
-        limits,
-        "CONTROL",
-        &cmd.control,
-        script.as_ref(),
-        cmd.rows.rows,
-    )?;
-    check_degree(limits, "CONTROL", control.ncols().saturating_sub(1))?;
-    let curve =
-        BezierCurve::new(control).map_err(lib("CONTROL", "control points, one per column"))?;
-    let d = curve
-        .derivative(cmd.order)
-        .map_err(lib("--order", "an order r ≤ the degree n"))?;
-    let mut report = Report::new();
-    report.push("control", Value::Matrix(d.control().clone()));
-    let ts: Vec<T> = match &cmd.t {
-        Some(t) => crate::load_params(limits, "--t", t)?,
-        None => Vec::new(),
-    };
-    let dense: Vec<T> = T::linspace(&T::zero(), &T::one(), 101);
-    check_work(
-        limits,
-        "--t",
-        curve_work(&d, &ts, false, plotted(&cmd.plot, &dense)),
-    )?;
-    if cmd.t.is_some() {
-        crate::slips::outside(
-            "--t",
-            &ts,
-            &T::zero(),
-            &T::one(),
-            "the derivative is extrapolated there",
-        );
-        let values = d
-            .eval_many(&ts)
-            .map_err(lib("--t", "finite parameter values"))?;
-        report.push("t", Value::Matrix(row(&ts)));
-        report.push("result", Value::Matrix(values));
-    }
-    let mut files = PendingWrites::new();
-    if let Some(path) = &cmd.plot.plot {
-        let line = d.eval_many(&dense).map_err(lib("--plot", "a curve"))?;
-        let figure = Figure::new(format!("derivative of order {}", cmd.order))
-            .curve(to_f64(&line), Colour::Blue, "derivative curve")
-            .control_polygon(to_f64(d.control()), "its control polygon");
-        add_plot(&mut files, "--plot", path, &figure)?;
     }
     finish(
         &report,

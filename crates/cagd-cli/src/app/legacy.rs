@@ -68,26 +68,6 @@ impl Run for lagrange::LagrangeCommand {
     }
 }
 
-impl Run for bezier::BernsteinCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        bezier::bernstein::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for bezier::DerivativeCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        bezier::derivative::<T>(&cx.limits, self)
-    }
-}
-
 impl Run for course::SplineCommand {
     fn exact(&self) -> bool {
         self.output.exact
@@ -135,26 +115,6 @@ impl Run for convert::ConvertCommand {
 
     fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
         convert::convert::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for elevate::ElevateCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        elevate::elevate::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for subdivide::SubdivideCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        subdivide::subdivide::<T>(&cx.limits, self)
     }
 }
 

@@ -11,6 +11,8 @@ use nalgebra::DMatrix;
 
 mod answer;
 
+mod bernstein;
+
 mod bezier;
 
 mod boundary;
@@ -22,6 +24,8 @@ mod curve_arg;
 mod cx;
 
 mod decasteljau;
+
+mod derivative;
 
 mod expr_curve;
 
@@ -131,8 +135,8 @@ subcommands! {
     DiscreteCoons(patches::DiscreteCoonsCommand),
     Gordon(patches::GordonCommand),
     Lagrange(lagrange::LagrangeCommand),
-    Bernstein(bezier::BernsteinCommand),
-    Derivative(bezier::DerivativeCommand),
+    Bernstein(bernstein::BernsteinCommand),
+    Derivative(derivative::DerivativeCommand),
     Spline(course::SplineCommand),
     Hermite(course::HermiteCommand),
     Bspline(course::BSplineCommand),

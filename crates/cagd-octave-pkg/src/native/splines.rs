@@ -8,10 +8,14 @@ use cagd::nurbs::NurbsCurve;
 use cagd::spline::{CubicSpline, EndCondition};
 use nalgebra::{DMatrix, DVector};
 
-use super::{cost, native, CONTROL_FORM};
+use cagd_ops::ops::Bernstein;
+use cagd_ops::{Params, Role};
+
+use super::{cost, emit_result, native, CONTROL_FORM};
 use crate::args::Call;
 use crate::error::{Kind, PkgError, Result};
 use crate::number::{emit_matrix, matrix, params, Number};
+use crate::ops::{execute, Names};
 use crate::value::{Sink, Value};
 
 /// Every parameter within `[lo, hi]`, else the core's out-of-domain error.
@@ -279,11 +283,17 @@ native!(
 fn bernstein_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     call.nargin(2, 2, "B = cagd_bernstein (n, t [, \"exact\"])")?;
     call.nargout_max(1)?;
-    let n = call.count(0, "n")?;
-    call.check_degree("n", n)?;
-    let t = params::<T>(call, 1, "t")?;
-    call.check_samples("t", t.len())?;
-    call.check_work("t", t.len(), cost::<T>((n + 1) * (n + 1), n + 1))?;
-    let b = cagd::bernstein::basis_matrix(n, &t);
-    emit_matrix(sink, 0, &b.transpose())
+    let op = Bernstein {
+        t: Params::Given(params::<T>(call, 1, "t")?),
+        ..Bernstein::new(call.count(0, "n")?)
+    };
+    let report = execute(call, BERNSTEIN_NAMES, &op)?;
+    // The operation's rows are the parameters; here B(i+1, k) = B_i^n(t(k)).
+    match report.matrix("result") {
+        Some(b) => emit_matrix(sink, 0, &b.transpose()),
+        None => emit_result(sink, 0, &report),
+    }
 }
+
+/// How `cagd_bernstein` names its arguments.
+const BERNSTEIN_NAMES: Names = &[(Role::Degree, "n"), (Role::T, "t"), (Role::Result, "B")];

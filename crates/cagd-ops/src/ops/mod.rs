@@ -5,6 +5,10 @@
 //! |---|---|
 //! | [`DeCasteljau`] | points of a Bézier curve, with the de Casteljau scheme |
 //! | [`Coons`] | a Coons patch of any four boundary curves, with its parts |
+//! | [`Bernstein`] | the Bernstein polynomials of one degree |
+//! | [`Derivative`] | the derivative of a Bézier curve: control points and values |
+//! | [`Subdivide`] | a Bézier curve split in two by de Casteljau's scheme |
+//! | [`Elevate`] | degree elevation of a Bézier or clamped B-spline curve |
 
 use cagd::{Curve, Scalar};
 use nalgebra::DMatrix;
@@ -12,12 +16,20 @@ use nalgebra::DMatrix;
 use crate::error::{lib, Result};
 use crate::{number_text, Context, Role};
 
+mod bernstein;
 pub mod coons;
 mod decasteljau;
+mod derivative;
+mod elevate;
+mod subdivide;
 pub mod surface;
 
+pub use bernstein::Bernstein;
 pub use coons::{Blend, Coons};
 pub use decasteljau::DeCasteljau;
+pub use derivative::Derivative;
+pub use elevate::Elevate;
+pub use subdivide::Subdivide;
 
 /// How much more steps cost than the points alone: each scheme is computed again and laid out
 /// as text, about as many numbers as operations, each number some 50 operations to format
