@@ -18,16 +18,6 @@ impl Run for course_examples::CourseCommand {
     }
 }
 
-impl Run for bezier::BezierPatchCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        bezier::bezier_patch::<T>(&cx.limits, self)
-    }
-}
-
 impl Run for patches::CoonsBicubicCommand {
     fn exact(&self) -> bool {
         self.output.exact

@@ -15,6 +15,8 @@ mod bernstein;
 
 mod bezier;
 
+mod bezier_patch;
+
 mod boundary;
 
 mod coons;
@@ -73,8 +75,6 @@ mod patches;
 
 mod ruled;
 
-mod scheme;
-
 mod spline_steps;
 
 mod subdivide;
@@ -129,7 +129,7 @@ subcommands! {
     Thesis(thesis::ThesisCommand),
     Course(course_examples::CourseCommand),
     Decasteljau(decasteljau::DecasteljauCommand),
-    BezierPatch(bezier::BezierPatchCommand),
+    BezierPatch(bezier_patch::BezierPatchCommand),
     Coons(coons::CoonsCommand),
     CoonsBicubic(patches::CoonsBicubicCommand),
     DiscreteCoons(patches::DiscreteCoonsCommand),

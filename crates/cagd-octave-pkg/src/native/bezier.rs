@@ -1,15 +1,15 @@
 //! Bézier curves and patches: values, derivatives, subdivision, degree elevation.
 
-use cagd::bezier::{BezierCurve, BezierPatch};
-use nalgebra::DMatrix;
+use cagd::grid::PointGrid;
 
-use cagd_ops::ops::{DeCasteljau, Derivative, Elevate, Subdivide};
+use cagd_ops::ops::surface::SurfaceParams;
+use cagd_ops::ops::{BezierPatchPoints, DeCasteljau, Derivative, Elevate, Subdivide};
 use cagd_ops::{Params, Role};
 
-use super::{cost, emit_item, emit_result, native, CONTROL_FORM};
+use super::{emit_item, emit_result, native, CONTROL_FORM};
 use crate::args::Call;
 use crate::error::{Kind, PkgError, Result};
-use crate::number::{emit_grid, matrix, params, scalar, Number};
+use crate::number::{matrix, params, scalar, Number};
 use crate::ops::{execute, Names};
 use crate::value::Sink;
 
@@ -133,18 +133,30 @@ fn bezier_patch_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result
             PATCH_FORM,
         ));
     }
+    // As every reader: NaN and ±Inf have no exact value.
     cagd::error::check_finite("B", b.data.iter())?;
+    // B(c, i+1, j+1) = b_ij(c) is the net (m+1, n+1, d) of the operation.
     let (d, m1, n1) = (b.dims[0], b.dims[1], b.dims.get(2).copied().unwrap_or(1));
-    call.check_degree("B (degree)", m1.max(n1) - 1)?;
-    let coords = (0..d)
-        .map(|c| DMatrix::from_fn(m1, n1, |i, j| T::from_input(b.data[c + d * (i + m1 * j)])))
-        .collect();
-    let patch = BezierPatch::new(coords)?;
-    let u = params::<T>(call, 1, "u")?;
-    let v = params::<T>(call, 2, "v")?;
-    call.check_grid("u, v", u.len(), v.len())?;
-    call.check_work("u, v", u.len() * v.len(), cost::<T>((m1 + n1) * d, m1 + n1))?;
-    let mut grid = vec![T::zero(); u.len() * v.len() * d];
-    patch.eval_grid_into(&u, &v, &mut grid)?;
-    emit_grid(sink, 0, (u.len(), v.len(), d), &grid)
+    let net = PointGrid::from_shape_fn((m1, n1, d), |(i, j, c)| {
+        T::from_input(b.data[c + d * (i + m1 * j)])
+    });
+    let op = BezierPatchPoints {
+        at: SurfaceParams {
+            u: Params::Given(params::<T>(call, 1, "u")?),
+            v: Params::Given(params::<T>(call, 2, "v")?),
+            list: false,
+        },
+        ..BezierPatchPoints::new(net)
+    };
+    let report = execute(call, PATCH_NAMES, &op)?;
+    emit_result(sink, 0, &report)
 }
+
+/// How `cagd_bezier_patch` names its arguments.
+const PATCH_NAMES: Names = &[
+    (Role::Net, "B"),
+    (Role::U, "u"),
+    (Role::V, "v"),
+    (Role::Grid, "u, v"),
+    (Role::Result, "X"),
+];

@@ -5,6 +5,7 @@
 //! |---|---|
 //! | [`DeCasteljau`] | points of a Bézier curve, with the de Casteljau scheme |
 //! | [`Coons`] | a Coons patch of any four boundary curves, with its parts |
+//! | [`BezierPatchPoints`] | points of a Bézier patch or of a partial derivative, with the schemes |
 //! | [`Bernstein`] | the Bernstein polynomials of one degree |
 //! | [`Derivative`] | the derivative of a Bézier curve: control points and values |
 //! | [`Subdivide`] | a Bézier curve split in two by de Casteljau's scheme |
@@ -17,6 +18,7 @@ use crate::error::{lib, Result};
 use crate::{number_text, Context, Role};
 
 mod bernstein;
+mod bezier_patch;
 pub mod coons;
 mod decasteljau;
 mod derivative;
@@ -25,6 +27,7 @@ mod subdivide;
 pub mod surface;
 
 pub use bernstein::Bernstein;
+pub use bezier_patch::BezierPatchPoints;
 pub use coons::{Blend, Coons};
 pub use decasteljau::DeCasteljau;
 pub use derivative::Derivative;
