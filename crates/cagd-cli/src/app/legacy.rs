@@ -98,16 +98,6 @@ impl Run for course::NurbsCommand {
     }
 }
 
-impl Run for convert::ConvertCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        convert::convert::<T>(&cx.limits, self)
-    }
-}
-
 impl Run for insert_knot::InsertKnotCommand {
     fn exact(&self) -> bool {
         self.output.exact
@@ -125,16 +115,6 @@ impl Run for bspline_basis::BSplineBasisCommand {
 
     fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
         bspline_basis::bspline_basis::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for continuity::ContinuityCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        continuity::continuity::<T>(&cx.limits, self)
     }
 }
 

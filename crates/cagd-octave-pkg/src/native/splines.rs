@@ -2,13 +2,13 @@
 //! cubic forms, Bernstein values.
 
 use cagd::bspline::{BSplineCurve, KnotVector};
-use cagd::conversion::{self, CubicForm};
+use cagd::conversion::GeometryForm;
 use cagd::hermite::HermiteCubic;
 use cagd::nurbs::NurbsCurve;
 use cagd::spline::{CubicSpline, EndCondition};
-use nalgebra::{DMatrix, DVector};
+use nalgebra::DVector;
 
-use cagd_ops::ops::Bernstein;
+use cagd_ops::ops::{Bernstein, Convert};
 use cagd_ops::{Params, Role};
 
 use super::{cost, emit_result, native, CONTROL_FORM};
@@ -234,13 +234,13 @@ fn hermite_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> 
 }
 
 /// A cubic form by its name.
-fn form(call: &Call<'_, '_>, i: usize, what: &str) -> Result<CubicForm> {
+fn form(call: &Call<'_, '_>, i: usize, what: &str) -> Result<GeometryForm> {
     let words = "\"hermite\", \"bezier\" or \"bspline\"";
     let text = call.text(i, what, words)?;
     match text.to_ascii_lowercase().as_str() {
-        "hermite" | "ferguson" => Ok(CubicForm::Hermite),
-        "bezier" => Ok(CubicForm::Bezier),
-        "bspline" => Ok(CubicForm::BSpline),
+        "hermite" | "ferguson" => Ok(GeometryForm::Hermite),
+        "bezier" => Ok(GeometryForm::Bezier),
+        "bspline" => Ok(GeometryForm::BSpline),
         other => Err(PkgError::arg(
             Kind::Value,
             what,
@@ -259,20 +259,22 @@ native!(
 fn convert_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     call.nargin(3, 3, "G = cagd_convert (G, from, to [, \"exact\"])")?;
     call.nargout_max(1)?;
-    let gform = "a d × 4 geometry matrix";
-    let g: DMatrix<T> = matrix::<T>(call, 0, "G", gform)?;
-    if g.ncols() != 4 {
-        return Err(PkgError::arg(
-            Kind::Shape,
-            "G",
-            format!("{}×{}", g.nrows(), g.ncols()),
-            gform,
-        ));
-    }
-    let from = form(call, 1, "from")?;
-    let to = form(call, 2, "to")?;
-    emit_matrix(sink, 0, &conversion::convert(&g, from, to)?)
+    let op = Convert::new(
+        matrix::<T>(call, 0, "G", "a d × 4 geometry matrix")?,
+        form(call, 1, "from")?,
+        form(call, 2, "to")?,
+    );
+    let report = execute(call, CONVERT_NAMES, &op)?;
+    emit_result(sink, 0, &report)
 }
+
+/// How `cagd_convert` names its arguments.
+const CONVERT_NAMES: Names = &[
+    (Role::Control, "G"),
+    (Role::From, "from"),
+    (Role::To, "to"),
+    (Role::Result, "G"),
+];
 
 native!(
     /// `B = cagd_bernstein (n, t)`: the Bernstein polynomials of degree `n` at `t`,

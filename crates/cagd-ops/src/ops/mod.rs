@@ -9,6 +9,8 @@
 //! | [`Bernstein`] | the Bernstein polynomials of one degree |
 //! | [`Derivative`] | the derivative of a Bézier curve: control points and values |
 //! | [`Subdivide`] | a Bézier curve split in two by de Casteljau's scheme |
+//! | [`Continuity`] | the joint of two Bézier curves: C0, C1, G1, C2, the free point |
+//! | [`Convert`] | a polynomial curve from one geometry form to another |
 //! | [`Elevate`] | degree elevation of a Bézier or clamped B-spline curve |
 
 use cagd::{Curve, Scalar};
@@ -20,6 +22,8 @@ use crate::{number_text, Context, Role};
 mod bernstein;
 mod bezier_patch;
 pub mod coons;
+mod continuity;
+mod convert;
 mod decasteljau;
 mod derivative;
 mod elevate;
@@ -28,7 +32,9 @@ pub mod surface;
 
 pub use bernstein::Bernstein;
 pub use bezier_patch::BezierPatchPoints;
+pub use continuity::Continuity;
 pub use coons::{Blend, Coons};
+pub use convert::Convert;
 pub use decasteljau::DeCasteljau;
 pub use derivative::Derivative;
 pub use elevate::Elevate;
