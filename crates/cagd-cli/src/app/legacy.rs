@@ -118,16 +118,6 @@ impl Run for bspline_basis::BSplineBasisCommand {
     }
 }
 
-impl Run for integrate::IntegrateCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        integrate::integrate::<T>(&cx.limits, self)
-    }
-}
-
 impl Run for ruled::RuledCommand {
     fn exact(&self) -> bool {
         self.output.exact

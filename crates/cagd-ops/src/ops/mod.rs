@@ -11,6 +11,7 @@
 //! | [`Subdivide`] | a Bézier curve split in two by de Casteljau's scheme |
 //! | [`Continuity`] | the joint of two Bézier curves: C0, C1, G1, C2, the free point |
 //! | [`Convert`] | a polynomial curve from one geometry form to another |
+//! | [`Integrate`] | antiderivatives and integrals of Bernstein polynomials, Bézier and B-spline curves |
 //! | [`Elevate`] | degree elevation of a Bézier or clamped B-spline curve |
 
 use cagd::{Curve, Scalar};
@@ -27,6 +28,7 @@ mod convert;
 mod decasteljau;
 mod derivative;
 mod elevate;
+mod integrate;
 mod subdivide;
 pub mod surface;
 
@@ -38,6 +40,7 @@ pub use convert::Convert;
 pub use decasteljau::DeCasteljau;
 pub use derivative::Derivative;
 pub use elevate::Elevate;
+pub use integrate::Integrate;
 pub use subdivide::Subdivide;
 
 /// How much more steps cost than the points alone: each scheme is computed again and laid out
