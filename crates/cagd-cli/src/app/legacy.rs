@@ -170,26 +170,6 @@ impl Run for circle::ArcCommand {
     }
 }
 
-impl Run for CurveCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        curve::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for SurfaceCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        surface::<T>(&cx.limits, self)
-    }
-}
-
 impl Run for crate::serve::ServeCommand {
     fn run<T: LiteralScalar>(&self, _cx: &mut Cx) -> Result<Outcome, CliError> {
         Err(CliError::new(
@@ -198,15 +178,5 @@ impl Run for crate::serve::ServeCommand {
             "`cagd serve` typed in a terminal",
             ErrorKind::Unsupported,
         ))
-    }
-}
-
-impl Run for ScriptCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        script::<T>(&cx.limits, self)
     }
 }

@@ -12,6 +12,8 @@
 //! | [`Continuity`] | the joint of two Bézier curves: C0, C1, G1, C2, the free point |
 //! | [`Convert`] | a polynomial curve from one geometry form to another |
 //! | [`Integrate`] | antiderivatives and integrals of Bernstein polynomials, Bézier and B-spline curves |
+//! | [`CurveSamples`] | a curve known by evaluation (a user's expression) at parameters |
+//! | [`SurfaceSamples`] | a surface known by evaluation (a user's expression) on a grid |
 //! | [`Elevate`] | degree elevation of a Bézier or clamped B-spline curve |
 
 use cagd::{Curve, Scalar};
@@ -24,6 +26,7 @@ mod bernstein;
 mod bezier_patch;
 pub mod coons;
 mod continuity;
+mod curve_samples;
 mod convert;
 mod decasteljau;
 mod derivative;
@@ -31,17 +34,20 @@ mod elevate;
 mod integrate;
 mod subdivide;
 pub mod surface;
+mod surface_samples;
 
 pub use bernstein::Bernstein;
 pub use bezier_patch::BezierPatchPoints;
 pub use continuity::Continuity;
 pub use coons::{Blend, Coons};
+pub use curve_samples::CurveSamples;
 pub use convert::Convert;
 pub use decasteljau::DeCasteljau;
 pub use derivative::Derivative;
 pub use elevate::Elevate;
 pub use integrate::Integrate;
 pub use subdivide::Subdivide;
+pub use surface_samples::{SurfaceEvaluator, SurfaceSamples};
 
 /// How much more steps cost than the points alone: each scheme is computed again and laid out
 /// as text, about as many numbers as operations, each number some 50 operations to format
