@@ -159,7 +159,11 @@ impl<T: Scalar> BSplineCurve<T> {
             spans
                 .saturating_mul(per_span)
                 .saturating_add(new_points.saturating_mul(per_point)),
-            polynomial_bits(self.degree() + self.degree() + r, 2 * knot_bits, control_bits),
+            polynomial_bits(
+                self.degree() + self.degree() + r,
+                2 * knot_bits,
+                control_bits,
+            ),
         )
     }
 

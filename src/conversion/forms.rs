@@ -224,11 +224,17 @@ mod tests {
         let (t, _, _) =
             form_conversion::<BigRational>(GeometryForm::Bezier, GeometryForm::Monomial, 4)
                 .unwrap();
-        assert_eq!(BigRational::mat_mul(&x, &t).as_slice(), &[q(0), q(3), q(0), q(0)]);
+        assert_eq!(
+            BigRational::mat_mul(&x, &t).as_slice(),
+            &[q(0), q(3), q(0), q(0)]
+        );
         let (t, _, _) =
             form_conversion::<BigRational>(GeometryForm::Bezier, GeometryForm::Algebraic, 4)
                 .unwrap();
-        assert_eq!(BigRational::mat_mul(&x, &t).as_slice(), &[q(0), q(0), q(3), q(0)]);
+        assert_eq!(
+            BigRational::mat_mul(&x, &t).as_slice(),
+            &[q(0), q(0), q(3), q(0)]
+        );
     }
 
     #[test]

@@ -9,8 +9,7 @@ use crate::error::{lib, Kind, OpError, Result};
 use crate::Role;
 
 /// The form of a B-spline curve's data: `n + 1` control points, degree `p`, `n + p + 2` knots.
-pub const BSPLINE_FORM: &str =
-    "degree p, n+1 ≥ p+1 control points and n+p+2 non-decreasing knots";
+pub const BSPLINE_FORM: &str = "degree p, n+1 ≥ p+1 control points and n+p+2 non-decreasing knots";
 
 /// The degree of a B-spline as given: the degree `p`, or the order `k = p + 1`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -50,7 +50,12 @@ impl Run for ScriptCommand {
             .into_iter()
             .map(|w| (self.file.clone(), w))
             .collect();
-        finish(&variables(&loaded), &self.output, PendingWrites::new(), warnings)
+        finish(
+            &variables(&loaded),
+            &self.output,
+            PendingWrites::new(),
+            warnings,
+        )
     }
 }
 

@@ -103,9 +103,9 @@ struct ExprSurface<T: LiteralScalar> {
 impl<T: LiteralScalar> SurfaceEvaluator<T> for ExprSurface<T> {
     fn grid(&self, us: &[T], vs: &[T]) -> cagd_ops::Result<PointGrid<T>> {
         let mut env = self.env.borrow_mut();
-        self.expr
-            .sample_surface(&mut env, us, vs)
-            .map_err(|e| OpError::new(Role::Result, Kind::Value, e.to_string(), SURFACE_FORM).caused_by(e))
+        self.expr.sample_surface(&mut env, us, vs).map_err(|e| {
+            OpError::new(Role::Result, Kind::Value, e.to_string(), SURFACE_FORM).caused_by(e)
+        })
     }
 
     fn work(&self, us: &[T], vs: &[T]) -> Work {

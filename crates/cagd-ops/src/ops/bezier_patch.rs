@@ -119,7 +119,13 @@ impl<T: Scalar> Operation<T> for BezierPatchPoints<T> {
             let point = patch.eval(us[0].clone(), vs[0].clone());
             report.push("result", Value::column(&point));
         } else {
-            push_surface(&mut report, "result", (&us, &vs), grid.clone(), self.at.list);
+            push_surface(
+                &mut report,
+                "result",
+                (&us, &vs),
+                grid.clone(),
+                self.at.list,
+            );
         }
         let mut answer = Answer {
             report,
@@ -193,9 +199,11 @@ impl<T: Scalar> BezierPatchPoints<T> {
         report: &Report<T>,
         single: bool,
     ) -> Drawing {
-        let drawing = Drawing::new("Bézier patch")
-            .surface(grid, "patch")
-            .net(grid_f64(net), Colour::Red, "control net");
+        let drawing = Drawing::new("Bézier patch").surface(grid, "patch").net(
+            grid_f64(net),
+            Colour::Red,
+            "control net",
+        );
         match (single, report.matrix("result")) {
             (true, Some(point)) if !self.at.list => {
                 let (u, v) = (report.matrix("u"), report.matrix("v"));

@@ -91,8 +91,7 @@ impl<T: Scalar> Operation<T> for Continuity<T> {
         let bits = max_bits(self.first.iter()).max(max_bits(self.second.iter()));
         let cost = bezier_joint_cost(points, self.first.nrows(), bits);
         cx.check_cost(Role::Joint, cost, T::EXACT)?;
-        let second =
-            BezierCurve::new(self.second.clone()).map_err(lib(Role::Second, FORM))?;
+        let second = BezierCurve::new(self.second.clone()).map_err(lib(Role::Second, FORM))?;
         let mut report = Report::new();
         let first = if self.free_point {
             self.with_free_point(&second, &mut report, cx)?
@@ -151,9 +150,7 @@ impl<T: Scalar> Continuity<T> {
             );
         }
         let k = self.k.clone().unwrap_or_else(T::one);
-        let point = DVector::from_fn(d, |r, _| {
-            base[r].clone() + k.clone() * direction[r].clone()
-        });
+        let point = DVector::from_fn(d, |r, _| base[r].clone() + k.clone() * direction[r].clone());
         report.push("free_base", Value::column(&base));
         report.push("free_direction", Value::column(&direction));
         report.push(
@@ -263,10 +260,25 @@ fn verdict<T: Scalar>(j: &BezierJoint<T>, digits: usize) -> String {
         _ => "G1: no: the tangents are not parallel".to_string(),
     };
     [
-        format!("C0: {}: x(1) = {}, ¹x(0) = {}", yes(j.joint.c0), p(&j.end), p(&j.start)),
-        format!("C1: {}: x'(1) = {}, ¹x'(0) = {}", yes(j.joint.c1), p(&j.d_end), p(&j.d_start)),
+        format!(
+            "C0: {}: x(1) = {}, ¹x(0) = {}",
+            yes(j.joint.c0),
+            p(&j.end),
+            p(&j.start)
+        ),
+        format!(
+            "C1: {}: x'(1) = {}, ¹x'(0) = {}",
+            yes(j.joint.c1),
+            p(&j.d_end),
+            p(&j.d_start)
+        ),
         g1,
-        format!("C2: {}: x''(1) = {}, ¹x''(0) = {}", yes(j.c2), p(&j.dd_end), p(&j.dd_start)),
+        format!(
+            "C2: {}: x''(1) = {}, ¹x''(0) = {}",
+            yes(j.c2),
+            p(&j.dd_end),
+            p(&j.dd_start)
+        ),
     ]
     .join("\n")
 }

@@ -71,8 +71,8 @@ impl<T: Scalar> Operation<T> for Convert<T> {
         self.check_shape()?;
         let cost = form_conversion_cost(k, x.nrows(), max_bits(x.iter()));
         cx.check_cost(Role::Control, cost, T::EXACT)?;
-        let (t, into, out) =
-            form_conversion::<T>(self.from, self.to, k).map_err(lib(Role::Control, GEOMETRY_FORM))?;
+        let (t, into, out) = form_conversion::<T>(self.from, self.to, k)
+            .map_err(lib(Role::Control, GEOMETRY_FORM))?;
         let result = T::mat_mul(x, &t);
         let bezier = BezierCurve::new(T::mat_mul(x, &into)).map_err(lib(
             Role::Control,

@@ -81,10 +81,7 @@ impl<T: Scalar> Operation<T> for CurveSamples<T> {
             .check_work(work.what, work.operations)
             .map_err(lib(Role::Control, SAMPLES_FORM))?;
         cx.check_interrupt()?;
-        let points = self
-            .curve
-            .values(&ts)
-            .map_err(|e| e.about(Role::Control))?;
+        let points = self.curve.values(&ts).map_err(|e| e.about(Role::Control))?;
         let mut report = Report::new();
         report.push(self.param.as_str(), Value::row(&ts));
         report.push("result", Value::Matrix(points.clone()));

@@ -76,7 +76,11 @@ impl<T: Scalar> Elevate<T> {
         let curve =
             BezierCurve::new(self.control.clone()).map_err(lib(Role::Control, CONTROL_FORM))?;
         let cost = curve.elevate_cost(self.by, max_bits(self.control.iter()));
-        cx.check_cost(Role::By, cost.and(picture_cost(&curve, self.drawing)), T::EXACT)?;
+        cx.check_cost(
+            Role::By,
+            cost.and(picture_cost(&curve, self.drawing)),
+            T::EXACT,
+        )?;
         let mut report = Report::new();
         let mut last = curve.clone();
         for _ in 0..self.by {
@@ -104,7 +108,11 @@ impl<T: Scalar> Elevate<T> {
         let curve = arg.curve(self.control.clone())?;
         let knots = curve.knots().as_slice();
         let cost = curve.elevate_cost(self.by, max_bits(self.control.iter()), max_bits(knots));
-        cx.check_cost(Role::By, cost.and(picture_cost(&curve, self.drawing)), T::EXACT)?;
+        cx.check_cost(
+            Role::By,
+            cost.and(picture_cost(&curve, self.drawing)),
+            T::EXACT,
+        )?;
         let elevated = curve.elevate(self.by).map_err(lib(
             Role::Knots,
             "a clamped knot vector (first and last knots p+1 times)",

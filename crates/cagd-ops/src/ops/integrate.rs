@@ -24,8 +24,8 @@ use cagd::cost::max_bits;
 use cagd::integral::{
     antiderivative_cost, bernstein_antiderivative, bernstein_antiderivative_cost,
     bernstein_antiderivative_values, bernstein_integral, bezier_antiderivative,
-    bezier_antiderivative_factor, bezier_integral, bspline_antiderivative,
-    bspline_basis_integrals, bspline_integral, bspline_integral_to,
+    bezier_antiderivative_factor, bezier_integral, bspline_antiderivative, bspline_basis_integrals,
+    bspline_integral, bspline_integral_to,
 };
 use cagd::{Curve, Scalar};
 use nalgebra::DMatrix;
@@ -193,7 +193,12 @@ impl<T: Scalar> Integrate<T> {
     fn bezier(&self, cx: &mut Context, control: &DMatrix<T>) -> Result<Answer<T>> {
         let n = control.ncols().saturating_sub(1);
         cx.check_degree(Role::Control, n.saturating_add(1))?;
-        let cost = antiderivative_cost(control.ncols(), control.nrows(), n, max_bits(control.iter()));
+        let cost = antiderivative_cost(
+            control.ncols(),
+            control.nrows(),
+            n,
+            max_bits(control.iter()),
+        );
         cx.check_cost(Role::T, cost, T::EXACT)?;
         let (a, b) = self
             .interval
@@ -216,7 +221,13 @@ impl<T: Scalar> Integrate<T> {
             report.push("t", Value::row(&ts));
             report.push("result", Value::Matrix(values));
         }
-        let drawing = self.picture(cx, &anti, anti.control(), "antiderivative of a Bézier curve", "∫ c")?;
+        let drawing = self.picture(
+            cx,
+            &anti,
+            anti.control(),
+            "antiderivative of a Bézier curve",
+            "∫ c",
+        )?;
         Ok(Answer {
             report,
             drawing,
@@ -233,7 +244,12 @@ impl<T: Scalar> Integrate<T> {
     ) -> Result<Answer<T>> {
         let p = arg.degree.degree()?;
         cx.check_degree(Role::Control, p.saturating_add(1))?;
-        let cost = antiderivative_cost(control.ncols(), control.nrows(), p, max_bits(control.iter()));
+        let cost = antiderivative_cost(
+            control.ncols(),
+            control.nrows(),
+            p,
+            max_bits(control.iter()),
+        );
         cx.check_cost(Role::T, cost, T::EXACT)?;
         let curve = arg.curve(control.clone())?;
         let anti = bspline_antiderivative(&curve).map_err(lib(Role::Spline, BSPLINE_FORM))?;
@@ -243,7 +259,10 @@ impl<T: Scalar> Integrate<T> {
         self.check_values_cost(cx, &anti, &ts)?;
         let mut report = Report::new();
         if self.steps {
-            report.push("basis_integrals", Value::row(&bspline_basis_integrals(&curve)));
+            report.push(
+                "basis_integrals",
+                Value::row(&bspline_basis_integrals(&curve)),
+            );
         }
         report.push("knots", Value::row(anti.knots().as_slice()));
         report.push("antiderivative", Value::Matrix(anti.control().clone()));
@@ -312,8 +331,16 @@ fn bernstein_picture<T: Scalar>(n: usize, rows: &[usize]) -> Result<Drawing> {
     let dense = cagd::linspace::linspace_in(&T::zero(), &T::one(), PICTURE_SAMPLES)
         .map_err(lib(Role::T, "a picture"))?;
     let values = bernstein_antiderivative_values(n, rows, &dense);
-    let colours = [Colour::Blue, Colour::Red, Colour::Green, Colour::Orange, Colour::Purple];
-    let mut drawing = Drawing::new(format!("integrals of the Bernstein polynomials of degree {n}"));
+    let colours = [
+        Colour::Blue,
+        Colour::Red,
+        Colour::Green,
+        Colour::Orange,
+        Colour::Purple,
+    ];
+    let mut drawing = Drawing::new(format!(
+        "integrals of the Bernstein polynomials of degree {n}"
+    ));
     for (k, &i) in rows.iter().enumerate() {
         let line = DMatrix::from_fn(2, dense.len(), |r, c| {
             if r == 0 {

@@ -85,7 +85,10 @@ impl<T: Scalar> Operation<T> for Subdivide<T> {
         let mut report = Report::new();
         if self.steps {
             let scheme = curve.scheme(t.clone());
-            report.push("scheme", curve_scheme(&scheme, cx.digits, Marks::Subdivision));
+            report.push(
+                "scheme",
+                curve_scheme(&scheme, cx.digits, Marks::Subdivision),
+            );
         }
         report.push("t", Value::row(std::slice::from_ref(&t)));
         report.push("left", Value::Matrix(left.control().clone()));
