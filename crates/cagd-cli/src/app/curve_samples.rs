@@ -2,9 +2,6 @@
 //! sampled ([`cagd_ops::ops::CurveSamples`]; the expression is evaluated here, where the request
 //! asks).
 
-use std::cell::RefCell;
-use std::rc::Rc;
-
 use cagd_octave::literal::{Env, LiteralScalar, ParamExpr};
 use cagd_ops::ops::CurveSamples;
 use cagd_ops::Role;
@@ -13,7 +10,7 @@ use clap::Args;
 use super::answer::{respond, Destinations};
 use super::common::shape;
 use super::cx::Cx;
-use super::expr_curve::{env_warnings, ExprCurve, CURVE_FORM};
+use super::expr_curve::{env_warnings, shared_env, ExprCurve, CURVE_FORM};
 use super::read::curve_params;
 use super::run::{Names, Run};
 use crate::args::{CurveParamArgs, OutputArgs, PlotArgs, ScriptArgs};
@@ -57,11 +54,7 @@ impl Run for CurveCommand {
     fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
         let script = cx.script::<T>(&self.script, self.params.n)?;
         let expr = load_expression(&cx.limits, "EXPR", &self.expr, script.as_ref())?;
-        let env = Rc::new(RefCell::new(
-            script
-                .as_ref()
-                .map_or_else(|| Env::with_limits(cx.limits), |s| s.env().clone()),
-        ));
+        let env = shared_env(&cx.limits, script.as_ref());
         let param = self.parameter(&expr, &env.borrow())?;
         let curve = ExprCurve::new(expr, param, env.clone(), cx.limits, CURVE_FORM);
         let op = CurveSamples {

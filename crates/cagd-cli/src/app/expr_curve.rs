@@ -89,3 +89,14 @@ pub(crate) fn env_warnings<T: LiteralScalar>(
         .map(|w| (argument.to_string(), w))
         .collect()
 }
+
+/// The environment a command's expressions are evaluated in, shared by its evaluators (whose
+/// warnings it collects): the data script's, or an empty one within the command's limits.
+pub(crate) fn shared_env<T: LiteralScalar>(
+    limits: &Limits,
+    script: Option<&cagd_octave::script::Script<T>>,
+) -> Rc<RefCell<Env<T>>> {
+    Rc::new(RefCell::new(
+        script.map_or_else(|| Env::with_limits(*limits), |s| s.env().clone()),
+    ))
+}

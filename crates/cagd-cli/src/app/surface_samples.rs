@@ -14,7 +14,7 @@ use clap::Args;
 
 use super::answer::{respond, Destinations};
 use super::cx::Cx;
-use super::expr_curve::env_warnings;
+use super::expr_curve::{env_warnings, shared_env};
 use super::read::surface_params;
 use super::run::{Names, Run};
 use super::work::Sampling;
@@ -64,11 +64,7 @@ impl Run for SurfaceCommand {
     fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
         let script = cx.script::<T>(&self.script, self.params.n)?;
         let expr = load_expression(&cx.limits, "EXPR", &self.expr, script.as_ref())?;
-        let env = Rc::new(RefCell::new(
-            script
-                .as_ref()
-                .map_or_else(|| Env::with_limits(cx.limits), |s| s.env().clone()),
-        ));
+        let env = shared_env(&cx.limits, script.as_ref());
         let surface = ExprSurface {
             expr,
             env: env.clone(),

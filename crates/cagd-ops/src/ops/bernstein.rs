@@ -102,43 +102,57 @@ impl<T: Scalar> Operation<T> for Bernstein<T> {
 }
 
 impl<T: Scalar> Bernstein<T> {
-    /// The polynomials over `[0, 1]`, each as the plane curve `(t, B_i^n(t))`, labelled one by
-    /// one up to six of them.
+    /// The polynomials over `[0, 1]`, each as the plane curve `(t, B_i^n(t))`.
     fn picture(&self) -> Result<Drawing> {
         let n = self.degree;
         let dense = cagd::linspace::linspace_in(&T::zero(), &T::one(), PICTURE_SAMPLES)
             .map_err(lib(Role::T, "a picture"))?;
-        let values = basis_matrix(n, &dense);
-        let colours = [
-            Colour::Blue,
-            Colour::Red,
-            Colour::Green,
-            Colour::Orange,
-            Colour::Purple,
-            Colour::Black,
-        ];
         let shown: Vec<usize> = match self.index {
             Some(i) => vec![i],
             None => (0..=n).collect(),
         };
-        let mut drawing = Drawing::new(format!("Bernstein polynomials of degree {n}"));
-        for (k, &i) in shown.iter().enumerate() {
-            let line = DMatrix::from_fn(2, dense.len(), |r, c| {
-                if r == 0 {
-                    dense[c].to_f64()
-                } else {
-                    values[(c, i)].to_f64()
-                }
-            });
-            let label = match (shown.len() <= 6, k) {
-                (true, _) => format!("B_{i}^{n}"),
-                (false, 0) => format!("B_i^{n}, i = 0..{n}"),
-                _ => String::new(),
-            };
-            drawing = drawing.curve(line, colours[k % colours.len()], label);
-        }
-        Ok(drawing)
+        let values = basis_matrix(n, &dense).select_columns(&shown);
+        let title = format!("Bernstein polynomials of degree {n}");
+        Ok(graphs(Drawing::new(title), &dense, &values, &shown, |i| {
+            format!("B_{i}^{n}")
+        }))
     }
+}
+
+/// The graphs `(t, f_k(t))` of the columns of `values` (one per function, at `ts`), coloured in
+/// turn; up to six labelled `label(index)` one by one, more by one label for all.
+pub(super) fn graphs<T: Scalar>(
+    mut drawing: Drawing,
+    ts: &[T],
+    values: &DMatrix<T>,
+    indices: &[usize],
+    label: impl Fn(&str) -> String,
+) -> Drawing {
+    let colours = [
+        Colour::Blue,
+        Colour::Red,
+        Colour::Green,
+        Colour::Orange,
+        Colour::Purple,
+        Colour::Black,
+    ];
+    let last = indices.last().copied().unwrap_or(0);
+    for (k, &i) in indices.iter().enumerate() {
+        let line = DMatrix::from_fn(2, ts.len(), |r, c| {
+            if r == 0 {
+                ts[c].to_f64()
+            } else {
+                values[(c, k)].to_f64()
+            }
+        });
+        let text = match (indices.len() <= 6, k) {
+            (true, _) => label(&i.to_string()),
+            (false, 0) => format!("{}, i = 0..{last}", label("i")),
+            _ => String::new(),
+        };
+        drawing = drawing.curve(line, colours[k % colours.len()], text);
+    }
+    drawing
 }
 
 #[cfg(test)]

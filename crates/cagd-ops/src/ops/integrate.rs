@@ -30,6 +30,7 @@ use cagd::integral::{
 use cagd::{Curve, Scalar};
 use nalgebra::DMatrix;
 
+use super::bernstein::graphs;
 use super::decasteljau::CONTROL_FORM;
 use super::{eval_points, to_f64};
 use crate::bspline_arg::{BSplineArg, BSPLINE_FORM};
@@ -331,34 +332,10 @@ fn bernstein_picture<T: Scalar>(n: usize, rows: &[usize]) -> Result<Drawing> {
     let dense = cagd::linspace::linspace_in(&T::zero(), &T::one(), PICTURE_SAMPLES)
         .map_err(lib(Role::T, "a picture"))?;
     let values = bernstein_antiderivative_values(n, rows, &dense);
-    let colours = [
-        Colour::Blue,
-        Colour::Red,
-        Colour::Green,
-        Colour::Orange,
-        Colour::Purple,
-    ];
-    let mut drawing = Drawing::new(format!(
-        "integrals of the Bernstein polynomials of degree {n}"
-    ));
-    for (k, &i) in rows.iter().enumerate() {
-        let line = DMatrix::from_fn(2, dense.len(), |r, c| {
-            if r == 0 {
-                dense[c].to_f64()
-            } else {
-                values[(c, k)].to_f64()
-            }
-        });
-        let label = if rows.len() <= 6 {
-            format!("∫ B_{i}^{n}")
-        } else if k == 0 {
-            format!("∫ B_i^{n}, i = 0..{n}")
-        } else {
-            String::new()
-        };
-        drawing = drawing.curve(line, colours[k % colours.len()], label);
-    }
-    Ok(drawing)
+    let title = format!("integrals of the Bernstein polynomials of degree {n}");
+    Ok(graphs(Drawing::new(title), &dense, &values, rows, |i| {
+        format!("∫ B_{i}^{n}")
+    }))
 }
 
 #[cfg(test)]
