@@ -1,21 +1,5 @@
-//! The five geometry forms of a polynomial curve the course converts between (the lecture
-//! notes, "Konverze mezi reprezentacemi"; the matrix-form notes' product `P · M`), each a
-//! geometry matrix `X` (one column per vector) that describes the curve together with a basis:
-//!
-//! | form | geometry `X` | degree |
-//! |---|---|---|
-//! | Hermite (Ferguson) | `[x(0) x(1) x'(0) x'(1)]` | cubic |
-//! | Bézier | `[b_0 … b_n]` | any |
-//! | uniform cubic B-spline segment | `[x_{i−1} x_i x_{i+1} x_{i+2}]` | cubic |
-//! | monomial | `[a_0 … a_n]`, `p(t) = Σ a_j t^j` (the matrix-form notes' `P · M`) | any |
-//! | algebraic | `[a b c d]` of `u³, u², u, 1` (the lecture notes' `A`, powers descending) | any |
-//!
-//! Two forms describe the same curve when `X_to = X_from · T`; the conversion matrix goes
-//! through the Bézier form, `T = T_{from→Bézier} · T_{Bézier→to}`, with the lecture notes'
-//! `M_F M_G⁻¹` between the cubic forms ([`conversion_matrix`](super::conversion_matrix)) and
-//! the Bernstein-to-monomial matrix `M` of degree `n` (`M[i, j] = (−1)^{j−i} C(n, j) C(j, i)`,
-//! [`bezier_to_monomial_matrix`](super::bezier_to_monomial_matrix)) and its inverse for the
-//! monomial forms (the algebraic form is the monomial one with its columns reversed).
+//! The geometry forms the course converts between ([`GeometryForm`]) and their conversion
+//! matrices through the Bézier form.
 
 use nalgebra::DMatrix;
 
@@ -24,7 +8,25 @@ use crate::cost::Cost;
 use crate::error::{Error, Result};
 use crate::scalar::Scalar;
 
-/// A geometry form of a polynomial curve (see the [module documentation](self)).
+/// The five geometry forms of a polynomial curve the course converts between (the lecture
+/// notes, "Konverze mezi reprezentacemi"; the matrix-form notes' product `P · M`), each a
+/// geometry matrix `X` (one column per vector) that describes the curve together with a basis:
+///
+/// | form | geometry `X` | degree |
+/// |---|---|---|
+/// | Hermite (Ferguson) | `[x(0) x(1) x'(0) x'(1)]` | cubic |
+/// | Bézier | `[b_0 … b_n]` | any |
+/// | uniform cubic B-spline segment | `[x_{i−1} x_i x_{i+1} x_{i+2}]` | cubic |
+/// | monomial | `[a_0 … a_n]`, `p(t) = Σ a_j t^j` (the matrix-form notes' `P · M`) | any |
+/// | algebraic | `[a b c d]` of `u³, u², u, 1` (the lecture notes' `A`, powers descending) | any |
+///
+/// Two forms describe the same curve when `X_to = X_from · T`; the conversion matrix goes
+/// through the Bézier form, `T = T_{from→Bézier} · T_{Bézier→to}`, with the lecture notes'
+/// `M_F M_G⁻¹` between the cubic forms ([`conversion_matrix`](crate::conversion::conversion_matrix))
+/// and the Bernstein-to-monomial matrix `M` of degree `n` (`M[i, j] = (−1)^{j−i} C(n, j)
+/// C(j, i)`, [`bezier_to_monomial_matrix`](crate::conversion::bezier_to_monomial_matrix)) and
+/// its inverse for the monomial forms (the algebraic form is the monomial one with its columns
+/// reversed).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum GeometryForm {
     /// Hermite (Ferguson) cubic: `[x(0) x(1) x'(0) x'(1)]`.
