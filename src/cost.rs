@@ -28,6 +28,10 @@
 //! | the discrete Coons formula, its three parts | [`coons::discrete_coons_cost`](crate::coons::discrete_coons_cost), [`coons::discrete_coons_parts_cost`](crate::coons::discrete_coons_parts_cost) |
 //! | ruled surfaces, Ferguson patches | [`surfaces::ruled_point_cost`](crate::surfaces::ruled_point_cost), [`surfaces::ferguson_point_cost`](crate::surfaces::ferguson_point_cost) |
 //! | the band solve of a discrete Coons mask | [`Mask::solve_cost`](crate::coons::Mask::solve_cost) |
+//! | degree elevation of a Bézier or B-spline curve | [`bernstein::elevate_cost`](crate::bernstein::elevate_cost), [`BezierCurve::elevate_cost`](crate::BezierCurve::elevate_cost), [`BSplineCurve::elevate_cost`](crate::BSplineCurve::elevate_cost) |
+//! | conversion between geometry forms | [`conversion::form_conversion_cost`](crate::conversion::form_conversion_cost) |
+//! | the joint of two Bézier curves | [`continuity::bezier_joint_cost`](crate::continuity::bezier_joint_cost) |
+//! | antiderivatives, integrals of Bernstein polynomials | [`integral::antiderivative_cost`](crate::integral::antiderivative_cost), [`integral::bernstein_antiderivative_cost`](crate::integral::bernstein_antiderivative_cost) |
 //!
 //! The sizes grow with the construction ([`polynomial_bits`]): a de Casteljau scheme of degree
 //! `n` at `t = p/q` multiplies denominators by `q` at each of its `n` levels; an interpolating

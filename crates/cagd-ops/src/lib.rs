@@ -24,6 +24,7 @@
 
 #![warn(missing_docs)]
 
+pub mod bspline_arg;
 pub mod check;
 pub mod context;
 pub mod curves;

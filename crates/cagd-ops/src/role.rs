@@ -122,6 +122,15 @@ pub enum Role {
     Angles,
     /// A tolerance.
     Tolerance,
+    /// An index into a family (`i` of the Bernstein polynomial `B_i^n`).
+    Index,
+    /// A B-spline curve as a whole: its control points, degree and knots together (whose
+    /// counts must fit).
+    Spline,
+    /// A factor (`k` of `x'(1) = k · ¹x'(0)`).
+    Factor,
+    /// The joint of two curves (both together).
+    Joint,
     /// The result (a value that overflows, say).
     Result,
 }
@@ -191,6 +200,10 @@ impl Role {
             Role::Center => "center",
             Role::Angles => "angles",
             Role::Tolerance => "tolerance",
+            Role::Index => "i",
+            Role::Spline => "spline",
+            Role::Factor => "k",
+            Role::Joint => "joint",
             Role::Result => "result",
         }
     }

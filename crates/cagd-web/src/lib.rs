@@ -13,6 +13,7 @@
 //! command line's one-line message `cagd: error: ARG: PROBLEM; expected FORM`.
 
 mod command;
+mod ops;
 mod views;
 
 pub use command::{file_bytes, run};

@@ -13,9 +13,13 @@ use cagd_cli::{CliError, ErrorKind};
 use cagd_ops::knots::Degree;
 use cagd_ops::ops::{BSpline, Nurbs};
 use cagd_ops::{execute, Context, OpError, Operation, Params, Role};
+use cagd_ops::ops::{DeCasteljau, Elevate, Subdivide};
+use cagd_ops::Params;
 use nalgebra::DMatrix;
 use serde_json::{json, Value};
 use wasm_bindgen::prelude::wasm_bindgen;
+
+use crate::ops;
 
 /// Most samples of a view's curve or grid side (a view's picture, not a computation).
 const MAX_VIEW_SAMPLES: usize = 2000;
@@ -80,10 +84,13 @@ fn check_degree(degree: usize) -> Result<(), CliError> {
         ))
 }
 
-/// The Bézier curve of the `dim`-dimensional control points `control` (thesis algorithm 1):
+/// The Bézier curve of the `dim`-dimensional control points `control` (thesis algorithm 1),
+/// through the command line's requests ([`DeCasteljau`], [`Subdivide`], [`Elevate`]):
 /// `samples` points of the curve, the whole de Casteljau scheme at `t` (`levels[r]` holds
 /// `b_0^r(t) … b_{n−r}^r(t)`), the point `b_0^n(t)`, the control points of the two halves of
-/// the subdivision at `t` (`left`, `right`) and of the degree-elevated curve (`elevated`).
+/// the subdivision at `t` (`left`, `right`; at the ends of the interval, where one half would
+/// be empty, `halves_error` says so instead) and of the degree-elevated curve (`elevated`);
+/// `warnings` lists the requests' warnings (a `t` outside `[0, 1]`).
 ///
 /// ```
 /// let v = cagd_web::bezier_view(vec![0., 0., 0., 2., 8., 2., 4., 0.], 2, 0.5, 3);
@@ -94,30 +101,61 @@ fn check_degree(degree: usize) -> Result<(), CliError> {
 #[wasm_bindgen]
 pub fn bezier_view(control: Vec<f64>, dim: usize, t: f64, samples: usize) -> String {
     let answer = || -> Result<Value, CliError> {
-        let b = points("CONTROL", &control, dim)?;
-        check_degree(b.ncols() - 1)?;
+        let b = points("control", &control, dim)?;
         let n = sample_count(samples)?;
-        if !(0.0..=1.0).contains(&t) {
-            return Err(shape("--t", format!("t = {t}"), "a parameter in [0, 1]"));
+        let (curve, mut warnings) = ops::execute(&DeCasteljau {
+            t: Params::Samples(n),
+            ..DeCasteljau::new(b.clone())
+        })?;
+        let (scheme, more) = ops::execute(&DeCasteljau {
+            t: Params::Given(vec![t]),
+            steps: true,
+            ..DeCasteljau::new(b.clone())
+        })?;
+        warnings.extend(more);
+        let (elevated, _) = ops::execute(&Elevate::new(b.clone()))?;
+        let mut view = json!({
+            "curve": item(&curve.report, "result"),
+            "levels": levels(&scheme.report),
+            "point": item(&scheme.report, "result"),
+            "elevated": item(&elevated.report, "control"),
+            "warnings": warnings.iter().map(|w| format!("{}: {}", w.role.key(), w.message)).collect::<Vec<_>>(),
+        });
+        match ops::execute(&Subdivide {
+            t: Some(t),
+            ..Subdivide::new(b)
+        }) {
+            Ok((halves, _)) => {
+                view["left"] = item(&halves.report, "left");
+                view["right"] = item(&halves.report, "right");
+            }
+            Err(e) => view["halves_error"] = json!(format!("cagd: error: {e}")),
         }
-        let curve = BezierCurve::new(b).map_err(lib("CONTROL", "control points"))?;
-        let ts = cagd::linspace(0.0, 1.0, n);
-        let sampled = curve
-            .eval_many(&ts)
-            .map_err(lib("CONTROL", "control points"))?;
-        let scheme = curve.scheme(t);
-        let levels: Vec<Value> = scheme.levels().iter().map(flat).collect();
-        let (left, right) = (scheme.left_control(), scheme.right_control());
-        Ok(json!({
-            "curve": flat(&sampled),
-            "levels": levels,
-            "point": scheme.point_on_curve().as_slice(),
-            "left": flat(&left),
-            "right": flat(&right),
-            "elevated": flat(curve.elevate().control()),
-        }))
+        Ok(view)
     };
     answer().map_or_else(|e| error_json(&e), |v| v.to_string())
+}
+
+/// The report's matrix `name`, flat (column-major: one point after the other).
+fn item(report: &cagd_ops::Report<f64>, name: &str) -> Value {
+    report.matrix(name).map_or(Value::Null, flat)
+}
+
+/// The levels `r0 … rn` of the report's de Casteljau scheme, each flat.
+fn levels(report: &cagd_ops::Report<f64>) -> Value {
+    let Some(cagd_ops::Value::Shown { data, .. }) = report.get("scheme") else {
+        return Value::Null;
+    };
+    let cagd_ops::Value::Record(parts) = data.as_ref() else {
+        return Value::Null;
+    };
+    parts
+        .iter()
+        .filter_map(|p| match &p.value {
+            cagd_ops::Value::Matrix(m) => Some(flat(m)),
+            _ => None,
+        })
+        .collect()
 }
 
 /// The bilinearly blended Coons patch (thesis 4.1) of four cubic (or any degree) Bézier
@@ -329,15 +367,33 @@ mod tests {
     }
 
     #[test]
+    fn the_ends_of_the_slider_show_the_scheme_without_halves() {
+        let control = vec![0., 0., 0., 2., 8., 2., 4., 0.];
+        for (t, point) in [(0.0, [0.0, 0.0]), (1.0, [4.0, 0.0])] {
+            let v = parse(&bezier_view(control.clone(), 2, t, 11));
+            assert_eq!(v["point"], json!(point), "{v}");
+            assert!(v["left"].is_null() && v["halves_error"].is_string(), "{v}");
+            assert_eq!(v["elevated"].as_array().unwrap().len(), 10);
+        }
+    }
+
+    #[test]
     fn bad_view_input_is_a_one_line_message() {
         let v = parse(&bezier_view(vec![0., 1., 2.], 2, 0.5, 10));
         let e = v["error"].as_str().unwrap();
-        assert!(e.starts_with("cagd: error: CONTROL: 3 numbers"), "{e}");
+        assert!(e.starts_with("cagd: error: control: 3 numbers"), "{e}");
+        // Outside [0, 1] the curve is extrapolated, as on the command line; there are no halves.
         let v = parse(&bezier_view(vec![0., 1., 2., 3.], 2, 1.5, 10));
-        assert!(v["error"]
-            .as_str()
-            .unwrap()
-            .starts_with("cagd: error: --t: "));
+        assert_eq!(
+            v["warnings"][0],
+            "t: t = 1.5 lies outside [0, 1]; the curve is extrapolated there"
+        );
+        let e = v["halves_error"].as_str().unwrap();
+        assert!(e.starts_with("cagd: error: t: right half of a subdivided Bézier curve: interval [1.5, 1] is empty"), "{e}");
+        // A degree over the limit, worded as the command line words it after the name.
+        let v = parse(&bezier_view(vec![0.; 2 * 1002], 2, 0.5, 10));
+        let e = v["error"].as_str().unwrap();
+        assert_eq!(e, "cagd: error: control: degree: 1001 exceeds the limit of 1000; expected a lower degree (fewer control points or nodes)");
         let v = parse(&bspline_view(
             vec![0., 1., 2., 3.],
             2,

@@ -18,106 +18,6 @@ impl Run for course_examples::CourseCommand {
     }
 }
 
-impl Run for bezier::BezierPatchCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        bezier::bezier_patch::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for bezier::BernsteinCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        bezier::bernstein::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for bezier::DerivativeCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        bezier::derivative::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for convert::ConvertCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        convert::convert::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for elevate::ElevateCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        elevate::elevate::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for subdivide::SubdivideCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        subdivide::subdivide::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for continuity::ContinuityCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        continuity::continuity::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for integrate::IntegrateCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        integrate::integrate::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for CurveCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        curve::<T>(&cx.limits, self)
-    }
-}
-
-impl Run for SurfaceCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        surface::<T>(&cx.limits, self)
-    }
-}
-
 impl Run for crate::serve::ServeCommand {
     fn run<T: LiteralScalar>(&self, _cx: &mut Cx) -> Result<Outcome, CliError> {
         Err(CliError::new(
@@ -126,15 +26,5 @@ impl Run for crate::serve::ServeCommand {
             "`cagd serve` typed in a terminal",
             ErrorKind::Unsupported,
         ))
-    }
-}
-
-impl Run for ScriptCommand {
-    fn exact(&self) -> bool {
-        self.output.exact
-    }
-
-    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-        script::<T>(&cx.limits, self)
     }
 }

@@ -115,6 +115,10 @@ pub(crate) fn option_name(role: Role) -> &'static str {
         Role::Center => "--center",
         Role::Angles => "--angles",
         Role::Tolerance => "--tolerance",
+        Role::Index => "--i",
+        Role::Spline => "CONTROL/--degree/--knots",
+        Role::Factor => "--k",
+        Role::Joint => "FIRST/SECOND",
         Role::Result => "RESULT",
         _ => "argument",
     }

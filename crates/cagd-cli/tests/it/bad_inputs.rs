@@ -513,8 +513,10 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
             "--by",
             "Library::TooLarge",
         ),
+        // A Bézier curve of degree 899 raised by 99 is some 10⁶ operations (it runs); the
+        // blossoms of a cubic B-spline of 900 control points raised by 99 are 5.7·10⁹.
         (
-            s(&["elevate", "zeros(3, 900)", "--by", "99"]),
+            s(&["elevate", "zeros(3, 900)", "--by", "99", "--degree", "3"]),
             "--by",
             "Library::TooLarge",
         ),
@@ -1035,7 +1037,7 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
         (
             s(&["derivative", "[zeros(1,171) 1]", "--order", "171"]),
             "CONTROL",
-            "Library::NonFinite",
+            "Operation",
         ),
         (
             s(&["spline", "[1.7e308 -1.7e308 1.7e308]"]),

@@ -476,15 +476,15 @@ fn options_without_effect_are_errors_naming_them() {
     let cases: [(&[&str], &str); 6] = [
         (
             &["integrate", "[0 1 2]", "--i", "1"],
-            "--i: has no effect without --bernstein",
+            "--i: has no effect without the Bernstein polynomials",
         ),
         (
             &["integrate", "--bernstein", "2", "[0 1]"],
-            "CONTROL: has no effect with --bernstein",
+            "CONTROL: has no effect with the Bernstein polynomials",
         ),
         (
             &["continuity", "[0 1]", "[1 2]", "--k", "2"],
-            "--k: has no effect without --free-point",
+            "--k: has no effect without the free point",
         ),
         (
             &[

@@ -9,6 +9,16 @@ use cagd_ops::{Params, Role};
 use nalgebra::DMatrix;
 
 use super::{cost, emit_item, emit_result, native, CONTROL_FORM};
+use cagd::bspline::{BSplineCurve, KnotVector};
+use cagd::conversion::GeometryForm;
+use cagd::hermite::HermiteCubic;
+use cagd::nurbs::NurbsCurve;
+use cagd::spline::{CubicSpline, EndCondition};
+use nalgebra::DVector;
+
+use cagd_ops::ops::{Bernstein, Convert};
+
+use super::{cost, emit_result, native, CONTROL_FORM};
 use crate::args::Call;
 use crate::error::{Kind, PkgError, Result};
 use crate::number::{emit_matrix, matrix, params, Number};
@@ -200,13 +210,13 @@ const HERMITE_NAMES: Names = &[
 ];
 
 /// A cubic form by its name.
-fn form(call: &Call<'_, '_>, i: usize, what: &str) -> Result<CubicForm> {
+fn form(call: &Call<'_, '_>, i: usize, what: &str) -> Result<GeometryForm> {
     let words = "\"hermite\", \"bezier\" or \"bspline\"";
     let text = call.text(i, what, words)?;
     match text.to_ascii_lowercase().as_str() {
-        "hermite" | "ferguson" => Ok(CubicForm::Hermite),
-        "bezier" => Ok(CubicForm::Bezier),
-        "bspline" => Ok(CubicForm::BSpline),
+        "hermite" | "ferguson" => Ok(GeometryForm::Hermite),
+        "bezier" => Ok(GeometryForm::Bezier),
+        "bspline" => Ok(GeometryForm::BSpline),
         other => Err(PkgError::arg(
             Kind::Value,
             what,
@@ -225,20 +235,22 @@ native!(
 fn convert_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     call.nargin(3, 3, "G = cagd_convert (G, from, to [, \"exact\"])")?;
     call.nargout_max(1)?;
-    let gform = "a d × 4 geometry matrix";
-    let g: DMatrix<T> = matrix::<T>(call, 0, "G", gform)?;
-    if g.ncols() != 4 {
-        return Err(PkgError::arg(
-            Kind::Shape,
-            "G",
-            format!("{}×{}", g.nrows(), g.ncols()),
-            gform,
-        ));
-    }
-    let from = form(call, 1, "from")?;
-    let to = form(call, 2, "to")?;
-    emit_matrix(sink, 0, &conversion::convert(&g, from, to)?)
+    let op = Convert::new(
+        matrix::<T>(call, 0, "G", "a d × 4 geometry matrix")?,
+        form(call, 1, "from")?,
+        form(call, 2, "to")?,
+    );
+    let report = execute(call, CONVERT_NAMES, &op)?;
+    emit_result(sink, 0, &report)
 }
+
+/// How `cagd_convert` names its arguments.
+const CONVERT_NAMES: Names = &[
+    (Role::Control, "G"),
+    (Role::From, "from"),
+    (Role::To, "to"),
+    (Role::Result, "G"),
+];
 
 native!(
     /// `B = cagd_bernstein (n, t)`: the Bernstein polynomials of degree `n` at `t`,
@@ -249,14 +261,20 @@ native!(
 fn bernstein_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     call.nargin(2, 2, "B = cagd_bernstein (n, t [, \"exact\"])")?;
     call.nargout_max(1)?;
-    let n = call.count(0, "n")?;
-    call.check_degree("n", n)?;
-    let t = params::<T>(call, 1, "t")?;
-    call.check_samples("t", t.len())?;
-    call.check_work("t", t.len(), cost::<T>((n + 1) * (n + 1), n + 1))?;
-    let b = cagd::bernstein::basis_matrix(n, &t);
-    emit_matrix(sink, 0, &b.transpose())
+    let op = Bernstein {
+        t: Params::Given(params::<T>(call, 1, "t")?),
+        ..Bernstein::new(call.count(0, "n")?)
+    };
+    let report = execute(call, BERNSTEIN_NAMES, &op)?;
+    // The operation's rows are the parameters; here B(i+1, k) = B_i^n(t(k)).
+    match report.matrix("result") {
+        Some(b) => emit_matrix(sink, 0, &b.transpose()),
+        None => emit_result(sink, 0, &report),
+    }
 }
+
+/// How `cagd_bernstein` names its arguments.
+const BERNSTEIN_NAMES: Names = &[(Role::Degree, "n"), (Role::T, "t"), (Role::Result, "B")];
 
 #[cfg(test)]
 mod tests {
