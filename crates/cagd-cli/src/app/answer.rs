@@ -48,7 +48,7 @@ pub(crate) fn respond<T: LiteralScalar, O: Operation<T> + ?Sized>(
         })
         .collect();
     let answer = result.map_err(|e| op_error(names, e))?;
-    outcome(answer, to, warnings)
+    outcome(answer, to, warnings, names)
 }
 
 /// The report rendered, the picture and the mesh staged.
@@ -56,6 +56,7 @@ fn outcome<T: LiteralScalar>(
     answer: Answer<T>,
     to: Destinations<'_>,
     warnings: Vec<(String, Warning)>,
+    names: &Names,
 ) -> Result<Outcome, CliError> {
     let mut files = PendingWrites::new();
     if let (Some(path), Some(drawing)) = (to.plot, answer.drawing) {
@@ -64,7 +65,7 @@ fn outcome<T: LiteralScalar>(
     if let (Some(path), Some(grid)) = (to.mesh, &answer.mesh) {
         add_mesh(&mut files, "--mesh", path, grid)?;
     }
-    finish(&answer.report, to.output, files, warnings)
+    finish(&answer.report, to.output, files, warnings, names)
 }
 
 /// An error of the operation layer as the command line prints it: the role named as this

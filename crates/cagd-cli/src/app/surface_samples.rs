@@ -106,7 +106,6 @@ impl<T: LiteralScalar> SurfaceEvaluator<T> for ExprSurface<T> {
 
     fn work(&self, us: &[T], vs: &[T]) -> Work {
         let sampling = Sampling {
-            argument: "",
             expr: &self.expr,
             params: vec![("u", us), ("v", vs)],
         };
