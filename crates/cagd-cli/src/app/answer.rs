@@ -6,7 +6,7 @@
 use std::path::Path;
 
 use cagd_octave::literal::{LiteralScalar, Position, Warning};
-use cagd_ops::{Answer, OpError, Operation, Role};
+use cagd_ops::{Answer, OpError, Operation};
 
 use super::common::{add_mesh, add_plot, finish};
 use super::cx::Cx;
@@ -78,9 +78,6 @@ pub(crate) fn op_error(names: &Names, e: OpError) -> CliError {
             crate::limits::flag(limit),
             crate::limits::variable(limit)
         );
-    }
-    if e.role == Role::Result {
-        problem = problem.replacen("the result", &format!("the {} result", names.command), 1);
     }
     let literal = e
         .cause

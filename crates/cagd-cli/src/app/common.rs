@@ -178,10 +178,7 @@ pub fn finish<T: LiteralScalar>(
     if let Some((name, index, value)) = report.first_non_finite() {
         return Err(CliError::new(
             names.input,
-            format!(
-                "the {} result overflows the range of doubles ({name}, element {index}: {value})",
-                names.command
-            ),
+            format!("the result overflows the range of doubles ({name}, element {index}: {value})"),
             "inputs whose result stays within ±1.8e308 (smaller coordinates, parameters or orders)",
             ErrorKind::Library(Box::new(cagd::Error::NonFinite {
                 what: "result",

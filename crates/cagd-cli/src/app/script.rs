@@ -56,7 +56,6 @@ impl Run for ScriptCommand {
             PendingWrites::new(),
             warnings,
             &Names {
-                command: "script",
                 input: "FILE",
                 special: &[],
             },

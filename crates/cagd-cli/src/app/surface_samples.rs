@@ -51,7 +51,6 @@ pub struct SurfaceCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "surface",
     input: "EXPR",
     special: &[(Role::Control, "EXPR")],
 };
