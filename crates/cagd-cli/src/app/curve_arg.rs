@@ -64,36 +64,67 @@ pub(crate) fn curve_arg<T: LiteralScalar>(
     }
     let data = names_data(cx, text, how.script);
     if let (Some(param), true) = (how.samples, data) {
-        let m = orient(
-            load_matrix(&cx.limits, argument, text, how.script)?,
-            how.rows,
-        );
-        let params = match how.script {
-            Some(s) => script_params(s, param, m.ncols()),
-            None => T::linspace(&T::zero(), &T::one(), m.ncols()),
-        };
-        return SampledCurve::new(params, m)
-            .map(CurveArg::Samples)
-            .map_err(lib(argument, "a curve sampled at increasing parameters"));
+        return samples(cx, argument, text, how, param);
     }
-    if let Some(m) = how.script.and_then(|s| s.value(text.trim())) {
-        if m.ncols() > 1 && m.nrows() > 1 {
-            let degree = if how.rows { m.nrows() } else { m.ncols() } - 1;
-            crate::slips::warn(
-                argument,
-                format!(
-                    "`{}` is a {}×{} matrix of the script, read as the control points of a Bézier curve of degree {degree}; if its columns are samples of the curve (as in the thesis's data scripts), add --samples",
-                    text.trim(),
-                    m.nrows(),
-                    m.ncols(),
-                ),
-            );
-        }
-    }
+    warn_matrix_as_control(argument, text, how);
     if data {
         let m = load_matrix(&cx.limits, argument, text, how.script)?;
         return bezier(argument, m, how.rows);
     }
+    expression_curve(cx, argument, text, how, env)
+}
+
+/// With `--samples`, data read as samples of the curve, one column per parameter: the
+/// script's variable `param`, else `linspace(0,1,N)`.
+fn samples<T: LiteralScalar>(
+    cx: &Cx,
+    argument: &str,
+    text: &str,
+    how: Reading<'_, T>,
+    param: &str,
+) -> Result<CurveArg<T>, CliError> {
+    let m = orient(
+        load_matrix(&cx.limits, argument, text, how.script)?,
+        how.rows,
+    );
+    let params = match how.script {
+        Some(s) => script_params(s, param, m.ncols()),
+        None => T::linspace(&T::zero(), &T::one(), m.ncols()),
+    };
+    SampledCurve::new(params, m)
+        .map(CurveArg::Samples)
+        .map_err(lib(argument, "a curve sampled at increasing parameters"))
+}
+
+/// A warning when a matrix of the script (not a row or column) is about to be read as control
+/// points: the thesis's data scripts hold samples, which need `--samples`.
+fn warn_matrix_as_control<T: LiteralScalar>(argument: &str, text: &str, how: Reading<'_, T>) {
+    let Some(m) = how.script.and_then(|s| s.value(text.trim())) else {
+        return;
+    };
+    if m.ncols() > 1 && m.nrows() > 1 {
+        let degree = if how.rows { m.nrows() } else { m.ncols() } - 1;
+        crate::slips::warn(
+            argument,
+            format!(
+                "`{}` is a {}×{} matrix of the script, read as the control points of a Bézier curve of degree {degree}; if its columns are samples of the curve (as in the thesis's data scripts), add --samples",
+                text.trim(),
+                m.nrows(),
+                m.ncols(),
+            ),
+        );
+    }
+}
+
+/// An expression: constant, the control points of a Bézier curve; in one parameter, a curve
+/// evaluated where the construction needs it; in more, an error naming them.
+fn expression_curve<T: LiteralScalar>(
+    cx: &Cx,
+    argument: &str,
+    text: &str,
+    how: Reading<'_, T>,
+    env: &Rc<RefCell<Env<T>>>,
+) -> Result<CurveArg<T>, CliError> {
     let expr = load_expression(&cx.limits, argument, text, how.script)?;
     let params = expr.parameters(&env.borrow());
     match params.as_slice() {
