@@ -73,7 +73,7 @@ pub(crate) fn option_name(role: Role) -> &'static str {
         Role::V => "--v",
         Role::Grid => "--u/--v",
         Role::Samples => "--n",
-        Role::DerivativeOrder => "--order",
+        Role::DerivativeOrder => "-r",
         Role::DerivativeV => "--dv",
         Role::Nodes => "--nodes",
         Role::Points => "POINTS",

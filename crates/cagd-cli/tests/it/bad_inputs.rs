@@ -270,8 +270,8 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
             "Shape",
         ),
         (
-            s(&["derivative", CUBIC, "--order", "4"]),
-            "--order",
+            s(&["derivative", CUBIC, "-r", "4"]),
+            "-r",
             "Library::DerivativeOrder",
         ),
         (
@@ -1035,7 +1035,7 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
         ),
         // Results that overflow the range of doubles.
         (
-            s(&["derivative", "[zeros(1,171) 1]", "--order", "171"]),
+            s(&["derivative", "[zeros(1,171) 1]", "-r", "171"]),
             "CONTROL",
             "Operation",
         ),

@@ -783,7 +783,7 @@ fn lagrange_bernstein_derivative() {
         ok(&[
             "derivative",
             PRIMER_2_4,
-            "--order",
+            "-r",
             "1",
             "--t",
             "0.5",
@@ -1228,8 +1228,8 @@ fn new_subcommands_reject_bad_input_cleanly() {
             "--i: i = 4 exceeds the degree 3",
         ),
         (
-            vec!["derivative", PRIMER_2_4, "--order", "4", "-o", &txt],
-            "--order",
+            vec!["derivative", PRIMER_2_4, "-r", "4", "-o", &txt],
+            "-r",
         ),
         (
             vec!["spline", "[0 0; 1 1]'", "--end", "clamped"],

@@ -155,11 +155,9 @@ fn slip_points_typed_as_rows_warn_and_both_right_readings_are_silent() {
     // columns would be 2 points in R⁴.
     let (out, warnings) = run_ok(&["decasteljau", "[0 0; 1 2; 3 3; 4 0]", "--t", "1/3"]);
     assert_eq!(warnings.len(), 1, "{warnings:?}");
-    assert!(
-        warnings[0].starts_with("CONTROL: read as 2 point(s) in 4 dimensions")
-            && warnings[0].contains("add --rows"),
-        "{}",
-        warnings[0]
+    assert_eq!(
+        warnings[0],
+        "CONTROL: read as 2 points in 4-D, one per column; --rows if each row is a point"
     );
     assert!(out.contains("result ="), "{out}");
     // The right readings: --rows, or the transpose.
@@ -187,18 +185,22 @@ fn slip_points_typed_as_rows_warn_and_both_right_readings_are_silent() {
     // Points of dimension 4 with --rows get the warning the other way round.
     let (_, warnings) = run_ok(&["decasteljau", "[0 0 0 0; 1 1 1 1]", "--rows", "--t", "0.5"]);
     assert!(
-        warnings.len() == 1 && warnings[0].contains("leave out --rows"),
+        warnings.len() == 1
+            && warnings[0].ends_with(
+                "read as 2 points in 4-D, one per row (--rows); leave out --rows if each column is a point"
+            ),
         "{warnings:?}"
     );
     // The same check guards every command that takes points.
     let (_, warnings) = run_ok(&["spline", "[0 0; 2 1; 4 4; 6 0]", "--t", "0.5"]);
     assert!(
-        warnings[0].starts_with("POINTS: read as 2 point(s)"),
+        warnings[0].starts_with("POINTS: read as 2 points in 4-D"),
         "{warnings:?}"
     );
     let (_, warnings) = run_ok(&["elevate", "[0 0; 1 2; 3 2]", "--by", "1"]);
     assert!(
-        warnings[0].starts_with("CONTROL: read as 2 point(s)"),
+        warnings[0]
+            == "CONTROL: read as 2 points in 3-D, one per column; --rows if each row is a point",
         "{warnings:?}"
     );
 }
@@ -214,7 +216,7 @@ fn slip_decimal_commas_warn_and_decimal_points_run_silently() {
     assert_eq!(warnings.len(), 2, "{warnings:?}");
     assert_eq!(
         warnings[0],
-        "--t: `0,2` is read as two values, 0 and 2 (a comma separates values); for the decimal number write 0.2"
+        "--t: `0,2` read as two numbers 0 and 2; a decimal point is `0.2`"
     );
     assert_eq!(
         warnings[1],
@@ -396,7 +398,7 @@ fn every_warning_is_printed_once() {
     let stderr = String::from_utf8(out.stderr).unwrap();
     assert_eq!(
         stderr,
-        "cagd: warning: --t: `0,5` is read as two values, 0 and 5 (a comma separates values); for the decimal number write 0.5\n\
+        "cagd: warning: --t: `0,5` read as two numbers 0 and 5; a decimal point is `0.5`\n\
          cagd: warning: --t: 2 values lie (the first t = 5) outside [0, 1]; the polynomials are extrapolated there\n"
     );
 }
@@ -802,16 +804,8 @@ fn elevation_matches_nrbdegelev() {
         ("1", "el_bsp_C1", "el_bsp_K1"),
         ("2", "el_bsp_C2", "el_bsp_K2"),
     ] {
-        let out = json(&[
-            "elevate",
-            &lit(&c),
-            "--degree",
-            "2",
-            "--knots",
-            &row_lit(&k),
-            "--by",
-            r,
-        ]);
+        // The degree before (2) comes from the knots: numel(K) − columns(C) − 1.
+        let out = json(&["elevate", &lit(&c), "--knots", &row_lit(&k), "--by", r]);
         common::assert_close(
             kn,
             &mat(&out["knots"]).into_dyn(),
@@ -823,20 +817,23 @@ fn elevation_matches_nrbdegelev() {
             &common::matrix(&ws, cn).into_dyn(),
         );
     }
-    // Exactly by hand: the segment 0 → 3 as a quadratic and a cubic; --order counts k = p + 1.
+    // Exactly by hand: the segment 0 → 3 as a quadratic and a cubic; --degree and --order
+    // name the curve after elevation (the order k = p + 1).
     let out = json(&["elevate", "[0 3]", "--by", "2", "--steps", "--exact"]);
     assert_eq!(exact(&out["degree_2"]), strs(&[&["0", "3/2", "3"]]));
     assert_eq!(exact(&out["control"]), strs(&[&["0", "1", "2", "3"]]));
-    let by_order = json(&["elevate", &lit(&c), "--order", "3", "--knots", &row_lit(&k)]);
+    let by_order = json(&["elevate", &lit(&c), "--order", "4", "--knots", &row_lit(&k)]);
     let by_degree = json(&[
         "elevate",
         &lit(&c),
         "--degree",
-        "2",
+        "3",
         "--knots",
         &row_lit(&k),
     ]);
     assert_eq!(by_order, by_degree);
+    let by_one = json(&["elevate", &lit(&c), "--by", "1", "--knots", &row_lit(&k)]);
+    assert_eq!(by_one, by_degree);
 }
 
 #[test]
@@ -1179,6 +1176,7 @@ fn ruled_surface_matches_nrbruled() {
         &row_lit(&common::row(&ws, "ru_gu")),
         "--v",
         &row_lit(&common::row(&ws, "ru_gv")),
+        "--columns",
     ]);
     common::assert_close(
         "ru_S",

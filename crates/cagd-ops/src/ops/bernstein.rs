@@ -83,10 +83,8 @@ impl<T: Scalar> Operation<T> for Bernstein<T> {
             None => all,
         };
         let mut report = Report::new();
-        report.push(
-            "t",
-            Value::Matrix(DMatrix::from_column_slice(ts.len(), 1, &ts)),
-        );
+        // One layout for parameter vectors: t is a row, as linspace makes it.
+        report.push("t", Value::row(&ts));
         report.push("result", Value::Matrix(result));
         let drawing = if self.drawing {
             Some(self.picture()?)

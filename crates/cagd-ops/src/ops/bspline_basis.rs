@@ -84,10 +84,8 @@ impl<T: Scalar> Operation<T> for BSplineBasis<T> {
                 report.push(step_name("triangle", k, ts.len()), self.triangle(p, t));
             }
         }
-        report.push(
-            "t",
-            Value::Matrix(DMatrix::from_column_slice(ts.len(), 1, &ts)),
-        );
+        // One layout for parameter vectors: t is a row, as linspace makes it.
+        report.push("t", Value::row(&ts));
         let result = DMatrix::from_fn(ts.len(), n, |i, j| rows[i][j].clone());
         report.push("result", Value::Matrix(result.clone()));
         let drawing = if self.drawing {

@@ -174,8 +174,7 @@ impl<T: Scalar> Integrate<T> {
         report.push("integral", Value::Matrix(integral));
         if self.t.is_some() {
             let values = bernstein_antiderivative_values(n, &rows, &ts);
-            let t = DMatrix::from_column_slice(ts.len(), 1, &ts);
-            report.push("t", Value::Matrix(t));
+            report.push("t", Value::row(&ts));
             report.push("result", Value::Matrix(values));
         }
         let drawing = if self.drawing {
