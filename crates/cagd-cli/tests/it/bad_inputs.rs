@@ -516,7 +516,14 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
         // A Bézier curve of degree 899 raised by 99 is some 10⁶ operations (it runs); the
         // blossoms of a cubic B-spline of 900 control points raised by 99 are 5.7·10⁹.
         (
-            s(&["elevate", "zeros(3, 900)", "--by", "99", "--degree", "3"]),
+            s(&[
+                "elevate",
+                "zeros(3, 900)",
+                "--by",
+                "99",
+                "--knots",
+                "[0 0 0 linspace(0, 1, 898) 1 1 1]",
+            ]),
             "--by",
             "Library::TooLarge",
         ),

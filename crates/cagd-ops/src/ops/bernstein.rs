@@ -111,7 +111,8 @@ impl<T: Scalar> Bernstein<T> {
         };
         let values = basis_matrix(n, &dense).select_columns(&shown);
         let title = format!("Bernstein polynomials of degree {n}");
-        Ok(graphs(Drawing::new(title), &dense, &values, &shown, |i| {
+        let axes = Drawing::graph(title, "t", &format!("B_i^{n}(t)"));
+        Ok(graphs(axes, &dense, &values, &shown, |i| {
             format!("B_{i}^{n}")
         }))
     }

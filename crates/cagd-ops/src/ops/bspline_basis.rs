@@ -163,7 +163,8 @@ fn picture<T: Scalar>(
         Colour::Black,
     ];
     let n = result.ncols();
-    let mut drawing = Drawing::new(format!("B-spline basis functions, degree {p}"));
+    let title = format!("B-spline basis functions, degree {p}");
+    let mut drawing = Drawing::graph(title, "t", &format!("N_i,{p}(t)"));
     for i in 0..n {
         let line = DMatrix::from_fn(2, dense.len(), |r, k| {
             if r == 0 {
