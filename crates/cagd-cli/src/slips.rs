@@ -159,7 +159,11 @@ fn point_matrix_typed<T: LiteralScalar>(
     let (r, c) = typed.shape();
     let (dim, count) = if rows { (c, r) } else { (r, c) };
     let reading = Reading { count, dim, rows };
-    PENDING.with(|p| p.borrow_mut().readings.push((argument.to_string(), reading)));
+    PENDING.with(|p| {
+        p.borrow_mut()
+            .readings
+            .push((argument.to_string(), reading))
+    });
     let stated = transposed || PENDING.with(|p| p.borrow().stated);
     let implausible = dim > 3;
     let ambiguous = r > 1 && c > 1 && r <= 3 && c <= 3;

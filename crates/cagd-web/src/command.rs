@@ -158,9 +158,15 @@ mod tests {
         );
         let v = answer(&["lagrange", "--nodes", "[0 0,5 1]", "--points", "[1 2 3]"]);
         let e = v["error"].as_str().unwrap();
-        assert!(e.starts_with("cagd: error: --nodes: ") && e.contains("`0,5` read as two numbers"), "{e}");
+        assert!(
+            e.starts_with("cagd: error: --nodes: ") && e.contains("`0,5` read as two numbers"),
+            "{e}"
+        );
         let v = answer(&["decastljau", "[0 1]"]);
-        assert!(v["error"].as_str().unwrap().contains("decasteljau perhaps"), "{v}");
+        assert!(
+            v["error"].as_str().unwrap().contains("decasteljau perhaps"),
+            "{v}"
+        );
         let v = answer(&["decasteljau", "[0.5 1 2; 1.5 2.5 0.5]", "--t", "0.5"]);
         assert_eq!(v["warnings"], serde_json::json!([]));
     }

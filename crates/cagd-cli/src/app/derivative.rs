@@ -31,7 +31,12 @@ pub struct DerivativeCommand {
     pub order: usize,
     /// Refused: --order is a B-spline's order (degree + 1) in every command; the derivative's
     /// order is -r.
-    #[arg(long = "order", value_name = "K", hide = true, allow_hyphen_values = true)]
+    #[arg(
+        long = "order",
+        value_name = "K",
+        hide = true,
+        allow_hyphen_values = true
+    )]
     pub spline_order: Option<String>,
     /// Also the values of the derivative at these parameters.
     #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]

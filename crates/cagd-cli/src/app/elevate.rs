@@ -8,11 +8,11 @@ use clap::Args;
 use super::answer::{respond, Destinations};
 use super::cx::Cx;
 use super::read::{params, points};
-use crate::error::shape;
-use cagd_ops::bspline_arg::{BSplineArg, SplineDegree};
 use super::run::{Names, Run};
 use crate::args::{OutputArgs, PlotArgs, RowsArgs, StepsArgs};
+use crate::error::shape;
 use crate::{CliError, Outcome};
+use cagd_ops::bspline_arg::{BSplineArg, SplineDegree};
 
 /// Raise the degree of a Bézier curve (or of a clamped B-spline curve) without changing it.
 #[derive(Debug, Args)]

@@ -377,8 +377,8 @@ fn usage_error(e: clap::Error, args: &[OsString]) -> Result<Outcome, CliError> {
                 Some(typed) if !arg.starts_with('-') || typed.starts_with(&arg) => typed,
                 _ => arg,
             };
-            let suggestion = usage::suggested_option(args, &arg)
-                .or_else(|| context(ContextKind::SuggestedArg));
+            let suggestion =
+                usage::suggested_option(args, &arg).or_else(|| context(ContextKind::SuggestedArg));
             (
                 arg,
                 "unknown option".into(),

@@ -196,6 +196,12 @@ fn primer_2_4(out: &mut String, files: &mut Files) -> Result<(), CliError> {
         };
         figure = figure.boundary(level.clone(), Colour::Orange, label);
     }
+    // The answer: the point b(1/2) = (7/2, 3/2, 3/4), marked and labelled.
+    let figure = figure.points(
+        column(&s.point_on_curve()),
+        vec!["t = 0.5".into()],
+        "b(0.5)",
+    );
     files.picture("primer_2_4", &figure)
 }
 
@@ -295,6 +301,12 @@ fn primer_4_3(out: &mut String, files: &mut Files) -> Result<(), CliError> {
         [&c1, &c2, &d1, &d2],
         &t,
         &t,
+    )
+    // The answer: x(0.2, 0.5) = (1/5, 3/10, 19/50), marked and labelled.
+    .points(
+        column(&patch.eval_parts(0.2, 0.5).x),
+        vec!["u = 0.2, v = 0.5".into()],
+        "x(0.2, 0.5)",
     );
     files.picture("primer_4_3", &figure)?;
     files.meshes("primer_4_3", &grid)

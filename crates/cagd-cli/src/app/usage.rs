@@ -20,10 +20,9 @@ pub(super) fn unknown_option(args: &[OsString]) -> Option<String> {
         .find(|w| !w.starts_with('-'))
         .and_then(|name| command.find_subcommand(name))?;
     let known = |name: &str| {
-        sub.get_arguments()
-            .chain(command.get_arguments())
-            .any(|a| a.get_long() == Some(name) || a.get_all_aliases().is_some_and(|v| v.contains(&name)))
-            || name == "help"
+        sub.get_arguments().chain(command.get_arguments()).any(|a| {
+            a.get_long() == Some(name) || a.get_all_aliases().is_some_and(|v| v.contains(&name))
+        }) || name == "help"
     };
     words
         .iter()
@@ -53,7 +52,9 @@ pub(super) fn suggested_option(args: &[OsString], typed: &str) -> Option<String>
         return Some("--u and --v (a surface has two parameters)".into());
     }
     if has(&format!("u{name}")) && has(&format!("v{name}")) {
-        return Some(format!("--u{name} and --v{name} (one per direction of the surface)"));
+        return Some(format!(
+            "--u{name} and --v{name} (one per direction of the surface)"
+        ));
     }
     closest(name, longs.iter().map(String::as_str)).map(|l| format!("--{l}"))
 }

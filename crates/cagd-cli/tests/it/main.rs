@@ -15,6 +15,6 @@ mod mesh;
 mod non_finite;
 mod packed_network;
 mod regressions;
-mod slips;
 #[cfg(feature = "serve")]
 mod serve;
+mod slips;

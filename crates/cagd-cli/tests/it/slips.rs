@@ -32,8 +32,16 @@ fn silent(args: &[&str]) -> String {
 
 /// Runs the `cagd` binary (which writes its pictures), requiring success.
 fn binary(args: &[&str]) {
-    let out = Command::cargo_bin("cagd").unwrap().args(args).output().unwrap();
-    assert!(out.status.success(), "cagd {args:?}: {}", String::from_utf8_lossy(&out.stderr));
+    let out = Command::cargo_bin("cagd")
+        .unwrap()
+        .args(args)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "cagd {args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
 }
 
 /// The one-line error of a command that must fail with exit code 2.
@@ -80,7 +88,8 @@ fn col(values: &[&str]) -> Vec<Vec<String>> {
     values.iter().map(|v| vec![v.to_string()]).collect()
 }
 
-const NOTE_3X3: &str = "CONTROL: read as 3 points in 3-D, one per column; --rows if each row is a point";
+const NOTE_3X3: &str =
+    "CONTROL: read as 3 points in 3-D, one per column; --rows if each row is a point";
 
 // ---------------------------------------------------------------------------------------
 // 1. Orientation never guessed in silence
@@ -140,10 +149,24 @@ fn shapes_only_one_reading_makes_valid_stay_silent() {
     // 2×4: four points in the plane (as rows they would be 2 points in 4-D).
     silent(&["decasteljau", "[0 1 3 4; 0 2 2 0]", "--t", "0.5"]);
     // 4×2 with --rows: four points in the plane.
-    silent(&["decasteljau", "[0 0; 1 2; 3 2; 4 0]", "--rows", "--t", "0.5"]);
+    silent(&[
+        "decasteljau",
+        "[0 0; 1 2; 3 2; 4 0]",
+        "--rows",
+        "--t",
+        "0.5",
+    ]);
     // A row of numbers: points in 1-D (a function's Bézier ordinates).
     silent(&["decasteljau", "[1 2 3]", "--t", "0.5"]);
-    silent(&["lagrange", "--nodes", "1:5", "--points", "[1 2 3 2 1]", "--t", "2.5"]);
+    silent(&[
+        "lagrange",
+        "--nodes",
+        "1:5",
+        "--points",
+        "[1 2 3 2 1]",
+        "--t",
+        "2.5",
+    ]);
     // 4×2 as columns gives points in 4-D: a warning naming --rows, not a note.
     let (_, warnings) = run_ok(&["decasteljau", "[0 0; 1 2; 3 2; 4 0]", "--t", "0.5"]);
     assert_eq!(
@@ -161,13 +184,27 @@ fn every_error_about_points_names_the_orientation_and_the_flip() {
         "{e}"
     );
     // With --rows stated the error still says how the points were read.
-    let e = error(&["lagrange", "--nodes", "1:2", "--points", "[0 0; 1 1; 2 0]", "--rows"]);
+    let e = error(&[
+        "lagrange",
+        "--nodes",
+        "1:2",
+        "--points",
+        "[0 0; 1 1; 2 0]",
+        "--rows",
+    ]);
     assert!(
         e.contains("read as 3 points in 2-D, one per row (--rows); leave out --rows if each column is a point"),
         "{e}"
     );
     // convert: the B-spline form is cubic, 4 points typed as rows read as 2 in 4-D.
-    let e = error(&["convert", "[0 0; 1 1; 2 0; 3 1]", "--from", "bezier", "--to", "bspline"]);
+    let e = error(&[
+        "convert",
+        "[0 0; 1 1; 2 0; 3 1]",
+        "--from",
+        "bezier",
+        "--to",
+        "bspline",
+    ]);
     assert!(
         e.contains("(read as 2 points in 4-D, one per column; --rows if each row is a point)"),
         "{e}"
@@ -183,7 +220,10 @@ fn every_error_about_points_names_the_orientation_and_the_flip() {
     // The help of each names --rows and --columns.
     for command in ["convert", "continuity", "lagrange", "decasteljau"] {
         let help = silent(&[command, "--help"]);
-        assert!(help.contains("--rows") && help.contains("--columns"), "{command}");
+        assert!(
+            help.contains("--rows") && help.contains("--columns"),
+            "{command}"
+        );
     }
 }
 
@@ -218,11 +258,23 @@ fn decimal_commas_in_control_points_lists_and_files_warn() {
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("points.txt");
     std::fs::write(&file, "0,5 1,5\n1,0 2,5\n2,0 0,5\n").unwrap();
-    let (_, warnings) = run_ok(&["decasteljau", file.to_str().unwrap(), "--rows", "--t", "0.5"]);
+    let (_, warnings) = run_ok(&[
+        "decasteljau",
+        file.to_str().unwrap(),
+        "--rows",
+        "--t",
+        "0.5",
+    ]);
     assert_eq!(warnings[0], format!("CONTROL: {COMMA_05}"));
     // A CSV file of x,y rows is read as written.
     std::fs::write(&file, "0,1\n1,2\n2,0\n").unwrap();
-    silent(&["decasteljau", file.to_str().unwrap(), "--rows", "--t", "0.5"]);
+    silent(&[
+        "decasteljau",
+        file.to_str().unwrap(),
+        "--rows",
+        "--t",
+        "0.5",
+    ]);
 }
 
 #[test]
@@ -230,27 +282,62 @@ fn errors_caused_by_decimal_commas_say_so() {
     let cases: [(&[&str], &str); 4] = [
         (&["decasteljau", "[0 1 2; 0 1 0]", "--t", "0,5"], "--t: "),
         (
-            &["bspline", "[0 1 2 3; 0 1 0 1]", "--degree", "3", "--knots", "[0 0 0 0 0,5 1 1 1 1]"],
+            &[
+                "bspline",
+                "[0 1 2 3; 0 1 0 1]",
+                "--degree",
+                "3",
+                "--knots",
+                "[0 0 0 0 0,5 1 1 1 1]",
+            ],
             "--knots: ",
         ),
         (
-            &["nurbs", "[0 1 2; 0 1 0]", "--columns", "--degree", "2", "--weights", "[1 0,5 1]"],
+            &[
+                "nurbs",
+                "[0 1 2; 0 1 0]",
+                "--columns",
+                "--degree",
+                "2",
+                "--weights",
+                "[1 0,5 1]",
+            ],
             "--weights: ",
         ),
-        (&["lagrange", "--nodes", "[0 0,5 1]", "--points", "[1 2 3]"], "--nodes: "),
+        (
+            &["lagrange", "--nodes", "[0 0,5 1]", "--points", "[1 2 3]"],
+            "--nodes: ",
+        ),
     ];
     for (args, start) in cases {
         let e = error(args);
-        assert!(e.starts_with(start) && e.contains(COMMA_05), "{args:?}: {e}");
+        assert!(
+            e.starts_with(start) && e.contains(COMMA_05),
+            "{args:?}: {e}"
+        );
     }
 }
 
 #[test]
 fn decimal_points_and_comma_separated_lists_stay_silent() {
-    for t in ["[0.2 0.4]", "0:0.2:1", "[0, 0.5, 1]", "[0;0.5]", "[0,0.5,1]", "0.5"] {
+    for t in [
+        "[0.2 0.4]",
+        "0:0.2:1",
+        "[0, 0.5, 1]",
+        "[0;0.5]",
+        "[0,0.5,1]",
+        "0.5",
+    ] {
         silent(&["decasteljau", "[0 1 3 4; 0 2 2 0]", "--t", t]);
     }
-    silent(&["bspline", "[0 1 3 4; 0 2 2 0]", "--degree", "2", "--knots", "[0,0,0,0.5,1,1,1]"]);
+    silent(&[
+        "bspline",
+        "[0 1 3 4; 0 2 2 0]",
+        "--degree",
+        "2",
+        "--knots",
+        "[0,0,0,0.5,1,1,1]",
+    ]);
     silent(&["decasteljau", "[0,1,3,4;0,2,2,0]", "--t", "0.5"]);
 }
 
@@ -283,11 +370,22 @@ fn convention_elevate_degree_is_the_degree_after_elevation() {
         .collect::<Vec<_>>()
     );
     let e = error(&["elevate", q, "--columns", "--degree", "4", "--by", "1"]);
-    assert!(e.starts_with("--degree: the degree after elevation 4 contradicts --by 1"), "{e}");
+    assert!(
+        e.starts_with("--degree: the degree after elevation 4 contradicts --by 1"),
+        "{e}"
+    );
     let e = error(&["elevate", q, "--columns", "--degree", "1"]);
-    assert!(e.starts_with("--degree: the degree after elevation 1 is below"), "{e}");
+    assert!(
+        e.starts_with("--degree: the degree after elevation 1 is below"),
+        "{e}"
+    );
     // A B-spline: its degree comes from its knots (7 knots, 4 points: degree 2).
-    let b = ["elevate", "[0 1 3 4; 0 2 2 0]", "--knots", "[0 0 0 0.5 1 1 1]"];
+    let b = [
+        "elevate",
+        "[0 1 3 4; 0 2 2 0]",
+        "--knots",
+        "[0 0 0 0.5 1 1 1]",
+    ];
     let mut by1 = b.to_vec();
     by1.extend(["--by", "1"]);
     let mut to3 = b.to_vec();
@@ -315,23 +413,38 @@ fn convention_order_is_a_bsplines_order_in_every_command() {
             "insert-knot" => "control",
             _ => "result",
         };
-        assert_eq!(exact_named(&by_degree, name), exact_named(&by_order, name), "{command}");
+        assert_eq!(
+            exact_named(&by_degree, name),
+            exact_named(&by_order, name),
+            "{command}"
+        );
     }
-    let basis = |w: &str, v: &str| {
-        exact_result(&["bspline-basis", "--knots", u, w, v, "--t", "0.25"])
-    };
+    let basis =
+        |w: &str, v: &str| exact_result(&["bspline-basis", "--knots", u, w, v, "--t", "0.25"]);
     assert_eq!(basis("--degree", "2"), basis("--order", "3"));
     // The derivative's order is -r; --order there is refused, naming -r.
     let e = error(&["derivative", "[0 1 2; 0 1 0]", "--order", "1"]);
     assert!(e.starts_with("--order: ") && e.contains("-r"), "{e}");
-    let d = exact_named(&["derivative", "[0 1 2; 0 1 0]", "--columns", "-r", "1"], "control");
-    assert_eq!(d, vec![vec!["2", "2"], vec!["2", "-2"]].into_iter().map(|r| r.into_iter().map(String::from).collect::<Vec<_>>()).collect::<Vec<_>>());
+    let d = exact_named(
+        &["derivative", "[0 1 2; 0 1 0]", "--columns", "-r", "1"],
+        "control",
+    );
+    assert_eq!(
+        d,
+        vec![vec!["2", "2"], vec!["2", "-2"]]
+            .into_iter()
+            .map(|r| r.into_iter().map(String::from).collect::<Vec<_>>())
+            .collect::<Vec<_>>()
+    );
 }
 
 #[test]
 fn convention_default_degree_is_cubic_for_bspline_and_nurbs() {
     let p = "[0 1 2 3 4; 0 2 0 2 0]";
-    for (command, extra) in [("bspline", vec![]), ("nurbs", vec!["--weights", "[1 1 1 1 1]"])] {
+    for (command, extra) in [
+        ("bspline", vec![]),
+        ("nurbs", vec!["--weights", "[1 1 1 1 1]"]),
+    ] {
         let mut default = vec![command, p, "--t", "0.3"];
         default.extend(&extra);
         let mut cubic = default.clone();
@@ -360,9 +473,20 @@ fn convention_one_knot_count_rule_and_wording() {
 #[test]
 fn convention_default_samples_cover_the_data() {
     // Lagrange samples its nodes' range: no value extrapolated, no warning.
-    let out = silent(&["lagrange", "--nodes", "1:5", "--points", "[1 2 3 2 1]", "--format", "json"]);
+    let out = silent(&[
+        "lagrange",
+        "--nodes",
+        "1:5",
+        "--points",
+        "[1 2 3 2 1]",
+        "--format",
+        "json",
+    ]);
     let v: J = serde_json::from_str(&out).unwrap();
-    let t: Vec<f64> = rows(&v["t"])[0].iter().map(|x| x.parse().unwrap()).collect();
+    let t: Vec<f64> = rows(&v["t"])[0]
+        .iter()
+        .map(|x| x.parse().unwrap())
+        .collect();
     assert_eq!((t[0], *t.last().unwrap()), (1.0, 5.0));
 }
 
@@ -371,8 +495,23 @@ fn convention_parameter_vectors_are_rows() {
     for args in [
         vec!["decasteljau", "[0 1 3 4; 0 2 2 0]", "--t", "[0 0.5 1]"],
         vec!["bernstein", "--degree", "2", "--t", "[0 0.5 1]"],
-        vec!["bspline-basis", "--knots", "[0 0 0 1 1 1]", "--degree", "2", "--t", "[0 0.5 1]"],
-        vec!["bspline", "[0 1 3 4; 0 2 2 0]", "--degree", "2", "--t", "[0 0.5 1]"],
+        vec![
+            "bspline-basis",
+            "--knots",
+            "[0 0 0 1 1 1]",
+            "--degree",
+            "2",
+            "--t",
+            "[0 0.5 1]",
+        ],
+        vec![
+            "bspline",
+            "[0 1 3 4; 0 2 2 0]",
+            "--degree",
+            "2",
+            "--t",
+            "[0 0.5 1]",
+        ],
         vec!["lagrange", "--nodes", "[0 0.5 1]", "--t", "[0 0.5 1]"],
         vec!["integrate", "--bernstein", "2", "--t", "[0 0.5 1]"],
     ] {
@@ -406,7 +545,12 @@ fn convention_de_boor_span_counts_knots_from_one() {
     ])
     .0;
     let v: J = serde_json::from_str(&out).unwrap();
-    assert_eq!(rows(&v["de_boor"]["span"]), vec![vec!["3.0"]], "{}", v["de_boor"]);
+    assert_eq!(
+        rows(&v["de_boor"]["span"]),
+        vec![vec!["3.0"]],
+        "{}",
+        v["de_boor"]
+    );
     let out = run_ok(&[
         "insert-knot",
         "[0 1 3 4; 0 2 2 0]",
@@ -432,21 +576,45 @@ fn convention_de_boor_span_counts_knots_from_one() {
 #[test]
 fn messages_name_what_was_typed_and_what_was_meant() {
     let e = error(&["integrate", "--bernstien", "3"]);
-    assert!(e.starts_with("--bernstien: unknown option; expected --bernstein perhaps"), "{e}");
-    let e = error(&["bspline-surface", "[0 0 0 1 0 0; 0 1 0 1 1 0]", "--knots", "[0 0 1 1]"]);
-    assert!(e.starts_with("--knots: unknown option; expected --uknots and --vknots"), "{e}");
+    assert!(
+        e.starts_with("--bernstien: unknown option; expected --bernstein perhaps"),
+        "{e}"
+    );
+    let e = error(&[
+        "bspline-surface",
+        "[0 0 0 1 0 0; 0 1 0 1 1 0]",
+        "--knots",
+        "[0 0 1 1]",
+    ]);
+    assert!(
+        e.starts_with("--knots: unknown option; expected --uknots and --vknots"),
+        "{e}"
+    );
     let e = error(&["decastljau", "[0 1]"]);
-    assert!(e.starts_with("decastljau: unknown subcommand; expected decasteljau perhaps"), "{e}");
+    assert!(
+        e.starts_with("decastljau: unknown subcommand; expected decasteljau perhaps"),
+        "{e}"
+    );
     for surface in [
-        vec!["coons", "--c1", "[u;0;0]", "--c2", "[u;1;0]", "--d1", "[0;v;0]", "--d2", "[1;v;0]"],
+        vec![
+            "coons", "--c1", "[u;0;0]", "--c2", "[u;1;0]", "--d1", "[0;v;0]", "--d2", "[1;v;0]",
+        ],
         vec!["bezier-patch", "[0 0 0 1 0 0; 0 1 0 1 1 1]"],
     ] {
         let mut a = surface.clone();
         a.extend(["--t", "0.5"]);
         let e = error(&a);
-        assert!(e.starts_with("--t: unknown option; expected --u and --v"), "{e}");
+        assert!(
+            e.starts_with("--t: unknown option; expected --u and --v"),
+            "{e}"
+        );
     }
-    let e = error(&["decasteljau", "/nonexistent/dir/nonexist.txt:B", "--t", "0.5"]);
+    let e = error(&[
+        "decasteljau",
+        "/nonexistent/dir/nonexist.txt:B",
+        "--t",
+        "0.5",
+    ]);
     assert!(e.contains("no such file"), "{e}");
     let e = error(&["decasteljau", "nonexist.txt:B", "--t", "0.5"]);
     assert!(e.starts_with("CONTROL nonexist.txt: no such file"), "{e}");
@@ -477,7 +645,14 @@ fn marker_at(dir: &Path, ts: &str, expected: &[(f64, f64)]) {
     let svg = dir.join(format!("m{}.svg", expected.len()));
     let svg = svg.to_str().unwrap();
     // b0 = (0,0), b1 = (1,2), b2 = (3,2), b3 = (4,0).
-    binary(&["decasteljau", "[0 1 3 4; 0 2 2 0]", "--t", ts, "--plot", svg]);
+    binary(&[
+        "decasteljau",
+        "[0 1 3 4; 0 2 2 0]",
+        "--t",
+        ts,
+        "--plot",
+        svg,
+    ]);
     let text = std::fs::read_to_string(svg).unwrap();
     let all = circles(&text);
     // The control points: red circles of radius 5 (not the legend's radius 4).
@@ -502,7 +677,10 @@ fn marker_at(dir: &Path, ts: &str, expected: &[(f64, f64)]) {
         );
     }
     // Labelled with its parameter.
-    assert!(text.contains("t = 0.5") || text.contains("t = 1/2"), "labels");
+    assert!(
+        text.contains("t = 0.5") || text.contains("t = 1/2"),
+        "labels"
+    );
 }
 
 #[test]
@@ -511,7 +689,10 @@ fn the_plot_marks_each_evaluated_point_where_it_is() {
     // By hand: x(t) = 3t(1−t)² + 9t²(1−t) + 4t³, y(t) = 6t(1−t)² + 6t²(1−t) = 6t(1−t).
     let b = |t: f64| {
         let s = 1.0 - t;
-        (3.0 * t * s * s + 9.0 * t * t * s + 4.0 * t * t * t, 6.0 * t * s)
+        (
+            3.0 * t * s * s + 9.0 * t * t * s + 4.0 * t * t * t,
+            6.0 * t * s,
+        )
     };
     marker_at(dir.path(), "0.5", &[(2.0, 1.5)]);
     marker_at(dir.path(), "[0.25 0.5 0.75]", &[b(0.25), b(0.5), b(0.75)]);
@@ -520,15 +701,67 @@ fn the_plot_marks_each_evaluated_point_where_it_is() {
 #[test]
 fn every_plotting_command_marks_its_evaluated_points() {
     let dir = tempfile::tempdir().unwrap();
-    let svg = |name: &str| dir.path().join(format!("{name}.svg")).to_str().unwrap().to_string();
+    let svg = |name: &str| {
+        dir.path()
+            .join(format!("{name}.svg"))
+            .to_str()
+            .unwrap()
+            .to_string()
+    };
     let p = "[0 1 3 4; 0 2 2 0]";
     let cases: Vec<(&str, Vec<&str>)> = vec![
         ("bezier", vec!["decasteljau", p, "--t", "0.5"]),
         ("bspline", vec!["bspline", p, "--degree", "2", "--t", "0.5"]),
-        ("nurbs", vec!["nurbs", p, "--degree", "2", "--weights", "[1 2 2 1]", "--t", "0.5"]),
+        (
+            "nurbs",
+            vec![
+                "nurbs",
+                p,
+                "--degree",
+                "2",
+                "--weights",
+                "[1 2 2 1]",
+                "--t",
+                "0.5",
+            ],
+        ),
         ("spline", vec!["spline", p, "--t", "0.5"]),
-        ("coons", vec!["coons", "--c1", "[u;0;u-u^2]", "--c2", "[u;1;u]", "--d1", "[0;v^2;v-v^2]", "--d2", "[1;v;v]", "--u", "0.2", "--v", "0.5"]),
-        ("gordon", vec!["gordon", "--u-curve", "[u;0;0]", "--u-curve", "[u;1;u]", "--v-curve", "[0;v;0]", "--v-curve", "[1;v;v]", "--u", "0.2", "--v", "0.5"]),
+        (
+            "coons",
+            vec![
+                "coons",
+                "--c1",
+                "[u;0;u-u^2]",
+                "--c2",
+                "[u;1;u]",
+                "--d1",
+                "[0;v^2;v-v^2]",
+                "--d2",
+                "[1;v;v]",
+                "--u",
+                "0.2",
+                "--v",
+                "0.5",
+            ],
+        ),
+        (
+            "gordon",
+            vec![
+                "gordon",
+                "--u-curve",
+                "[u;0;0]",
+                "--u-curve",
+                "[u;1;u]",
+                "--v-curve",
+                "[0;v;0]",
+                "--v-curve",
+                "[1;v;v]",
+                "--u",
+                "0.2",
+                "--v",
+                "0.5",
+            ],
+        ),
     ];
     for (name, args) in cases {
         let path = svg(name);
