@@ -179,15 +179,8 @@ pub fn load_matrix<T: LiteralScalar>(
         }
         return parse_data_text(limits, &shown, &contents);
     }
-    let missing = split_name(trimmed).map_or(trimmed, |(path, _)| path);
-    if !is_variable && looks_like_path(missing) {
-        return Err(CliError::io(
-            format!("{argument} {missing}"),
-            &std::io::Error::from(std::io::ErrorKind::NotFound),
-            MATRIX_FORM,
-        ));
-    }
     if !is_variable {
+        missing_file(argument, trimmed)?;
         crate::slips::decimal_commas(argument, text);
     }
     let mut env = match script {
@@ -218,6 +211,19 @@ pub fn load_matrix<T: LiteralScalar>(
         .filter(|w| !before.contains(w));
     refuse_lenient(argument, new, MATRIX_FORM)?;
     Ok(value)
+}
+
+/// "No such file" for a text that names a file (`net.txt`, `net.txt:B`) that does not exist.
+fn missing_file(argument: &str, text: &str) -> Result<(), CliError> {
+    let path = split_name(text).map_or(text, |(path, _)| path);
+    if !looks_like_path(path) {
+        return Ok(());
+    }
+    Err(CliError::io(
+        format!("{argument} {path}"),
+        &std::io::Error::from(std::io::ErrorKind::NotFound),
+        MATRIX_FORM,
+    ))
 }
 
 /// Refuses the first of `warnings`: what a data script accepts with a warning (Octave would

@@ -173,8 +173,9 @@ fn point_matrix_typed<T: LiteralScalar>(
 }
 
 /// What an error about `argument` should add, given how the input was read: the reading of
-/// its points (or, for an error about points of another argument, of the points read), and
-/// any decimal comma read in it. Empty when there is nothing to add.
+/// its points (or, for an error of another argument about points, of the points read unless
+/// the orientation was stated), and any decimal comma read in it. Empty when there is nothing
+/// to add.
 pub fn explain(argument: &str, problem: &str) -> String {
     PENDING.with(|p| {
         let p = p.borrow();
@@ -182,7 +183,7 @@ pub fn explain(argument: &str, problem: &str) -> String {
         let own = p.readings.iter().find(|(a, _)| a == argument);
         if let Some((_, reading)) = own {
             parts.push(reading.to_string());
-        } else if problem.contains("point") {
+        } else if problem.contains("point") && !p.stated {
             if let Some((a, reading)) = p.readings.first() {
                 parts.push(format!("{a} {reading}"));
             }

@@ -167,7 +167,7 @@ mod tests {
             v["error"].as_str().unwrap().contains("decasteljau perhaps"),
             "{v}"
         );
-        let v = answer(&["decasteljau", "[0.5 1 2; 1.5 2.5 0.5]", "--t", "0.5"]);
+        let v = answer(&["decasteljau", "[0.5 1 2; 1.5 2.5 0.5]'", "--t", "0.5"]);
         assert_eq!(v["warnings"], serde_json::json!([]));
     }
 }

@@ -101,7 +101,6 @@ pub(crate) fn curve_arg<T: LiteralScalar>(
             let m = expr
                 .eval_at(&env.borrow(), &[])
                 .map_err(|e| CliError::literal(argument, e, CURVE_ARG_FORM))?;
-            crate::slips::decimal_commas(argument, text);
             bezier(argument, text, m, how.rows)
         }
         [p] => Ok(CurveArg::Evaluated(Box::new(ExprCurve::new(
@@ -196,6 +195,8 @@ fn bezier<T: LiteralScalar>(
     m: DMatrix<T>,
     rows: bool,
 ) -> Result<CurveArg<T>, CliError> {
+    // A constant expression is read here, not by load_matrix: its decimal commas too.
+    crate::slips::decimal_commas(argument, text);
     crate::slips::point_matrix_text(argument, text, &m, rows);
     BezierCurve::new(orient(m, rows))
         .map(CurveArg::curve)

@@ -373,31 +373,12 @@ fn usage_error(e: clap::Error, args: &[OsString]) -> Result<Outcome, CliError> {
             (arg, format!("invalid value '{value}'{reason}"), expected)
         }
         ClapKind::UnknownArgument => {
-            let arg = match usage::unknown_option(args) {
-                Some(typed) if !arg.starts_with('-') || typed.starts_with(&arg) => typed,
-                _ => arg,
-            };
-            let suggestion =
-                usage::suggested_option(args, &arg).or_else(|| context(ContextKind::SuggestedArg));
-            (
-                arg,
-                "unknown option".into(),
-                suggestion
-                    .map(|s| format!("{s} perhaps, or an option listed by --help"))
-                    .unwrap_or_else(|| "an option listed by --help".into()),
-            )
+            usage::unknown_argument(args, arg, context(ContextKind::SuggestedArg))
         }
-        ClapKind::InvalidSubcommand => {
-            let typed = context(ContextKind::InvalidSubcommand).unwrap_or(value);
-            let suggestion = usage::suggested_subcommand(&typed)
-                .map(|s| format!("{s} perhaps, or "))
-                .unwrap_or_default();
-            (
-                typed,
-                "unknown subcommand".into(),
-                format!("{suggestion}one of {subcommands}"),
-            )
-        }
+        ClapKind::InvalidSubcommand => usage::unknown_subcommand(
+            context(ContextKind::InvalidSubcommand).unwrap_or(value),
+            &subcommands,
+        ),
         ClapKind::MissingSubcommand | ClapKind::DisplayHelpOnMissingArgumentOrSubcommand => (
             "cagd".into(),
             "no subcommand given".into(),

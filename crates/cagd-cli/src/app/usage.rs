@@ -5,10 +5,37 @@ use std::ffi::OsString;
 
 use clap::CommandFactory;
 
+/// An unknown option: (the option as typed, the problem, what is expected), with the option
+/// meant; `clap_arg` is what clap names, `clap_suggestion` its suggestion.
+pub(super) fn unknown_argument(
+    args: &[OsString],
+    clap_arg: String,
+    clap_suggestion: Option<String>,
+) -> (String, String, String) {
+    let arg = match unknown_option(args) {
+        Some(typed) if !clap_arg.starts_with('-') || typed.starts_with(&clap_arg) => typed,
+        _ => clap_arg,
+    };
+    let expected = suggested_option(args, &arg)
+        .or(clap_suggestion)
+        .map(|s| format!("{s} perhaps, or an option listed by --help"))
+        .unwrap_or_else(|| "an option listed by --help".into());
+    (arg, "unknown option".into(), expected)
+}
+
+/// An unknown subcommand `typed`: (it, the problem, the closest and all `subcommands`).
+pub(super) fn unknown_subcommand(typed: String, subcommands: &str) -> (String, String, String) {
+    let suggestion = suggested_subcommand(&typed)
+        .map(|s| format!("{s} perhaps, or "))
+        .unwrap_or_default();
+    let expected = format!("{suggestion}one of {subcommands}");
+    (typed, "unknown subcommand".into(), expected)
+}
+
 /// The first option of `args` (`--name` or `--name=value`) that the subcommand does not
 /// have, as typed (clap names the value after it when the subcommand takes an optional
 /// positional: `integrate --bernstien 3` is about `--bernstien`, not `3`).
-pub(super) fn unknown_option(args: &[OsString]) -> Option<String> {
+fn unknown_option(args: &[OsString]) -> Option<String> {
     let words: Vec<String> = args
         .iter()
         .skip(1)
@@ -34,7 +61,7 @@ pub(super) fn unknown_option(args: &[OsString]) -> Option<String> {
 
 /// The option meant by `typed` in the subcommand of `args`: `--u` and `--v` for a curve's
 /// `--t` on a surface, else the option of the subcommand closest in spelling.
-pub(super) fn suggested_option(args: &[OsString], typed: &str) -> Option<String> {
+fn suggested_option(args: &[OsString], typed: &str) -> Option<String> {
     let command = super::Cli::command();
     let sub = args
         .iter()
@@ -60,7 +87,7 @@ pub(super) fn suggested_option(args: &[OsString], typed: &str) -> Option<String>
 }
 
 /// The subcommand closest in spelling to `typed`, if any is close.
-pub(super) fn suggested_subcommand(typed: &str) -> Option<String> {
+fn suggested_subcommand(typed: &str) -> Option<String> {
     let command = super::Cli::command();
     closest(typed, command.get_subcommands().map(|s| s.get_name())).map(str::to_string)
 }
