@@ -458,6 +458,9 @@ fn appendix_d(limits: &Limits, out: &mut String, files: &mut Files) -> Result<()
         let label = if k == 0 { "g(u, v_j)" } else { "" };
         figure = figure.boundary(sample(c, &t), Colour::Green, label);
     }
+    // The answer: g(1/4, 3/4) = (1/4, 3/4, 15/16), marked and labelled.
+    let at = column(&g.eval_parts(0.25, 0.75).g);
+    let figure = figure.points(at, vec!["u = 0.25, v = 0.75".into()], "g(0.25, 0.75)");
     files.picture("appendix_d", &figure)?;
     files.meshes("appendix_d", &grid)
 }

@@ -18,7 +18,7 @@ use cagd_test_support as common;
 
 /// Runs `cagd args…` in-process; the standard output and the warnings as
 /// `ARGUMENT: MESSAGE` (file arguments must be absolute paths: tests run in parallel).
-fn run_ok(args: &[&str]) -> (String, Vec<String>) {
+pub(super) fn run_ok(args: &[&str]) -> (String, Vec<String>) {
     let mut full = vec!["cagd".to_string()];
     full.extend(args.iter().map(|s| s.to_string()));
     let out = run(&full).unwrap_or_else(|e| panic!("cagd {args:?} failed: {e}"));
@@ -31,7 +31,7 @@ fn run_ok(args: &[&str]) -> (String, Vec<String>) {
 }
 
 /// The standard output of a command that must run without a warning.
-fn silent(args: &[&str]) -> String {
+pub(super) fn silent(args: &[&str]) -> String {
     let (out, warnings) = run_ok(args);
     assert!(warnings.is_empty(), "cagd {args:?} warned: {warnings:?}");
     out
@@ -45,7 +45,7 @@ fn json(args: &[&str]) -> J {
 }
 
 /// The error line of a command that must fail (in-process): `ARGUMENT: PROBLEM; expected …`.
-fn error(args: &[&str]) -> String {
+pub(super) fn error(args: &[&str]) -> String {
     let mut full = vec!["cagd".to_string()];
     full.extend(args.iter().map(|s| s.to_string()));
     match run(&full) {

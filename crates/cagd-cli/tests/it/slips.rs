@@ -7,28 +7,10 @@
 use std::path::Path;
 
 use assert_cmd::Command;
-use cagd_cli::run;
+use cagd_test_support::thesis_args::PRIMER_4_3;
 use serde_json::Value as J;
 
-/// Runs `cagd args…` in-process: standard output and the warnings as `ARGUMENT: MESSAGE`.
-fn run_ok(args: &[&str]) -> (String, Vec<String>) {
-    let mut full = vec!["cagd"];
-    full.extend(args);
-    let out = run(&full).unwrap_or_else(|e| panic!("cagd {args:?} failed: {e}"));
-    let warnings = out
-        .warnings
-        .iter()
-        .map(|(a, w)| format!("{a}: {w}"))
-        .collect();
-    (out.stdout, warnings)
-}
-
-/// The standard output of a command that must run without a note or warning.
-fn silent(args: &[&str]) -> String {
-    let (out, warnings) = run_ok(args);
-    assert!(warnings.is_empty(), "cagd {args:?} warned: {warnings:?}");
-    out
-}
+use super::course::{error, run_ok, silent};
 
 /// Runs the `cagd` binary (which writes its pictures), requiring success.
 fn binary(args: &[&str]) {
@@ -42,19 +24,6 @@ fn binary(args: &[&str]) {
         "cagd {args:?}: {}",
         String::from_utf8_lossy(&out.stderr)
     );
-}
-
-/// The one-line error of a command that must fail with exit code 2.
-fn error(args: &[&str]) -> String {
-    let mut full = vec!["cagd"];
-    full.extend(args);
-    match run(&full) {
-        Ok(_) => panic!("cagd {args:?} succeeded"),
-        Err(e) => {
-            assert_eq!(e.exit_code(), 2, "{e}");
-            e.to_string()
-        }
-    }
 }
 
 /// The exact `result` of a command (`--exact --format json`), row by row.
@@ -728,21 +697,7 @@ fn every_plotting_command_marks_its_evaluated_points() {
         ("spline", vec!["spline", p, "--t", "0.5"]),
         (
             "coons",
-            vec![
-                "coons",
-                "--c1",
-                "[u;0;u-u^2]",
-                "--c2",
-                "[u;1;u]",
-                "--d1",
-                "[0;v^2;v-v^2]",
-                "--d2",
-                "[1;v;v]",
-                "--u",
-                "0.2",
-                "--v",
-                "0.5",
-            ],
+            [&["coons"][..], &PRIMER_4_3, &["--u", "0.2", "--v", "0.5"]].concat(),
         ),
         (
             "gordon",
