@@ -485,12 +485,20 @@ mod tests {
     }
 
     /// The command line's words after `argument: ` for `args`.
+    /// The command line's words after `argument: `, without how it read a matrix of points
+    /// (the page takes coordinates, never a matrix to orient).
     fn cli_words(args: &[&str], argument: &str) -> String {
         let e = cagd_cli::run(std::iter::once("cagd").chain(args.iter().copied())).unwrap_err();
         let text = e.to_string();
-        text.strip_prefix(&format!("{argument}: "))
+        let mut words = text
+            .strip_prefix(&format!("{argument}: "))
             .unwrap_or_else(|| panic!("{text}"))
-            .to_string()
+            .to_string();
+        if let Some(i) = words.find(" (read as ") {
+            let end = words[i..].find(");").map_or(words.len(), |j| i + j + 1);
+            words.replace_range(i..end, "");
+        }
+        words
     }
 
     /// The page's words after `cagd: error: name: `.
@@ -527,7 +535,13 @@ mod tests {
         for (knots, text, degree, cli_name, page_name) in cases {
             let control = vec![0., 0., 1., 2., 3., 0.];
             let p = degree.to_string();
-            let mut args = vec!["bspline", "[0 1 3; 0 2 0]", "--degree", p.as_str()];
+            let mut args = vec![
+                "bspline",
+                "[0 1 3; 0 2 0]",
+                "--columns",
+                "--degree",
+                p.as_str(),
+            ];
             if !text.is_empty() {
                 args.extend(["--knots", text]);
             }
@@ -541,6 +555,7 @@ mod tests {
             let args = [
                 "nurbs",
                 "[0 1 3; 0 2 0]",
+                "--columns",
                 "--weights",
                 text,
                 "--degree",
@@ -551,7 +566,10 @@ mod tests {
         }
         // The degree limit is the operation's, without the command line's way to raise it.
         let page = bspline_view(vec![0., 0., 1., 2.], 2, 5000, vec![], 11);
-        let cli = cli_words(&["bspline", "[0 1; 0 2]", "--degree", "5000"], "--degree");
+        let cli = cli_words(
+            &["bspline", "[0 1; 0 2]", "--columns", "--degree", "5000"],
+            "--degree",
+        );
         let raise = " (raise it with --max-degree or CAGD_MAX_DEGREE)";
         assert_eq!(page_words(&page, "degree"), cli.replacen(raise, "", 1));
         assert!(cli.contains(raise), "{cli}");

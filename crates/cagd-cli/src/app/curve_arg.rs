@@ -69,7 +69,7 @@ pub(crate) fn curve_arg<T: LiteralScalar>(
     warn_matrix_as_control(argument, text, how);
     if data {
         let m = load_matrix(&cx.limits, argument, text, how.script)?;
-        return bezier(argument, m, how.rows);
+        return bezier(argument, text, m, how.rows);
     }
     expression_curve(cx, argument, text, how, env)
 }
@@ -132,7 +132,7 @@ fn expression_curve<T: LiteralScalar>(
             let m = expr
                 .eval_at(&env.borrow(), &[])
                 .map_err(|e| CliError::literal(argument, e, CURVE_ARG_FORM))?;
-            bezier(argument, m, how.rows)
+            bezier(argument, text, m, how.rows)
         }
         [p] => Ok(CurveArg::Evaluated(Box::new(ExprCurve::new(
             expr,
@@ -222,10 +222,13 @@ fn orient<T: LiteralScalar>(m: DMatrix<T>, rows: bool) -> DMatrix<T> {
 /// A Bézier curve of control points `m` (as typed), with the orientation slip noticed.
 fn bezier<T: LiteralScalar>(
     argument: &str,
+    text: &str,
     m: DMatrix<T>,
     rows: bool,
 ) -> Result<CurveArg<T>, CliError> {
-    crate::slips::point_matrix(argument, &m, rows);
+    // A constant expression is read here, not by load_matrix: its decimal commas too.
+    crate::slips::decimal_commas(argument, text);
+    crate::slips::point_matrix_text(argument, text, &m, rows);
     BezierCurve::new(orient(m, rows))
         .map(CurveArg::curve)
         .map_err(lib(argument, "control points, one per column"))
@@ -274,7 +277,7 @@ pub(crate) fn library_curve<T: LiteralScalar>(
         return Ok(curve);
     }
     let m = load_matrix(&cx.limits, argument, text, how.script)?;
-    crate::slips::point_matrix(argument, &m, how.rows);
+    crate::slips::point_matrix_text(argument, text, &m, how.rows);
     BezierCurve::new(orient(m, how.rows))
         .map(LibraryCurve::Bezier)
         .map_err(lib(argument, "control points, one per column"))
@@ -308,7 +311,7 @@ fn library_call<T: LiteralScalar>(
         ));
     }
     let points = load_matrix(&cx.limits, argument, args[0], how.script)?;
-    crate::slips::point_matrix(argument, &points, how.rows);
+    crate::slips::point_matrix_text(argument, args[0], &points, how.rows);
     let points = orient(points, how.rows);
     let list = |cx: &mut Cx, k: usize| load_params::<T>(&cx.limits, argument, args[k]);
     let degree = |knots: &[T]| {

@@ -95,6 +95,7 @@ mod spline_surface_args;
 mod subdivide;
 
 mod thesis;
+mod usage;
 
 mod work;
 
@@ -178,26 +179,50 @@ where
     I: IntoIterator<Item = A>,
     A: Into<OsString> + Clone,
 {
-    let matches = match Cli::command().try_get_matches_from(args) {
+    let args: Vec<OsString> = args.into_iter().map(Into::into).collect();
+    let matches = match Cli::command().try_get_matches_from(&args) {
         Ok(m) => m,
-        Err(e) => return usage_error(e),
+        Err(e) => return usage_error(e, &args),
     };
     // Output targets are checked before any work (and before the limits, which may fail).
     crate::outputs::check(&matches)?;
     let cli = match Cli::from_arg_matches(&matches) {
         Ok(cli) => cli,
-        Err(e) => return usage_error(e),
+        Err(e) => return usage_error(e, &args),
     };
     let limits = &cli.limits.resolve()?;
-    crate::slips::take();
+    crate::slips::begin(orientation_stated(&matches));
     let mut cx = Cx::new(*limits);
-    let outcome = cli.command.run(&mut cx);
+    let outcome = cli.command.run(&mut cx).map_err(|e| {
+        // An error about points says how they were read; one about numbers read with
+        // decimal commas says so.
+        let how = crate::slips::explain(&e.argument, &e.problem);
+        if how.is_empty() {
+            e
+        } else {
+            CliError {
+                problem: format!("{} ({how})", e.problem),
+                ..e
+            }
+        }
+    });
     // The slips noticed while reading the input come first; each warning is printed once.
     let mut warnings = crate::slips::take();
     let mut outcome = outcome?;
     warnings.append(&mut outcome.warnings);
     outcome.warnings = crate::slips::dedup(warnings);
     Ok(outcome)
+}
+
+/// Whether the subcommand's command line states the orientation of points (`--rows` or
+/// `--columns`).
+fn orientation_stated(matches: &clap::ArgMatches) -> bool {
+    let Some((_, sub)) = matches.subcommand() else {
+        return false;
+    };
+    ["rows", "columns"]
+        .iter()
+        .any(|id| matches!(sub.try_get_one::<bool>(id), Ok(Some(true))))
 }
 
 /// The clap definition of the whole command line (see [`crate::schema`]).
@@ -230,7 +255,7 @@ where
 }
 
 /// Turns a clap error into the one-line form (help and version are printed as a result).
-fn usage_error(e: clap::Error) -> Result<Outcome, CliError> {
+fn usage_error(e: clap::Error, args: &[OsString]) -> Result<Outcome, CliError> {
     if matches!(e.kind(), ClapKind::DisplayHelp | ClapKind::DisplayVersion) {
         return Ok(Outcome {
             stdout: e.render().to_string(),
@@ -275,17 +300,12 @@ fn usage_error(e: clap::Error) -> Result<Outcome, CliError> {
             };
             (arg, format!("invalid value '{value}'{reason}"), expected)
         }
-        ClapKind::UnknownArgument => (
-            arg,
-            "unknown option".into(),
-            context(ContextKind::SuggestedArg)
-                .map(|s| format!("{s} perhaps, or an option listed by --help"))
-                .unwrap_or_else(|| "an option listed by --help".into()),
-        ),
-        ClapKind::InvalidSubcommand => (
+        ClapKind::UnknownArgument => {
+            usage::unknown_argument(args, arg, context(ContextKind::SuggestedArg))
+        }
+        ClapKind::InvalidSubcommand => usage::unknown_subcommand(
             context(ContextKind::InvalidSubcommand).unwrap_or(value),
-            "unknown subcommand".into(),
-            format!("one of {subcommands}"),
+            &subcommands,
         ),
         ClapKind::MissingSubcommand | ClapKind::DisplayHelpOnMissingArgumentOrSubcommand => (
             "cagd".into(),

@@ -22,7 +22,7 @@ pub(crate) fn points<T: LiteralScalar>(
     rows: bool,
 ) -> Result<DMatrix<T>, CliError> {
     let m = load_matrix(&cx.limits, argument, text, script)?;
-    crate::slips::point_matrix(argument, &m, rows);
+    crate::slips::point_matrix_text(argument, text, &m, rows);
     Ok(if rows { m.transpose() } else { m })
 }
 
@@ -60,6 +60,16 @@ pub(crate) fn given_or_samples<T: LiteralScalar>(
         (None, Some(n)) => Params::Samples(n),
         (None, None) => Params::Default,
     })
+}
+
+/// A list of numbers typed as `argument` (knots, weights, nodes, parameters), with decimal
+/// commas noticed.
+pub(crate) fn params<T: LiteralScalar>(
+    cx: &mut Cx,
+    argument: &str,
+    text: &str,
+) -> Result<Vec<T>, CliError> {
+    load_params(&cx.limits, argument, text)
 }
 
 /// The interval `a,b` of `--interval`, if given.

@@ -79,7 +79,7 @@ const OPTION_NAMES: &[(Role, &str)] = &[
     (Role::V, "--v"),
     (Role::Grid, "--u/--v"),
     (Role::Samples, "--n"),
-    (Role::DerivativeOrder, "--order"),
+    (Role::DerivativeOrder, "-r"),
     (Role::DerivativeV, "--dv"),
     (Role::Nodes, "--nodes"),
     (Role::Points, "POINTS"),
@@ -139,7 +139,7 @@ mod tests {
         roles.dedup();
         assert_eq!(roles.len(), OPTION_NAMES.len(), "a role named twice");
         assert_eq!(option_name(Role::Knots), "--knots");
-        assert_eq!(option_name(Role::DerivativeOrder), "--order");
+        assert_eq!(option_name(Role::DerivativeOrder), "-r");
         assert_eq!(option_name(Role::Result), "RESULT");
     }
 }

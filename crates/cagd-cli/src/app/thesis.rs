@@ -162,6 +162,12 @@ fn primer_2_4(out: &mut String, files: &mut Files) -> Result<(), CliError> {
         };
         figure = figure.boundary(level.clone(), Colour::Orange, label);
     }
+    // The answer: the point b(1/2) = (7/2, 3/2, 3/4), marked and labelled.
+    let figure = figure.points(
+        column(&s.point_on_curve()),
+        vec!["t = 0.5".into()],
+        "b(0.5)",
+    );
     files.picture("primer_2_4", &figure)
 }
 
@@ -261,6 +267,12 @@ fn primer_4_3(out: &mut String, files: &mut Files) -> Result<(), CliError> {
         [&c1, &c2, &d1, &d2],
         &t,
         &t,
+    )
+    // The answer: x(0.2, 0.5) = (1/5, 3/10, 19/50), marked and labelled.
+    .points(
+        column(&patch.eval_parts(0.2, 0.5).x),
+        vec!["u = 0.2, v = 0.5".into()],
+        "x(0.2, 0.5)",
     );
     files.picture("primer_4_3", &figure)?;
     files.meshes("primer_4_3", &grid)
@@ -413,6 +425,9 @@ fn appendix_d(limits: &Limits, out: &mut String, files: &mut Files) -> Result<()
         let label = if k == 0 { "g(u, v_j)" } else { "" };
         figure = figure.boundary(sample(c, &t), Colour::Green, label);
     }
+    // The answer: g(1/4, 3/4) = (1/4, 3/4, 15/16), marked and labelled.
+    let at = column(&g.eval_parts(0.25, 0.75).g);
+    let figure = figure.points(at, vec!["u = 0.25, v = 0.75".into()], "g(0.25, 0.75)");
     files.picture("appendix_d", &figure)?;
     files.meshes("appendix_d", &grid)
 }

@@ -174,8 +174,7 @@ impl<T: Scalar> Integrate<T> {
         report.push("integral", Value::Matrix(integral));
         if self.t.is_some() {
             let values = bernstein_antiderivative_values(n, &rows, &ts);
-            let t = DMatrix::from_column_slice(ts.len(), 1, &ts);
-            report.push("t", Value::Matrix(t));
+            report.push("t", Value::row(&ts));
             report.push("result", Value::Matrix(values));
         }
         let drawing = if self.drawing {
@@ -333,7 +332,8 @@ fn bernstein_picture<T: Scalar>(n: usize, rows: &[usize]) -> Result<Drawing> {
         .map_err(lib(Role::T, "a picture"))?;
     let values = bernstein_antiderivative_values(n, rows, &dense);
     let title = format!("integrals of the Bernstein polynomials of degree {n}");
-    Ok(graphs(Drawing::new(title), &dense, &values, rows, |i| {
+    let axes = Drawing::graph(title, "t", &format!("∫₀ᵗ B_i^{n}"));
+    Ok(graphs(axes, &dense, &values, rows, |i| {
         format!("∫ B_{i}^{n}")
     }))
 }
