@@ -16,7 +16,7 @@
 //! **Parameter arguments** (`--t`, `--u`, `--v`) are a number, a list literal
 //! (`"[0 0.25 0.5]"`) or a range (`0:0.1:1`); `--n N` means `linspace(0,1,N)`.
 
-use cagd::limits::Limits;
+use crate::cx::Cx;
 use std::io::Read;
 
 use cagd::grid::PointGrid;
@@ -39,49 +39,17 @@ pub const PARAMS_FORM: &str =
 /// The form of a curve expression, for error messages.
 pub const CURVE_FORM: &str = "an expression in the curve parameter such as \"[u; 0; u-u^2]\"";
 
-thread_local! {
-    /// Files given in memory by [`with_input_files`], by name.
-    static INPUT_FILES: std::cell::RefCell<Vec<(String, String)>> =
-        const { std::cell::RefCell::new(Vec::new()) };
-}
-
-/// Runs `f` (typically [`crate::run`]) with `files` (name, contents) readable as input files
-/// of that name, before the file system: so the web page, which has no file system, passes a
-/// data script typed into the page as `--script data.m`. Only on the calling thread, and only
-/// while `f` runs.
-///
-/// ```
-/// let files = vec![("data.m".to_string(), "B = [0 0; 1 2]';".to_string())];
-/// let out = cagd_cli::with_input_files(files, || cagd_cli::run(["cagd", "script", "data.m"]));
-/// assert!(out.unwrap().stdout.contains("B ="));
-/// ```
-pub fn with_input_files<R>(files: Vec<(String, String)>, f: impl FnOnce() -> R) -> R {
-    let previous = INPUT_FILES.with(|cell| cell.replace(files));
-    let result = f();
-    INPUT_FILES.with(|cell| cell.replace(previous));
-    result
-}
-
-fn input_file(path: &str) -> Option<String> {
-    INPUT_FILES.with(|cell| {
-        cell.borrow()
-            .iter()
-            .find(|(name, _)| name == path)
-            .map(|(_, text)| text.clone())
-    })
-}
-
-/// Whether `path` names an input file: one given to [`with_input_files`], or something on
+/// Whether `path` names an input file: one given in memory ([`Cx::with_files`]), or something on
 /// disk to read as a file: a regular file, or a named pipe, a device or `/dev/stdin` (anything
 /// that exists and is not a folder), so that `<(command)` and FIFOs are read rather than
 /// reported missing.
-pub(crate) fn is_file(path: &str) -> bool {
-    input_file(path).is_some() || std::fs::metadata(path).is_ok_and(|m| !m.is_dir())
+pub(crate) fn is_file(cx: &Cx, path: &str) -> bool {
+    cx.file(path).is_some() || std::fs::metadata(path).is_ok_and(|m| !m.is_dir())
 }
 
 /// Reads a file (or standard input for `-`) as text, with the size limit.
-pub fn read_text(limits: &Limits, argument: &str, path: &str) -> Result<String, CliError> {
-    let limit = limits.max_input_bytes;
+pub fn read_text(cx: &Cx, argument: &str, path: &str) -> Result<String, CliError> {
+    let limit = cx.limits.max_input_bytes;
     let size = if limit % (1 << 20) == 0 {
         format!("{} MiB", limit >> 20)
     } else {
@@ -90,8 +58,8 @@ pub fn read_text(limits: &Limits, argument: &str, path: &str) -> Result<String, 
     let form = format!("a readable UTF-8 text file (at most {size}), or - for standard input");
     let form = form.as_str();
     let mut bytes = Vec::new();
-    let result = if let Some(text) = input_file(path) {
-        bytes = text.into_bytes();
+    let result = if let Some(text) = cx.file(path) {
+        bytes = text.as_bytes().to_vec();
         Ok(bytes.len())
     } else if path == "-" {
         std::io::stdin()
@@ -146,13 +114,13 @@ fn is_octave_text(text: &str) -> bool {
 ///
 /// ```
 /// use cagd_cli::load_matrix;
-/// let b = load_matrix::<f64>(&cagd::Limits::default(), "--control", "[0 0 0; 0 2 2]'", None).unwrap();
+/// let b = load_matrix::<f64>(&cagd_cli::Cx::new(cagd::Limits::default()), "--control", "[0 0 0; 0 2 2]'", None).unwrap();
 /// assert_eq!(b.shape(), (3, 2));
-/// let err = load_matrix::<f64>(&cagd::Limits::default(), "--control", "[1 2; 3]", None).unwrap_err();
+/// let err = load_matrix::<f64>(&cagd_cli::Cx::new(cagd::Limits::default()), "--control", "[1 2; 3]", None).unwrap_err();
 /// assert!(err.to_string().starts_with("--control: column 7: row 2 has 1 column(s), expected 2; expected"));
 /// ```
 pub fn load_matrix<T: LiteralScalar>(
-    limits: &Limits,
+    cx: &Cx,
     argument: &str,
     text: &str,
     script: Option<&Script<T>>,
@@ -160,32 +128,43 @@ pub fn load_matrix<T: LiteralScalar>(
     let trimmed = text.trim();
     // A variable of the script wins over a file of the same name.
     let is_variable = script.is_some_and(|s| s.get(trimmed).is_some());
-    if let Some((path, variable)) = split_variable(trimmed) {
+    if let Some((path, variable)) = split_variable(cx, trimmed) {
         if !is_variable {
-            let contents = read_text(limits, argument, path)?;
+            let contents = read_text(cx, argument, path)?;
             let shown = format!("{argument} {trimmed}");
-            return parse_data_text_variable(limits, &shown, &contents, Some(variable));
+            return parse_data_text_variable(cx, &shown, &contents, Some(variable));
         }
     }
-    if trimmed == "-" || (!is_variable && !trimmed.starts_with('[') && is_file(trimmed)) {
-        let contents = read_text(limits, argument, trimmed)?;
+    if trimmed == "-" || (!is_variable && !trimmed.starts_with('[') && is_file(cx, trimmed)) {
+        let contents = read_text(cx, argument, trimmed)?;
         let shown = if trimmed == "-" {
             argument.to_string()
         } else {
             format!("{argument} {trimmed}")
         };
         if !is_octave_text(&contents) {
-            crate::slips::decimal_commas_in_file(argument, &contents);
+            crate::slips::decimal_commas_in_file(cx, argument, &contents);
         }
-        return parse_data_text(limits, &shown, &contents);
+        return parse_data_text(cx, &shown, &contents);
     }
     if !is_variable {
         missing_file(argument, trimmed)?;
-        crate::slips::decimal_commas(argument, text);
+        crate::slips::decimal_commas(cx, argument, text);
     }
+    evaluate_matrix(cx, argument, text, script)
+}
+
+/// A matrix literal or expression, evaluated with the variables of `script` (a curve of the
+/// script, which has a free parameter, is refused as a matrix).
+fn evaluate_matrix<T: LiteralScalar>(
+    cx: &Cx,
+    argument: &str,
+    text: &str,
+    script: Option<&Script<T>>,
+) -> Result<DMatrix<T>, CliError> {
     let mut env = match script {
         Some(s) => s.env().clone(),
-        None => Env::with_limits(*limits),
+        None => Env::with_limits(cx.limits),
     };
     let expr = Expr::parse_with(text, env.limits())
         .map_err(|e| CliError::literal(argument, e, MATRIX_FORM))?;
@@ -254,8 +233,8 @@ fn refuse_lenient(
 }
 
 /// `file.txt:name` with an existing file `file.txt` and an Octave identifier `name`.
-fn split_variable(text: &str) -> Option<(&str, &str)> {
-    split_name(text).filter(|(path, _)| is_file(path))
+fn split_variable<'t>(cx: &Cx, text: &'t str) -> Option<(&'t str, &'t str)> {
+    split_name(text).filter(|(path, _)| is_file(cx, path))
 }
 
 /// `path:name` with an Octave identifier `name` (the path need not exist).
@@ -273,19 +252,19 @@ const OCTAVE_FILE_FORM: &str =
 /// Reads an Octave `save -text` file and picks a numeric variable: `variable` if given, else
 /// the first numeric one. The result keeps Octave's dimensions (2 or more).
 pub fn read_octave_array(
-    limits: &Limits,
+    cx: &Cx,
     argument: &str,
     contents: &str,
     variable: Option<&str>,
 ) -> Result<(String, ndarray::ArrayD<f64>), CliError> {
     use cagd_octave::text_format;
-    let ws = text_format::read_text_with(contents, limits)
+    let ws = text_format::read_text_with(contents, &cx.limits)
         .map_err(|e| CliError::new(argument, e.to_string(), OCTAVE_FILE_FORM, ErrorKind::Data))?;
     let name = match variable {
         Some(name) => name.to_string(),
         None => ws
             .iter()
-            .find(|(_, v)| v.to_array_with(limits).is_some())
+            .find(|(_, v)| v.to_array_with(&cx.limits).is_some())
             .map(|(n, _)| n.to_string())
             .ok_or_else(|| {
                 CliError::new(
@@ -348,26 +327,26 @@ fn array_to_scalars<T: LiteralScalar>(
 ///     "# name: s\n# type: string\n# elements: 1\n# length: 1\nx\n\n",
 ///     "# name: B\n# type: matrix\n# rows: 1\n# columns: 2\n 1 0.5\n",
 /// );
-/// let m = cagd_cli::parse_data_text::<f64>(&cagd::Limits::default(), "--control", text).unwrap();
+/// let m = cagd_cli::parse_data_text::<f64>(&cagd_cli::Cx::new(cagd::Limits::default()), "--control", text).unwrap();
 /// assert_eq!(m, nalgebra::DMatrix::from_row_slice(1, 2, &[1.0, 0.5]));
 /// ```
 pub fn parse_data_text<T: LiteralScalar>(
-    limits: &Limits,
+    cx: &Cx,
     argument: &str,
     contents: &str,
 ) -> Result<DMatrix<T>, CliError> {
-    parse_data_text_variable(limits, argument, contents, None)
+    parse_data_text_variable(cx, argument, contents, None)
 }
 
 /// [`parse_data_text`] choosing the variable of an Octave text file by name.
 pub fn parse_data_text_variable<T: LiteralScalar>(
-    limits: &Limits,
+    cx: &Cx,
     argument: &str,
     contents: &str,
     variable: Option<&str>,
 ) -> Result<DMatrix<T>, CliError> {
     if is_octave_text(contents) || variable.is_some() {
-        let (name, array) = read_octave_array(limits, argument, contents, variable)?;
+        let (name, array) = read_octave_array(cx, argument, contents, variable)?;
         if array.ndim() != 2 {
             return Err(CliError::new(
                 argument,
@@ -396,12 +375,12 @@ pub fn parse_data_text_variable<T: LiteralScalar>(
 /// `[b_i0 b_i1 … b_in]` with each point's three coordinates side by side.
 ///
 /// ```
-/// let net = cagd_cli::load_net::<f64>(&cagd::Limits::default(), "NET", "[0 0 0 0 1 0; 1 0 0 1 1 1]", None).unwrap();
+/// let net = cagd_cli::load_net::<f64>(&cagd_cli::Cx::new(cagd::Limits::default()), "NET", "[0 0 0 0 1 0; 1 0 0 1 1 1]", None).unwrap();
 /// assert_eq!(net.dim(), (2, 2, 3));
 /// assert_eq!(net[[1, 1, 2]], 1.0);
 /// ```
 pub fn load_net<T: LiteralScalar>(
-    limits: &Limits,
+    cx: &Cx,
     argument: &str,
     text: &str,
     script: Option<&Script<T>>,
@@ -410,18 +389,18 @@ pub fn load_net<T: LiteralScalar>(
     let is_variable = script.is_some_and(|s| s.get(trimmed).is_some());
     let file = if is_variable {
         None
-    } else if let Some((path, variable)) = split_variable(trimmed) {
+    } else if let Some((path, variable)) = split_variable(cx, trimmed) {
         Some((path, Some(variable)))
-    } else if trimmed != "-" && is_file(trimmed) {
+    } else if trimmed != "-" && is_file(cx, trimmed) {
         Some((trimmed, None))
     } else {
         None
     };
     if let Some((path, variable)) = file {
-        let contents = read_text(limits, argument, path)?;
+        let contents = read_text(cx, argument, path)?;
         if is_octave_text(&contents) {
             let shown = format!("{argument} {trimmed}");
-            let (_, array) = read_octave_array(limits, &shown, &contents, variable)?;
+            let (_, array) = read_octave_array(cx, &shown, &contents, variable)?;
             if array.ndim() == 3 {
                 let a = array_to_scalars::<T>(&shown, &array)?;
                 let s = a.shape().to_vec();
@@ -431,7 +410,7 @@ pub fn load_net<T: LiteralScalar>(
             }
         }
     }
-    let packed = load_matrix::<T>(limits, argument, text, script)?;
+    let packed = load_matrix::<T>(cx, argument, text, script)?;
     unpack_net(argument, &packed)
 }
 
@@ -512,17 +491,17 @@ pub fn parse_numeric_text<T: LiteralScalar>(text: &str) -> Result<DMatrix<T>, (u
 /// one value.
 ///
 /// ```
-/// let t = cagd_cli::load_params::<f64>(&cagd::Limits::default(), "--t", "[0 0.5 1]").unwrap();
+/// let t = cagd_cli::load_params::<f64>(&cagd_cli::Cx::new(cagd::Limits::default()), "--t", "[0 0.5 1]").unwrap();
 /// assert_eq!(t, vec![0.0, 0.5, 1.0]);
-/// assert!(cagd_cli::load_params::<f64>(&cagd::Limits::default(), "--t", "[0 0; 1 1]").is_err());
+/// assert!(cagd_cli::load_params::<f64>(&cagd_cli::Cx::new(cagd::Limits::default()), "--t", "[0 0; 1 1]").is_err());
 /// ```
 pub fn load_params<T: LiteralScalar>(
-    limits: &Limits,
+    cx: &Cx,
     argument: &str,
     text: &str,
 ) -> Result<Vec<T>, CliError> {
-    crate::slips::decimal_commas(argument, text);
-    let (values, warnings) = cagd_octave::literal::parse_params_warning::<T>(text, limits)
+    crate::slips::decimal_commas(cx, argument, text);
+    let (values, warnings) = cagd_octave::literal::parse_params_warning::<T>(text, &cx.limits)
         .map_err(|e| CliError::literal(argument, e, PARAMS_FORM))?;
     refuse_lenient(argument, warnings, PARAMS_FORM)?;
     if values.is_empty() {
@@ -533,7 +512,7 @@ pub fn load_params<T: LiteralScalar>(
             ErrorKind::Shape,
         ));
     }
-    limits
+    cx.limits
         .check_samples("parameter values", values.len())
         .map_err(|e| CliError::library(argument, e, PARAMS_FORM))?;
     Ok(values)
@@ -543,15 +522,11 @@ pub fn load_params<T: LiteralScalar>(
 /// ends). Octave's doubles for `f64`, exact `i/(n−1)` for rationals.
 ///
 /// ```
-/// assert_eq!(cagd_cli::samples::<f64>(&cagd::Limits::default(), 5, 2).unwrap(), vec![0.0, 0.25, 0.5, 0.75, 1.0]);
-/// assert!(cagd_cli::samples::<f64>(&cagd::Limits::default(), 1, 2).is_err());
+/// assert_eq!(cagd_cli::samples::<f64>(&cagd_cli::Cx::new(cagd::Limits::default()), 5, 2).unwrap(), vec![0.0, 0.25, 0.5, 0.75, 1.0]);
+/// assert!(cagd_cli::samples::<f64>(&cagd_cli::Cx::new(cagd::Limits::default()), 1, 2).is_err());
 /// ```
-pub fn samples<T: LiteralScalar>(
-    limits: &Limits,
-    n: usize,
-    min: usize,
-) -> Result<Vec<T>, CliError> {
-    let max = limits.max_samples;
+pub fn samples<T: LiteralScalar>(cx: &Cx, n: usize, min: usize) -> Result<Vec<T>, CliError> {
+    let max = cx.limits.max_samples;
     if n < min {
         return Err(CliError::new(
             "--n",
@@ -560,7 +535,7 @@ pub fn samples<T: LiteralScalar>(
             ErrorKind::Shape,
         ));
     }
-    limits.check_samples("samples N", n).map_err(|e| {
+    cx.limits.check_samples("samples N", n).map_err(|e| {
         CliError::library(
             "--n",
             e,
@@ -573,26 +548,26 @@ pub fn samples<T: LiteralScalar>(
 /// Parses a curve or surface expression argument, in the context of `script` (whose curves
 /// it may name: `--c1 c1`).
 pub fn load_expression<T: LiteralScalar>(
-    limits: &Limits,
+    cx: &Cx,
     argument: &str,
     text: &str,
     script: Option<&Script<T>>,
 ) -> Result<ParamExpr, CliError> {
     match script {
         Some(s) => s.resolve(text),
-        None => ParamExpr::parse_with(text, limits),
+        None => ParamExpr::parse_with(text, &cx.limits),
     }
     .map_err(|e| CliError::literal(argument, e, CURVE_FORM))
 }
 
 /// Runs a data script (`--script FILE`, or `-` for standard input) with `initial` variables.
 pub fn load_script<T: LiteralScalar>(
-    limits: &Limits,
+    cx: &Cx,
     argument: &str,
     path: &str,
     initial: Env<T>,
 ) -> Result<Script<T>, CliError> {
-    let source = read_text(limits, argument, path)?;
+    let source = read_text(cx, argument, path)?;
     cagd_octave::script::run(&source, initial).map_err(|e| {
         CliError::literal(
             format!("{argument} {path}"),

@@ -20,6 +20,7 @@
 mod app;
 pub mod args;
 mod atomic;
+mod cx;
 mod error;
 #[doc = include_str!("../../../docs/ERRORS.md")]
 pub mod error_catalogue {}
@@ -27,6 +28,7 @@ pub mod faults;
 mod input;
 pub mod limits;
 pub mod mesh;
+mod noticed;
 mod output;
 pub mod outputs;
 pub mod plot;
@@ -66,14 +68,14 @@ pub mod serve {
 pub mod slips;
 pub mod temporaries;
 
-pub use app::{run, serve_request, subcommands, Outcome};
+pub use app::{run, run_with_files, serve_request, subcommands, Outcome};
 pub use atomic::{write_atomic, PendingWrites};
+pub use cx::Cx;
 pub use error::{escape_path, escape_text, CliError, ErrorKind};
 pub use input::{
     load_expression, load_matrix, load_net, load_params, load_script, parse_data_text,
     parse_data_text_variable, parse_numeric_text, read_octave_array, read_text, samples,
-    scalar_from_double, unpack_net, with_input_files, CURVE_FORM, MATRIX_FORM, MAX_INPUT_BYTES,
-    PARAMS_FORM,
+    scalar_from_double, unpack_net, CURVE_FORM, MATRIX_FORM, MAX_INPUT_BYTES, PARAMS_FORM,
 };
 pub use output::{
     number_text, number_text_digits, render, render_with, Format, Item, Report, Value, TEXT_DIGITS,

@@ -8,59 +8,29 @@
 //! - [`decimal_commas`]: `--t "[0,2 0,4]"` is t = 0, 2, 0, 4 (a comma separates elements), not
 //!   the decimals 0,2 and 0,4 the sources write (and `0,5` is 0 and 5), in every list, matrix
 //!   and numeric file;
-//! - [`outside`]: parameters outside the domain of a construction (the curve is extrapolated
-//!   there).
 //!
-//! Warnings are collected while a command runs ([`warn`]) and handed out with its result
-//! ([`take`]), each distinct warning once; an error of the command adds how its points and
-//! numbers were read ([`explain`]).
-
-use std::cell::RefCell;
+//! Warnings are collected in the command's context while it runs ([`warn`]) and handed out
+//! with its result ([`take`]), each distinct warning once; an error of the command adds how
+//! its points and numbers were read ([`explain`]).
 
 use cagd_octave::literal::{LiteralScalar, Position, Warning};
 use nalgebra::DMatrix;
 
-/// What one command noticed while reading its input.
-#[derive(Default)]
-struct Pending {
-    /// The warnings, with their argument.
-    warnings: Vec<(String, Warning)>,
-    /// Whether the orientation of points was stated (`--rows` or `--columns`).
-    stated: bool,
-    /// How each matrix of points was read, by argument.
-    readings: Vec<(String, Reading)>,
-    /// The decimal-comma warnings, by argument.
-    commas: Vec<(String, String)>,
-}
-
-thread_local! {
-    static PENDING: RefCell<Pending> = RefCell::new(Pending::default());
-}
-
-/// Starts a command: forgets what the last one noticed; `stated` says whether the
-/// orientation of points was stated (`--rows` or `--columns`), which silences the note of
-/// [`point_matrix`].
-pub fn begin(stated: bool) {
-    PENDING.with(|p| {
-        *p.borrow_mut() = Pending {
-            stated,
-            ..Pending::default()
-        }
-    });
-}
+use crate::cx::Cx;
+pub use crate::noticed::Reading;
 
 /// Records a warning about `argument` (printed as `cagd: warning: ARGUMENT: MESSAGE`).
-pub fn warn(argument: impl Into<String>, message: impl Into<String>) {
+pub fn warn(cx: &Cx, argument: impl Into<String>, message: impl Into<String>) {
     let warning = Warning {
         at: Position::default(),
         message: message.into(),
     };
-    PENDING.with(|p| p.borrow_mut().warnings.push((argument.into(), warning)));
+    cx.noticed().warnings.push((argument.into(), warning));
 }
 
 /// The warnings recorded since the last call, in order, each distinct one once.
-pub fn take() -> Vec<(String, Warning)> {
-    PENDING.with(|p| dedup(std::mem::take(&mut p.borrow_mut().warnings)))
+pub fn take(cx: &Cx) -> Vec<(String, Warning)> {
+    dedup(std::mem::take(&mut cx.noticed().warnings))
 }
 
 /// `warnings` without repeats (the first of equal ones stays, in order).
@@ -74,43 +44,8 @@ pub fn dedup(warnings: Vec<(String, Warning)>) -> Vec<(String, Warning)> {
     out
 }
 
-/// How a matrix of points was read: `count` points in `dim`-D, one per column or (with
-/// `--rows`) one per row, with the flag that flips the reading.
-///
-/// ```
-/// let r = cagd_cli::slips::Reading { count: 3, dim: 2, rows: false };
-/// assert_eq!(r.to_string(), "read as 3 points in 2-D, one per column; --rows if each row is a point");
-/// ```
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Reading {
-    /// The number of points.
-    pub count: usize,
-    /// Their dimension.
-    pub dim: usize,
-    /// Whether each row is a point (`--rows`).
-    pub rows: bool,
-}
-
-impl std::fmt::Display for Reading {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let (count, dim) = (self.count, self.dim);
-        let points = if count == 1 { "point" } else { "points" };
-        if self.rows {
-            write!(
-                f,
-                "read as {count} {points} in {dim}-D, one per row (--rows); leave out --rows if each column is a point"
-            )
-        } else {
-            write!(
-                f,
-                "read as {count} {points} in {dim}-D, one per column; --rows if each row is a point"
-            )
-        }
-    }
-}
-
 /// Notes how a matrix of points was read, unless only one reading of its shape is plausible
-/// or the orientation was stated (`--rows` or `--columns`, see [`begin`]): points are of
+/// or the orientation was stated (`--rows` or `--columns`, see [`Cx::stating_orientation`]): points are of
 /// dimension 1 to 3, so a matrix with both sizes at most 3 (and neither 1) reads either way
 /// and gets the note; a matrix whose reading gives points of dimension above 3 gets it as a
 /// warning, also with `--rows`. A literal transposed as a whole states the reading too
@@ -119,27 +54,29 @@ impl std::fmt::Display for Reading {
 /// the errors about these points ([`explain`]).
 ///
 /// ```
+/// use cagd_cli::{slips, Cx};
 /// use nalgebra::DMatrix;
-/// cagd_cli::slips::begin(false);
-/// cagd_cli::slips::point_matrix("CONTROL", &DMatrix::<f64>::zeros(4, 2), false);
-/// let w = cagd_cli::slips::take();
+/// let cx = Cx::new(cagd::Limits::default());
+/// slips::point_matrix(&cx, "CONTROL", &DMatrix::<f64>::zeros(4, 2), false);
+/// let w = slips::take(&cx);
 /// assert!(w[0].1.message.contains("--rows"), "{}", w[0].1.message);
-/// cagd_cli::slips::point_matrix("CONTROL", &DMatrix::<f64>::zeros(3, 3), false);
-/// assert_eq!(cagd_cli::slips::take()[0].1.message, "read as 3 points in 3-D, one per column; --rows if each row is a point");
-/// cagd_cli::slips::point_matrix("CONTROL", &DMatrix::<f64>::zeros(2, 4), false);
-/// assert!(cagd_cli::slips::take().is_empty());
-/// cagd_cli::slips::begin(true); // --columns or --rows
-/// cagd_cli::slips::point_matrix("CONTROL", &DMatrix::<f64>::zeros(3, 3), false);
-/// assert!(cagd_cli::slips::take().is_empty());
+/// slips::point_matrix(&cx, "CONTROL", &DMatrix::<f64>::zeros(3, 3), false);
+/// assert_eq!(slips::take(&cx)[0].1.message, "read as 3 points in 3-D, one per column; --rows if each row is a point");
+/// slips::point_matrix(&cx, "CONTROL", &DMatrix::<f64>::zeros(2, 4), false);
+/// assert!(slips::take(&cx).is_empty());
+/// let stated = Cx::new(cagd::Limits::default()).stating_orientation(true); // --columns or --rows
+/// slips::point_matrix(&stated, "CONTROL", &DMatrix::<f64>::zeros(3, 3), false);
+/// assert!(slips::take(&stated).is_empty());
 /// ```
-pub fn point_matrix<T: LiteralScalar>(argument: &str, typed: &DMatrix<T>, rows: bool) {
-    point_matrix_typed(argument, typed, rows, false);
+pub fn point_matrix<T: LiteralScalar>(cx: &Cx, argument: &str, typed: &DMatrix<T>, rows: bool) {
+    point_matrix_typed(cx, argument, typed, rows, false);
 }
 
 /// [`point_matrix`] of a matrix typed as `text`: a literal transposed as a whole
 /// (`"[0 0; 1 2; 3 0]'"`, the thesis's way of writing points as rows) states that its
 /// columns are the points, as `--columns` does.
 pub fn point_matrix_text<T: LiteralScalar>(
+    cx: &Cx,
     argument: &str,
     text: &str,
     typed: &DMatrix<T>,
@@ -147,10 +84,11 @@ pub fn point_matrix_text<T: LiteralScalar>(
 ) {
     let t = text.trim();
     let transposed = t.starts_with('[') && t.ends_with("]'");
-    point_matrix_typed(argument, typed, rows, transposed);
+    point_matrix_typed(cx, argument, typed, rows, transposed);
 }
 
 fn point_matrix_typed<T: LiteralScalar>(
+    cx: &Cx,
     argument: &str,
     typed: &DMatrix<T>,
     rows: bool,
@@ -159,16 +97,12 @@ fn point_matrix_typed<T: LiteralScalar>(
     let (r, c) = typed.shape();
     let (dim, count) = if rows { (c, r) } else { (r, c) };
     let reading = Reading { count, dim, rows };
-    PENDING.with(|p| {
-        p.borrow_mut()
-            .readings
-            .push((argument.to_string(), reading))
-    });
-    let stated = transposed || PENDING.with(|p| p.borrow().stated);
+    cx.noticed().readings.push((argument.to_string(), reading));
+    let stated = transposed || cx.noticed().stated;
     let implausible = dim > 3;
     let ambiguous = r > 1 && c > 1 && r <= 3 && c <= 3;
     if implausible || (ambiguous && !stated) {
-        warn(argument, reading.to_string());
+        warn(cx, argument, reading.to_string());
     }
 }
 
@@ -176,9 +110,9 @@ fn point_matrix_typed<T: LiteralScalar>(
 /// its points (or, for an error of another argument about points, of the points read unless
 /// the orientation was stated), and any decimal comma read in it. Empty when there is nothing
 /// to add.
-pub fn explain(argument: &str, problem: &str) -> String {
-    PENDING.with(|p| {
-        let p = p.borrow();
+pub fn explain(cx: &Cx, argument: &str, problem: &str) -> String {
+    {
+        let p = cx.noticed();
         let mut parts = Vec::new();
         let own = p.readings.iter().find(|(a, _)| a == argument);
         if let Some((_, reading)) = own {
@@ -192,7 +126,7 @@ pub fn explain(argument: &str, problem: &str) -> String {
             parts.push(message.clone());
         }
         parts.join("; ")
-    })
+    }
 }
 
 /// The decimal comma in `text`, if it looks written with them, as the sources write
@@ -250,73 +184,38 @@ fn comma_message(before: &str, after: &str) -> String {
 /// `argument` then says so too ([`explain`]).
 ///
 /// ```
-/// cagd_cli::slips::begin(false);
-/// cagd_cli::slips::decimal_commas("--t", "[0,2 0,4]");
-/// let w = cagd_cli::slips::take();
+/// use cagd_cli::{slips, Cx};
+/// let cx = Cx::new(cagd::Limits::default());
+/// slips::decimal_commas(&cx, "--t", "[0,2 0,4]");
+/// let w = slips::take(&cx);
 /// assert_eq!(w[0].1.message, "`0,2` read as two numbers 0 and 2; a decimal point is `0.2`");
-/// cagd_cli::slips::decimal_commas("--t", "0,5");
-/// assert_eq!(cagd_cli::slips::take().len(), 1);
+/// slips::decimal_commas(&cx, "--t", "0,5");
+/// assert_eq!(slips::take(&cx).len(), 1);
 /// for fine in ["[0, 0.5, 1]", "0:0.2:1", "[0,0,0,1,1,1]", "[0.2 0.4]"] {
-///     cagd_cli::slips::decimal_commas("--knots", fine);
+///     slips::decimal_commas(&cx, "--knots", fine);
 /// }
-/// assert!(cagd_cli::slips::take().is_empty());
+/// assert!(slips::take(&cx).is_empty());
 /// ```
-pub fn decimal_commas(argument: &str, text: &str) {
+pub fn decimal_commas(cx: &Cx, argument: &str, text: &str) {
     if let Some((before, after)) = decimal_comma(text, true) {
-        comma(argument, comma_message(&before, &after));
+        comma(cx, argument, comma_message(&before, &after));
     }
 }
 
 /// [`decimal_commas`] for the lines of a numeric text file (a line `x,y` alone is a CSV row).
-pub fn decimal_commas_in_file(argument: &str, text: &str) {
+pub fn decimal_commas_in_file(cx: &Cx, argument: &str, text: &str) {
     let found = text
         .lines()
         .map(|l| l.split(['#', '%']).next().unwrap_or(""))
         .find_map(|l| decimal_comma(l, false));
     if let Some((before, after)) = found {
-        comma(argument, comma_message(&before, &after));
+        comma(cx, argument, comma_message(&before, &after));
     }
 }
 
-fn comma(argument: &str, message: String) {
-    PENDING.with(|p| {
-        p.borrow_mut()
-            .commas
-            .push((argument.to_string(), message.clone()))
-    });
-    warn(argument, message);
-}
-
-/// Warns when some of `values` lie outside `[lo, hi]`, the domain of the construction;
-/// `consequence` says what happens there ("the curve is extrapolated").
-///
-/// ```
-/// cagd_cli::slips::take();
-/// cagd_cli::slips::outside("--t", &[0.0, 2.0], &0.0, &1.0, "the curve is extrapolated");
-/// let w = cagd_cli::slips::take();
-/// assert_eq!(w[0].1.message, "t = 2 lies outside [0, 1]; the curve is extrapolated");
-/// ```
-pub fn outside<T: LiteralScalar>(argument: &str, values: &[T], lo: &T, hi: &T, consequence: &str) {
-    let out: Vec<&T> = values.iter().filter(|x| *x < lo || *x > hi).collect();
-    let Some(first) = out.first() else {
-        return;
-    };
-    let name = argument.trim_start_matches('-');
-    let what = if out.len() == 1 {
-        format!("{name} = {} lies", crate::number_text(*first))
-    } else {
-        format!(
-            "{} values lie (the first {name} = {})",
-            out.len(),
-            crate::number_text(*first)
-        )
-    };
-    warn(
-        argument,
-        format!(
-            "{what} outside [{}, {}]; {consequence}",
-            crate::number_text(lo),
-            crate::number_text(hi)
-        ),
-    );
+fn comma(cx: &Cx, argument: &str, message: String) {
+    cx.noticed()
+        .commas
+        .push((argument.to_string(), message.clone()));
+    warn(cx, argument, message);
 }

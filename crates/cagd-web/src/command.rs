@@ -32,7 +32,7 @@ thread_local! {
 #[wasm_bindgen]
 pub fn run(argv: Vec<String>, names: Vec<String>, texts: Vec<String>) -> String {
     let files: Vec<(String, String)> = names.into_iter().zip(texts).collect();
-    let answer = match cagd_cli::with_input_files(files, || cagd_cli::run(argv)) {
+    let answer = match cagd_cli::run_with_files(argv, files) {
         Ok(outcome) => {
             let paths: Vec<_> = outcome.files.paths().map(|p| p.to_path_buf()).collect();
             let staged: Vec<serde_json::Value> = paths

@@ -554,12 +554,23 @@ fn the_same_bad_input_gets_the_same_kind_and_words_everywhere() {
     assert!(full_words >= 30, "{full_words} rows compared word for word");
 }
 
-/// The words without how to raise a limit, which each front end says in its own terms
-/// (`--max-degree` on the command line, `cagd_limits` in Octave; the page has no control).
+/// The words without what each front end adds in its own terms: how to raise a limit
+/// (`--max-degree` on the command line, `cagd_limits` in Octave; the page has no control) and,
+/// on the command line, how the text of its points was read (`(read as 4 points in 2-D, one
+/// per column; --rows if each row is a point)`, which the other front ends, given arrays, have
+/// no need of).
 fn plain(words: &str) -> String {
-    let Some(start) = words.find(" (raise it with") else {
-        return words.to_string();
-    };
+    let mut out = words.to_string();
+    for start_of in [" (raise it with", " (read as", " (CONTROL read as"] {
+        if let Some(start) = out.find(start_of) {
+            out = without_group(&out, start);
+        }
+    }
+    out
+}
+
+/// `words` without the parenthesised group that starts at `start` (a space, then `(`).
+fn without_group(words: &str, start: usize) -> String {
     let mut depth = 0;
     for (k, c) in words[start..].char_indices() {
         match c {

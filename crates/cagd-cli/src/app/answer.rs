@@ -9,9 +9,9 @@ use cagd_octave::literal::{LiteralScalar, Position, Warning};
 use cagd_ops::{Answer, OpError, Operation};
 
 use super::common::{add_mesh, add_plot, finish};
-use super::cx::Cx;
 use super::run::Names;
 use crate::args::OutputArgs;
+use crate::cx::Cx;
 use crate::plot::Figure;
 use crate::{CliError, ErrorKind, Outcome, PendingWrites};
 

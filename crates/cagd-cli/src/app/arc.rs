@@ -4,8 +4,8 @@ use cagd_octave::literal::LiteralScalar;
 use clap::Args;
 
 use super::circle_args::{number, CircleArgs, SPECIAL};
-use super::cx::Cx;
 use super::run::{Names, Run};
+use crate::cx::Cx;
 use crate::{CliError, Outcome};
 
 /// A circular arc as an exact NURBS curve (octave-nurbs nrbcirc with angles).

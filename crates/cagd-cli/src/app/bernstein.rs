@@ -5,10 +5,10 @@ use cagd_ops::ops::Bernstein;
 use clap::Args;
 
 use super::answer::{respond, Destinations};
-use super::cx::Cx;
 use super::read::curve_params;
 use super::run::{Names, Run};
 use crate::args::{CurveParamArgs, OutputArgs, PlotArgs};
+use crate::cx::Cx;
 use crate::{CliError, Outcome};
 
 /// Bernstein polynomial values B_i^n(t).

@@ -8,10 +8,10 @@ use clap::Args;
 
 use super::answer::{respond, Destinations};
 use super::common::{coordinate_net, usage};
-use super::cx::Cx;
 use super::read::surface_params;
 use super::run::{Names, Run};
 use crate::args::{MeshArgs, OutputArgs, PlotArgs, ScriptArgs, StepsArgs, SurfaceParamArgs};
+use crate::cx::Cx;
 use crate::{load_net, CliError, Outcome};
 
 /// Points of a Bézier patch (thesis algorithms 2-4, ploskevB/bilinearna/tenzor).
@@ -121,8 +121,8 @@ impl BezierPatchCommand {
         script: Option<&cagd_octave::script::Script<T>>,
     ) -> Result<PointGrid<T>, CliError> {
         match (&self.net, &self.x) {
-            (Some(text), _) => load_net::<T>(&cx.limits, "NET", text, script),
-            (None, Some(_)) => coordinate_net(&cx.limits, [&self.x, &self.y, &self.z], script),
+            (Some(text), _) => load_net::<T>(cx, "NET", text, script),
+            (None, Some(_)) => coordinate_net(cx, [&self.x, &self.y, &self.z], script),
             (None, None) => Err(usage(
                 "NET",
                 "missing",

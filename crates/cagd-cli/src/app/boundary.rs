@@ -12,7 +12,7 @@ use nalgebra::DVector;
 
 use super::common::usage;
 use super::curve_arg::{curve_arg, names_data, script_curve, Reading, CURVE_ARG_FORM};
-use super::cx::Cx;
+use crate::cx::Cx;
 use crate::CliError;
 
 /// The boundary curve arguments shared by `coons` and `coons-bicubic`.

@@ -5,11 +5,11 @@ use cagd_ops::ops::BSpline;
 use clap::Args;
 
 use super::answer::{respond, Destinations};
-use super::cx::Cx;
 use super::read::{curve_params, points};
 use super::run::{Names, Run};
 use super::spline_args::{degree, values};
 use crate::args::{CurveParamArgs, OutputArgs, PlotArgs, RowsArgs, StepsArgs};
+use crate::cx::Cx;
 use crate::{CliError, Outcome};
 
 /// A B-spline curve by de Boor's algorithm (the CAD notes and the lecture notes).

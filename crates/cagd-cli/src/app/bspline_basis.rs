@@ -5,11 +5,11 @@ use cagd_ops::ops::BSplineBasis;
 use clap::Args;
 
 use super::answer::{respond, Destinations};
-use super::cx::Cx;
 use super::read::curve_params;
 use super::run::{Names, Run};
 use super::spline_args::degree;
 use crate::args::{CurveParamArgs, OutputArgs, PlotArgs, StepsArgs};
+use crate::cx::Cx;
 use crate::{load_params, CliError, Outcome};
 
 /// B-spline basis functions N_i,p(u) of a knot vector (Cox–de Boor).
@@ -59,7 +59,7 @@ impl Run for BSplineBasisCommand {
 
     fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
         let op: BSplineBasis<T> = BSplineBasis {
-            knots: load_params(&cx.limits, "--knots", &self.knots)?,
+            knots: load_params(cx, "--knots", &self.knots)?,
             degree: degree(&NAMES, self.degree, self.order)?,
             t: curve_params(cx, &self.params)?,
             steps: self.steps.steps,

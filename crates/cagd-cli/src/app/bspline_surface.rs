@@ -5,9 +5,9 @@ use cagd_octave::literal::LiteralScalar;
 use clap::Args;
 
 use super::answer::{respond, Destinations};
-use super::cx::Cx;
 use super::run::{Names, Run};
 use super::spline_surface_args::SplineSurfaceArgs;
+use crate::cx::Cx;
 use crate::error::usage;
 use crate::{CliError, Outcome};
 

@@ -4,8 +4,8 @@ use cagd_octave::literal::LiteralScalar;
 use clap::Args;
 
 use super::circle_args::{CircleArgs, SPECIAL};
-use super::cx::Cx;
 use super::run::{Names, Run};
+use crate::cx::Cx;
 use crate::{CliError, Outcome};
 
 /// A circle as an exact NURBS curve (octave-nurbs nrbcirc).

@@ -6,10 +6,10 @@ use cagd_ops::Role;
 use clap::Args;
 
 use super::answer::{respond, Destinations};
-use super::cx::Cx;
 use super::read::curve_params;
 use super::run::Names;
 use crate::args::{CurveParamArgs, OutputArgs, PlotArgs, StepsArgs};
+use crate::cx::Cx;
 use crate::error::{shape, usage};
 use crate::{CliError, Outcome};
 
@@ -64,7 +64,7 @@ impl CircleArgs {
                 "the circle in doubles (leave out --exact)",
             ));
         }
-        let center = crate::load_matrix::<f64>(&cx.limits, "--center", &self.center, None)?;
+        let center = crate::load_matrix::<f64>(cx, "--center", &self.center, None)?;
         let op = Circle {
             radius: number(cx, "--radius", &self.radius)?,
             center: center.iter().copied().collect(),

@@ -16,6 +16,7 @@ use cagd_octave::script::{Binding, Script};
 
 use super::outcome::Outcome;
 use super::run::Names;
+use crate::cx::Cx;
 pub(crate) use crate::error::{lib, shape, usage};
 
 /// The form of a boundary or network curve argument.
@@ -232,14 +233,14 @@ pub fn warnings<T: LiteralScalar>(
 /// `(m+1) × (n+1)` matrix per coordinate given (`--x` at least), entry `(i, j)` of point
 /// `P_ij`.
 pub fn coordinate_net<T: LiteralScalar>(
-    limits: &Limits,
+    cx: &Cx,
     given: [&Option<String>; 3],
     script: Option<&Script<T>>,
 ) -> Result<PointGrid<T>, CliError> {
     let mut coords = Vec::with_capacity(3);
     for (arg, given) in ["--x", "--y", "--z"].into_iter().zip(given) {
         if let Some(text) = given {
-            coords.push((arg, load_matrix::<T>(limits, arg, text, script)?));
+            coords.push((arg, load_matrix::<T>(cx, arg, text, script)?));
         }
     }
     let Some((_, first)) = coords.first() else {

@@ -8,10 +8,10 @@ use cagd_ops::Role;
 use clap::Args;
 
 use super::answer::{respond, Destinations};
-use super::cx::Cx;
 use super::read::{one_value, points};
 use super::run::{Names, Run};
 use crate::args::{OutputArgs, PlotArgs, RowsArgs, StepsArgs};
+use crate::cx::Cx;
 use crate::{CliError, Outcome};
 
 /// Continuity (C0, C1, G1, C2) where two Bézier curves join; the free point of a C1 joint.

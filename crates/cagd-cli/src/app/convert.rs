@@ -9,10 +9,10 @@ use cagd_ops::Role;
 use clap::{Args, ValueEnum};
 
 use super::answer::{respond, Destinations};
-use super::cx::Cx;
 use super::read::points;
 use super::run::{Names, Run};
 use crate::args::{OutputArgs, PlotArgs, RowsArgs, StepsArgs};
+use crate::cx::Cx;
 use crate::{CliError, Outcome};
 
 /// A representation of a polynomial curve.

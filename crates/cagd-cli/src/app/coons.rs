@@ -10,13 +10,13 @@ use clap::Args;
 
 use super::answer::{respond, Destinations};
 use super::boundary::{boundary, script_corners, BoundaryArgs};
-use super::cx::Cx;
 use super::expr_curve::{env_warnings, ExprCurve};
 use super::read::surface_params;
 use super::run::{Names, Run};
 use crate::args::{
     MeshArgs, OutputArgs, PlotArgs, RowsArgs, ScriptArgs, StepsArgs, SurfaceParamArgs,
 };
+use crate::cx::Cx;
 use crate::{CliError, Outcome};
 
 /// A bilinearly blended Coons patch x = r_c + r_d - r_cd (thesis 4.1, algorithms 5, 6).

@@ -13,13 +13,13 @@ use super::answer::{respond, Destinations};
 use super::boundary::{boundary, BoundaryArgs};
 use super::common::usage;
 use super::curve_arg::{curve_arg, Reading};
-use super::cx::Cx;
 use super::expr_curve::{expression_env, with_env_warnings};
 use super::read::{points, surface_params};
 use super::run::{Names, Run};
 use crate::args::{
     MeshArgs, OutputArgs, PlotArgs, RowsArgs, ScriptArgs, StepsArgs, SurfaceParamArgs,
 };
+use crate::cx::Cx;
 use crate::{CliError, Outcome};
 
 /// The corner twists of `--twist`.

@@ -19,10 +19,10 @@ use crate::plot::{Colour, Figure};
 use crate::{CliError, PendingWrites, Report, Value};
 
 use super::common::*;
-use super::cx::Cx;
 use super::run::Run;
 use super::worked::{heading, q, text, Files, Q};
 use super::Outcome;
+use crate::cx::Cx;
 use cagd_octave::literal::LiteralScalar;
 
 /// Reproduce the worked examples of the course notes (matrix-form, lecture and CAD notes).

@@ -7,10 +7,10 @@ use cagd_ops::ops::Curvature;
 
 use super::answer::{respond, Destinations};
 use super::curve_arg::{library_curve, Reading};
-use super::cx::Cx;
 use super::read::curve_params;
 use super::run::{Names, Run};
 use crate::args::{CurveParamArgs, OutputArgs, PlotArgs, RowsArgs, ScriptArgs, StepsArgs};
+use crate::cx::Cx;
 use crate::{CliError, Outcome};
 
 /// Curvature κ = |x′ × x″| / |x′|³ and the Frenet frame of a Bézier, B-spline or NURBS curve.

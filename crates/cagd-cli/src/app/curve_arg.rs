@@ -25,8 +25,8 @@ use cagd_ops::curves::CurveArg;
 use nalgebra::DMatrix;
 
 use super::common::{lib, shape};
-use super::cx::Cx;
 use super::expr_curve::{ExprCurve, CURVE_FORM};
+use crate::cx::Cx;
 use crate::{load_expression, load_matrix, load_params, CliError};
 
 /// The form of a curve argument, for error messages.
@@ -66,10 +66,10 @@ pub(crate) fn curve_arg<T: LiteralScalar>(
     if let (Some(param), true) = (how.samples, data) {
         return samples(cx, argument, text, how, param);
     }
-    warn_matrix_as_control(argument, text, how);
+    warn_matrix_as_control(cx, argument, text, how);
     if data {
-        let m = load_matrix(&cx.limits, argument, text, how.script)?;
-        return bezier(argument, text, m, how.rows);
+        let m = load_matrix(cx, argument, text, how.script)?;
+        return bezier(cx, argument, text, m, how.rows);
     }
     expression_curve(cx, argument, text, how, env)
 }
@@ -83,10 +83,7 @@ fn samples<T: LiteralScalar>(
     how: Reading<'_, T>,
     param: &str,
 ) -> Result<CurveArg<T>, CliError> {
-    let m = orient(
-        load_matrix(&cx.limits, argument, text, how.script)?,
-        how.rows,
-    );
+    let m = orient(load_matrix(cx, argument, text, how.script)?, how.rows);
     let params = match how.script {
         Some(s) => script_params(s, param, m.ncols()),
         None => T::linspace(&T::zero(), &T::one(), m.ncols()),
@@ -98,13 +95,19 @@ fn samples<T: LiteralScalar>(
 
 /// A warning when a matrix of the script (not a row or column) is about to be read as control
 /// points: the thesis's data scripts hold samples, which need `--samples`.
-fn warn_matrix_as_control<T: LiteralScalar>(argument: &str, text: &str, how: Reading<'_, T>) {
+fn warn_matrix_as_control<T: LiteralScalar>(
+    cx: &Cx,
+    argument: &str,
+    text: &str,
+    how: Reading<'_, T>,
+) {
     let Some(m) = how.script.and_then(|s| s.value(text.trim())) else {
         return;
     };
     if m.ncols() > 1 && m.nrows() > 1 {
         let degree = if how.rows { m.nrows() } else { m.ncols() } - 1;
         crate::slips::warn(
+            cx,
             argument,
             format!(
                 "`{}` is a {}×{} matrix of the script, read as the control points of a Bézier curve of degree {degree}; if its columns are samples of the curve (as in the thesis's data scripts), add --samples",
@@ -125,14 +128,14 @@ fn expression_curve<T: LiteralScalar>(
     how: Reading<'_, T>,
     env: &Rc<RefCell<Env<T>>>,
 ) -> Result<CurveArg<T>, CliError> {
-    let expr = load_expression(&cx.limits, argument, text, how.script)?;
+    let expr = load_expression(cx, argument, text, how.script)?;
     let params = expr.parameters(&env.borrow());
     match params.as_slice() {
         [] => {
             let m = expr
                 .eval_at(&env.borrow(), &[])
                 .map_err(|e| CliError::literal(argument, e, CURVE_ARG_FORM))?;
-            bezier(argument, text, m, how.rows)
+            bezier(cx, argument, text, m, how.rows)
         }
         [p] => Ok(CurveArg::Evaluated(Box::new(ExprCurve::new(
             expr,
@@ -202,12 +205,11 @@ pub(crate) fn names_data<T: LiteralScalar>(
     text: &str,
     script: Option<&Script<T>>,
 ) -> bool {
-    let _ = cx;
     let t = text.trim();
     let file = t == "-"
-        || crate::input::is_file(t)
+        || crate::input::is_file(cx, t)
         || t.rsplit_once(':')
-            .is_some_and(|(p, _)| !p.is_empty() && crate::input::is_file(p));
+            .is_some_and(|(p, _)| !p.is_empty() && crate::input::is_file(cx, p));
     file || script.is_some_and(|s| s.value(t).is_some())
 }
 
@@ -221,14 +223,15 @@ fn orient<T: LiteralScalar>(m: DMatrix<T>, rows: bool) -> DMatrix<T> {
 
 /// A Bézier curve of control points `m` (as typed), with the orientation slip noticed.
 fn bezier<T: LiteralScalar>(
+    cx: &Cx,
     argument: &str,
     text: &str,
     m: DMatrix<T>,
     rows: bool,
 ) -> Result<CurveArg<T>, CliError> {
     // A constant expression is read here, not by load_matrix: its decimal commas too.
-    crate::slips::decimal_commas(argument, text);
-    crate::slips::point_matrix_text(argument, text, &m, rows);
+    crate::slips::decimal_commas(cx, argument, text);
+    crate::slips::point_matrix_text(cx, argument, text, &m, rows);
     BezierCurve::new(orient(m, rows))
         .map(CurveArg::curve)
         .map_err(lib(argument, "control points, one per column"))
@@ -276,8 +279,8 @@ pub(crate) fn library_curve<T: LiteralScalar>(
     if let Some(curve) = library_call(cx, argument, text, how)? {
         return Ok(curve);
     }
-    let m = load_matrix(&cx.limits, argument, text, how.script)?;
-    crate::slips::point_matrix_text(argument, text, &m, how.rows);
+    let m = load_matrix(cx, argument, text, how.script)?;
+    crate::slips::point_matrix_text(cx, argument, text, &m, how.rows);
     BezierCurve::new(orient(m, how.rows))
         .map(LibraryCurve::Bezier)
         .map_err(lib(argument, "control points, one per column"))
@@ -310,10 +313,10 @@ fn library_call<T: LiteralScalar>(
             form,
         ));
     }
-    let points = load_matrix(&cx.limits, argument, args[0], how.script)?;
-    crate::slips::point_matrix_text(argument, args[0], &points, how.rows);
+    let points = load_matrix(cx, argument, args[0], how.script)?;
+    crate::slips::point_matrix_text(cx, argument, args[0], &points, how.rows);
     let points = orient(points, how.rows);
-    let list = |cx: &mut Cx, k: usize| load_params::<T>(&cx.limits, argument, args[k]);
+    let list = |cx: &mut Cx, k: usize| load_params::<T>(cx, argument, args[k]);
     let degree = |knots: &[T]| {
         knots.len().checked_sub(points.ncols() + 1).ok_or_else(|| {
             shape(

@@ -9,11 +9,11 @@ use clap::Args;
 
 use super::answer::{respond, Destinations};
 use super::common::shape;
-use super::cx::Cx;
 use super::expr_curve::{env_warnings, expression_env, ExprCurve, CURVE_FORM};
 use super::read::curve_params;
 use super::run::{Names, Run};
 use crate::args::{CurveParamArgs, OutputArgs, PlotArgs, ScriptArgs};
+use crate::cx::Cx;
 use crate::{load_expression, CliError, Outcome};
 
 /// Sample a curve given as an expression in its parameter, as the thesis writes curves.
@@ -52,7 +52,7 @@ impl Run for CurveCommand {
 
     fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
         let script = cx.script::<T>(&self.script, self.params.n)?;
-        let expr = load_expression(&cx.limits, "EXPR", &self.expr, script.as_ref())?;
+        let expr = load_expression(cx, "EXPR", &self.expr, script.as_ref())?;
         let env = expression_env(cx.limits, script.as_ref());
         let param = self.parameter(&expr, &env.borrow())?;
         let curve = ExprCurve::new(expr, param, env.clone(), cx.limits, CURVE_FORM);

@@ -6,10 +6,10 @@ use cagd_octave::literal::LiteralScalar;
 use cagd_ops::ops::DeCasteljau;
 
 use super::answer::{respond, Destinations};
-use super::cx::Cx;
 use super::read::{curve_params, interval, points};
 use super::run::{Names, Run};
 use crate::args::{CurveParamArgs, OutputArgs, PlotArgs, RowsArgs, ScriptArgs, StepsArgs};
+use crate::cx::Cx;
 use crate::{CliError, Outcome};
 
 /// Points of a Bézier curve by de Casteljau's algorithm (thesis algorithm 1).

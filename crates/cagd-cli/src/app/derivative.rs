@@ -6,10 +6,10 @@ use cagd_ops::Params;
 use clap::Args;
 
 use super::answer::{respond, Destinations};
-use super::cx::Cx;
 use super::read::{given_or_samples, points};
 use super::run::{Names, Run};
 use crate::args::{OutputArgs, PlotArgs, RowsArgs, ScriptArgs};
+use crate::cx::Cx;
 use crate::{CliError, Outcome};
 
 /// Control points (and values) of the r-th derivative of a Bézier curve.

@@ -7,9 +7,9 @@ use clap::Args;
 
 use super::answer::{respond, Destinations};
 use super::common::shape;
-use super::cx::Cx;
 use super::run::{Names, Run};
 use crate::args::{OutputArgs, PlotArgs, ScriptArgs, StepsArgs};
+use crate::cx::Cx;
 use crate::{load_net, CliError, Outcome};
 
 /// The discrete Coons patch: interior control points from the boundary of a net.
@@ -64,7 +64,7 @@ impl Run for DiscreteCoonsCommand {
     fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
         let script = cx.script::<T>(&self.script, None)?;
         let op = DiscreteCoons {
-            net: load_net::<T>(&cx.limits, "NET", &self.net, script.as_ref())?,
+            net: load_net::<T>(cx, "NET", &self.net, script.as_ref())?,
             mask: self.mask.as_deref().map(|t| mask(cx, t)).transpose()?,
             steps: self.steps.steps,
             drawing: self.plot.plot.is_some(),

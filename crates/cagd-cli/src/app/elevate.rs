@@ -6,10 +6,10 @@ use cagd_ops::ops::Elevate;
 use clap::Args;
 
 use super::answer::{respond, Destinations};
-use super::cx::Cx;
 use super::read::{params, points};
 use super::run::{Names, Run};
 use crate::args::{OutputArgs, PlotArgs, RowsArgs, StepsArgs};
+use crate::cx::Cx;
 use crate::error::shape;
 use crate::{CliError, Outcome};
 use cagd_ops::bspline_arg::{BSplineArg, SplineDegree};

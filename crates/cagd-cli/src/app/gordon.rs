@@ -10,13 +10,13 @@ use clap::Args;
 use super::answer::{respond, Destinations};
 use super::common::{check_degree, shape, usage};
 use super::curve_arg::{curve_arg, script_params, Reading};
-use super::cx::Cx;
 use super::expr_curve::{expression_env, with_env_warnings};
 use super::read::surface_params;
 use super::run::{Names, Run};
 use crate::args::{
     MeshArgs, OutputArgs, PlotArgs, RowsArgs, ScriptArgs, StepsArgs, SurfaceParamArgs,
 };
+use crate::cx::Cx;
 use crate::{load_params, CliError, Outcome};
 
 /// A Gordon surface g = g1 + g2 - g12 of a curve network (thesis 4.4, algorithm 7).
@@ -103,7 +103,7 @@ impl Run for GordonCommand {
             let nodes = |argument: &str, given: &Option<String>| {
                 given
                     .as_deref()
-                    .map(|text| load_params(&cx.limits, argument, text))
+                    .map(|text| load_params(cx, argument, text))
                     .transpose()
             };
             op.u_nodes = nodes("--u-nodes", &self.u_nodes)?;

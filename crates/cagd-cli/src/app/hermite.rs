@@ -5,11 +5,11 @@ use cagd_ops::ops::Hermite;
 use clap::Args;
 
 use super::answer::{respond, Destinations};
-use super::cx::Cx;
 use super::read::curve_params;
 use super::run::{Names, Run};
 use super::spline_args::matrix;
 use crate::args::{CurveParamArgs, OutputArgs, PlotArgs, StepsArgs};
+use crate::cx::Cx;
 use crate::{CliError, Outcome};
 
 /// A Hermite (Ferguson) cubic from end points and end tangents (the lecture notes).

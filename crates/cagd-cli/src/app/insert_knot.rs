@@ -6,11 +6,11 @@ use cagd_ops::Role;
 use clap::Args;
 
 use super::answer::{respond, Destinations};
-use super::cx::Cx;
 use super::read::points;
 use super::run::{Names, Run};
 use super::spline_args::{degree, values};
 use crate::args::{OutputArgs, PlotArgs, RowsArgs, StepsArgs};
+use crate::cx::Cx;
 use crate::{load_params, CliError, Outcome};
 
 /// Insert knots into a B-spline or NURBS curve (Boehm's algorithm).
@@ -73,7 +73,7 @@ impl Run for InsertKnotCommand {
             weights: values(cx, "--weights", &self.weights)?,
             degree: degree(&NAMES, self.degree, self.order)?,
             knots: values(cx, "--knots", &self.knots)?,
-            insert: load_params(&cx.limits, "--insert", &self.insert)?,
+            insert: load_params(cx, "--insert", &self.insert)?,
             steps: self.steps.steps,
             drawing: self.plot.plot.is_some(),
         };

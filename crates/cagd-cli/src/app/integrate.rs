@@ -7,10 +7,10 @@ use cagd_ops::Role;
 use clap::Args;
 
 use super::answer::{respond, Destinations};
-use super::cx::Cx;
 use super::read::{bspline_arg, given_or_samples, interval, points};
 use super::run::{Names, Run};
 use crate::args::{OutputArgs, PlotArgs, RowsArgs, StepsArgs};
+use crate::cx::Cx;
 use crate::{CliError, Outcome};
 
 /// Antiderivative and definite integral of Bernstein polynomials, Bézier or B-spline curves.

@@ -7,10 +7,10 @@ use cagd_ops::Role;
 use clap::Args;
 
 use super::answer::{respond, Destinations};
-use super::cx::Cx;
 use super::read::{curve_params, points};
 use super::run::{Names, Run};
 use crate::args::{CurveParamArgs, OutputArgs, PlotArgs, RowsArgs};
+use crate::cx::Cx;
 use crate::{load_params, CliError, Outcome};
 
 /// Lagrange basis polynomials, or the polynomial interpolating values at nodes.
@@ -72,7 +72,7 @@ impl Run for LagrangeCommand {
             None => None,
         };
         let op: Lagrange<T> = Lagrange {
-            nodes: load_params(&cx.limits, "--nodes", &self.nodes)?,
+            nodes: load_params(cx, "--nodes", &self.nodes)?,
             values,
             coefficients: self.coefficients,
             linear: self.linear,

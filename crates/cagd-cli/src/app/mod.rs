@@ -3,10 +3,11 @@
 
 use std::ffi::OsString;
 
-use clap::error::{ContextKind, ErrorKind as ClapKind};
-use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
+use clap::{CommandFactory, FromArgMatches};
 
 mod answer;
+
+mod cli;
 
 mod arc;
 
@@ -26,8 +27,6 @@ mod curvature;
 mod curve_arg;
 
 mod curve_samples;
-
-mod cx;
 
 mod decasteljau;
 
@@ -99,77 +98,11 @@ mod usage;
 
 mod work;
 
-use crate::args::LimitArgs;
-use crate::{CliError, ErrorKind, PendingWrites};
+use crate::CliError;
 
-/// Curves and surfaces of computer-aided geometric design, checked against GNU Octave.
-#[derive(Debug, Parser)]
-#[command(name = "cagd", version, about, long_about = None)]
-struct Cli {
-    #[command(subcommand)]
-    command: Command,
-    #[command(flatten)]
-    limits: LimitArgs,
-}
-
-/// Declares the subcommands, in the order of `cagd --help`: each a clap struct (its help text
-/// beside it, in its own file) implementing [`Run`]. The enum and its dispatch are generated,
-/// so adding a subcommand is one file and one line here.
-macro_rules! subcommands {
-    ($($variant:ident($ty:ty),)*) => {
-        #[derive(Debug, Subcommand)]
-        enum Command {
-            $($variant($ty),)*
-        }
-
-        impl Command {
-            /// Runs the subcommand, in the arithmetic it asks for.
-            fn run(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
-                match self {
-                    $(Command::$variant(c) => run::run_any(c, cx),)*
-                }
-            }
-        }
-    };
-}
-
-subcommands! {
-    Thesis(thesis::ThesisCommand),
-    Course(course_examples::CourseCommand),
-    Decasteljau(decasteljau::DecasteljauCommand),
-    BezierPatch(bezier_patch::BezierPatchCommand),
-    Coons(coons::CoonsCommand),
-    CoonsBicubic(coons_bicubic::CoonsBicubicCommand),
-    DiscreteCoons(discrete_coons::DiscreteCoonsCommand),
-    Gordon(gordon::GordonCommand),
-    Lagrange(lagrange::LagrangeCommand),
-    Bernstein(bernstein::BernsteinCommand),
-    Derivative(derivative::DerivativeCommand),
-    Spline(spline::SplineCommand),
-    Hermite(hermite::HermiteCommand),
-    Bspline(bspline::BSplineCommand),
-    Nurbs(nurbs::NurbsCommand),
-    Convert(convert::ConvertCommand),
-    Elevate(elevate::ElevateCommand),
-    Subdivide(subdivide::SubdivideCommand),
-    InsertKnot(insert_knot::InsertKnotCommand),
-    BsplineBasis(bspline_basis::BSplineBasisCommand),
-    Continuity(continuity::ContinuityCommand),
-    Curvature(curvature::CurvatureCommand),
-    Integrate(integrate::IntegrateCommand),
-    Ruled(ruled::RuledCommand),
-    Ferguson(ferguson::FergusonCommand),
-    BsplineSurface(bspline_surface::BSplineSurfaceCommand),
-    NurbsSurface(nurbs_surface::NurbsSurfaceCommand),
-    Circle(circle::CircleCommand),
-    Arc(arc::ArcCommand),
-    Curve(curve_samples::CurveCommand),
-    Surface(surface_samples::SurfaceCommand),
-    Serve(crate::serve::ServeCommand),
-    Script(script::ScriptCommand),
-}
-
-use cx::Cx;
+use crate::cx::Cx;
+pub(crate) use cli::command;
+pub use cli::{serve_request, subcommands};
 pub use outcome::Outcome;
 
 /// Parses `args` (the program name first, as `std::env::args_os` gives them) and runs the
@@ -179,24 +112,41 @@ where
     I: IntoIterator<Item = A>,
     A: Into<OsString> + Clone,
 {
+    run_with_files(args, Vec::new())
+}
+
+/// [`run`] with `files` (name, contents) readable as input files of that name, before the
+/// file system: so the web page, which has none, passes a data script typed into it as
+/// `--script data.m`.
+///
+/// ```
+/// let files = vec![("data.m".to_string(), "B = [0 0; 1 2]';".to_string())];
+/// let out = cagd_cli::run_with_files(["cagd", "script", "data.m"], files).unwrap();
+/// assert!(out.stdout.contains("B ="));
+/// ```
+pub fn run_with_files<I, A>(args: I, files: Vec<(String, String)>) -> Result<Outcome, CliError>
+where
+    I: IntoIterator<Item = A>,
+    A: Into<OsString> + Clone,
+{
     let args: Vec<OsString> = args.into_iter().map(Into::into).collect();
-    let matches = match Cli::command().try_get_matches_from(&args) {
+    let matches = match cli::Cli::command().try_get_matches_from(&args) {
         Ok(m) => m,
-        Err(e) => return usage_error(e, &args),
+        Err(e) => return usage::usage_error(e, &args),
     };
     // Output targets are checked before any work (and before the limits, which may fail).
     crate::outputs::check(&matches)?;
-    let cli = match Cli::from_arg_matches(&matches) {
+    let cli = match cli::Cli::from_arg_matches(&matches) {
         Ok(cli) => cli,
-        Err(e) => return usage_error(e, &args),
+        Err(e) => return usage::usage_error(e, &args),
     };
-    let limits = &cli.limits.resolve()?;
-    crate::slips::begin(orientation_stated(&matches));
-    let mut cx = Cx::new(*limits);
+    let mut cx = Cx::new(cli.limits.resolve()?)
+        .with_files(files)
+        .stating_orientation(orientation_stated(&matches));
     let outcome = cli.command.run(&mut cx).map_err(|e| {
         // An error about points says how they were read; one about numbers read with
         // decimal commas says so.
-        let how = crate::slips::explain(&e.argument, &e.problem);
+        let how = crate::slips::explain(&cx, &e.argument, &e.problem);
         if how.is_empty() {
             e
         } else {
@@ -207,7 +157,7 @@ where
         }
     });
     // The slips noticed while reading the input come first; each warning is printed once.
-    let mut warnings = crate::slips::take();
+    let mut warnings = crate::slips::take(&cx);
     let mut outcome = outcome?;
     warnings.append(&mut outcome.warnings);
     outcome.warnings = crate::slips::dedup(warnings);
@@ -223,123 +173,4 @@ fn orientation_stated(matches: &clap::ArgMatches) -> bool {
     ["rows", "columns"]
         .iter()
         .any(|id| matches!(sub.try_get_one::<bool>(id), Ok(Some(true))))
-}
-
-/// The clap definition of the whole command line (see [`crate::schema`]).
-pub(crate) fn command() -> clap::Command {
-    Cli::command()
-}
-
-/// The names of the subcommands, in the order of `cagd --help` (without clap's `help`).
-pub fn subcommands() -> Vec<String> {
-    Cli::command()
-        .get_subcommands()
-        .map(|s| s.get_name().to_string())
-        .collect()
-}
-
-/// The `serve` subcommand, if `args` (the program name first) ask for it and parse; anything
-/// else, including errors and `--help`, is left to [`run`].
-pub fn serve_request<I, A>(args: I) -> Option<crate::serve::ServeCommand>
-where
-    I: IntoIterator<Item = A>,
-    A: Into<OsString> + Clone,
-{
-    match Cli::try_parse_from(args) {
-        Ok(Cli {
-            command: Command::Serve(c),
-            ..
-        }) => Some(c),
-        _ => None,
-    }
-}
-
-/// Turns a clap error into the one-line form (help and version are printed as a result).
-fn usage_error(e: clap::Error, args: &[OsString]) -> Result<Outcome, CliError> {
-    if matches!(e.kind(), ClapKind::DisplayHelp | ClapKind::DisplayVersion) {
-        return Ok(Outcome {
-            stdout: e.render().to_string(),
-            files: PendingWrites::new(),
-            warnings: Vec::new(),
-        });
-    }
-    let context = |k: ContextKind| e.get(k).map(|v| v.to_string());
-    // Clap names an option with its value placeholder (`--format <FORMAT>`); keep the name.
-    let strip = |s: String| -> String {
-        s.split(", ")
-            .map(|a| a.split_whitespace().next().unwrap_or(a))
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
-    let arg = context(ContextKind::InvalidArg)
-        .map(strip)
-        .unwrap_or_else(|| "cagd".into());
-    let value = context(ContextKind::InvalidValue).unwrap_or_default();
-    let subcommands = subcommands().join(", ");
-    let (argument, problem, expected) = match e.kind() {
-        ClapKind::InvalidValue => (
-            arg,
-            format!("invalid value '{value}'"),
-            context(ContextKind::ValidValue)
-                .map(|v| format!("one of {v}"))
-                .unwrap_or_else(|| "a value".into()),
-        ),
-        ClapKind::ValueValidation => {
-            let reason = std::error::Error::source(&e)
-                .map(|s| s.to_string())
-                .unwrap_or_default();
-            let expected = if reason.contains("digit") || reason.contains("empty string") {
-                "a whole number such as 10".to_string()
-            } else {
-                "a value of the form shown by --help".to_string()
-            };
-            let reason = if reason.is_empty() {
-                reason
-            } else {
-                format!(" ({reason})")
-            };
-            (arg, format!("invalid value '{value}'{reason}"), expected)
-        }
-        ClapKind::UnknownArgument => {
-            usage::unknown_argument(args, arg, context(ContextKind::SuggestedArg))
-        }
-        ClapKind::InvalidSubcommand => usage::unknown_subcommand(
-            context(ContextKind::InvalidSubcommand).unwrap_or(value),
-            &subcommands,
-        ),
-        ClapKind::MissingSubcommand | ClapKind::DisplayHelpOnMissingArgumentOrSubcommand => (
-            "cagd".into(),
-            "no subcommand given".into(),
-            format!("one of {subcommands} (see cagd --help)"),
-        ),
-        ClapKind::MissingRequiredArgument => {
-            (arg, "missing".into(), "the argument (see --help)".into())
-        }
-        ClapKind::ArgumentConflict
-            if context(ContextKind::PriorArg).map(strip).as_deref() == Some(arg.as_str()) =>
-        {
-            (arg, "given more than once".into(), "the option once".into())
-        }
-        ClapKind::ArgumentConflict => (
-            arg,
-            format!(
-                "cannot be used together with {}",
-                context(ContextKind::PriorArg)
-                    .map(strip)
-                    .unwrap_or_else(|| "another option".into())
-            ),
-            "only one of them".into(),
-        ),
-        _ => {
-            let rendered = e.render().to_string();
-            let first = rendered
-                .lines()
-                .next()
-                .unwrap_or("invalid arguments")
-                .trim_start_matches("error: ")
-                .to_string();
-            ("cagd".into(), first, "arguments as listed by --help".into())
-        }
-    };
-    Err(CliError::new(argument, problem, expected, ErrorKind::Usage))
 }

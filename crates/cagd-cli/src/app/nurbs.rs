@@ -5,11 +5,11 @@ use cagd_ops::ops::Nurbs;
 use clap::Args;
 
 use super::answer::{respond, Destinations};
-use super::cx::Cx;
 use super::read::{curve_params, points};
 use super::run::{Names, Run};
 use super::spline_args::{degree, values};
 use crate::args::{CurveParamArgs, OutputArgs, PlotArgs, RowsArgs, StepsArgs};
+use crate::cx::Cx;
 use crate::{load_params, CliError, Outcome};
 
 /// A NURBS curve (the CAD notes): rational B-spline with weights.
@@ -66,7 +66,7 @@ impl Run for NurbsCommand {
     fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
         let op: Nurbs<T> = Nurbs {
             control: points(cx, "CONTROL", &self.control, None, self.rows.rows)?,
-            weights: load_params(&cx.limits, "--weights", &self.weights)?,
+            weights: load_params(cx, "--weights", &self.weights)?,
             degree: degree(&NAMES, self.degree, self.order)?,
             knots: values(cx, "--knots", &self.knots)?,
             t: curve_params(cx, &self.params)?,

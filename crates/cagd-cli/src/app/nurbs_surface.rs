@@ -8,10 +8,10 @@ use cagd_ops::ops::NurbsSurface;
 use clap::Args;
 
 use super::answer::{respond, Destinations};
-use super::cx::Cx;
 use super::run::{Names, Run};
 use super::spline_args::matrix;
 use super::spline_surface_args::SplineSurfaceArgs;
+use crate::cx::Cx;
 use crate::error::usage;
 use crate::{CliError, Outcome};
 

@@ -8,8 +8,8 @@ use cagd_ops::Params;
 use nalgebra::DMatrix;
 
 use super::common::shape;
-use super::cx::Cx;
 use crate::args::{CurveParamArgs, ScriptArgs, SurfaceParamArgs};
+use crate::cx::Cx;
 use crate::{load_matrix, load_params, CliError, Outcome};
 
 /// A matrix argument with points as columns (or rows with `--rows`), with the orientation
@@ -21,8 +21,8 @@ pub(crate) fn points<T: LiteralScalar>(
     script: Option<&Script<T>>,
     rows: bool,
 ) -> Result<DMatrix<T>, CliError> {
-    let m = load_matrix(&cx.limits, argument, text, script)?;
-    crate::slips::point_matrix_text(argument, text, &m, rows);
+    let m = load_matrix(cx, argument, text, script)?;
+    crate::slips::point_matrix_text(cx, argument, text, &m, rows);
     Ok(if rows { m.transpose() } else { m })
 }
 
@@ -56,7 +56,7 @@ pub(crate) fn given_or_samples<T: LiteralScalar>(
     n: Option<usize>,
 ) -> Result<Params<T>, CliError> {
     Ok(match (given, n) {
-        (Some(text), _) => Params::Given(load_params(&cx.limits, argument, text)?),
+        (Some(text), _) => Params::Given(load_params(cx, argument, text)?),
         (None, Some(n)) => Params::Samples(n),
         (None, None) => Params::Default,
     })
@@ -69,7 +69,7 @@ pub(crate) fn params<T: LiteralScalar>(
     argument: &str,
     text: &str,
 ) -> Result<Vec<T>, CliError> {
-    load_params(&cx.limits, argument, text)
+    load_params(cx, argument, text)
 }
 
 /// The interval `a,b` of `--interval`, if given.
@@ -97,18 +97,18 @@ pub(crate) fn interval<T: LiteralScalar>(
 
 /// Runs `--script` if given, binding `N` to `n` first.
 pub(crate) fn run_script<T: LiteralScalar>(
-    limits: &cagd::limits::Limits,
+    cx: &Cx,
     script: &ScriptArgs,
     n: Option<usize>,
 ) -> Result<Option<Script<T>>, CliError> {
     let Some(path) = &script.script else {
         return Ok(None);
     };
-    let mut env = Env::with_limits(*limits);
+    let mut env = Env::with_limits(cx.limits);
     if let Some(n) = n {
         env.bind_scalar("N", T::from_usize(n));
     }
-    crate::load_script(limits, "--script", path, env).map(Some)
+    crate::load_script(cx, "--script", path, env).map(Some)
 }
 
 impl Cx {
@@ -118,7 +118,7 @@ impl Cx {
         script: &ScriptArgs,
         n: Option<usize>,
     ) -> Result<Option<Script<T>>, CliError> {
-        run_script(&self.limits, script, n)
+        run_script(self, script, n)
     }
 }
 
@@ -148,7 +148,7 @@ pub(crate) fn one_value<T: LiteralScalar>(
     text: &str,
     form: &str,
 ) -> Result<T, CliError> {
-    let values: Vec<T> = load_params(&cx.limits, argument, text)?;
+    let values: Vec<T> = load_params(cx, argument, text)?;
     match <[T; 1]>::try_from(values) {
         Ok([x]) => Ok(x),
         Err(values) => Err(shape(argument, format!("{} values", values.len()), form)),
@@ -170,7 +170,7 @@ pub(crate) fn bspline_arg<T: LiteralScalar>(
         (None, None) => return Ok(None),
     };
     let knots = match knots {
-        Some(text) => Some(load_params(&cx.limits, "--knots", text)?),
+        Some(text) => Some(load_params(cx, "--knots", text)?),
         None => None,
     };
     Ok(Some(BSplineArg { degree, knots }))

@@ -8,13 +8,13 @@ use clap::Args;
 
 use super::answer::{respond, Destinations};
 use super::curve_arg::{curve_arg, Reading};
-use super::cx::Cx;
 use super::expr_curve::{expression_env, with_env_warnings};
 use super::read::surface_params;
 use super::run::{Names, Run};
 use crate::args::{
     MeshArgs, OutputArgs, PlotArgs, RowsArgs, ScriptArgs, StepsArgs, SurfaceParamArgs,
 };
+use crate::cx::Cx;
 use crate::{CliError, Outcome};
 
 /// The ruled surface (1 − v)·¹x(u) + v·²x(u) between two curves (the lecture notes).

@@ -6,7 +6,7 @@ use cagd_octave::literal::LiteralScalar;
 use cagd_ops::Role;
 use num_rational::BigRational;
 
-use super::cx::Cx;
+use crate::cx::Cx;
 use crate::{CliError, Outcome};
 
 /// A subcommand: its arguments (the clap struct implementing this) and how it runs.

@@ -7,9 +7,9 @@ use cagd_octave::script::{Binding, Script};
 use clap::Args;
 
 use super::common::finish;
-use super::cx::Cx;
 use super::run::{Names, Run};
 use crate::args::{OutputArgs, ScriptArgs};
+use crate::cx::Cx;
 use crate::{CliError, ErrorKind, Outcome, PendingWrites, Report, Value};
 
 /// Run a thesis-style Octave data script and print the variables it defines.

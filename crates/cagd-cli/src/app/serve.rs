@@ -3,9 +3,9 @@
 
 use cagd_octave::literal::LiteralScalar;
 
-use super::cx::Cx;
 use super::run::Run;
 use super::Outcome;
+use crate::cx::Cx;
 use crate::serve::ServeCommand;
 use crate::{CliError, ErrorKind};
 

@@ -7,11 +7,11 @@ use cagd_ops::Role;
 use clap::{Args, ValueEnum};
 
 use super::answer::{respond, Destinations};
-use super::cx::Cx;
 use super::read::{given_or_samples, points};
 use super::run::{Names, Run};
 use super::spline_args::matrix;
 use crate::args::{OutputArgs, PlotArgs, RowsArgs, StepsArgs};
+use crate::cx::Cx;
 use crate::{load_params, CliError, Outcome};
 
 /// The end conditions of `--end`.
@@ -125,6 +125,6 @@ fn params<T: LiteralScalar>(cx: &Cx, given: Option<&str>) -> Result<Knots<T>, Cl
         "uniform" => Knots::Chosen(Parametrization::Uniform),
         "chord" => Knots::Chosen(Parametrization::Chord),
         "centripetal" => Knots::Chosen(Parametrization::Centripetal),
-        _ => Knots::Given(load_params(&cx.limits, "--params", text)?),
+        _ => Knots::Given(load_params(cx, "--params", text)?),
     })
 }

@@ -6,8 +6,8 @@ use cagd_ops::knots::Degree;
 use nalgebra::DMatrix;
 
 use super::answer::op_error;
-use super::cx::Cx;
 use super::run::Names;
+use crate::cx::Cx;
 use crate::{load_matrix, load_params, CliError};
 
 /// `--degree P` or `--order K` (at most one), as the command names them.
@@ -27,7 +27,7 @@ pub(crate) fn values<T: LiteralScalar>(
 ) -> Result<Option<Vec<T>>, CliError> {
     given
         .as_ref()
-        .map(|text| load_params(&cx.limits, argument, text))
+        .map(|text| load_params(cx, argument, text))
         .transpose()
 }
 
@@ -37,5 +37,5 @@ pub(crate) fn matrix<T: LiteralScalar>(
     argument: &str,
     text: &str,
 ) -> Result<DMatrix<T>, CliError> {
-    load_matrix(&cx.limits, argument, text, None)
+    load_matrix(cx, argument, text, None)
 }

@@ -17,10 +17,10 @@ use nalgebra::DMatrix;
 
 use super::answer::op_error;
 use super::common::coordinate_net;
-use super::cx::Cx;
 use super::read::surface_params;
 use super::run::Names;
 use crate::args::{MeshArgs, OutputArgs, PlotArgs, StepsArgs, SurfaceParamArgs};
+use crate::cx::Cx;
 use crate::error::{shape, usage};
 use crate::{load_net, load_params, read_text, scalar_from_double, CliError, ErrorKind};
 
@@ -127,8 +127,8 @@ impl SplineSurfaceArgs {
     /// The net of NET or of `--x`, `--y`, `--z`.
     fn net<T: LiteralScalar>(&self, cx: &Cx) -> Result<PointGrid<T>, CliError> {
         match (&self.net, &self.x) {
-            (Some(text), _) => load_net::<T>(&cx.limits, "NET", text, None),
-            (None, Some(_)) => coordinate_net(&cx.limits, [&self.x, &self.y, &self.z], None),
+            (Some(text), _) => load_net::<T>(cx, "NET", text, None),
+            (None, Some(_)) => coordinate_net(cx, [&self.x, &self.y, &self.z], None),
             (None, None) => Err(usage(
                 "NET",
                 "missing",
@@ -142,7 +142,7 @@ impl SplineSurfaceArgs {
         let read = |argument: &str, given: &Option<String>| {
             given
                 .as_ref()
-                .map(|text| load_params::<T>(&cx.limits, argument, text))
+                .map(|text| load_params::<T>(cx, argument, text))
                 .transpose()
         };
         Ok([
@@ -236,7 +236,7 @@ fn read_struct<T: LiteralScalar>(cx: &Cx, text: &str) -> Result<Option<NrbStruct
     if !std::path::Path::new(path).is_file() {
         return Ok(None);
     }
-    let contents = read_text(&cx.limits, "NET", path)?;
+    let contents = read_text(cx, "NET", path)?;
     if !contents
         .lines()
         .take(20)

@@ -6,10 +6,10 @@ use cagd_ops::ops::Subdivide;
 use clap::Args;
 
 use super::answer::{respond, Destinations};
-use super::cx::Cx;
 use super::read::{interval, one_value, points};
 use super::run::{Names, Run};
 use crate::args::{OutputArgs, PlotArgs, RowsArgs, StepsArgs};
+use crate::cx::Cx;
 use crate::{CliError, Outcome};
 
 /// Split a Bézier curve at t into two Bézier curves (de Casteljau subdivision).

@@ -13,12 +13,12 @@ use cagd_ops::{Kind, OpError, Role};
 use clap::Args;
 
 use super::answer::{respond, Destinations};
-use super::cx::Cx;
 use super::expr_curve::{env_warnings, expression_env};
 use super::read::surface_params;
 use super::run::{Names, Run};
 use super::work::Sampling;
 use crate::args::{MeshArgs, OutputArgs, PlotArgs, ScriptArgs, SurfaceParamArgs};
+use crate::cx::Cx;
 use crate::{load_expression, CliError, Outcome};
 
 /// The form of a surface expression.
@@ -62,7 +62,7 @@ impl Run for SurfaceCommand {
 
     fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
         let script = cx.script::<T>(&self.script, self.params.n)?;
-        let expr = load_expression(&cx.limits, "EXPR", &self.expr, script.as_ref())?;
+        let expr = load_expression(cx, "EXPR", &self.expr, script.as_ref())?;
         let env = expression_env(cx.limits, script.as_ref());
         let surface = ExprSurface {
             expr,

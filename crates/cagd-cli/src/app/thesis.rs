@@ -16,10 +16,10 @@ use cagd::{CoonsPatch, GordonSurface, SampledCurve, Surface, Tolerance};
 use cagd_octave::literal::{Env, LiteralScalar, ParamExpr};
 
 use super::common::*;
-use super::cx::Cx;
 use super::run::Run;
 use super::worked::{coons_figure, heading, q, text, Files, Q};
 use super::Outcome;
+use crate::cx::Cx;
 
 /// Reproduce every worked example and appendix run of the thesis, with steps and pictures.
 #[derive(Debug, Args)]
@@ -353,7 +353,7 @@ fn gordon_of<T: LiteralScalar>(
         .iter()
         .map(|e| expr_curve::<T>(e, "u", &at_u))
         .collect::<Result<Vec<_>, _>>()?;
-    let g_uv = crate::load_matrix::<T>(limits, "thesis", G_UV, None)?;
+    let g_uv = crate::load_matrix::<T>(&crate::Cx::new(*limits), "thesis", G_UV, None)?;
     let points = (0..3)
         .map(|i| {
             (0..3)

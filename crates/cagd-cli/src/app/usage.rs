@@ -1,13 +1,17 @@
-//! What a command line meant when clap refuses it: the option as typed, and the option or
-//! subcommand most like it.
+//! A command line clap refuses, in the one-line form: what was wrong, the option as typed,
+//! and the option or subcommand most like it.
 
 use std::ffi::OsString;
 
+use clap::error::{ContextKind, ErrorKind as ClapKind};
 use clap::CommandFactory;
+
+use super::outcome::Outcome;
+use crate::{CliError, ErrorKind, PendingWrites};
 
 /// An unknown option: (the option as typed, the problem, what is expected), with the option
 /// meant; `clap_arg` is what clap names, `clap_suggestion` its suggestion.
-pub(super) fn unknown_argument(
+fn unknown_argument(
     args: &[OsString],
     clap_arg: String,
     clap_suggestion: Option<String>,
@@ -24,7 +28,7 @@ pub(super) fn unknown_argument(
 }
 
 /// An unknown subcommand `typed`: (it, the problem, the closest and all `subcommands`).
-pub(super) fn unknown_subcommand(typed: String, subcommands: &str) -> (String, String, String) {
+fn unknown_subcommand(typed: String, subcommands: &str) -> (String, String, String) {
     let suggestion = suggested_subcommand(&typed)
         .map(|s| format!("{s} perhaps, or "))
         .unwrap_or_default();
@@ -41,7 +45,7 @@ fn unknown_option(args: &[OsString]) -> Option<String> {
         .skip(1)
         .map(|a| a.to_string_lossy().into_owned())
         .collect();
-    let command = super::Cli::command();
+    let command = super::cli::Cli::command();
     let sub = words
         .iter()
         .find(|w| !w.starts_with('-'))
@@ -62,7 +66,7 @@ fn unknown_option(args: &[OsString]) -> Option<String> {
 /// The option meant by `typed` in the subcommand of `args`: `--u` and `--v` for a curve's
 /// `--t` on a surface, else the option of the subcommand closest in spelling.
 fn suggested_option(args: &[OsString], typed: &str) -> Option<String> {
-    let command = super::Cli::command();
+    let command = super::cli::Cli::command();
     let sub = args
         .iter()
         .skip(1)
@@ -88,7 +92,7 @@ fn suggested_option(args: &[OsString], typed: &str) -> Option<String> {
 
 /// The subcommand closest in spelling to `typed`, if any is close.
 fn suggested_subcommand(typed: &str) -> Option<String> {
-    let command = super::Cli::command();
+    let command = super::cli::Cli::command();
     closest(typed, command.get_subcommands().map(|s| s.get_name())).map(str::to_string)
 }
 
@@ -99,4 +103,109 @@ fn closest<'a>(typed: &str, names: impl Iterator<Item = &'a str>) -> Option<&'a 
         .filter(|(score, _)| *score >= 0.8)
         .max_by(|a, b| a.0.total_cmp(&b.0))
         .map(|(_, n)| n)
+}
+
+/// Turns a clap error into the one-line form (help and version are printed as a result).
+pub(super) fn usage_error(e: clap::Error, args: &[OsString]) -> Result<Outcome, CliError> {
+    if matches!(e.kind(), ClapKind::DisplayHelp | ClapKind::DisplayVersion) {
+        return Ok(Outcome {
+            stdout: e.render().to_string(),
+            files: PendingWrites::new(),
+            warnings: Vec::new(),
+        });
+    }
+    let (argument, problem, expected) = words(&e, args);
+    Err(CliError::new(argument, problem, expected, ErrorKind::Usage))
+}
+
+/// The argument, the problem and the expected form of a clap error.
+fn words(e: &clap::Error, args: &[OsString]) -> (String, String, String) {
+    let arg = context(e, ContextKind::InvalidArg)
+        .map(|s| option_names(&s))
+        .unwrap_or_else(|| "cagd".into());
+    let value = context(e, ContextKind::InvalidValue).unwrap_or_default();
+    let subcommands = super::cli::subcommands().join(", ");
+    match e.kind() {
+        ClapKind::InvalidValue => (
+            arg,
+            format!("invalid value '{value}'"),
+            context(e, ContextKind::ValidValue)
+                .map(|v| format!("one of {v}"))
+                .unwrap_or_else(|| "a value".into()),
+        ),
+        ClapKind::ValueValidation => invalid_value(e, arg, &value),
+        ClapKind::UnknownArgument => {
+            unknown_argument(args, arg, context(e, ContextKind::SuggestedArg))
+        }
+        ClapKind::InvalidSubcommand => unknown_subcommand(
+            context(e, ContextKind::InvalidSubcommand).unwrap_or(value),
+            &subcommands,
+        ),
+        ClapKind::MissingSubcommand | ClapKind::DisplayHelpOnMissingArgumentOrSubcommand => (
+            "cagd".into(),
+            "no subcommand given".into(),
+            format!("one of {subcommands} (see cagd --help)"),
+        ),
+        ClapKind::MissingRequiredArgument => {
+            (arg, "missing".into(), "the argument (see --help)".into())
+        }
+        ClapKind::ArgumentConflict => conflict(e, arg),
+        _ => {
+            let rendered = e.render().to_string();
+            let first = rendered
+                .lines()
+                .next()
+                .unwrap_or("invalid arguments")
+                .trim_start_matches("error: ")
+                .to_string();
+            ("cagd".into(), first, "arguments as listed by --help".into())
+        }
+    }
+}
+
+/// A piece of clap's context of `e`, as text.
+fn context(e: &clap::Error, kind: ContextKind) -> Option<String> {
+    e.get(kind).map(|v| v.to_string())
+}
+
+/// Option names without clap's value placeholders (`--format <FORMAT>` is `--format`).
+fn option_names(s: &str) -> String {
+    s.split(", ")
+        .map(|a| a.split_whitespace().next().unwrap_or(a))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// A value clap's parser refused, with its reason.
+fn invalid_value(e: &clap::Error, arg: String, value: &str) -> (String, String, String) {
+    let reason = std::error::Error::source(e)
+        .map(|s| s.to_string())
+        .unwrap_or_default();
+    let expected = if reason.contains("digit") || reason.contains("empty string") {
+        "a whole number such as 10".to_string()
+    } else {
+        "a value of the form shown by --help".to_string()
+    };
+    let reason = if reason.is_empty() {
+        reason
+    } else {
+        format!(" ({reason})")
+    };
+    (arg, format!("invalid value '{value}'{reason}"), expected)
+}
+
+/// An option given twice, or with one it excludes.
+fn conflict(e: &clap::Error, arg: String) -> (String, String, String) {
+    let prior = context(e, ContextKind::PriorArg).map(|s| option_names(&s));
+    if prior.as_deref() == Some(arg.as_str()) {
+        return (arg, "given more than once".into(), "the option once".into());
+    }
+    (
+        arg,
+        format!(
+            "cannot be used together with {}",
+            prior.unwrap_or_else(|| "another option".into())
+        ),
+        "only one of them".into(),
+    )
 }

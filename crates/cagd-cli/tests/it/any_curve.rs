@@ -253,3 +253,29 @@ fn ferguson_patch_of_boundary_curves_takes_their_corner_data() {
         "{e}"
     );
 }
+
+#[test]
+fn plane_boundaries_give_a_plane_patch_on_a_grid() {
+    // Boundary expressions in 2-D (a patch of the plane): on a grid the patch has two
+    // coordinates, x(1/2, 1/2) = rc + rd − rcd = (1/2, 5/8) + (1/2, 1/2) − (1/2, 1/2). The
+    // grid once assumed three coordinates and stopped with an internal error.
+    let args = [
+        "coons",
+        "--c1",
+        "[u;0]",
+        "--c2",
+        "[u;1+u-u^2]",
+        "--d1",
+        "[0;v]",
+        "--d2",
+        "[1;v]",
+    ];
+    let out = json(&[&args[..], &["--n", "3", "--exact"]].concat());
+    let result = out["result"].as_array().unwrap();
+    assert_eq!(result.len(), 3, "u");
+    assert_eq!(result[1][1].as_array().unwrap().len(), 2, "two coordinates");
+    assert_eq!(result[1][1], serde_json::json!(["1/2", "5/8"]));
+    // With the parts: each is a plane grid too.
+    let out = json(&[&args[..], &["--n", "3", "--steps", "--exact"]].concat());
+    assert_eq!(out["rc"][1][1], serde_json::json!(["1/2", "5/8"]));
+}

@@ -423,20 +423,25 @@ mod matrix_arguments {
     #[test]
     fn literal_and_octave_written_text_files_agree() {
         let literal = load_matrix::<f64>(
-            &cagd::Limits::default(),
+            &cagd_cli::Cx::new(cagd::Limits::default()),
             "--control",
             "[0 0 0; 0 2 2; 8 2 0; 4 0 0.1]",
             None,
         );
         assert_eq!(literal.unwrap(), b());
         for file in ["octave_save_ascii.txt", "octave_dlmwrite.csv"] {
-            let m = load_matrix::<f64>(&cagd::Limits::default(), "--control", &data(file), None)
-                .unwrap();
+            let m = load_matrix::<f64>(
+                &cagd_cli::Cx::new(cagd::Limits::default()),
+                "--control",
+                &data(file),
+                None,
+            )
+            .unwrap();
             assert_eq!(m, b(), "{file}");
         }
         // Exact: 1.00000000e-01 is exactly 1/10.
         let m = load_matrix::<BigRational>(
-            &cagd::Limits::default(),
+            &cagd_cli::Cx::new(cagd::Limits::default()),
             "--control",
             &data("octave_save_ascii.txt"),
             None,
@@ -450,11 +455,17 @@ mod matrix_arguments {
         // The first numeric variable, or the one named after a colon.
         let file = data("octave_save_text.txt");
         assert_eq!(
-            load_matrix::<f64>(&cagd::Limits::default(), "--control", &file, None).unwrap(),
+            load_matrix::<f64>(
+                &cagd_cli::Cx::new(cagd::Limits::default()),
+                "--control",
+                &file,
+                None
+            )
+            .unwrap(),
             b()
         );
         let named = load_matrix::<f64>(
-            &cagd::Limits::default(),
+            &cagd_cli::Cx::new(cagd::Limits::default()),
             "--control",
             &format!("{file}:B"),
             None,
@@ -462,11 +473,16 @@ mod matrix_arguments {
         .unwrap();
         assert_eq!(named, b());
         // Exact: Octave's 0.10000000000000001 is read as the decimal it stands for, 1/10.
-        let m =
-            load_matrix::<BigRational>(&cagd::Limits::default(), "--control", &file, None).unwrap();
+        let m = load_matrix::<BigRational>(
+            &cagd_cli::Cx::new(cagd::Limits::default()),
+            "--control",
+            &file,
+            None,
+        )
+        .unwrap();
         assert_eq!(m[(3, 2)], BigRational::new(1.into(), 10.into()));
         let e = load_matrix::<f64>(
-            &cagd::Limits::default(),
+            &cagd_cli::Cx::new(cagd::Limits::default()),
             "--control",
             &format!("{file}:C"),
             None,
@@ -482,7 +498,7 @@ mod matrix_arguments {
     #[test]
     fn missing_files_and_bad_files() {
         let e = load_matrix::<f64>(
-            &cagd::Limits::default(),
+            &cagd_cli::Cx::new(cagd::Limits::default()),
             "--control",
             "no/such/points.csv",
             None,
@@ -497,7 +513,7 @@ mod matrix_arguments {
         let ragged = dir.path().join("ragged.txt");
         std::fs::write(&ragged, "1 2 3\n# comment\n4 5\n").unwrap();
         let e = load_matrix::<f64>(
-            &cagd::Limits::default(),
+            &cagd_cli::Cx::new(cagd::Limits::default()),
             "--control",
             ragged.to_str().unwrap(),
             None,
@@ -510,7 +526,7 @@ mod matrix_arguments {
         let nan = dir.path().join("nan.csv");
         std::fs::write(&nan, "1,NaN\n").unwrap();
         let e = load_matrix::<f64>(
-            &cagd::Limits::default(),
+            &cagd_cli::Cx::new(cagd::Limits::default()),
             "--control",
             nan.to_str().unwrap(),
             None,
@@ -529,7 +545,7 @@ mod matrix_arguments {
         )
         .unwrap();
         let m = load_matrix(
-            &cagd::Limits::default(),
+            &cagd_cli::Cx::new(cagd::Limits::default()),
             "--control",
             "[P1 P2]",
             Some(&script),
@@ -537,7 +553,7 @@ mod matrix_arguments {
         .unwrap();
         assert_eq!(m.shape(), (3, 2));
         let e = load_matrix(
-            &cagd::Limits::default(),
+            &cagd_cli::Cx::new(cagd::Limits::default()),
             "--control",
             "[P1 c1]",
             Some(&script),
@@ -545,7 +561,7 @@ mod matrix_arguments {
         .unwrap_err();
         assert_eq!(e.kind, ErrorKind::Shape);
         let e = load_matrix(
-            &cagd::Limits::default(),
+            &cagd_cli::Cx::new(cagd::Limits::default()),
             "--control",
             "[P1 P9]",
             Some(&script),
@@ -1026,7 +1042,7 @@ fn format_octave_loads_in_live_octave() {
     ]);
     // Our own reader reads what we wrote (also without Octave).
     let m = cagd_cli::load_matrix::<f64>(
-        &cagd::Limits::default(),
+        &cagd_cli::Cx::new(cagd::Limits::default()),
         "x",
         &format!("{}:result", p("curve.txt")),
         None,

@@ -147,7 +147,6 @@ impl<T: Scalar> Operation<T> for Coons<T> {
             ["rc", "rd", "rcd"],
             (self.steps, self.at.list, single),
             (&us, &vs),
-            d,
             cx,
             |u, v| {
                 let p = patch.parts(u, v);

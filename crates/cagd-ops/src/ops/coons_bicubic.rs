@@ -12,7 +12,7 @@
 
 use cagd::coons::{bicubic_point_cost, BicubicCoonsPatch, CoonsBoundary, CrossDerivatives, Twist};
 use cagd::cost::max_bits;
-use cagd::{Curve, Scalar, Surface, Tolerance};
+use cagd::{Curve, Scalar, Tolerance};
 use nalgebra::DMatrix;
 
 use super::coons::{boundary_picture, realise_all, BOUNDARY_FORM, BOUNDARY_ROLES};
@@ -148,7 +148,6 @@ impl<T: Scalar> Operation<T> for CoonsBicubic<T> {
             ["hc", "hd", "hcd"],
             (self.steps, self.at.list, single),
             (&us, &vs),
-            patch.dim(),
             cx,
             |u, v| {
                 let p = patch.eval_parts(u, v);

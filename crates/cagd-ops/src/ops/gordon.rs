@@ -154,7 +154,7 @@ impl<T: Scalar> Operation<T> for Gordon<T> {
         let pictures = self.drawing || self.mesh;
         let points = evaluated_points((&g.us, &g.vs), pictures.then_some((&g.pus, &g.pvs)));
         cx.check_cost(Role::Grid, per_point.times(points), T::EXACT)?;
-        let report = self.report(&surface, &g, d, cx)?;
+        let report = self.report(&surface, &g, cx)?;
         let pictures = Pictures {
             at: (&g.us, &g.vs, self.at.single()),
             grid: (&g.pus, &g.pvs),
@@ -236,7 +236,6 @@ impl<T: Scalar> Gordon<T> {
         &self,
         surface: &GordonSurface<Realised<'_, T>, T>,
         g: &Grids<T>,
-        d: usize,
         cx: &Context,
     ) -> Result<Report<T>> {
         let mut report = Report::new();
@@ -247,7 +246,6 @@ impl<T: Scalar> Gordon<T> {
             ["g1", "g2", "g12"],
             (self.steps, self.at.list, self.at.single()),
             (&g.us, &g.vs),
-            d,
             cx,
             |u, v| {
                 let p = surface.eval_parts(u, v);

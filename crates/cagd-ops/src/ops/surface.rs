@@ -107,12 +107,12 @@ pub fn push_terms<T: Scalar>(
     names: [&str; 3],
     (steps, list, single): (bool, bool, bool),
     (us, vs): (&[T], &[T]),
-    d: usize,
     cx: &Context,
     terms: impl Fn(T, T) -> [DVector<T>; 4],
 ) -> Result<()> {
+    let first = terms(us[0].clone(), vs[0].clone());
     if single && !list {
-        let [a, b, c, x] = terms(us[0].clone(), vs[0].clone());
+        let [a, b, c, x] = first;
         if steps {
             for (name, term) in names.into_iter().zip([a, b, c]) {
                 report.push(name, Value::column(&term));
@@ -121,15 +121,16 @@ pub fn push_terms<T: Scalar>(
         report.push("result", Value::column(&x));
         return Ok(());
     }
-    let shape = (us.len(), vs.len(), d);
+    // The dimension of what the terms give (boundary curves in 2-D give a patch in the plane).
+    let shape = (us.len(), vs.len(), first[3].len());
     let mut grids: [PointGrid<T>; 4] =
         std::array::from_fn(|_| PointGrid::from_elem(shape, T::zero()));
     for (i, u) in us.iter().enumerate() {
         cx.check_interrupt()?;
         for (j, v) in vs.iter().enumerate() {
             for (grid, term) in grids.iter_mut().zip(terms(u.clone(), v.clone())) {
-                for k in 0..d {
-                    grid[[i, j, k]] = term[k].clone();
+                for (k, x) in term.iter().enumerate().take(shape.2) {
+                    grid[[i, j, k]] = x.clone();
                 }
             }
         }
