@@ -37,6 +37,7 @@
 //! ```
 
 use crate::limits::exact_op_cost;
+use crate::scalar::Scalar;
 
 /// `ops` arithmetic operations on numbers of about `bits` bits (see the
 /// [module documentation](self)).
@@ -138,6 +139,29 @@ impl Cost {
             self.ops
         }
     }
+}
+
+/// The size, in bits, of the largest of `values` ([`Scalar::size_in_bits`]: numerator and
+/// denominator together for rationals, `0` for `f64`): what the estimates take as the size of
+/// their inputs.
+///
+/// ```
+/// use cagd::cost::max_bits;
+/// use cagd::Scalar;
+/// use num_rational::BigRational;
+/// assert_eq!(max_bits(&[0.5f64, 3.0]), 0);
+/// let q = [<BigRational as Scalar>::from_ratio(1, 2), <BigRational as Scalar>::from_ratio(255, 256)];
+/// assert_eq!(max_bits(&q), 8 + 9);
+/// ```
+pub fn max_bits<'a, T: Scalar + 'a>(values: impl IntoIterator<Item = &'a T>) -> u128 {
+    if !crate::grid::exact::is_rational::<T>() {
+        return 0;
+    }
+    values
+        .into_iter()
+        .map(Scalar::size_in_bits)
+        .max()
+        .unwrap_or(0)
 }
 
 /// The size a polynomial of degree `degree` in a parameter of `param_bits` bits, with

@@ -403,6 +403,7 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
         let d = self.dim();
         let len = crate::grid::grid_len("Gordon surface grid", &[us.len(), vs.len(), d])?;
         crate::grid::check_len("Gordon surface grid buffer", len, out)?;
+        crate::error::check_finite("Gordon surface grid parameters", us.iter().chain(vs))?;
         if len == 0 {
             return Ok(());
         }
@@ -436,6 +437,7 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
         let r = at_v;
         let work = out.len().saturating_mul(mu + mv);
         crate::grid::for_each_row(
+            "Gordon surface grid",
             out,
             vs.len() * d,
             work,
@@ -445,8 +447,7 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
                 let ra = &r[a * mv * d..(a + 1) * mv * d];
                 crate::grid::blend_row(&lv, mv, ra, la, &at_u, row);
             },
-        );
-        Ok(())
+        )
     }
 
     /// `g(u, v)` with its parts `g1`, `g2`, `g12`.
@@ -673,6 +674,32 @@ impl<T: Scalar, C: Curve<T>> Surface<T> for GordonSurface<C, T> {
         self.eval_parts(u, v).g
     }
 
+    /// [`eval`](Surface::eval) on `[0, 1]²`, every network curve through its own `try_eval`
+    /// (its work bounded, its point checked: a curve returning a point of another dimension
+    /// is an [`Error::ShapeMismatch`]), the point checked for overflow.
+    fn try_eval(&self, u: T, v: T) -> Result<DVector<T>> {
+        let unit = (T::zero(), T::one());
+        crate::param::check_parameter("Gordon surface parameter u", &u, &unit)?;
+        crate::param::check_parameter("Gordon surface parameter v", &v, &unit)?;
+        let values = |curves: &[C], domains: &[(T, T)], t: &T, what| -> Result<Vec<DVector<T>>> {
+            curves
+                .iter()
+                .zip(domains)
+                .map(|(c, d)| {
+                    OnUnitInterval::from_checked(c, d.clone())
+                        .try_eval(t.clone())
+                        .and_then(|p| crate::checked::point(what, self.dim(), p))
+                        .map_err(|e| crate::checked::named(what, e))
+                })
+                .collect()
+        };
+        let at_u = values(&self.curves_at_u, &self.domains_at_u, &v, "Gordon curve g(u_i, v)")?;
+        let at_v = values(&self.curves_at_v, &self.domains_at_v, &u, "Gordon curve g(u, v_j)")?;
+        let (lu, lv) = (self.u_basis.basis(&u), self.v_basis.basis(&v));
+        let g = self.combine(&lu, &lv, &at_u, &at_v).g;
+        crate::checked::point("Gordon surface point", self.dim(), g)
+    }
+
     /// The surface on the grid `us × vs`, shape `(us.len(), vs.len(), d)` (the layout of
     /// `P = tenzor(R)` in `krpaGordon`); each network curve and each Lagrange basis is evaluated
     /// once per grid line.
@@ -713,7 +740,7 @@ impl<T: Scalar, C: Curve<T>> Surface<T> for GordonSurface<C, T> {
 /// The control points of a Bézier curve elevated to degree `to`, as one vector of
 /// coefficients per coordinate. They are those of the curve reparametrised onto `[0, 1]`
 /// whatever its interval `[a, b]` (the Bernstein form is in `(u − a)/(b − a)`).
-fn elevated_control<T: Scalar>(curve: &BezierCurve<T>, to: usize) -> Vec<Vec<T>> {
+fn elevated_control<T: Scalar>(curve: &BezierCurve<T>, to: usize) -> Result<Vec<Vec<T>>> {
     let c = curve.control();
     (0..c.nrows())
         .map(|k| {
@@ -736,16 +763,16 @@ pub(crate) fn gordon_bezier_net<T: Scalar>(
     let p = curves_at_v.iter().map(|c| c.degree()).max().unwrap_or(0);
     let q = curves_at_u.iter().map(|c| c.degree()).max().unwrap_or(0);
     let (deg_u, deg_v) = (m.max(p), n.max(q));
-    let lu = bernstein_coefficients(u_nodes, deg_u);
-    let lv = bernstein_coefficients(v_nodes, deg_v);
-    let at_u: Vec<_> = curves_at_u
+    let lu = bernstein_coefficients(u_nodes, deg_u)?;
+    let lv = bernstein_coefficients(v_nodes, deg_v)?;
+    let at_u = curves_at_u
         .iter()
         .map(|c| elevated_control(c, deg_v))
-        .collect();
-    let at_v: Vec<_> = curves_at_v
+        .collect::<Result<Vec<_>>>()?;
+    let at_v = curves_at_v
         .iter()
         .map(|c| elevated_control(c, deg_u))
-        .collect();
+        .collect::<Result<Vec<_>>>()?;
     let dim = points[0][0].len();
     let coords = (0..dim)
         .map(|d| {
@@ -767,7 +794,8 @@ pub(crate) fn gordon_bezier_net<T: Scalar>(
                 g1 + g2 - g12
             })
         })
-        .collect();
+        .collect::<Vec<_>>();
+    crate::error::check_overflow("Bézier net of a Gordon surface", coords.iter().flat_map(|c| c.iter()))?;
     BezierPatch::new(coords)
 }
 

@@ -274,6 +274,14 @@ impl<T: Scalar> Curve<T> for HermiteCubic<T> {
     fn eval(&self, t: T) -> DVector<T> {
         HermiteCubic::eval(self, t)
     }
+
+    fn try_eval(&self, t: T) -> Result<DVector<T>> {
+        crate::checked::try_eval_curve(self, "Hermite cubic point", t)
+    }
+
+    fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
+        crate::checked::eval_many_into(self, "Hermite cubic points", ts, out)
+    }
     fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
         Some(HermiteCubic::eval_derivative(self, t))
     }

@@ -275,4 +275,12 @@ impl<T: Scalar> Curve<T> for ParametricInterpolant<T> {
     fn eval(&self, t: T) -> DVector<T> {
         ParametricInterpolant::eval(self, t)
     }
+
+    fn try_eval(&self, t: T) -> Result<DVector<T>> {
+        crate::checked::try_eval_curve(self, "parametric interpolant point", t)
+    }
+
+    fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
+        crate::checked::eval_many_into(self, "parametric interpolant points", ts, out)
+    }
 }

@@ -53,6 +53,7 @@
 pub mod bernstein;
 pub mod bezier;
 pub mod bspline;
+mod checked;
 pub mod continuity;
 pub mod conversion;
 pub mod coons;

@@ -98,19 +98,9 @@ pub struct Limits {
 }
 
 impl Default for Limits {
+    /// [`Limits::DEFAULT`].
     fn default() -> Self {
-        Limits {
-            max_input_bytes: 64 << 20,
-            max_expression_bytes: 1 << 20,
-            max_depth: 64,
-            max_elements: 4_000_000,
-            max_iterations: 1_000_000,
-            max_samples: 1_000_000,
-            max_grid_points: 10_000_000,
-            max_degree: 1000,
-            max_system_entries: 100_000_000,
-            max_work: 2_000_000_000,
-        }
+        Limits::DEFAULT
     }
 }
 
@@ -119,6 +109,22 @@ fn to_usize(x: u64) -> usize {
 }
 
 impl Limits {
+    /// The defaults (see the [module documentation](self) for why these numbers): what
+    /// `Limits::default()` gives, and what every function of the crate that takes no `Limits`
+    /// argument checks against.
+    pub const DEFAULT: Limits = Limits {
+        max_input_bytes: 64 << 20,
+        max_expression_bytes: 1 << 20,
+        max_depth: 64,
+        max_elements: 4_000_000,
+        max_iterations: 1_000_000,
+        max_samples: 1_000_000,
+        max_grid_points: 10_000_000,
+        max_degree: 1000,
+        max_system_entries: 100_000_000,
+        max_work: 2_000_000_000,
+    };
+
     /// The value of one limit.
     ///
     /// ```

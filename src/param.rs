@@ -385,8 +385,16 @@ where
     fn eval(&self, t: T) -> DVector<T> {
         (self.f)(t)
     }
+    /// The closure's value at `t` in the domain, checked: a point of another dimension is an
+    /// [`Error::ShapeMismatch`], a non-finite coordinate an [`Error::Overflow`].
+    fn try_eval(&self, t: T) -> Result<DVector<T>> {
+        crate::checked::try_eval_curve(self, "closure curve point", t)
+    }
     fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
         self.df.as_ref().map(|df| df(t))
+    }
+    fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
+        crate::checked::eval_many_into(self, "closure curve points", ts, out)
     }
 }
 
@@ -440,6 +448,7 @@ impl<T: Scalar> SampledCurve<T> {
                 ),
             });
         }
+        crate::error::check_spacing("sampled curve parameters", &params)?;
         let domain = (params[0].clone(), params[params.len() - 1].clone());
         Ok(SampledCurve {
             params,
@@ -476,6 +485,7 @@ impl<T: Scalar> SampledCurve<T> {
                 b: end.to_f64(),
             });
         }
+        crate::error::check_spacing("sampled curve domain", &[start.clone(), end.clone()])?;
         Ok(SampledCurve {
             domain: (start, end),
             ..self
@@ -546,6 +556,14 @@ impl<T: Scalar> Curve<T> for SampledCurve<T> {
                 .zip(q.iter())
                 .map(|(x, y)| one_minus.clone() * x.clone() + s.clone() * y.clone()),
         )
+    }
+
+    fn try_eval(&self, t: T) -> Result<DVector<T>> {
+        crate::checked::try_eval_curve(self, "sampled curve point", t)
+    }
+
+    fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
+        crate::checked::eval_many_into(self, "sampled curve points", ts, out)
     }
 
     fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
@@ -655,12 +673,22 @@ impl<T: Scalar, C: Curve<T>> Curve<T> for OnUnitInterval<C, T> {
         (T::zero(), T::one())
     }
 
+    /// The curve at `a + (b − a)s`; a point of another dimension than [`Curve::dim`] (a
+    /// closure that returns the wrong length) becomes a point of NaNs of the right dimension,
+    /// so that no construction indexes past it (their `try_eval` then refuse the point).
     fn eval(&self, s: T) -> DVector<T> {
-        self.curve.eval(self.parameter(s))
+        crate::checked::of_dim(self.curve.dim(), self.curve.eval(self.parameter(s)))
+    }
+
+    fn try_eval(&self, s: T) -> Result<DVector<T>> {
+        check_parameter("curve parameter", &s, &(T::zero(), T::one()))?;
+        // The curve's own checks (its work, its point), at a parameter inside its domain.
+        self.curve.try_eval(self.parameter(s))
     }
 
     fn eval_derivative(&self, s: T) -> Option<DVector<T>> {
         let d = self.curve.eval_derivative(self.parameter(s))?;
+        let d = crate::checked::of_dim(self.curve.dim(), d);
         if self.is_identity() {
             return Some(d);
         }
@@ -669,6 +697,7 @@ impl<T: Scalar, C: Curve<T>> Curve<T> for OnUnitInterval<C, T> {
     }
 
     fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
+        crate::error::check_finite("curve parameters", ts.iter())?;
         if self.is_identity() {
             return self.curve.eval_many_into(ts, out);
         }

@@ -507,7 +507,8 @@ impl<T: Scalar> CubicSpline<T> {
     /// bit).
     pub fn eval_many(&self, ts: &[T]) -> DMatrix<T> {
         let mut out = DMatrix::from_element(self.dim(), ts.len(), T::zero());
-        self.fill_many(ts, out.as_mut_slice());
+        // Infallible: a non-finite point (far outside, or a NaN parameter) stays in place.
+        let _ = self.fill_many(ts, out.as_mut_slice());
         out
     }
 
@@ -542,12 +543,12 @@ impl<T: Scalar> CubicSpline<T> {
     pub fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
         let len = crate::grid::grid_len("spline points", &[ts.len(), self.dim()])?;
         crate::grid::check_len("spline point buffer", len, out)?;
-        self.fill_many(ts, out);
-        Ok(())
+        crate::error::check_finite("spline parameters", ts.iter())?;
+        self.fill_many(ts, out)
     }
 
     /// [`eval_many_into`](Self::eval_many_into) after the length check.
-    fn fill_many(&self, ts: &[T], out: &mut [T]) {
+    fn fill_many(&self, ts: &[T], out: &mut [T]) -> Result<()> {
         /// Points per block (one segment hint per block).
         const BLOCK: usize = 256;
         let d = self.dim();
@@ -573,6 +574,7 @@ impl<T: Scalar> CubicSpline<T> {
         let last = segs - 1;
         let work = ts.len().saturating_mul(6 * d + 8);
         crate::grid::for_each_row(
+            "spline points",
             out,
             BLOCK * d,
             work,
@@ -589,7 +591,7 @@ impl<T: Scalar> CubicSpline<T> {
                     }
                 }
             },
-        );
+        )
     }
 }
 
@@ -625,6 +627,10 @@ impl<T: Scalar> Curve<T> for CubicSpline<T> {
     }
     fn eval(&self, t: T) -> DVector<T> {
         CubicSpline::eval(self, t)
+    }
+
+    fn try_eval(&self, t: T) -> Result<DVector<T>> {
+        crate::checked::try_eval_curve(self, "spline point", t)
     }
     fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
         let [_, d, _] = self.eval_with_derivatives(t);

@@ -9,6 +9,7 @@
 //! (written `t − t`, NaN for both).
 
 use super::basis::{basis_functions_into, last_span};
+use crate::error::Result;
 use crate::grid::{contract_row_planar, for_each_row, weighted_sum_into};
 use crate::scalar::Scalar;
 
@@ -162,7 +163,7 @@ pub(crate) fn curve_points_into<T: Scalar>(
     project: bool,
     ts: &[T],
     out: &mut [T],
-) {
+) -> Result<()> {
     let n = control.len() / dh;
     let d = dh - usize::from(project);
     let finder = SpanFinder::new(p, n, knots);
@@ -203,6 +204,7 @@ pub(crate) fn curve_points_into<T: Scalar>(
     macro_rules! fixed {
         ($n:literal, $dh:literal) => {
             for_each_row(
+                "spline curve points",
                 out,
                 BLOCK * d,
                 work,
@@ -238,7 +240,7 @@ pub(crate) fn curve_points_into<T: Scalar>(
         (3, 1..=4) => by_dim!(4),
         (4, 1..=4) => by_dim!(5),
         (5, 1..=4) => by_dim!(6),
-        _ => for_each_row(out, BLOCK * d, work, init, |sc, block, chunk| {
+        _ => for_each_row("spline curve points", out, BLOCK * d, work, init, |sc, block, chunk| {
             for (t, x) in ts[block * BLOCK..].iter().zip(chunk.chunks_exact_mut(d)) {
                 point(sc, t, x);
             }
@@ -336,7 +338,12 @@ pub(crate) struct Net<'a, T> {
 /// The sums run along `u` first, where `BSplineSurface::try_eval` runs along `v` first: the
 /// values agree with it to a few units of `(p + q) ε · max |P_{i,j}|`, and exactly for
 /// rationals.
-pub(crate) fn surface_grid_into<T: Scalar>(s: &Net<'_, T>, us: &[T], vs: &[T], out: &mut [T]) {
+pub(crate) fn surface_grid_into<T: Scalar>(
+    s: &Net<'_, T>,
+    us: &[T],
+    vs: &[T],
+    out: &mut [T],
+) -> Result<()> {
     let (p, q) = (s.u.degree(), s.v.degree());
     let dh = s.dh;
     let d = dh - usize::from(s.project);
@@ -381,7 +388,7 @@ pub(crate) fn surface_grid_into<T: Scalar>(s: &Net<'_, T>, us: &[T], vs: &[T], o
         let homogeneous = if s.project { vs.len() * dh } else { 0 };
         (vec![T::zero(); nv * dh], vec![T::zero(); homogeneous])
     };
-    for_each_row(out, vs.len() * d, work, init, |(coeffs, hrow), a, row| {
+    for_each_row("spline surface grid", out, vs.len() * d, work, init, |(coeffs, hrow), a, row| {
         let Some(span) = su[a] else {
             row.iter_mut()
                 .for_each(|o| *o = us[a].clone() - us[a].clone());
@@ -413,7 +420,7 @@ pub(crate) fn surface_grid_into<T: Scalar>(s: &Net<'_, T>, us: &[T], vs: &[T], o
                 finish(h, true, x);
             }
         }
-    });
+    })
 }
 
 /// For every point of a run: the homogeneous sum `h = Σ_l w_b[l] · c_l` (`D` numbers,

@@ -45,6 +45,7 @@ impl<T: Scalar> KnotVector<T> {
                 next: knots[k + 1].to_f64(),
             });
         }
+        crate::error::check_spacing(what, &knots)?;
         Ok(KnotVector { knots })
     }
 
@@ -90,6 +91,12 @@ impl<T: Scalar> KnotVector<T> {
             .map_err(|_| too_many_knots("uniform knot vector", p, n_control))?;
         knots.extend((0..n_control + p + 1).map(|j| T::from_ratio(j as i64 - p as i64, 1)));
         Ok(KnotVector { knots })
+    }
+
+    /// Knots already known to be valid (sorted, finite, spaced as [`KnotVector::new`]
+    /// requires).
+    pub(crate) fn from_valid(knots: Vec<T>) -> Self {
+        KnotVector { knots }
     }
 
     /// The knots.

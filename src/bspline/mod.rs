@@ -24,7 +24,7 @@ pub use curve::BSplineCurve;
 pub use de_boor_scheme::DeBoorScheme;
 pub use knots::KnotVector;
 pub use surface::BSplineSurface;
-pub use triangle::cox_de_boor_triangle;
+pub use triangle::{cox_de_boor_triangle, try_cox_de_boor_triangle};
 
 pub(crate) use basis::check_in_domain;
 pub(crate) use batch::curve_points_fast_into;

@@ -3,7 +3,6 @@
 
 use nalgebra::DMatrix;
 
-use super::monomial::bezier_to_monomial_matrix;
 use crate::scalar::Scalar;
 
 /// The three cubic forms of the lecture notes.
@@ -50,7 +49,7 @@ impl CubicForm {
                 [[1, 0, -3, 2], [0, 0, 3, -2], [0, 1, -2, 1], [0, 0, -1, 1]],
                 1,
             ),
-            CubicForm::Bezier => bezier_to_monomial_matrix(3),
+            CubicForm::Bezier => super::monomial::cubic_bezier_matrix(),
             CubicForm::BSpline => int_matrix(
                 [[1, -3, 3, -1], [4, 0, -6, 3], [1, 3, 3, -3], [0, 0, 0, 1]],
                 6,

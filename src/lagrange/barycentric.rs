@@ -320,6 +320,14 @@ impl<T: Scalar> Curve<T> for LagrangeInterpolant<T> {
         self.basis.combine(&self.values, &self.basis.basis(&t))
     }
 
+    fn try_eval(&self, t: T) -> Result<DVector<T>> {
+        crate::checked::try_eval_curve(self, "Lagrange interpolant point", t)
+    }
+
+    fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
+        crate::checked::eval_many_into(self, "Lagrange interpolant points", ts, out)
+    }
+
     fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
         let (x, w, y) = (&self.basis.nodes, &self.basis.weights, &self.values);
         let d = y.nrows();

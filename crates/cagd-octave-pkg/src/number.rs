@@ -79,6 +79,7 @@ impl Number for BigRational {
         // `{:e}` prints the shortest digits that read back to `x`; the readers have refused
         // NaN and ±Inf before.
         rational_from_decimal(&format!("{x:e}"))
+            .ok()
             .or_else(|| <BigRational as cagd::Scalar>::from_f64(x))
             .unwrap_or_default()
     }

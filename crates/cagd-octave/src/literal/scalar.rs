@@ -210,11 +210,13 @@ impl LiteralScalar for BigRational {
     }
 
     fn bits(&self) -> u128 {
-        u128::from(self.numer().bits() + self.denom().bits())
+        self.size_in_bits()
     }
 
     fn from_literal(text: &str, _nearest: f64) -> Option<Self> {
-        rational_from_decimal(text).filter(|x| !x.is_oversized())
+        rational_from_decimal(text)
+            .ok()
+            .filter(|x| !x.is_oversized())
     }
 
     fn apply(f: Function, x: &Self) -> Option<Self> {
