@@ -33,7 +33,10 @@ pub struct Joint {
 /// in exact arithmetic) and `tol · |a| |b|` on the parallelism minors.
 ///
 /// # Errors
-/// [`Error::ShapeMismatch`] for vectors of different dimensions, [`Error::NonFinite`].
+/// [`Error::ShapeMismatch`] for vectors of different dimensions, [`Error::NonFinite`] for a
+/// NaN or infinite coordinate or tolerance, [`Error::InvalidArgument`] for a negative
+/// tolerance, [`Error::Overflow`] when the products the classification compares overflow
+/// (derivatives near ±10¹⁵⁴).
 ///
 /// ```
 /// use cagd::continuity::joint;
@@ -67,6 +70,13 @@ pub fn joint<T: Scalar>(
             .chain(start.0.iter())
             .chain(start.1.iter()),
     )?;
+    crate::error::check_finite("joint tolerance", std::iter::once(&tol))?;
+    if tol < T::zero() {
+        return Err(Error::InvalidArgument {
+            what: "joint tolerance",
+            message: format!("expected a value >= 0, got {tol}"),
+        });
+    }
     let near = |a: &DVector<T>, b: &DVector<T>| {
         a.iter()
             .zip(b.iter())
@@ -82,14 +92,21 @@ pub fn joint<T: Scalar>(
     let norm1 = |v: &DVector<T>| v.iter().fold(T::zero(), |s, x| s + x.abs());
     let scale = tol.clone() * norm1(a) * norm1(b);
     let mut parallel = true;
+    let mut minors = Vec::new();
     for i in 0..d {
         for j in i + 1..d {
             let minor = a[i].clone() * b[j].clone() - a[j].clone() * b[i].clone();
             if minor.abs() > scale {
                 parallel = false;
             }
+            minors.push(minor);
         }
     }
+    // The classification compares these: one that overflowed would decide it wrongly.
+    crate::error::check_overflow(
+        "joint derivatives (products of their coordinates)",
+        [&dot, &scale].into_iter().chain(&minors),
+    )?;
     let g1 = c0 && parallel && dot > T::zero();
     Ok(Joint { c0, c1, g1 })
 }
@@ -98,7 +115,9 @@ pub fn joint<T: Scalar>(
 /// values and derivatives ([`Curve::eval_derivative`]).
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] if a curve has no derivative, and the errors of [`joint`].
+/// [`Error::InvalidArgument`] if a curve has no derivative, [`Error::NonFinite`] for a NaN or
+/// infinite parameter, [`Error::Overflow`] for a point or derivative whose double
+/// overflows, and the errors of [`joint`].
 pub fn curve_joint<T: Scalar>(
     first: &impl Curve<T>,
     t1: T,
@@ -110,9 +129,15 @@ pub fn curve_joint<T: Scalar>(
         what: "curve joint",
         message: "both curves must provide derivatives".into(),
     };
+    crate::error::check_finite("curve joint parameters", [&t1, &t0])?;
     let d1 = first.eval_derivative(t1.clone()).ok_or_else(missing)?;
     let d0 = second.eval_derivative(t0.clone()).ok_or_else(missing)?;
-    joint((&first.eval(t1), &d1), (&second.eval(t0), &d0), tol)
+    let (p1, p0) = (first.eval(t1), second.eval(t0));
+    crate::error::check_overflow(
+        "curve joint points and derivatives",
+        p1.iter().chain(&d1).chain(&p0).chain(&d0),
+    )?;
+    joint((&p1, &d1), (&p0, &d0), tol)
 }
 
 /// The lecture notes' example: two cubic Bézier segments `x_A x_B x_C x_D` and `x_D x_E x_F x_G`
@@ -123,7 +148,8 @@ pub fn curve_joint<T: Scalar>(
 /// `x_E = (2, 6, 0)`) this is `x = 3 + k, y = 4 − 2k, z = 3 + 3k`, as printed.
 ///
 /// # Errors
-/// [`Error::ShapeMismatch`] for points of different dimensions.
+/// [`Error::ShapeMismatch`] for points of different dimensions, [`Error::NonFinite`] for a
+/// NaN or infinite coordinate, [`Error::Overflow`] for a direction whose double overflows.
 pub fn c1_free_point<T: Scalar>(
     x_d: &DVector<T>,
     x_e: &DVector<T>,
@@ -135,6 +161,8 @@ pub fn c1_free_point<T: Scalar>(
             found: format!("{}", x_e.len()),
         });
     }
+    check_finite("C1 free point", x_d.iter().chain(x_e.iter()))?;
     let dir = DVector::from_fn(x_d.len(), |r, _| x_d[r].clone() - x_e[r].clone());
+    crate::error::check_overflow("C1 free direction", dir.iter())?;
     Ok((x_d.clone(), dir))
 }

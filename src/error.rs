@@ -137,7 +137,7 @@ pub enum Error {
     /// A curve whose domain a construction cannot reparametrise onto `[0, 1]` (an infinite end,
     /// or a start not below the end): Coons, Gordon and ruled surfaces map each curve's domain
     /// `[a, b]` affinely onto `[0, 1]` (see [`crate::param`]).
-    #[error("{what}: its domain [{start}, {end}] cannot be mapped onto [0, 1] (expected finite ends, start below end)")]
+    #[error("{what}: its domain [{start}, {end}] cannot be mapped onto [0, 1] (expected finite ends, start below end, a width within the range of doubles)")]
     UnusableDomain {
         /// Which curve.
         what: &'static str,

@@ -585,10 +585,10 @@ impl<T: Scalar, C> GordonSurface<C, T> {
         Conditioning {
             u: self
                 .u_basis
-                .lebesgue_constant(0.0, 1.0, samples(&self.u_basis)),
+                .lebesgue_estimate(0.0, 1.0, samples(&self.u_basis)),
             v: self
                 .v_basis
-                .lebesgue_constant(0.0, 1.0, samples(&self.v_basis)),
+                .lebesgue_estimate(0.0, 1.0, samples(&self.v_basis)),
         }
     }
 }
@@ -873,7 +873,9 @@ pub fn gordon_point_cost(
     };
     blended(
         curves,
-        (4 * (ku + kv) + 2 * ku * kv) * (1 + d as u128),
+        (4 * (ku + kv))
+            .saturating_add(ku.saturating_mul(kv).saturating_mul(2))
+            .saturating_mul(1 + d as u128),
         basis_bits(k_u, u).saturating_add(basis_bits(k_v, v)),
     )
 }

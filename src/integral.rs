@@ -25,31 +25,43 @@ use crate::error::Result;
 use crate::scalar::Scalar;
 
 /// The Bernstein coefficients (degree `n + 1`, `n + 2` values) of `∫₀ᵗ B_i^n`: `0` for
-/// `j ≤ i`, `1/(n+1)` for `j > i`. `i ≤ n` is assumed.
+/// `j ≤ i`, `1/(n+1)` for `j > i` (all zero for `i > n`).
+///
+/// # Panics
+/// If `n + 2` values cannot be held (`n` near `usize::MAX`); the front ends check the degree
+/// against their limits first.
 ///
 /// ```
 /// let c: Vec<f64> = cagd::integral::bernstein_antiderivative(2, 1);
 /// assert_eq!(c, vec![0.0, 0.0, 1.0 / 3.0, 1.0 / 3.0]);
 /// ```
 pub fn bernstein_antiderivative<T: Scalar>(n: usize, i: usize) -> Vec<T> {
-    let w = T::from_ratio(1, n as i64 + 1);
-    (0..=n + 1)
-        .map(|j| if j > i { w.clone() } else { T::zero() })
-        .collect()
+    let len = n.checked_add(2).expect("n + 2 Bernstein coefficients");
+    let w = T::one() / T::from_usize(len - 1);
+    let mut c = crate::grid::try_filled("Bernstein antiderivative", len, T::zero())
+        .unwrap_or_else(|e| panic!("{e}"));
+    for x in c.iter_mut().skip(i.saturating_add(1)) {
+        *x = w.clone();
+    }
+    c
 }
 
 /// The antiderivative `u ↦ ∫_a^u c` of a Bézier curve over `[a, b]`: degree `n + 1`, same
 /// interval, control points `c_0 = 0`, `c_k = (b − a)/(n+1) Σ_{j<k} b_j`.
+///
+/// # Errors
+/// [`Error::Overflow`](crate::Error::Overflow) for a control point whose double overflows
+/// (control points near ±1.7·10³⁰⁸ summed, or a wide interval).
 ///
 /// ```
 /// use cagd::bezier::BezierCurve;
 /// use cagd::integral::bezier_antiderivative;
 /// // ∫₀ᵘ 2t dt = u²: the segment 0 → 2 integrates to the control points 0, 0, 1.
 /// let c = BezierCurve::from_points(&[[0.0], [2.0]])?;
-/// assert_eq!(bezier_antiderivative(&c).control().as_slice(), &[0.0, 0.0, 1.0]);
+/// assert_eq!(bezier_antiderivative(&c)?.control().as_slice(), &[0.0, 0.0, 1.0]);
 /// # Ok::<(), cagd::Error>(())
 /// ```
-pub fn bezier_antiderivative<T: Scalar>(curve: &BezierCurve<T>) -> BezierCurve<T> {
+pub fn bezier_antiderivative<T: Scalar>(curve: &BezierCurve<T>) -> Result<BezierCurve<T>> {
     let (n, d) = (curve.degree(), curve.dim());
     let (a, b) = curve.interval();
     let scale = (b.clone() - a.clone()) / T::from_usize(n + 1);
@@ -60,21 +72,24 @@ pub fn bezier_antiderivative<T: Scalar>(curve: &BezierCurve<T>) -> BezierCurve<T
                 control[(r, k - 1)].clone() + scale.clone() * curve.control()[(r, k - 1)].clone();
         }
     }
+    crate::error::check_overflow("antiderivative control points", control.iter())?;
     BezierCurve::new_on_interval(control, a.clone(), b.clone())
-        .expect("the control points and the interval of a valid curve")
 }
 
 /// `∫_a^b c = (b − a)/(n + 1) · Σ b_j`, one value per coordinate.
 ///
+/// # Errors
+/// As [`bezier_antiderivative`].
+///
 /// ```
 /// use cagd::bezier::BezierCurve;
 /// let c = BezierCurve::from_points(&[[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]])?;
-/// assert_eq!(cagd::integral::bezier_integral(&c).as_slice(), &[1.0, 2.0 / 3.0]);
+/// assert_eq!(cagd::integral::bezier_integral(&c)?.as_slice(), &[1.0, 2.0 / 3.0]);
 /// # Ok::<(), cagd::Error>(())
 /// ```
-pub fn bezier_integral<T: Scalar>(curve: &BezierCurve<T>) -> DVector<T> {
-    let anti = bezier_antiderivative(curve);
-    anti.control().column(curve.degree() + 1).into_owned()
+pub fn bezier_integral<T: Scalar>(curve: &BezierCurve<T>) -> Result<DVector<T>> {
+    let anti = bezier_antiderivative(curve)?;
+    Ok(anti.control().column(curve.degree() + 1).into_owned())
 }
 
 /// The antiderivative `u ↦ ∫_{u_0}^u C` of a B-spline curve (see the
@@ -82,7 +97,8 @@ pub fn bezier_integral<T: Scalar>(curve: &BezierCurve<T>) -> DVector<T> {
 /// `n + 1` control points.
 ///
 /// # Errors
-/// Those of [`BSplineCurve::new`] (none for a valid curve).
+/// [`Error::Overflow`](crate::Error::Overflow) for a control point whose double overflows;
+/// otherwise those of [`BSplineCurve::new`] (none for a valid curve).
 ///
 /// ```
 /// use cagd::bspline::BSplineCurve;
@@ -108,6 +124,7 @@ pub fn bspline_antiderivative<T: Scalar>(curve: &BSplineCurve<T>) -> Result<BSpl
                 control[(r, i - 1)].clone() + width.clone() * curve.control()[(r, i - 1)].clone();
         }
     }
+    crate::error::check_overflow("antiderivative control points", control.iter())?;
     let mut knots = Vec::with_capacity(u.len() + 2);
     knots.push(u[0].clone());
     knots.extend(u.iter().cloned());
@@ -134,9 +151,10 @@ pub fn bspline_integral<T: Scalar>(curve: &BSplineCurve<T>) -> Result<DVector<T>
     let f = bspline_antiderivative(curve)?;
     let (a, b) = curve.domain();
     let (fb, fa) = (f.try_eval(b)?, f.try_eval(a)?);
-    Ok(DVector::from_fn(fb.len(), |r, _| {
-        fb[r].clone() - fa[r].clone()
-    }))
+    crate::error::finite(
+        "B-spline integral",
+        DVector::from_fn(fb.len(), |r, _| fb[r].clone() - fa[r].clone()),
+    )
 }
 
 #[cfg(test)]
@@ -156,7 +174,7 @@ mod tests {
             q(4, 1),
         )
         .unwrap();
-        let f = bezier_antiderivative(&c);
+        let f = bezier_antiderivative(&c).unwrap();
         assert_eq!(f.derivative(1).unwrap().control(), c.control());
         let knots = vec![
             q(0, 1),

@@ -730,7 +730,7 @@ pub(crate) fn to_domain<T: Scalar>(a: &T, b: &T, s: T) -> T {
 }
 
 /// The domain of `curve` if a construction can reparametrise it onto `[0, 1]`: finite ends,
-/// start below end.
+/// start below end, a width `b − a` that is a finite double.
 ///
 /// # Errors
 /// [`Error::UnusableDomain`] naming `what` and the domain otherwise.
@@ -739,7 +739,10 @@ pub(crate) fn usable_domain<T: Scalar, C: Curve<T> + ?Sized>(
     curve: &C,
 ) -> Result<(T, T)> {
     let (start, end) = curve.domain();
-    if start.is_finite_value() && end.is_finite_value() && start < end {
+    // The width b − a must be a finite double too: `[−10³⁰⁸, 10³⁰⁸]` has none.
+    let width = end.clone() - start.clone();
+    if start.is_finite_value() && end.is_finite_value() && start < end && width.is_finite_value()
+    {
         Ok((start, end))
     } else {
         Err(Error::UnusableDomain {

@@ -174,8 +174,11 @@ mod tests {
     fn degenerate_inputs() {
         assert_eq!(elevate(&[2.0], 0).unwrap(), vec![2.0]);
         assert_eq!(elevate(&[2.0], 3).unwrap(), vec![2.0; 4]);
-        assert_eq!(elevate(&[1.0, 2.0, 3.0], 1), vec![1.0, 2.0, 3.0]);
-        assert!(elevate::<f64>(&[], 3).is_empty());
+        assert_eq!(elevate(&[1.0, 2.0, 3.0], 1).unwrap(), vec![1.0, 2.0, 3.0]);
+        assert!(elevate::<f64>(&[], 3).unwrap().is_empty());
+        assert!(matches!(elevate(&[1.0], 1001), Err(crate::Error::TooLarge { .. })));
+        assert!(matches!(elevate(&[f64::MAX, -f64::MAX], 3), Ok(_)));
+        assert!(matches!(elevate(&[f64::NAN], 3), Err(crate::Error::NonFinite { .. })));
         assert!(product::<f64>(&[], &[1.0]).is_empty());
     }
 }

@@ -152,7 +152,7 @@ pub(crate) fn recurrence<T: Scalar>(t: &T, out: &mut [T]) {
 /// assert_eq!(cagd::bernstein::basis_cost(3, 2), Cost::new(16, 9));
 /// ```
 pub fn basis_cost(n: usize, param_bits: u128) -> Cost {
-    Cost::new((n as u128 + 1).pow(2), polynomial_bits(n, param_bits, 0))
+    Cost::new((n as u128 + 1).saturating_pow(2), polynomial_bits(n, param_bits, 0))
 }
 
 /// The `r`-th derivative of `B_i^n` at `t`.

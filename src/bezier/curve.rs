@@ -313,7 +313,7 @@ impl<T: Scalar> BezierCurve<T> {
     pub fn eval_cost(&self, param_bits: u128, control_bits: u128) -> Cost {
         let n = self.degree();
         Cost::new(
-            self.dim() as u128 * (n as u128 + 1).pow(2),
+            (self.dim() as u128).saturating_mul((n as u128 + 1).saturating_pow(2)),
             polynomial_bits(n, param_bits, control_bits),
         )
     }

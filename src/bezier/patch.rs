@@ -8,7 +8,7 @@ use super::curve::BezierCurve;
 use super::scheme::{patch_step_in_place, patch_steps, PatchScheme};
 use crate::bernstein::{bernstein_all, bernstein_all_into, falling_factorial};
 use crate::cost::{polynomial_bits, Cost};
-use crate::error::{check_finite, Error, Result};
+use crate::error::{check_finite, check_overflow, Error, Result};
 use crate::param::{check_parameter, Surface};
 use crate::scalar::Scalar;
 
@@ -413,7 +413,8 @@ impl<T: Scalar> BezierPatch<T> {
     /// follows in the same way, since the differences in `i` and `j` commute.
     ///
     /// # Errors
-    /// [`Error::DerivativeOrder`] if `r > m` or `s > n`.
+    /// [`Error::DerivativeOrder`] if `r > m` or `s > n`; [`Error::Overflow`] for a control
+    /// point whose double overflows.
     ///
     /// ```
     /// use cagd::bezier::BezierPatch;
@@ -458,7 +459,11 @@ impl<T: Scalar> BezierPatch<T> {
                 }
                 diff
             })
-            .collect();
+            .collect::<Vec<_>>();
+        check_overflow(
+            "Bézier patch derivative control points",
+            coords.iter().flat_map(|x| x.iter()),
+        )?;
         Ok(BezierPatch { coords })
     }
 

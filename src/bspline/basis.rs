@@ -278,7 +278,7 @@ pub fn basis_all<T: Scalar>(p: usize, n_control: usize, knots: &[T], u: &T) -> R
 /// ```
 pub fn basis_cost(p: usize, param_bits: u128, knot_bits: u128) -> Cost {
     Cost::new(
-        (p as u128 + 1).pow(2),
+        (p as u128 + 1).saturating_pow(2),
         polynomial_bits(p, span_bits(param_bits, knot_bits), 0),
     )
 }
@@ -302,7 +302,9 @@ pub fn curve_point_cost(
     coefficient_bits: u128,
 ) -> Cost {
     Cost::new(
-        basis_cost(p, param_bits, knot_bits).ops() + 2 * d as u128 * (p as u128 + 1),
+        basis_cost(p, param_bits, knot_bits)
+            .ops()
+            .saturating_add((2 * d as u128).saturating_mul(p as u128 + 1)),
         polynomial_bits(p, span_bits(param_bits, knot_bits), coefficient_bits),
     )
 }

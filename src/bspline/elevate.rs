@@ -35,7 +35,11 @@ impl<T: Scalar> BSplineCurve<T> {
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] unless the knot vector is clamped (first and last knot
-    /// `p + 1` times: the domain is then the whole knot range).
+    /// `p + 1` times: the domain is then the whole knot range); [`Error::TooLarge`] for a
+    /// degree `p + r` above [`Limits::DEFAULT`](crate::limits::Limits::DEFAULT)`.max_degree`,
+    /// or when the estimated work ([`elevate_cost`](Self::elevate_cost), weighed by the size
+    /// of exact numbers) exceeds its `max_work` — before anything is computed;
+    /// [`Error::Overflow`] for a control point whose double overflows.
     ///
     /// ```
     /// use cagd::bspline::BSplineCurve;
@@ -65,7 +69,11 @@ impl<T: Scalar> BSplineCurve<T> {
         if r == 0 {
             return Ok(self.clone());
         }
-        let q = p + r;
+        let q = p.saturating_add(r);
+        let limits = crate::limits::Limits::DEFAULT;
+        limits.check_degree("B-spline degree elevation", q)?;
+        let bits = crate::cost::max_bits(knots).saturating_add(crate::cost::max_bits(self.control().iter()));
+        crate::checked::point_work::<T>("B-spline degree elevation", self.elevate_cost(r, bits))?;
         let d = self.dim();
         // The new knots: each distinct knot r times more.
         let mut new_knots: Vec<T> = Vec::with_capacity(knots.len() * (r + 1));
@@ -121,7 +129,40 @@ impl<T: Scalar> BSplineCurve<T> {
             let point = polar_bezier(piece.control(), &ts);
             control.set_column(i, &point);
         }
+        crate::error::check_overflow("elevated B-spline control points", control.iter())?;
         BSplineCurve::new(q, new_knots, control)
+    }
+
+    /// The work of [`elevate`](Self::elevate)`(r)` on numbers of `bits` bits (the knots' and
+    /// control points'): for each of the `s` non-empty spans, the Bézier form (`p + 1`
+    /// blossoms of `p²` combinations) raised `r` times (`q·d` each, `q = p + r`), then for each
+    /// of the about `s·q + p + 1` new control points a blossom of `q²/2 · d` combinations — in
+    /// all about `s·q³·d` operations, on numbers that grow by the bits of the knots at every
+    /// level ([`polynomial_bits`](crate::cost::polynomial_bits)`(q, bits, bits)`).
+    ///
+    /// ```
+    /// use cagd::bspline::BSplineCurve;
+    /// let c = BSplineCurve::clamped(2, nalgebra::DMatrix::<f64>::zeros(2, 4))?; // 2 spans
+    /// assert!(c.elevate_cost(1, 0).ops() < c.elevate_cost(10, 0).ops());
+    /// assert_eq!(c.elevate_cost(usize::MAX, 0).ops(), u128::MAX);
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn elevate_cost(&self, r: usize, bits: u128) -> crate::cost::Cost {
+        let p = self.degree() as u128;
+        let knots = self.knots().as_slice();
+        let spans = knots.windows(2).filter(|w| w[0] != w[1]).count() as u128;
+        let (q, d) = (p.saturating_add(r as u128), self.dim() as u128);
+        let pieces = spans.saturating_mul(
+            (p + 1)
+                .saturating_mul(p.saturating_mul(p).max(1))
+                .saturating_add((r as u128).saturating_mul(q).saturating_mul(d)),
+        );
+        let points = spans.saturating_mul(q).saturating_add(p + 1);
+        let blossoms = points.saturating_mul(q.saturating_mul(q) / 2 + 1).saturating_mul(3 * d);
+        crate::cost::Cost::new(
+            pieces.saturating_add(blossoms),
+            crate::cost::polynomial_bits(usize::try_from(q).unwrap_or(usize::MAX), bits, bits),
+        )
     }
 
     /// The blossom of the piece on span `k` (`u_k < u_{k+1}`) at `args` (`p` values): de

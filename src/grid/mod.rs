@@ -463,6 +463,7 @@ mod tests {
         for (rows, work) in [(7, 0), (1000, usize::MAX)] {
             let mut out = vec![0.0f64; rows * 3];
             for_each_row(
+                "rows",
                 &mut out,
                 3,
                 work,
@@ -471,11 +472,43 @@ mod tests {
                     *seen += 1;
                     chunk.fill(r as f64);
                 },
-            );
+            )
+            .unwrap();
             for (r, chunk) in out.chunks(3).enumerate() {
                 let r = r as f64;
                 assert_eq!(chunk, &[r, r, r]);
             }
+        }
+    }
+
+    #[test]
+    fn a_non_finite_value_written_is_reported_with_its_first_index() {
+        for (rows, work) in [(7, 0), (1000, usize::MAX)] {
+            let mut out = vec![0.0f64; rows * 3];
+            let err = for_each_row(
+                "rows",
+                &mut out,
+                3,
+                work,
+                || (),
+                |_, r, chunk| {
+                    if r >= 5 {
+                        chunk[1] = f64::MAX * 2.0;
+                    }
+                },
+            )
+            .unwrap_err();
+            assert_eq!(
+                err,
+                Error::Overflow {
+                    what: "rows",
+                    index: 16,
+                    value: f64::INFINITY
+                },
+                "{rows} rows"
+            );
+            // The whole buffer is written all the same.
+            assert!(out[3 * rows - 2].is_infinite());
         }
     }
 

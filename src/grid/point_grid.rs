@@ -56,7 +56,7 @@ impl<T> PointGrid<T> {
         (nu, nv, d): (usize, usize, usize),
         mut f: impl FnMut((usize, usize, usize)) -> T,
     ) -> Result<Self> {
-        let requested = nu as u128 * nv as u128 * d as u128;
+        let requested = (nu as u128 * nv as u128).saturating_mul(d as u128);
         let limit = (isize::MAX as usize / std::mem::size_of::<T>().max(1)) as u128;
         let too_large = || Error::TooLarge {
             what: "point grid",
@@ -67,6 +67,13 @@ impl<T> PointGrid<T> {
         let len = usize::try_from(requested).map_err(|_| too_large())?;
         let mut data = Vec::new();
         data.try_reserve_exact(len).map_err(|_| too_large())?;
+        // An empty grid may still have 2⁴⁰ × 2⁴⁰ rows and columns: no loop over them.
+        if len == 0 {
+            return Ok(PointGrid {
+                shape: [nu, nv, d],
+                data,
+            });
+        }
         for a in 0..nu {
             for b in 0..nv {
                 for c in 0..d {

@@ -384,6 +384,7 @@ impl NurbsCurve<f64> {
                 _ => p[2] + cz * p[3],
             }
         });
+        crate::error::check_overflow("circular arc control points", h.iter())?;
         Self::from_homogeneous(BSplineCurve::new(2, knots, h)?)
     }
 

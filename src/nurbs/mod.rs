@@ -83,6 +83,20 @@ pub(crate) fn finish_homogeneous<T: Scalar>(
         }
     }
     crate::error::check_overflow(what, h.iter())?;
+    // The control points themselves, w P / w: a point near 1.8·10³⁰⁸ over a weight below one.
+    for (c, column) in h.column_iter().enumerate() {
+        let w = column[weight_row].clone();
+        for (r, x) in column.iter().enumerate().filter(|(r, _)| *r != weight_row) {
+            let value = x.clone() / w.clone();
+            if !value.is_finite_value() {
+                return Err(Error::Overflow {
+                    what: "NURBS control points (weighted point / weight)",
+                    index: c * h.nrows() + r,
+                    value: value.to_f64(),
+                });
+            }
+        }
+    }
     Ok(h)
 }
 

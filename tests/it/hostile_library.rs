@@ -12,7 +12,7 @@ use cagd::conversion::{convert, CubicForm};
 use cagd::lagrange::try_chebyshev_nodes;
 use cagd::spline::solve_tridiagonal;
 use cagd::Error;
-use cagd_test_support::hostile_calls::{call, Draws, OPS};
+use cagd_test_support::hostile_calls::{call, Draws, GROUPS, OPS};
 use nalgebra::{DMatrix, DVector};
 
 fn too_large<T: std::fmt::Debug>(r: cagd::Result<T>) -> bool {
@@ -123,13 +123,77 @@ fn node_and_sample_counts_that_cannot_be_held_are_too_large() {
     assert_eq!(try_chebyshev_nodes(3).unwrap(), vec![0.0, 0.5, 1.0]);
 }
 
+/// The longest one call of the property test may take in a test build (the workspace's crates
+/// unoptimised): every refusal happens before the work, and what is allowed is small, so the
+/// slowest calls take a fraction of a second; a call that ran away would take minutes.
+const CALL_TIME_LIMIT: std::time::Duration = std::time::Duration::from_secs(10);
+
+/// One call again, outside `catch_unwind` (so that a panic shows where it happened):
+/// `CAGD_HOSTILE_REPLAY=GROUP,SEED cargo test -p cagd --test it replay_one_call`.
+#[test]
+fn replay_one_call() {
+    let Ok(spec) = std::env::var("CAGD_HOSTILE_REPLAY") else {
+        return;
+    };
+    let (op, seed) = spec.split_once(',').expect("GROUP,SEED");
+    let (op, seed): (usize, u64) = (op.parse().expect("group"), seed.parse().expect("seed"));
+    let start = std::time::Instant::now();
+    call(op, &Draws::seeded(seed));
+    eprintln!("group {op} ({}) seed {seed}: {:?}", GROUPS[op].0, start.elapsed());
+}
+
+/// Many calls of every group, reporting each failure (group, seed, message) and the slowest
+/// call of each group instead of stopping at the first: `CAGD_HOSTILE_SCAN=SEEDS cargo test -p
+/// cagd --test it scan_every_group -- --nocapture`.
+#[test]
+fn scan_every_group() {
+    let Some(seeds) = std::env::var("CAGD_HOSTILE_SCAN")
+        .ok()
+        .and_then(|s| s.parse::<u64>().ok())
+    else {
+        return;
+    };
+    std::panic::set_hook(Box::new(|_| {}));
+    let mut failures = 0;
+    for (op, (name, _)) in GROUPS.iter().enumerate() {
+        let mut slowest = (std::time::Duration::ZERO, 0);
+        let mut seen = std::collections::BTreeSet::new();
+        for seed in 0..seeds {
+            let seed = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ (op as u64);
+            let start = std::time::Instant::now();
+            let outcome = catch_unwind(AssertUnwindSafe(|| call(op, &Draws::seeded(seed))));
+            let elapsed = start.elapsed();
+            if elapsed > slowest.0 {
+                slowest = (elapsed, seed);
+            }
+            if let Err(panic) = outcome {
+                let message = panic
+                    .downcast_ref::<String>()
+                    .cloned()
+                    .or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string()))
+                    .unwrap_or_default();
+                let key: String = message.chars().take(60).collect();
+                if seen.insert(key) {
+                    failures += 1;
+                    eprintln!("FAIL group {op} ({name}) seed {seed}: {message}");
+                }
+            }
+        }
+        eprintln!("group {op} ({name}): slowest {:?} (seed {})", slowest.0, slowest.1);
+    }
+    let _ = std::panic::take_hook();
+    assert_eq!(failures, 0);
+}
+
 proptest::proptest! {
     #![proptest_config(proptest::prelude::ProptestConfig::with_cases(3000))]
 
-    /// Every call returns (an `Err` is fine); none panics. The calls are those of the `library`
-    /// fuzz target (`cagd_test_support::hostile_calls`), here from a seeded stream.
+    /// Every call returns (an `Err` is fine) within a bounded time; none panics, and no `Ok`
+    /// holds a non-finite number (`hostile_calls::check::ok` panics on one). The calls are those
+    /// of the `library` fuzz target (`cagd_test_support::hostile_calls`), here from a seeded
+    /// stream.
     #[test]
-    fn no_public_function_panics_on_any_argument(
+    fn no_public_function_panics_or_returns_a_non_finite_value(
         op in 0..OPS,
         seed in proptest::prelude::any::<u64>(),
     ) {
@@ -137,7 +201,20 @@ proptest::proptest! {
             eprintln!("op {op} seed {seed}");
         }
         let draws = Draws::seeded(seed);
+        let start = std::time::Instant::now();
         let outcome = catch_unwind(AssertUnwindSafe(|| call(op, &draws)));
-        proptest::prop_assert!(outcome.is_ok(), "operation {} with seed {} panicked", op, seed);
+        let elapsed = start.elapsed();
+        if let Err(panic) = &outcome {
+            let message = panic
+                .downcast_ref::<String>()
+                .map(String::as_str)
+                .or_else(|| panic.downcast_ref::<&str>().copied())
+                .unwrap_or("(no message)");
+            proptest::prop_assert!(false, "group {} ({}) with seed {} panicked: {}", op, GROUPS[op].0, seed, message);
+        }
+        proptest::prop_assert!(
+            elapsed < CALL_TIME_LIMIT,
+            "group {} ({}) with seed {} took {:?}", op, GROUPS[op].0, seed, elapsed
+        );
     }
 }

@@ -151,6 +151,7 @@ fn basis_magnitude(p: usize, knots: &[f64], t: f64) -> f64 {
     let n = knots.len() - p - 1;
     let s = find_span(p, n, knots, &t.clamp(knots[p], knots[n])).unwrap();
     basis_functions(p, knots, s, &t)
+        .unwrap()
         .iter()
         .map(|x| x.abs())
         .sum()

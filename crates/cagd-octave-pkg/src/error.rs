@@ -103,7 +103,7 @@ impl Kind {
             | E::EmptyGrid { .. }
             | E::TooFewControlPoints { .. }
             | E::TooFewCurves { .. } => Kind::Shape,
-            E::NonFinite { .. } => Kind::NonFinite,
+            E::NonFinite { .. } | E::Overflow { .. } => Kind::NonFinite,
             E::ParameterOutOfRange { .. } => Kind::Domain,
             E::DecreasingKnots { .. } | E::KnotCount { .. } => Kind::Knots,
             E::NonPositiveWeight { .. } => Kind::Weights,

@@ -487,21 +487,43 @@ impl<T: LiteralScalar> Script<T> {
             .unbind(name)
             .unwrap_or_else(|| DMatrix::from_vec(0, 0, Vec::new()));
         if new_shape != (r, c) {
+            let len = new_shape.0 * new_shape.1;
             let vector_growth = (r <= 1 && new_shape.0 == 1) || (c == 1 && new_shape.1 == 1);
+            // What growing costs: a vector grows at the end of its storage (the new elements,
+            // amortized O(1) each); a matrix gaining a row is copied whole. Both are charged
+            // against the script's budget before the copy, so `x(i,i) = i` for i = 1:2000
+            // (Σ i² ≈ 2.7·10⁹ elements copied, 19 s) stops once its copies exceed the budget.
+            let copied = if vector_growth || m.is_empty() {
+                (len - r * c) as u128
+            } else {
+                len as u128
+            };
+            self.charge_work(copied, at)?;
+            let too_large = || LiteralError::TooLarge {
+                at,
+                what: format!("`{name}` (more memory than can be reserved)"),
+                count: len as u128,
+                limit: max,
+            };
             m = if vector_growth || m.is_empty() {
-                // Column-major storage of a vector grows at its end: amortized O(1).
+                // Column-major storage of a vector grows at its end, in place (amortized).
                 let mut data: Vec<T> = m.data.into();
-                data.resize(new_shape.0 * new_shape.1, T::zero());
+                data.try_reserve(len - data.len()).map_err(|_| too_large())?;
+                data.resize(len, T::zero());
                 DMatrix::from_vec(new_shape.0, new_shape.1, data)
             } else {
-                let old = m;
-                DMatrix::from_fn(new_shape.0, new_shape.1, |i, j| {
-                    if i < r && j < c {
-                        old[(i, j)].clone()
-                    } else {
-                        T::zero()
+                let mut data: Vec<T> = Vec::new();
+                data.try_reserve_exact(len).map_err(|_| too_large())?;
+                for j in 0..new_shape.1 {
+                    for i in 0..new_shape.0 {
+                        data.push(if i < r && j < c {
+                            m[(i, j)].clone()
+                        } else {
+                            T::zero()
+                        });
                     }
-                })
+                }
+                DMatrix::from_vec(new_shape.0, new_shape.1, data)
             };
         }
         m[target] = x;

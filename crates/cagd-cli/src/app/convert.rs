@@ -99,40 +99,40 @@ fn identity<T: LiteralScalar>(k: usize) -> DMatrix<T> {
 }
 
 /// `T` with `X_bezier = X_form · T` (`k` columns).
-fn to_bezier<T: LiteralScalar>(form: Form, k: usize) -> DMatrix<T> {
+fn to_bezier<T: LiteralScalar>(form: Form, k: usize) -> cagd::Result<DMatrix<T>> {
     if form == Form::Bezier {
-        return identity(k);
+        return Ok(identity(k));
     }
-    match form.cubic() {
+    Ok(match form.cubic() {
         Some(c) => conversion_matrix(c, CubicForm::Bezier),
         None => {
-            let inverse = invert(&bezier_to_monomial_matrix::<T>(k - 1))
-                .expect("the Bernstein-to-monomial matrix is triangular with a non-zero diagonal");
+            // Triangular with a non-zero diagonal: invertible; its entries may overflow.
+            let inverse = invert(&bezier_to_monomial_matrix::<T>(k - 1)?)?;
             if form == Form::Algebraic {
                 T::mat_mul(&reversal(k), &inverse)
             } else {
                 inverse
             }
         }
-    }
+    })
 }
 
 /// `T` with `X_form = X_bezier · T` (`k` columns).
-fn from_bezier<T: LiteralScalar>(form: Form, k: usize) -> DMatrix<T> {
+fn from_bezier<T: LiteralScalar>(form: Form, k: usize) -> cagd::Result<DMatrix<T>> {
     if form == Form::Bezier {
-        return identity(k);
+        return Ok(identity(k));
     }
-    match form.cubic() {
+    Ok(match form.cubic() {
         Some(c) => conversion_matrix(CubicForm::Bezier, c),
         None => {
-            let m = bezier_to_monomial_matrix::<T>(k - 1);
+            let m = bezier_to_monomial_matrix::<T>(k - 1)?;
             if form == Form::Algebraic {
                 T::mat_mul(&m, &reversal(k))
             } else {
                 m
             }
         }
-    }
+    })
 }
 
 /// Converts a curve between representations.
@@ -170,8 +170,9 @@ pub fn convert<T: LiteralScalar>(
             bits(x.iter()) + 2 * kk + 8,
         )),
     )?;
-    let into = to_bezier::<T>(cmd.from, k);
-    let out = from_bezier::<T>(cmd.to, k);
+    let degree = "a geometry whose conversion matrices stay within the range of doubles";
+    let into = to_bezier::<T>(cmd.from, k).map_err(lib("GEOMETRY", degree))?;
+    let out = from_bezier::<T>(cmd.to, k).map_err(lib("GEOMETRY", degree))?;
     let t = T::mat_mul(&into, &out);
     let result = T::mat_mul(&x, &t);
     let bezier = BezierCurve::new(T::mat_mul(&x, &into)).map_err(lib(

@@ -245,8 +245,9 @@ pub fn integrate<T: LiteralScalar>(
         "CONTROL",
         "control points b_0..b_n, one per column (or per row with --rows)",
     ))?;
-    let anti = bezier_antiderivative(&curve);
-    let integral = bezier_integral(&curve);
+    let sums = "control points whose integral stays within the range of doubles";
+    let anti = bezier_antiderivative(&curve).map_err(lib("CONTROL", sums))?;
+    let integral = bezier_integral(&curve).map_err(lib("CONTROL", sums))?;
     if cmd.steps.steps {
         report.push(
             "factor",

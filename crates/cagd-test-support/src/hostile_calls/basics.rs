@@ -85,11 +85,11 @@ pub fn continuity(rng: &Draws) {
 /// `linspace` of arbitrary ends and counts; point grids of arbitrary shapes.
 pub fn grids(rng: &Draws) {
     let (a, b) = (value(rng), value(rng));
-    ok("linspace::try_linspace", cagd::linspace::try_linspace(a, b, size(rng)));
+    ok("linspace::try_linspace", cagd::linspace::try_linspace(a, b, memory(rng)));
     if a.is_finite() && b.is_finite() {
         total("linspace::linspace", cagd::linspace(a, b, small(rng)));
     }
-    let shape = (size(rng), size(rng), size(rng));
+    let shape = (memory(rng), memory(rng), memory(rng));
     ok("grid::PointGrid::try_from_elem", PointGrid::try_from_elem(shape, 0.0));
     let small_shape = (small(rng), small(rng), small(rng));
     let g = total("grid::PointGrid::from_elem", PointGrid::from_elem(small_shape, mostly_finite(rng)));
@@ -130,7 +130,7 @@ pub fn numbers(rng: &Draws) {
     total("tolerance::Tolerance::is_valid", tol.is_valid());
     let d = small(rng);
     total("tolerance::Tolerance::gap", tol.gap(&vector(rng, d), &vector(rng, d)));
-    let corner = rng.pick(&[Corner::P1, Corner::P2, Corner::P3, Corner::P4]);
+    let corner = rng.pick(&Corner::ALL);
     total("tolerance::Corner::uv", corner.uv());
     total("tolerance::Corner::index", corner.index());
     let mut limits = Limits::default();

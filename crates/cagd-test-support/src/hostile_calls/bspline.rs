@@ -13,7 +13,7 @@ use super::draws::*;
 
 /// Knot vectors, spans and basis functions of arbitrary degrees, counts and knots.
 pub fn bases(rng: &Draws) {
-    let (p, n) = (size(rng), size(rng));
+    let (p, n) = (size(rng), memory(rng));
     ok("bspline::KnotVector::clamped_uniform", KnotVector::<f64>::clamped_uniform(p, n));
     ok("bspline::KnotVector::uniform", KnotVector::<f64>::uniform(p, n));
     let k = knots(rng, small(rng) + small(rng));
@@ -172,7 +172,7 @@ pub fn surfaces(rng: &Draws) {
     total("bspline::BSplineSurface::domain", s.domain());
     total("bspline::BSplineSurface::eval", s.eval(u, v));
     ok("bspline::BSplineSurface::try_eval", s.try_eval(u, v));
-    grid_into(rng, "bspline::BSplineSurface::eval_grid_into", s.dim(), |us, vs, out| s.eval_grid_into(us, vs, out));
+    grid_into(rng, "bspline::BSplineSurface::eval_grid_into", s.coordinates().len(), |us, vs, out| s.eval_grid_into(us, vs, out));
     surface_methods(rng, "bspline::BSplineSurface", &s);
 }
 

@@ -167,6 +167,12 @@ impl Finite for LebesgueEstimate {
     }
 }
 
+impl Finite for cagd::interpolation::ParametricInterpolant<f64> {
+    fn all_finite(&self) -> bool {
+        self.points().all_finite() && self.algebraic().all_finite() && self.params().to_vec().all_finite()
+    }
+}
+
 impl Finite for CubicSpline<f64> {
     fn all_finite(&self) -> bool {
         self.params().to_vec().all_finite()

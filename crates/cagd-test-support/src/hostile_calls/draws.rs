@@ -143,13 +143,28 @@ pub fn mostly_finite(rng: &Draws) -> f64 {
     }
 }
 
-/// A size or index: mostly small, sometimes at or near `usize::MAX` or far beyond any limit.
+/// A size or index: mostly small, sometimes at or near `usize::MAX`, or just above every
+/// default limit (10⁷ + 1: more samples, a higher degree, more grid points than
+/// `Limits::DEFAULT` allows). Sizes between are left out on purpose: what the limits allow
+/// there runs for seconds in a test build, which is the caller's to pay for, not a finding.
 pub fn size(rng: &Draws) -> usize {
     match rng.below(12) {
         0 => usize::MAX,
         1 => usize::MAX / 2 + 1,
         2 => 1 << 40,
-        3 => 1_000_000,
+        3 => 10_000_001,
+        _ => rng.below(6),
+    }
+}
+
+/// A size the callee allocates: small, or one no machine can hold (`usize::MAX`, 2⁴⁰, …),
+/// which must be refused before anything is allocated (sizes in between are allowed and
+/// merely slow).
+pub fn memory(rng: &Draws) -> usize {
+    match rng.below(10) {
+        0 => usize::MAX,
+        1 => usize::MAX / 2 + 1,
+        2 => 1 << 40,
         _ => rng.below(6),
     }
 }
@@ -205,7 +220,7 @@ pub fn ordered(rng: &Draws, n: usize) -> Vec<f64> {
     match rng.below(7) {
         0 => (0..n).map(|k| k as f64 / last).collect(),
         1 => (0..n).map(|k| f64::from_bits(k as u64 * (1 + rng.below(3) as u64))).collect(),
-        2 => (0..n).map(|k| -1e308 + 2e308 * (k as f64 / last)).map(|x| x.clamp(-1e308, 1e308)).collect(),
+        2 => (0..n).map(|k| -1e308 + 1e308 * (2.0 * k as f64 / last)).map(|x| x.clamp(-1e308, 1e308)).collect(),
         3 => {
             let mut x = 10.0 * rng.signed();
             (0..n)
