@@ -154,7 +154,7 @@ impl Cost {
 /// assert_eq!(max_bits(&q), 8 + 9);
 /// ```
 pub fn max_bits<'a, T: Scalar + 'a>(values: impl IntoIterator<Item = &'a T>) -> u128 {
-    if !crate::grid::exact::is_rational::<T>() {
+    if !T::IS_EXACT {
         return 0;
     }
     values

@@ -295,7 +295,7 @@ pub enum Error {
     /// near ±1.7·10³⁰⁸, an interval `[−10³⁰⁸, 10³⁰⁸]` whose width overflows, knots or nodes
     /// 5·10⁻³²⁴ apart, weights all 10³⁰⁸). Every `Result`-returning function checks what it
     /// computes ([`check_overflow`]) instead of returning a non-finite value; exact values are
-    /// converted to doubles the same way ([`crate::scalar::to_finite_f64`]). `what` names the
+    /// converted to doubles the same way ([`crate::exact::to_finite_f64`]). `what` names the
     /// quantity, `index` its first non-finite entry (column-major, as Octave counts).
     #[error(
         "{what}: value at index {index} is not a finite double ({value}): the input's magnitudes are too large (or too close together) for double precision"
@@ -468,7 +468,7 @@ pub fn check_overflow<'a, T: Scalar>(
     what: &'static str,
     values: impl IntoIterator<Item = &'a T>,
 ) -> Result<()> {
-    if crate::grid::exact::is_rational::<T>() {
+    if T::IS_EXACT {
         return Ok(());
     }
     for (index, value) in values.into_iter().enumerate() {
@@ -513,7 +513,7 @@ where
 /// assert!(check_spacing("knots", &[-1e308, 0.0, 1e308]).is_err());
 /// ```
 pub fn check_spacing<T: Scalar>(what: &'static str, values: &[T]) -> Result<()> {
-    if crate::grid::exact::is_rational::<T>() || values.len() < 2 {
+    if T::IS_EXACT || values.len() < 2 {
         return Ok(());
     }
     let last = values.len() - 1;

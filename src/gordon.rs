@@ -693,8 +693,18 @@ impl<T: Scalar, C: Curve<T>> Surface<T> for GordonSurface<C, T> {
                 })
                 .collect()
         };
-        let at_u = values(&self.curves_at_u, &self.domains_at_u, &v, "Gordon curve g(u_i, v)")?;
-        let at_v = values(&self.curves_at_v, &self.domains_at_v, &u, "Gordon curve g(u, v_j)")?;
+        let at_u = values(
+            &self.curves_at_u,
+            &self.domains_at_u,
+            &v,
+            "Gordon curve g(u_i, v)",
+        )?;
+        let at_v = values(
+            &self.curves_at_v,
+            &self.domains_at_v,
+            &u,
+            "Gordon curve g(u, v_j)",
+        )?;
         let (lu, lv) = (self.u_basis.basis(&u), self.v_basis.basis(&v));
         let g = self.combine(&lu, &lv, &at_u, &at_v).g;
         crate::checked::point("Gordon surface point", self.dim(), g)
@@ -795,7 +805,10 @@ pub(crate) fn gordon_bezier_net<T: Scalar>(
             })
         })
         .collect::<Vec<_>>();
-    crate::error::check_overflow("Bézier net of a Gordon surface", coords.iter().flat_map(|c| c.iter()))?;
+    crate::error::check_overflow(
+        "Bézier net of a Gordon surface",
+        coords.iter().flat_map(|c| c.iter()),
+    )?;
     BezierPatch::new(coords)
 }
 

@@ -12,7 +12,9 @@
 use nalgebra::{DMatrix, DVector};
 
 use crate::error::{check_finite, Error, Result};
-use crate::lagrange::{basis_product_unchecked, check_distinct_nodes, power_coefficients_unchecked};
+use crate::lagrange::{
+    basis_product_unchecked, check_distinct_nodes, power_coefficients_unchecked,
+};
 use crate::param::Curve;
 use crate::scalar::Scalar;
 
@@ -87,7 +89,11 @@ impl<T: Scalar> LagrangePolynomial<T> {
         crate::checked::point_work::<T>(
             "Lagrange polynomial coefficients",
             crate::cost::Cost::new(m.saturating_pow(3).saturating_mul(3), 0).grown(
-                crate::cost::polynomial_bits(n, 0, crate::cost::max_bits(self.xs.iter().chain(&self.ys))),
+                crate::cost::polynomial_bits(
+                    n,
+                    0,
+                    crate::cost::max_bits(self.xs.iter().chain(&self.ys)),
+                ),
             ),
         )?;
         let mut c = vec![T::zero(); n];

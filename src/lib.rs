@@ -42,7 +42,7 @@
 //! [`Error::Overflow`], naming the quantity, instead of an `Ok` holding `inf` or NaN (the
 //! checks live in one place each: [`error::check_overflow`], [`error::check_spacing`], the
 //! grid kernels' row scan, the checked `try_eval` of every curve and surface). Exact results
-//! are converted to doubles by [`scalar::to_finite_f64`], which names a value whose double
+//! are converted to doubles by [`exact::to_finite_f64`], which names a value whose double
 //! overflows.
 //!
 //! **Resource limits** ([`limits`], a plain value passed to what needs it) refuse sizes that
@@ -66,6 +66,7 @@ pub mod conversion;
 pub mod coons;
 pub mod cost;
 pub mod error;
+pub mod exact;
 pub mod gordon;
 pub mod grid;
 pub mod hermite;

@@ -67,7 +67,7 @@
 //!   [`BSplineCurve::elevate`](crate::BSplineCurve::elevate), the `n` of
 //!   [`bezier_to_monomial_matrix`](crate::conversion::bezier_to_monomial_matrix) and
 //!   [`bernstein::elevate`](crate::bernstein::elevate), the exponent of
-//!   [`rational_from_decimal`](crate::scalar::rational_from_decimal), the samples of
+//!   [`rational_from_decimal`](crate::exact::rational_from_decimal), the samples of
 //!   [`Lagrange::lebesgue_constant`](crate::lagrange::Lagrange::lebesgue_constant) — against
 //!   `max_degree`, `max_samples` or `max_expression_bytes`, and memory sized by such a number
 //!   is reserved with `try_reserve` ([`Error::TooLarge`] if it cannot be);

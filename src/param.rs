@@ -388,13 +388,13 @@ where
     /// The closure's value at `t` in the domain, checked: a point of another dimension is an
     /// [`Error::ShapeMismatch`], a non-finite coordinate an [`Error::Overflow`].
     fn try_eval(&self, t: T) -> Result<DVector<T>> {
-        crate::checked::try_eval_curve(self, "closure curve point", t)
+        try_eval_curve(self, "closure curve point", t)
     }
     fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
         self.df.as_ref().map(|df| df(t))
     }
     fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
-        crate::checked::eval_many_into(self, "closure curve points", ts, out)
+        eval_many_into(self, "closure curve points", ts, out)
     }
 }
 
@@ -559,11 +559,11 @@ impl<T: Scalar> Curve<T> for SampledCurve<T> {
     }
 
     fn try_eval(&self, t: T) -> Result<DVector<T>> {
-        crate::checked::try_eval_curve(self, "sampled curve point", t)
+        try_eval_curve(self, "sampled curve point", t)
     }
 
     fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
-        crate::checked::eval_many_into(self, "sampled curve points", ts, out)
+        eval_many_into(self, "sampled curve points", ts, out)
     }
 
     fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
@@ -677,7 +677,7 @@ impl<T: Scalar, C: Curve<T>> Curve<T> for OnUnitInterval<C, T> {
     /// closure that returns the wrong length) becomes a point of NaNs of the right dimension,
     /// so that no construction indexes past it (their `try_eval` then refuse the point).
     fn eval(&self, s: T) -> DVector<T> {
-        crate::checked::of_dim(self.curve.dim(), self.curve.eval(self.parameter(s)))
+        of_dim(self.curve.dim(), self.curve.eval(self.parameter(s)))
     }
 
     fn try_eval(&self, s: T) -> Result<DVector<T>> {
@@ -688,7 +688,7 @@ impl<T: Scalar, C: Curve<T>> Curve<T> for OnUnitInterval<C, T> {
 
     fn eval_derivative(&self, s: T) -> Option<DVector<T>> {
         let d = self.curve.eval_derivative(self.parameter(s))?;
-        let d = crate::checked::of_dim(self.curve.dim(), d);
+        let d = of_dim(self.curve.dim(), d);
         if self.is_identity() {
             return Some(d);
         }
@@ -741,8 +741,7 @@ pub(crate) fn usable_domain<T: Scalar, C: Curve<T> + ?Sized>(
     let (start, end) = curve.domain();
     // The width b − a must be a finite double too: `[−10³⁰⁸, 10³⁰⁸]` has none.
     let width = end.clone() - start.clone();
-    if start.is_finite_value() && end.is_finite_value() && start < end && width.is_finite_value()
-    {
+    if start.is_finite_value() && end.is_finite_value() && start < end && width.is_finite_value() {
         Ok((start, end))
     } else {
         Err(Error::UnusableDomain {
@@ -777,4 +776,84 @@ pub(crate) fn check_parameter<T: Scalar>(
         });
     }
     Ok(())
+}
+
+// ------------------------------------------------------------------------------------------
+// The checks of every fallible evaluation of a curve (re-exported by `crate::checked`).
+
+/// `point` if it has `dim` coordinates, all finite.
+///
+/// # Errors
+/// [`Error::ShapeMismatch`] for another number of coordinates, [`Error::Overflow`] for a
+/// non-finite one.
+pub(crate) fn point<T: Scalar>(
+    what: &'static str,
+    dim: usize,
+    point: DVector<T>,
+) -> Result<DVector<T>> {
+    if point.len() != dim {
+        return Err(Error::ShapeMismatch {
+            what,
+            expected: format!("{dim} coordinates"),
+            found: format!("{} coordinates", point.len()),
+        });
+    }
+    crate::error::check_overflow(what, point.iter())?;
+    Ok(point)
+}
+
+/// What `Curve::try_eval` does for the crate's curves: the parameter checked against the
+/// domain, the curve evaluated, the point checked ([`point`]).
+///
+/// # Errors
+/// [`Error::NonFinite`], [`Error::ParameterOutOfRange`], and those of [`point`].
+pub(crate) fn try_eval_curve<T: Scalar, C: Curve<T> + ?Sized>(
+    curve: &C,
+    what: &'static str,
+    t: T,
+) -> Result<DVector<T>> {
+    check_parameter(what, &t, &curve.domain())?;
+    point(what, curve.dim(), curve.eval(t))
+}
+
+/// `Curve::eval_many_into` by one evaluation per parameter: finite parameters (anywhere: the
+/// curve continues outside its domain), every point of the right dimension and finite.
+///
+/// # Errors
+/// [`Error::NonFinite`] for a NaN or infinite parameter, [`Error::ShapeMismatch`] for a
+/// buffer of another length, and those of [`point`].
+pub(crate) fn eval_many_into<T: Scalar, C: Curve<T> + ?Sized>(
+    curve: &C,
+    what: &'static str,
+    ts: &[T],
+    out: &mut [T],
+) -> Result<()> {
+    crate::error::check_finite(what, ts.iter())?;
+    let d = curve.dim();
+    let len = crate::grid::grid_len(what, &[ts.len(), d])?;
+    crate::grid::check_len(what, len, out)?;
+    if d == 0 {
+        return Ok(());
+    }
+    for (t, p) in ts.iter().zip(out.chunks_exact_mut(d)) {
+        p.clone_from_slice(point(what, d, curve.eval(t.clone()))?.as_slice());
+    }
+    Ok(())
+}
+
+/// `point` if it has `dim` coordinates, else `dim` NaNs (for `f64`; zeros for exact numbers,
+/// which have no NaN): how the infallible evaluations of constructions keep a user's curve
+/// that returns a point of another dimension from making them index past it.
+pub(crate) fn of_dim<T: Scalar>(dim: usize, point: DVector<T>) -> DVector<T> {
+    if point.len() == dim {
+        return point;
+    }
+    let nan = T::from_f64(0.0).map_or_else(T::zero, |z| {
+        if crate::grid::exact::is_rational::<T>() {
+            z
+        } else {
+            T::from_ratio(0, 1) / T::from_ratio(0, 1)
+        }
+    });
+    DVector::from_element(dim, nan)
 }

@@ -150,7 +150,10 @@ pub fn solve_tridiagonal<T: Scalar>(
         });
     }
     check_finite("tridiagonal system", sub.iter().chain(diag).chain(sup))?;
-    check_finite("tridiagonal right-hand sides", rhs.iter().flat_map(|r| r.iter()))?;
+    check_finite(
+        "tridiagonal right-hand sides",
+        rhs.iter().flat_map(|r| r.iter()),
+    )?;
     let mut c = vec![T::zero(); n];
     let mut d: Vec<DVector<T>> = Vec::with_capacity(n);
     for k in 0..n {
@@ -216,7 +219,10 @@ pub fn solve_cyclic_tridiagonal<T: Scalar>(
             found: format!("{}, {}, {}", sub.len(), diag.len(), sup.len()),
         });
     }
-    check_finite("cyclic tridiagonal system", sub.iter().chain(diag).chain(sup))?;
+    check_finite(
+        "cyclic tridiagonal system",
+        sub.iter().chain(diag).chain(sup),
+    )?;
     let (alpha, beta) = (sub[0].clone(), sup[n - 1].clone());
     let gamma = -diag[0].clone();
     if gamma.is_zero() {
@@ -253,7 +259,10 @@ pub fn solve_cyclic_tridiagonal<T: Scalar>(
             DVector::from_fn(dim, |r, _| xk[r].clone() - fact[r].clone() * zk[0].clone())
         })
         .collect();
-    check_overflow("cyclic tridiagonal solution", solution.iter().flat_map(|r| r.iter()))?;
+    check_overflow(
+        "cyclic tridiagonal solution",
+        solution.iter().flat_map(|r| r.iter()),
+    )?;
     Ok(solution)
 }
 

@@ -76,7 +76,11 @@ pub fn elevate<T: Scalar>(a: &[T], to: usize) -> Result<Vec<T>> {
     crate::error::check_finite("Bernstein coefficients", a.iter())?;
     // (to + 1)² / 2 operations at most; each level of `i/m` weights adds about log₂ m bits.
     let levels = to.saturating_sub(a.len().saturating_sub(1)) as u128;
-    let bits = crate::cost::polynomial_bits(to, u128::from(usize::BITS - to.leading_zeros()), crate::cost::max_bits(a));
+    let bits = crate::cost::polynomial_bits(
+        to,
+        u128::from(usize::BITS - to.leading_zeros()),
+        crate::cost::max_bits(a),
+    );
     crate::checked::point_work::<T>(
         "Bernstein degree elevation",
         Cost::new(levels.saturating_mul(3 * (to as u128 + 1)), bits),
@@ -176,9 +180,15 @@ mod tests {
         assert_eq!(elevate(&[2.0], 3).unwrap(), vec![2.0; 4]);
         assert_eq!(elevate(&[1.0, 2.0, 3.0], 1).unwrap(), vec![1.0, 2.0, 3.0]);
         assert!(elevate::<f64>(&[], 3).unwrap().is_empty());
-        assert!(matches!(elevate(&[1.0], 1001), Err(crate::Error::TooLarge { .. })));
+        assert!(matches!(
+            elevate(&[1.0], 1001),
+            Err(crate::Error::TooLarge { .. })
+        ));
         assert!(matches!(elevate(&[f64::MAX, -f64::MAX], 3), Ok(_)));
-        assert!(matches!(elevate(&[f64::NAN], 3), Err(crate::Error::NonFinite { .. })));
+        assert!(matches!(
+            elevate(&[f64::NAN], 3),
+            Err(crate::Error::NonFinite { .. })
+        ));
         assert!(product::<f64>(&[], &[1.0]).is_empty());
     }
 }

@@ -626,7 +626,10 @@ impl<T: Scalar> BezierCurve<T> {
         check_interval("right half of a subdivided Bézier curve", &u, &self.b)?;
         let scheme = self.scheme(u.clone());
         let (left, right) = (scheme.left_control(), scheme.right_control());
-        check_overflow("subdivided Bézier curve control points", left.iter().chain(right.iter()))?;
+        check_overflow(
+            "subdivided Bézier curve control points",
+            left.iter().chain(right.iter()),
+        )?;
         let left = BezierCurve::from_valid(left, self.a.clone(), u.clone());
         let right = BezierCurve::from_valid(right, u, self.b.clone());
         Ok((left, right))

@@ -534,8 +534,7 @@ impl<T: Scalar> BezierPatch<T> {
     pub fn try_eval_grid(&self, us: &[T], vs: &[T]) -> Result<PointGrid<T>> {
         check_params("Bézier patch u grid", us)?;
         check_params("Bézier patch v grid", vs)?;
-        let mut grid =
-            PointGrid::try_from_elem((us.len(), vs.len(), self.dim()), T::zero())?;
+        let mut grid = PointGrid::try_from_elem((us.len(), vs.len(), self.dim()), T::zero())?;
         self.check_grid_work(us, vs)?;
         self.fill_grid(us, vs, grid.as_mut_slice())?;
         Ok(grid)
@@ -546,7 +545,11 @@ impl<T: Scalar> BezierPatch<T> {
         let control_bits = crate::cost::max_bits(self.coords.iter().flat_map(|x| x.iter()));
         crate::checked::point_work::<T>(
             "Bézier patch grid point",
-            self.grid_cost(crate::cost::max_bits(us), crate::cost::max_bits(vs), control_bits),
+            self.grid_cost(
+                crate::cost::max_bits(us),
+                crate::cost::max_bits(vs),
+                control_bits,
+            ),
         )
     }
 

@@ -108,7 +108,9 @@ pub(crate) fn extended_span<T: Scalar>(
 pub fn basis_functions<T: Scalar>(p: usize, knots: &[T], span: usize, u: &T) -> Result<Vec<T>> {
     crate::error::check_finite("B-spline parameter", std::iter::once(u))?;
     crate::error::check_finite("knot vector", knots.iter())?;
-    let reads = span.checked_add(p).filter(|&last| last < knots.len() && p <= span + 1);
+    let reads = span
+        .checked_add(p)
+        .filter(|&last| last < knots.len() && p <= span + 1);
     if reads.is_none() {
         return Err(crate::Error::InvalidArgument {
             what: "B-spline basis span",
@@ -213,14 +215,20 @@ pub fn cox_de_boor<T: Scalar>(i: usize, p: usize, knots: &[T], u: &T) -> Result<
     crate::error::check_finite("knot vector", knots[i..=i + p + 1].iter())?;
     // The recursion makes 2^(p+1) − 1 calls, each reading up to the whole knot vector at the
     // bottom: refused before it starts when that exceeds the default work limit.
-    let calls = 1u128.checked_shl(p.saturating_add(1).min(127) as u32).unwrap_or(u128::MAX);
+    let calls = 1u128
+        .checked_shl(p.saturating_add(1).min(127) as u32)
+        .unwrap_or(u128::MAX);
     crate::checked::point_work::<T>(
         "Cox-de Boor recursion",
-        crate::cost::Cost::new(calls.saturating_mul(4 + knots.len() as u128 - i as u128), 0)
-            .grown(crate::cost::polynomial_bits(p, u.size_in_bits(), crate::cost::max_bits(knots))),
+        crate::cost::Cost::new(calls.saturating_mul(4 + knots.len() as u128 - i as u128), 0).grown(
+            crate::cost::polynomial_bits(p, u.size_in_bits(), crate::cost::max_bits(knots)),
+        ),
     )?;
-    crate::error::finite("Cox-de Boor basis function", [cox_de_boor_unchecked(i, p, knots, u)])
-        .map(|[v]| v)
+    crate::error::finite(
+        "Cox-de Boor basis function",
+        [cox_de_boor_unchecked(i, p, knots, u)],
+    )
+    .map(|[v]| v)
 }
 
 /// [`cox_de_boor`] for `i + p + 1 < knots.len()`.

@@ -2,7 +2,9 @@
 
 use nalgebra::{DMatrix, DVector};
 
-use super::basis::{basis_all, basis_values, check_in_domain, curve_point_cost, extended_span, span_of};
+use super::basis::{
+    basis_all, basis_values, check_in_domain, curve_point_cost, extended_span, span_of,
+};
 use super::batch::curve_points_fast_into;
 use super::grid::curve_points_into;
 use super::knots::{check_knots, KnotVector};
@@ -182,7 +184,11 @@ impl<T: Scalar> BSplineCurve<T> {
         let s = span_of(p, self.control.ncols(), knots, &u)?;
         self.check_point_work(u.size_in_bits())?;
         let n = basis_values(p, knots, s, &u);
-        crate::checked::point("B-spline curve point", self.dim(), combine(&self.control, s - p, &n))
+        crate::checked::point(
+            "B-spline curve point",
+            self.dim(),
+            combine(&self.control, s - p, &n),
+        )
     }
 
     /// One point's work ([`curve_point_cost`]) at a parameter of `param_bits` bits against
@@ -247,7 +253,11 @@ impl<T: Scalar> BSplineCurve<T> {
                 d[j] = blend(&d[j - 1], one_minus, &d[j], alpha);
             }
         }
-        crate::checked::point("B-spline curve point (de Boor)", self.dim(), d.swap_remove(p))
+        crate::checked::point(
+            "B-spline curve point (de Boor)",
+            self.dim(),
+            d.swap_remove(p),
+        )
     }
 
     /// The points at the parameters `us`, one per column (`d × us.len()`), by
@@ -506,7 +516,10 @@ impl<T: Scalar> BSplineCurve<T> {
             s -= 1;
         }
         let control = DMatrix::from_fn(c.nrows(), ic.len(), |row, col| ic[col][row].clone());
-        crate::error::check_overflow("B-spline control points after knot insertion", control.iter())?;
+        crate::error::check_overflow(
+            "B-spline control points after knot insertion",
+            control.iter(),
+        )?;
         Ok(BSplineCurve {
             degree: d,
             knots: KnotVector::new(ik)?,

@@ -72,7 +72,8 @@ impl<T: Scalar> BSplineCurve<T> {
         let q = p.saturating_add(r);
         let limits = crate::limits::Limits::DEFAULT;
         limits.check_degree("B-spline degree elevation", q)?;
-        let bits = crate::cost::max_bits(knots).saturating_add(crate::cost::max_bits(self.control().iter()));
+        let bits = crate::cost::max_bits(knots)
+            .saturating_add(crate::cost::max_bits(self.control().iter()));
         crate::checked::point_work::<T>("B-spline degree elevation", self.elevate_cost(r, bits))?;
         let d = self.dim();
         // The new knots: each distinct knot r times more.
@@ -158,7 +159,9 @@ impl<T: Scalar> BSplineCurve<T> {
                 .saturating_add((r as u128).saturating_mul(q).saturating_mul(d)),
         );
         let points = spans.saturating_mul(q).saturating_add(p + 1);
-        let blossoms = points.saturating_mul(q.saturating_mul(q) / 2 + 1).saturating_mul(3 * d);
+        let blossoms = points
+            .saturating_mul(q.saturating_mul(q) / 2 + 1)
+            .saturating_mul(3 * d);
         crate::cost::Cost::new(
             pieces.saturating_add(blossoms),
             crate::cost::polynomial_bits(usize::try_from(q).unwrap_or(usize::MAX), bits, bits),

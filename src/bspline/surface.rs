@@ -143,7 +143,13 @@ impl<T: Scalar> BSplineSurface<T> {
     /// the default limit ([`crate::checked::point_work`]).
     fn check_point_work(&self, u_bits: u128, v_bits: u128) -> Result<()> {
         let (p, q) = self.degrees;
-        let knot_bits = crate::cost::max_bits(self.knots.0.as_slice().iter().chain(self.knots.1.as_slice()));
+        let knot_bits = crate::cost::max_bits(
+            self.knots
+                .0
+                .as_slice()
+                .iter()
+                .chain(self.knots.1.as_slice()),
+        );
         let control_bits = crate::cost::max_bits(self.coords.iter().flat_map(|x| x.iter()));
         let products = 2 * (p as u128 + 1) * (q as u128 + 1) * self.coords.len() as u128;
         let cost = basis_cost(p, u_bits, knot_bits)

@@ -64,10 +64,7 @@ pub fn try_cox_de_boor_triangle<T: Scalar>(p: usize, knots: &[T], u: &T) -> Resu
     if p.checked_add(2).is_none_or(|needed| needed > knots.len()) {
         return Err(Error::InvalidArgument {
             what: "Cox-de Boor triangle",
-            message: format!(
-                "degree {p} needs at least p + 2 knots, got {}",
-                knots.len()
-            ),
+            message: format!("degree {p} needs at least p + 2 knots, got {}", knots.len()),
         });
     }
     check_finite("Cox-de Boor parameter", std::iter::once(u))?;

@@ -24,7 +24,7 @@ use crate::scalar::Scalar;
 /// # Errors
 /// [`Error::TooLarge`] for `n` above [`Limits::DEFAULT`]`.max_degree` (the matrix has
 /// `(n+1)²` entries); [`Error::Overflow`] in `f64` when an entry exceeds the range of doubles
-/// (entries reach about `3^n`: from degree 647 on).
+/// (entries reach about `3^n`: beyond the range of doubles from degree 653 on).
 ///
 /// ```
 /// use cagd::conversion::bezier_to_monomial_matrix;
@@ -37,7 +37,10 @@ use crate::scalar::Scalar;
 /// ```
 pub fn bezier_to_monomial_matrix<T: Scalar>(n: usize) -> Result<DMatrix<T>> {
     let mut m = square("Bézier-to-monomial matrix", n)?;
-    let top = pascal_row(n).iter().map(T::from_biguint).collect::<Vec<T>>();
+    let top = pascal_row(n)
+        .iter()
+        .map(T::from_biguint)
+        .collect::<Vec<T>>();
     for (j, row) in PascalRows::new().take(n + 1).enumerate() {
         for (i, c) in row.iter().enumerate() {
             let c = top[j].clone() * T::from_biguint(c);
@@ -72,7 +75,10 @@ pub fn bezier_to_monomial_matrix<T: Scalar>(n: usize) -> Result<DMatrix<T>> {
 /// ```
 pub fn monomial_to_bezier_matrix<T: Scalar>(n: usize) -> Result<DMatrix<T>> {
     let mut m = square("monomial-to-Bézier matrix", n)?;
-    let top = pascal_row(n).iter().map(T::from_biguint).collect::<Vec<T>>();
+    let top = pascal_row(n)
+        .iter()
+        .map(T::from_biguint)
+        .collect::<Vec<T>>();
     check_overflow("monomial-to-Bézier matrix", top.iter())?;
     for (i, row) in PascalRows::new().take(n + 1).enumerate() {
         for (j, c) in row.iter().enumerate() {

@@ -593,7 +593,11 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> Surface<T> for BicubicCoonsPatch<C, D,
             checked(&du1, "cross-boundary curve x_u(1,v)", &v)?,
             checked(&d2, "Coons boundary curve d2", &v)?,
         ];
-        crate::checked::point("bicubic Coons patch point", dim, self.combine(&u, &v, &at_u, &at_v))
+        crate::checked::point(
+            "bicubic Coons patch point",
+            dim,
+            self.combine(&u, &v, &at_u, &at_v),
+        )
     }
 
     fn eval_grid_into(&self, us: &[T], vs: &[T], out: &mut [T]) -> Result<()> {

@@ -319,13 +319,7 @@ impl<T: Scalar, C: Curve<T>> CoonsBoundary<C, T> {
     /// `[0, 1]`; a curve's own error (named after it: `"Coons boundary curve c1"`, …) for a
     /// point of another dimension, a non-finite point or too much work;
     /// [`Error::Overflow`] for a blended point whose double overflows.
-    pub(crate) fn try_blend(
-        &self,
-        u: &T,
-        v: &T,
-        f: &(T, T),
-        g: &(T, T),
-    ) -> Result<DVector<T>> {
+    pub(crate) fn try_blend(&self, u: &T, v: &T, f: &(T, T), g: &(T, T)) -> Result<DVector<T>> {
         let unit = (T::zero(), T::one());
         crate::param::check_parameter("Coons patch parameter u", u, &unit)?;
         crate::param::check_parameter("Coons patch parameter v", v, &unit)?;
@@ -337,7 +331,10 @@ impl<T: Scalar, C: Curve<T>> CoonsBoundary<C, T> {
             "Coons boundary curve d2",
         ];
         let mut values: [DVector<T>; 4] = Default::default();
-        for (k, (curve, t)) in [(&c1, u), (&c2, u), (&d1, v), (&d2, v)].into_iter().enumerate() {
+        for (k, (curve, t)) in [(&c1, u), (&c2, u), (&d1, v), (&d2, v)]
+            .into_iter()
+            .enumerate()
+        {
             values[k] = curve
                 .try_eval(t.clone())
                 .map_err(|e| crate::checked::named(names[k], e))?;

@@ -64,6 +64,13 @@ pub(crate) fn try_filled<T: Clone>(what: &'static str, len: usize, value: T) -> 
     Ok(v)
 }
 
+/// [`try_filled`] for the infallible functions of the crate: a length that cannot be held is a
+/// panic naming it (what their `# Panics` sections document), never an abort.
+pub(crate) fn filled<T: Clone>(what: &'static str, len: Option<usize>, value: T) -> Vec<T> {
+    let len = len.unwrap_or_else(|| panic!("{what}: the number of values overflows usize"));
+    try_filled(what, len, value).unwrap_or_else(|e| panic!("{e}"))
+}
+
 /// `rows · row_len` without overflow (an overflowing request is a shape error, not a panic).
 pub(crate) fn grid_len(what: &'static str, sizes: &[usize]) -> Result<usize> {
     sizes

@@ -268,7 +268,10 @@ impl<T: Scalar> Lagrange<T> {
         Limits::DEFAULT.check_samples("Lebesgue constant samples", samples)?;
         crate::checked::point_work::<f64>(
             "Lebesgue constant",
-            Cost::new((samples as u128).saturating_mul(4 * self.nodes.len() as u128), 0),
+            Cost::new(
+                (samples as u128).saturating_mul(4 * self.nodes.len() as u128),
+                0,
+            ),
         )?;
         let estimate = self.lebesgue_estimate(a, b, samples);
         if !estimate.value.is_finite() {

@@ -43,9 +43,11 @@ pub fn power_coefficients<T: Scalar>(nodes: &[T], i: usize) -> Result<Vec<T>> {
     let m = nodes.len() as u128;
     crate::checked::point_work::<T>(
         "Lagrange basis in power form",
-        Cost::new(m.saturating_mul(m).saturating_mul(3), 0).grown(
-            crate::cost::polynomial_bits(nodes.len(), 0, crate::cost::max_bits(nodes)),
-        ),
+        Cost::new(m.saturating_mul(m).saturating_mul(3), 0).grown(crate::cost::polynomial_bits(
+            nodes.len(),
+            0,
+            crate::cost::max_bits(nodes),
+        )),
     )?;
     let c = power_coefficients_unchecked(nodes, i);
     crate::error::check_overflow("Lagrange basis in power form", c.iter())?;

@@ -46,8 +46,11 @@ pub fn basis_product<T: Scalar>(nodes: &[T], i: usize, t: &T) -> Result<T> {
             value: ti.to_f64(),
         });
     }
-    crate::error::finite("Lagrange basis value", [basis_product_unchecked(nodes, i, t)])
-        .map(|[v]| v)
+    crate::error::finite(
+        "Lagrange basis value",
+        [basis_product_unchecked(nodes, i, t)],
+    )
+    .map(|[v]| v)
 }
 
 /// [`basis_product`] for nodes already known to be distinct and an index known to be valid

@@ -74,7 +74,10 @@ impl<T: Scalar> NurbsCurve<T> {
             rows - 1,
             homogeneous.control().clone(),
         )?;
-        let (p, knots) = (homogeneous.degree(), homogeneous.knots().as_slice().to_vec());
+        let (p, knots) = (
+            homogeneous.degree(),
+            homogeneous.knots().as_slice().to_vec(),
+        );
         Ok(NurbsCurve {
             homogeneous: BSplineCurve::new(p, knots, h)?,
         })

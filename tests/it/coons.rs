@@ -1024,7 +1024,11 @@ fn mask_errors() {
     }
     let netf: Vec<DMatrix<f64>> = net.iter().map(|b| b.map(|x| x.to_f64())).collect();
     assert!(matches!(
-        solve_mask(&netf, &Mask::from_alpha(0.5).unwrap(), &cagd::Limits::default()),
+        solve_mask(
+            &netf,
+            &Mask::from_alpha(0.5).unwrap(),
+            &cagd::Limits::default()
+        ),
         Err(Error::SingularMask { p: 2, q: 2, .. })
     ));
     // The same mask is fine on a net where no mode vanishes.

@@ -110,7 +110,11 @@ fn bspline_curves_match_octave_nurbs() {
         for (k, uk) in u.iter().enumerate() {
             let s = find_span(p, n, &knots, uk).unwrap();
             assert_eq!(s as f64, spans[k], "{key}: span at u = {uk}");
-            for (i, v) in basis_functions(p, &knots, s, uk).unwrap().into_iter().enumerate() {
+            for (i, v) in basis_functions(p, &knots, s, uk)
+                .unwrap()
+                .into_iter()
+                .enumerate()
+            {
                 ours_b[[k, i]] = v;
             }
         }

@@ -139,7 +139,11 @@ fn replay_one_call() {
     let (op, seed): (usize, u64) = (op.parse().expect("group"), seed.parse().expect("seed"));
     let start = std::time::Instant::now();
     call(op, &Draws::seeded(seed));
-    eprintln!("group {op} ({}) seed {seed}: {:?}", GROUPS[op].0, start.elapsed());
+    eprintln!(
+        "group {op} ({}) seed {seed}: {:?}",
+        GROUPS[op].0,
+        start.elapsed()
+    );
 }
 
 /// Many calls of every group, reporting each failure (group, seed, message) and the slowest
@@ -179,7 +183,10 @@ fn scan_every_group() {
                 }
             }
         }
-        eprintln!("group {op} ({name}): slowest {:?} (seed {})", slowest.0, slowest.1);
+        eprintln!(
+            "group {op} ({name}): slowest {:?} (seed {})",
+            slowest.0, slowest.1
+        );
     }
     let _ = std::panic::take_hook();
     assert_eq!(failures, 0);

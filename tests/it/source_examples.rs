@@ -10,7 +10,7 @@
 
 use cagd::bernstein::basis_matrix;
 use cagd::bezier::{bezier_to_monomial_matrix, cubic_bezier_matrix, BezierCurve};
-use cagd::scalar::rational_from_decimal;
+use cagd::exact::rational_from_decimal;
 use cagd::Scalar;
 use nalgebra::DMatrix;
 use num_rational::BigRational;
@@ -109,7 +109,10 @@ fn primer_2_4_scheme_level_by_level_f64() {
     assert_eq!(scheme.point_on_curve().as_slice(), &[3.5, 1.5, 0.75]);
     assert_eq!(curve.eval(0.5).as_slice(), &[3.5, 1.5, 0.75]);
     assert_eq!(curve.eval_bernstein(0.5).as_slice(), &[3.5, 1.5, 0.75]);
-    assert_eq!(curve.eval_matrix_form(0.5).unwrap().as_slice(), &[3.5, 1.5, 0.75]);
+    assert_eq!(
+        curve.eval_matrix_form(0.5).unwrap().as_slice(),
+        &[3.5, 1.5, 0.75]
+    );
 }
 
 #[test]
@@ -119,7 +122,10 @@ fn primer_2_4_exact_in_rationals() {
     let expected = [q(7, 2), q(3, 2), q(3, 4)];
     assert_eq!(curve.eval(half.clone()).as_slice(), &expected);
     assert_eq!(curve.eval_bernstein(half.clone()).as_slice(), &expected);
-    assert_eq!(curve.eval_matrix_form(half.clone()).unwrap().as_slice(), &expected);
+    assert_eq!(
+        curve.eval_matrix_form(half.clone()).unwrap().as_slice(),
+        &expected
+    );
     let scheme = curve.scheme(half);
     for (r, level) in PRIMER_2_4_LEVELS.iter().enumerate() {
         for (i, point) in level.iter().enumerate() {

@@ -13,7 +13,7 @@
 //!
 //! `str2num` or `cellfun (@str2num, X)` turns the strings back into doubles.
 
-use cagd::scalar::rational_from_decimal;
+use cagd::exact::rational_from_decimal;
 use cagd_octave::literal::{parse_matrix_with, parse_params_with, LiteralScalar};
 use nalgebra::DMatrix;
 use num_rational::BigRational;

@@ -166,7 +166,12 @@ pub(crate) fn reserve<T>(
     Ok(v)
 }
 
-pub(crate) fn check_size(at: Position, what: &str, count: u128, env_max: usize) -> Result<(), LiteralError> {
+pub(crate) fn check_size(
+    at: Position,
+    what: &str,
+    count: u128,
+    env_max: usize,
+) -> Result<(), LiteralError> {
     if count > env_max as u128 {
         return Err(LiteralError::TooLarge {
             at,

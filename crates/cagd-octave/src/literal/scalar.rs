@@ -5,7 +5,8 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
-use cagd::scalar::{rational_from_decimal, Scalar};
+use cagd::exact::rational_from_decimal;
+use cagd::scalar::Scalar;
 
 use super::range;
 

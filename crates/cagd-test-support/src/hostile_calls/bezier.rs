@@ -24,13 +24,19 @@ pub fn curve(rng: &Draws) -> Option<BezierCurve> {
 /// Constructors, evaluations, schemes, derivatives, subdivision and elevation of a curve.
 pub fn curves(rng: &Draws) {
     let points: Vec<Vec<f64>> = (0..small(rng)).map(|_| finites(rng, small(rng))).collect();
-    ok("bezier::BezierCurve::from_points", BezierCurve::from_points(&points));
+    ok(
+        "bezier::BezierCurve::from_points",
+        BezierCurve::from_points(&points),
+    );
     let Some(c) = curve(rng) else { return };
     let t = parameter(rng);
     total("bezier::BezierCurve::degree", c.degree());
     total("bezier::BezierCurve::dim", c.dim());
     total("bezier::BezierCurve::control", c.control());
-    total("bezier::BezierCurve::control_point", c.control_point(size(rng)));
+    total(
+        "bezier::BezierCurve::control_point",
+        c.control_point(size(rng)),
+    );
     total("bezier::BezierCurve::interval", c.interval());
     total("bezier::BezierCurve::domain", c.domain());
     total("bezier::BezierCurve::local_parameter", c.local_parameter(t));
@@ -38,11 +44,22 @@ pub fn curves(rng: &Draws) {
     ok("bezier::BezierCurve::try_eval", c.try_eval(t));
     total("bezier::BezierCurve::eval_bernstein", c.eval_bernstein(t));
     total("bezier::BezierCurve::eval_derivative", c.eval_derivative(t));
-    total("bezier::BezierCurve::eval_cost", c.eval_cost(size(rng) as u128, 64));
-    ok("bezier::BezierCurve::eval_many", c.eval_many(&parameters(rng, small(rng))));
+    total(
+        "bezier::BezierCurve::eval_cost",
+        c.eval_cost(size(rng) as u128, 64),
+    );
+    ok(
+        "bezier::BezierCurve::eval_many",
+        c.eval_many(&parameters(rng, small(rng))),
+    );
     let ts = parameters(rng, small(rng));
     let mut out = vec![0.0; ts.len() * c.dim() + rng.below(2)];
-    if ok("bezier::BezierCurve::eval_many_into", c.eval_many_into(&ts, &mut out)).is_some() {
+    if ok(
+        "bezier::BezierCurve::eval_many_into",
+        c.eval_many_into(&ts, &mut out),
+    )
+    .is_some()
+    {
         ok("bezier::BezierCurve::eval_many_into (buffer)", Ok(out));
     }
     ok("bezier::BezierCurve::derivative", c.derivative(size(rng)));
@@ -50,26 +67,48 @@ pub fn curves(rng: &Draws) {
     ok("bezier::BezierCurve::subdivide", c.subdivide(t));
     total("bezier::BezierCurve::elevate", c.elevate());
     total("bezier::BezierCurve::reversed", c.reversed());
-    ok("bezier::BezierCurve::with_interval", c.clone().with_interval(mostly_finite(rng), mostly_finite(rng)));
+    ok(
+        "bezier::BezierCurve::with_interval",
+        c.clone()
+            .with_interval(mostly_finite(rng), mostly_finite(rng)),
+    );
     ok("bezier::BezierCurve::matrix_form", c.matrix_form());
-    ok("bezier::BezierCurve::eval_matrix_form", c.eval_matrix_form(t));
+    ok(
+        "bezier::BezierCurve::eval_matrix_form",
+        c.eval_matrix_form(t),
+    );
     let scheme = total("bezier::BezierCurve::scheme", c.scheme(t));
     total("bezier::DeCasteljauScheme::parameter", scheme.parameter());
     total("bezier::DeCasteljauScheme::degree", scheme.degree());
     total("bezier::DeCasteljauScheme::dim", scheme.dim());
     total("bezier::DeCasteljauScheme::levels", scheme.levels());
     total("bezier::DeCasteljauScheme::level", scheme.level(size(rng)));
-    total("bezier::DeCasteljauScheme::point", scheme.point(size(rng), size(rng)));
-    total("bezier::DeCasteljauScheme::point_on_curve", scheme.point_on_curve());
-    total("bezier::DeCasteljauScheme::left_control", scheme.left_control());
-    total("bezier::DeCasteljauScheme::right_control", scheme.right_control());
+    total(
+        "bezier::DeCasteljauScheme::point",
+        scheme.point(size(rng), size(rng)),
+    );
+    total(
+        "bezier::DeCasteljauScheme::point_on_curve",
+        scheme.point_on_curve(),
+    );
+    total(
+        "bezier::DeCasteljauScheme::left_control",
+        scheme.left_control(),
+    );
+    total(
+        "bezier::DeCasteljauScheme::right_control",
+        scheme.right_control(),
+    );
     curve_methods(rng, "bezier::BezierCurve", &c);
 }
 
 /// Matrix (monomial) forms from arbitrary coefficients.
 pub fn matrix_forms(rng: &Draws) {
     let coefficients = matrix(rng, 1 + small(rng) % 3, small(rng));
-    let Some(f) = ok("bezier::MatrixForm::from_coefficients", MatrixForm::from_coefficients(coefficients)) else {
+    let Some(f) = ok(
+        "bezier::MatrixForm::from_coefficients",
+        MatrixForm::from_coefficients(coefficients),
+    ) else {
         return;
     };
     let t = parameter(rng);
@@ -94,7 +133,10 @@ fn patch(rng: &Draws) -> Option<BezierPatch> {
         }
         1 => {
             let grid = PointGrid::from_shape_fn((m, n, d), |_| mostly_finite(rng));
-            ok("bezier::BezierPatch::from_grid", BezierPatch::from_grid(&grid))
+            ok(
+                "bezier::BezierPatch::from_grid",
+                BezierPatch::from_grid(&grid),
+            )
         }
         2 => {
             let corner = |rng: &Draws| finites(rng, 1 + small(rng) % 3);
@@ -112,11 +154,21 @@ fn patch(rng: &Draws) -> Option<BezierPatch> {
 
 /// Evaluations, schemes, derivatives and boundaries of a patch.
 pub fn patches(rng: &Draws) {
-    total("bezier::BezierPatch::hyperbolic_paraboloid", BezierPatch::<f64>::hyperbolic_paraboloid());
+    total(
+        "bezier::BezierPatch::hyperbolic_paraboloid",
+        BezierPatch::<f64>::hyperbolic_paraboloid(),
+    );
     let corner = |rng: &Draws| finites(rng, 1 + small(rng) % 3);
     ok(
         "bezier::bilinear_interpolate",
-        bilinear_interpolate(&corner(rng), &corner(rng), &corner(rng), &corner(rng), parameter(rng), parameter(rng)),
+        bilinear_interpolate(
+            &corner(rng),
+            &corner(rng),
+            &corner(rng),
+            &corner(rng),
+            parameter(rng),
+            parameter(rng),
+        ),
     );
     let Some(p) = patch(rng) else { return };
     let (u, v) = (parameter(rng), parameter(rng));
@@ -124,20 +176,43 @@ pub fn patches(rng: &Draws) {
     total("bezier::BezierPatch::degree", p.degree());
     total("bezier::BezierPatch::dim", p.dim());
     total("bezier::BezierPatch::coordinates", p.coordinates());
-    total("bezier::BezierPatch::control_point", p.control_point(size(rng), size(rng)));
+    total(
+        "bezier::BezierPatch::control_point",
+        p.control_point(size(rng), size(rng)),
+    );
     total("bezier::BezierPatch::eval", p.eval(u, v));
     ok("bezier::BezierPatch::try_eval", p.try_eval(u, v));
-    total("bezier::BezierPatch::eval_bernstein", p.eval_bernstein(u, v));
-    total("bezier::BezierPatch::scheme_cost", p.scheme_cost(64, 64, 64));
+    total(
+        "bezier::BezierPatch::eval_bernstein",
+        p.eval_bernstein(u, v),
+    );
+    total(
+        "bezier::BezierPatch::scheme_cost",
+        p.scheme_cost(64, 64, 64),
+    );
     total("bezier::BezierPatch::grid_cost", p.grid_cost(64, 64, 64));
-    ok("bezier::BezierPatch::derivative", p.derivative(size(rng), size(rng)));
+    ok(
+        "bezier::BezierPatch::derivative",
+        p.derivative(size(rng), size(rng)),
+    );
     ok("bezier::BezierPatch::twist", p.twist());
     let edge = rng.pick(&Edge::ALL);
-    ok("bezier::BezierPatch::boundary", Ok(total("bezier::BezierPatch::boundary", p.boundary(edge))));
+    ok(
+        "bezier::BezierPatch::boundary",
+        Ok(total("bezier::BezierPatch::boundary", p.boundary(edge))),
+    );
     let (us, vs) = (parameters(rng, small(rng)), parameters(rng, small(rng)));
-    ok("bezier::BezierPatch::try_eval_grid", p.try_eval_grid(&us, &vs));
+    ok(
+        "bezier::BezierPatch::try_eval_grid",
+        p.try_eval_grid(&us, &vs),
+    );
     let mut out = vec![0.0; us.len() * vs.len() * p.dim()];
-    if ok("bezier::BezierPatch::eval_grid_into", p.eval_grid_into(&us, &vs, &mut out)).is_some() {
+    if ok(
+        "bezier::BezierPatch::eval_grid_into",
+        p.eval_grid_into(&us, &vs, &mut out),
+    )
+    .is_some()
+    {
         ok("bezier::BezierPatch::eval_grid_into (buffer)", Ok(out));
     }
     let scheme = total("bezier::BezierPatch::scheme", p.scheme(u, v));
@@ -145,9 +220,18 @@ pub fn patches(rng: &Draws) {
     total("bezier::PatchScheme::level_count", scheme.level_count());
     total("bezier::PatchScheme::steps", scheme.steps());
     total("bezier::PatchScheme::level", scheme.level(size(rng)));
-    total("bezier::PatchScheme::level_shape", scheme.level_shape(size(rng)));
-    total("bezier::PatchScheme::point", scheme.point(size(rng), size(rng), size(rng)));
-    total("bezier::PatchScheme::point_on_surface", scheme.point_on_surface());
+    total(
+        "bezier::PatchScheme::level_shape",
+        scheme.level_shape(size(rng)),
+    );
+    total(
+        "bezier::PatchScheme::point",
+        scheme.point(size(rng), size(rng), size(rng)),
+    );
+    total(
+        "bezier::PatchScheme::point_on_surface",
+        scheme.point_on_surface(),
+    );
     surface_methods(rng, "bezier::BezierPatch", &p);
 }
 
@@ -162,7 +246,12 @@ pub fn surface_methods<S: Surface>(rng: &Draws, name: &'static str, s: &S) {
     let (us, vs) = (parameters(rng, small(rng)), parameters(rng, small(rng)));
     total(&named("eval_grid"), s.eval_grid(&us, &vs));
     let mut out = vec![0.0; us.len() * vs.len() * s.dim() + rng.below(2)];
-    if ok(&named("eval_grid_into"), s.eval_grid_into(&us, &vs, &mut out)).is_some() {
+    if ok(
+        &named("eval_grid_into"),
+        s.eval_grid_into(&us, &vs, &mut out),
+    )
+    .is_some()
+    {
         ok(&named("eval_grid_into (buffer)"), Ok(out));
     }
 }

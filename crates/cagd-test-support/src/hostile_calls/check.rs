@@ -169,7 +169,9 @@ impl Finite for LebesgueEstimate {
 
 impl Finite for cagd::interpolation::ParametricInterpolant<f64> {
     fn all_finite(&self) -> bool {
-        self.points().all_finite() && self.algebraic().all_finite() && self.params().to_vec().all_finite()
+        self.points().all_finite()
+            && self.algebraic().all_finite()
+            && self.params().to_vec().all_finite()
     }
 }
 

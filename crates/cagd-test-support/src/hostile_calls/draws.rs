@@ -219,14 +219,23 @@ pub fn ordered(rng: &Draws, n: usize) -> Vec<f64> {
     let last = n.saturating_sub(1).max(1) as f64;
     match rng.below(7) {
         0 => (0..n).map(|k| k as f64 / last).collect(),
-        1 => (0..n).map(|k| f64::from_bits(k as u64 * (1 + rng.below(3) as u64))).collect(),
-        2 => (0..n).map(|k| -1e308 + 1e308 * (2.0 * k as f64 / last)).map(|x| x.clamp(-1e308, 1e308)).collect(),
+        1 => (0..n)
+            .map(|k| f64::from_bits(k as u64 * (1 + rng.below(3) as u64)))
+            .collect(),
+        2 => (0..n)
+            .map(|k| -1e308 + 1e308 * (2.0 * k as f64 / last))
+            .map(|x| x.clamp(-1e308, 1e308))
+            .collect(),
         3 => {
             let mut x = 10.0 * rng.signed();
             (0..n)
                 .map(|_| {
                     let y = x;
-                    x = f64::from_bits(x.to_bits().wrapping_add(if x >= 0.0 { 1 } else { u64::MAX }));
+                    x = f64::from_bits(x.to_bits().wrapping_add(if x >= 0.0 {
+                        1
+                    } else {
+                        u64::MAX
+                    }));
                     y
                 })
                 .collect()
@@ -276,7 +285,9 @@ pub fn weights(rng: &Draws, n: usize) -> Vec<f64> {
     match rng.below(4) {
         0 => vec![rng.pick(&[1e308, 1.7e308, 5e-324, 1e-320, 1e-300]); n],
         1 => (0..n).map(|_| 0.1 + rng.unit()).collect(),
-        2 => (0..n).map(|_| rng.pick(&[1e308, 5e-324, 1.0, 1e-300])).collect(),
+        2 => (0..n)
+            .map(|_| rng.pick(&[1e308, 5e-324, 1.0, 1e-300]))
+            .collect(),
         _ => values(rng, n),
     }
 }

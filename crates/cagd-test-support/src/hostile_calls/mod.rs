@@ -44,7 +44,10 @@ pub const GROUPS: [(&str, fn(&Draws)); 21] = [
     ("Gregory twists", coons::gregory),
     ("discrete Coons, masks", coons::discrete),
     ("Gordon surfaces", coons::gordon),
-    ("sampled curves, ruled, matrix and Ferguson patches", coons::surfaces),
+    (
+        "sampled curves, ruled, matrix and Ferguson patches",
+        coons::surfaces,
+    ),
     ("Bernstein bases, binomials, elevation", basics::bernstein),
     ("conversion matrices", basics::conversions),
     ("continuity, integrals", basics::continuity),
