@@ -193,5 +193,4 @@ mod tests {
             BigRational::new(1.into(), num_traits::pow(BigInt::from(10), 300))
         );
     }
-
 }

@@ -301,13 +301,26 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
             unit_views(curves_at_u, &domains_at_u),
             unit_views(curves_at_v, &domains_at_v),
         );
-        // Compatibility: g(u_i, ·)(v_j) against g(·, v_j)(u_i).
+        // The bases first (their weights are refused at once for nodes no double can hold,
+        // 1001 equally spaced ones), and the k_u · k_v crossings counted before they are
+        // evaluated: the work grows with the product of the two families.
+        let bases = (
+            Lagrange::new(u_nodes.to_vec())?,
+            Lagrange::new(v_nodes.to_vec())?,
+        );
+        let crossings = (u_nodes.len() as u128).saturating_mul(v_nodes.len() as u128);
+        crate::checked::point_work::<T>(
+            "Gordon network crossings",
+            crate::cost::Cost::new(crossings.saturating_mul(2 * (dim as u128 + 1)), 0),
+        )?;
+        // Compatibility: g(u_i, ·)(v_j) against g(·, v_j)(u_i), each curve as it is (a point
+        // of another dimension is named as such).
         let mut worst: Option<(usize, usize, T, T)> = None;
         let mut count = 0;
         for (i, u) in u_nodes.iter().enumerate() {
             for (j, v) in v_nodes.iter().enumerate() {
-                let p = at_u[i].eval(v.clone());
-                let q = at_v[j].eval(u.clone());
+                let p = at_u[i].curve().eval(at_u[i].parameter(v.clone()));
+                let q = at_v[j].curve().eval(at_v[j].parameter(u.clone()));
                 if p.len() != dim || q.len() != dim {
                     return Err(Error::ShapeMismatch {
                         what: "Gordon network curves",
@@ -323,13 +336,7 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
         if let Some(e) = mismatch(worst, count, u_nodes, v_nodes, *tolerance) {
             return Err(e);
         }
-        Ok((
-            (
-                Lagrange::new(u_nodes.to_vec())?,
-                Lagrange::new(v_nodes.to_vec())?,
-            ),
-            (domains_at_u, domains_at_v),
-        ))
+        Ok((bases, (domains_at_u, domains_at_v)))
     }
 
     #[allow(clippy::type_complexity)]

@@ -260,7 +260,11 @@ pub fn bernstein_derivative_all<T: Scalar>(n: usize, r: usize, t: T) -> Vec<T> {
 /// If the `ts.len() × (n + 1)` values cannot be held: a panic naming the size, never an abort.
 pub fn basis_matrix<T: Scalar>(n: usize, ts: &[T]) -> DMatrix<T> {
     let cols = n.checked_add(1).expect("n + 1 basis functions");
-    let data = crate::grid::filled("Bernstein basis matrix", ts.len().checked_mul(cols), T::zero());
+    let data = crate::grid::filled(
+        "Bernstein basis matrix",
+        ts.len().checked_mul(cols),
+        T::zero(),
+    );
     let mut m = DMatrix::from_vec(ts.len(), cols, data);
     for (k, t) in ts.iter().enumerate() {
         for (i, b) in bernstein_all(n, t.clone()).into_iter().enumerate() {

@@ -51,8 +51,9 @@ use crate::scalar::Scalar;
 /// let coons = Mask::<f64>::coons();
 /// assert_eq!((coons.alpha(), coons.beta()), (-0.25, 0.5));
 /// assert!(Mask::new(0.1, 0.2).is_err()); // 4α + 4β = 1.2
-/// let laplace = Mask::from_alpha(0.0); // the discrete harmonic (Laplace) mask, β = 1/4
+/// let laplace = Mask::from_alpha(0.0)?; // the discrete harmonic (Laplace) mask, β = 1/4
 /// assert_eq!(laplace.beta(), 0.25);
+/// # Ok::<(), cagd::Error>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Mask<T: Scalar = f64> {

@@ -349,14 +349,35 @@ fn batches_refuse_non_finite_parameters() {
     let k = vec![0.0, 0.0, 0.5, 1.0, 1.0];
     let coords = vec![DMatrix::from_fn(3, 3, |i, j| (i + 2 * j) as f64 + 1.0)];
     let s = BSplineSurface::new(1, 1, k.clone(), k.clone(), coords.clone()).unwrap();
-    let r = NurbsSurface::new(1, 1, k.clone(), k.clone(), coords, DMatrix::from_element(3, 3, 1.0))
-        .unwrap();
-    let c = BSplineCurve::new(1, k.clone(), DMatrix::from_row_slice(1, 3, &[0.0, 1.0, 3.0])).unwrap();
-    let n = NurbsCurve::new(1, k, DMatrix::from_row_slice(1, 3, &[0.0, 1.0, 3.0]), vec![1.0; 3])
-        .unwrap();
+    let r = NurbsSurface::new(
+        1,
+        1,
+        k.clone(),
+        k.clone(),
+        coords,
+        DMatrix::from_element(3, 3, 1.0),
+    )
+    .unwrap();
+    let c = BSplineCurve::new(
+        1,
+        k.clone(),
+        DMatrix::from_row_slice(1, 3, &[0.0, 1.0, 3.0]),
+    )
+    .unwrap();
+    let n = NurbsCurve::new(
+        1,
+        k,
+        DMatrix::from_row_slice(1, 3, &[0.0, 1.0, 3.0]),
+        vec![1.0; 3],
+    )
+    .unwrap();
     for (u, v) in [(f64::NAN, 0.5), (0.5, f64::INFINITY), (0.25, 0.75)] {
         let e = s.eval(u, v);
-        assert_eq!(!(u.is_finite() && v.is_finite()), e[0].is_nan(), "({u}, {v})");
+        assert_eq!(
+            !(u.is_finite() && v.is_finite()),
+            e[0].is_nan(),
+            "({u}, {v})"
+        );
         let mut out = [0.0];
         let (grid, nurbs) = (
             s.eval_grid_into(&[u], &[v], &mut out),
@@ -372,8 +393,14 @@ fn batches_refuse_non_finite_parameters() {
         if u.is_finite() && v.is_finite() {
             assert!(grid.is_ok() && nurbs.is_ok() && batches.iter().all(Result::is_ok));
         } else {
-            assert!(matches!(grid, Err(Error::NonFinite { .. })), "({u}, {v}): {grid:?}");
-            assert!(matches!(nurbs, Err(Error::NonFinite { .. })), "({u}, {v}): {nurbs:?}");
+            assert!(
+                matches!(grid, Err(Error::NonFinite { .. })),
+                "({u}, {v}): {grid:?}"
+            );
+            assert!(
+                matches!(nurbs, Err(Error::NonFinite { .. })),
+                "({u}, {v}): {nurbs:?}"
+            );
             if !u.is_finite() {
                 for b in batches {
                     assert!(matches!(b, Err(Error::NonFinite { .. })), "{u}: {b:?}");

@@ -5,9 +5,9 @@
 use cagd::bernstein::{self, binomial, binomial_f64, falling_factorial, power};
 use cagd::conversion::{self, CubicForm};
 use cagd::cost::{blended, polynomial_bits, Cost};
+use cagd::exact::{rational_from_decimal, to_finite_f64};
 use cagd::grid::PointGrid;
 use cagd::limits::{exact_op_cost, Limit, Limits};
-use cagd::exact::{rational_from_decimal, to_finite_f64};
 use cagd::tolerance::{Corner, Tolerance};
 use cagd::Scalar;
 use nalgebra::{DMatrix, DVector};
