@@ -184,7 +184,7 @@ mod tests {
             elevate(&[1.0], 1001),
             Err(crate::Error::TooLarge { .. })
         ));
-        assert!(matches!(elevate(&[f64::MAX, -f64::MAX], 3), Ok(_)));
+        assert!(elevate(&[f64::MAX, -f64::MAX], 3).is_ok());
         assert!(matches!(
             elevate(&[f64::NAN], 3),
             Err(crate::Error::NonFinite { .. })

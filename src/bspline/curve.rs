@@ -283,7 +283,7 @@ impl<T: Scalar> BSplineCurve<T> {
     ///
     /// The fast batch: per parameter the knot span `s` (the previous parameter's span or the
     /// next one is tried first, so sorted parameters cost `O(1)`; otherwise a binary search),
-    /// the `p + 1` non-zero basis values by the triangular scheme of [`basis_functions`] with
+    /// the `p + 1` non-zero basis values by the triangular scheme of [`basis_functions`](super::basis_functions) with
     /// its divisions by knot differences replaced by products with their reciprocals,
     /// computed once per span, then `Σ_{i=0}^{p} N_{s−p+i,p}(u) P_{s−p+i}`: `O(p² + p·d)`
     /// multiplications and additions and no division per point, the parameters of one span
@@ -326,7 +326,7 @@ impl<T: Scalar> BSplineCurve<T> {
 
     /// [`eval_many_into`](Self::eval_many_into) in the exact order of
     /// [`try_eval`](Self::try_eval): per parameter the span, the basis by the triangular
-    /// scheme of [`basis_functions`] with its divisions, in the operation order of
+    /// scheme of [`basis_functions`](super::basis_functions) with its divisions, in the operation order of
     /// octave-nurbs `basisfun`, then the sum from zero, `i` ascending — the values of
     /// `try_eval` (and of `bspeval`) bit for bit, at about three times the cost of the fast
     /// batch for cubics. Outside the domain the end pieces continue, as in `eval` and

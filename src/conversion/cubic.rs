@@ -35,7 +35,7 @@ impl CubicForm {
     /// | form | geometry `X` | `M` (rows) |
     /// |---|---|---|
     /// | `Hermite` | `[x(0) x(1) x'(0) x'(1)]` | `1 − 3u² + 2u³`, `3u² − 2u³`, `u − 2u² + u³`, `−u² + u³` |
-    /// | `Bezier` | `[b_0 b_1 b_2 b_3]` | [`bezier_to_monomial_matrix`]`(3)`: `B_0³ … B_3³` |
+    /// | `Bezier` | `[b_0 b_1 b_2 b_3]` | [`bezier_to_monomial_matrix`](super::bezier_to_monomial_matrix)`(3)`: `B_0³ … B_3³` |
     /// | `BSpline` | `[x_{i−1} x_i x_{i+1} x_{i+2}]` | `(1 − u)³/6`, `(4 − 6u² + 3u³)/6`, `(1 + 3u + 3u² − 3u³)/6`, `u³/6` |
     ///
     /// ```

@@ -22,8 +22,8 @@ use crate::scalar::Scalar;
 /// binomial then rounded once), so the matrix of degree 1000 takes milliseconds.
 ///
 /// # Errors
-/// [`Error::TooLarge`] for `n` above [`Limits::DEFAULT`]`.max_degree` (the matrix has
-/// `(n+1)²` entries); [`Error::Overflow`] in `f64` when an entry exceeds the range of doubles
+/// [`Error::TooLarge`](crate::Error::TooLarge) for `n` above [`Limits::DEFAULT`]`.max_degree` (the matrix has
+/// `(n+1)²` entries); [`Error::Overflow`](crate::Error::Overflow) in `f64` when an entry exceeds the range of doubles
 /// (entries reach about `3^n`: beyond the range of doubles from degree 653 on).
 ///
 /// ```

@@ -252,7 +252,8 @@ impl<T: Scalar, C: Curve<T>> Surface<T> for CoonsPatch<C, T> {
 
     /// [`eval`](Surface::eval) on `[0, 1]²`, each boundary curve through its own `try_eval`
     /// (its work bounded, its point checked: a curve returning a point of another dimension
-    /// is an [`Error::ShapeMismatch`] naming it), the point checked for overflow.
+    /// is an [`Error::ShapeMismatch`](crate::Error::ShapeMismatch) naming it), the point
+    /// checked for overflow.
     fn try_eval(&self, u: T, v: T) -> Result<DVector<T>> {
         let f = (T::one() - u.clone(), u.clone());
         let g = (T::one() - v.clone(), v.clone());

@@ -53,7 +53,7 @@ pub(crate) use product::basis_product_unchecked;
 /// [`Error::TooFewPoints`], [`Error::NonFinite`], [`Error::DuplicateNodes`] (two equal
 /// neighbours), [`Error::UnsortedNodes`] (a decrease) — whichever comes first, left to right;
 /// then [`Error::Overflow`] for nodes whose range or gaps no double can divide by
-/// ([`check_spacing`](crate::error::check_spacing): nodes from −10³⁰⁸ to 10³⁰⁸, or 5·10⁻³²⁴
+/// ([`check_spacing`]: nodes from −10³⁰⁸ to 10³⁰⁸, or 5·10⁻³²⁴
 /// apart).
 ///
 /// ```

@@ -14,7 +14,7 @@ use nalgebra::{DMatrix, DVector};
 use num_rational::BigRational;
 
 use super::bezier::curve;
-use super::check::{ok, total};
+use super::check::{any, ok, total};
 use super::draws::*;
 
 /// Bernstein polynomials of small degrees at arbitrary parameters; degree elevation to
@@ -27,10 +27,8 @@ pub fn bernstein(rng: &Draws) {
     );
     total("bernstein::bernstein_all", bernstein::bernstein_all(n, t));
     let mut out = vec![0.0; small(rng)];
-    total(
-        "bernstein::bernstein_all_into",
-        bernstein::bernstein_all_into(&t, &mut out),
-    );
+    bernstein::bernstein_all_into(&t, &mut out);
+    total("bernstein::bernstein_all_into", out);
     total(
         "bernstein::basis_cost",
         bernstein::basis_cost(size(rng), 64),
@@ -188,6 +186,10 @@ pub fn grids(rng: &Draws) {
     }
     let shape = (memory(rng), memory(rng), memory(rng));
     ok(
+        "grid::PointGrid::try_from_shape_fn",
+        PointGrid::try_from_shape_fn(shape, |_| 0.5),
+    );
+    ok(
         "grid::PointGrid::try_from_elem",
         PointGrid::try_from_elem(shape, 0.0),
     );
@@ -239,7 +241,8 @@ pub fn numbers(rng: &Draws) {
     } else {
         rng.pick(&texts).to_string()
     };
-    if let Ok(q) = rational_from_decimal(&text) {
+    // An exact number has no non-finite value to check: only that it returns.
+    if let Some(q) = any("exact::rational_from_decimal", rational_from_decimal(&text)) {
         let big = <BigRational as Scalar>::from_f64(1e308).expect("finite");
         let qs = [q.clone(), q * big.clone() * big];
         ok("exact::to_finite_f64", to_finite_f64("x", &qs));
@@ -258,6 +261,22 @@ pub fn numbers(rng: &Draws) {
         "error::check_overflow",
         cagd::error::check_overflow("x", &[x]).map(|()| 0.0),
     );
+    let spaced = ordered(rng, small(rng));
+    ok(
+        "error::check_spacing",
+        cagd::error::check_spacing("x", &spaced).map(|()| 0.0),
+    );
+    total("cost::max_bits", cagd::cost::max_bits(&spaced));
+    total(
+        "scalar::Scalar::from_ratio",
+        f64::from_ratio(rng.bits() as i64, 1 + rng.below(9) as i64),
+    );
+    total("scalar::Scalar::to_f64", x.to_f64());
+    total("scalar::Scalar::is_finite_value", x.is_finite_value());
+    total("scalar::Scalar::from_usize", f64::from_usize(size(rng)));
+    let big = cagd::bernstein::binomial(small(rng) * 40, small(rng) * 20);
+    total("scalar::Scalar::from_biguint", f64::from_biguint(&big));
+    total("scalar::Scalar::vectorized", f64::vectorized(|| x + 1.0));
     let tol = rng.pick(&[
         Tolerance::Absolute(x),
         Tolerance::Relative(x),
@@ -278,7 +297,7 @@ pub fn numbers(rng: &Draws) {
     total("tolerance::Corner::index", corner.index());
     let mut limits = Limits::default();
     let which = rng.pick(&Limit::ALL);
-    limits.set(which, rng.bits());
+    total("limits::Limits::set", limits.set(which, rng.bits()));
     total("limits::Limits::get", limits.get(which));
     total("limits::Limit::field", which.field());
     let n = size(rng);

@@ -154,7 +154,9 @@ pub fn bspline_curves(rng: &Draws) {
         "bspline::BSplineCurve::insert_knots",
         c.insert_knots(&parameters(rng, small(rng))),
     );
-    ok("bspline::BSplineCurve::elevate", c.elevate(size(rng)));
+    let r = size(rng);
+    total("bspline::BSplineCurve::elevate_cost", c.elevate_cost(r, 64));
+    ok("bspline::BSplineCurve::elevate", c.elevate(r));
     ok(
         "integral::bspline_antiderivative",
         cagd::integral::bspline_antiderivative(&c),

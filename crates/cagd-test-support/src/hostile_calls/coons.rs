@@ -143,19 +143,45 @@ pub fn coons(rng: &Draws) {
             }
         }
         2 => {
-            let f = rng.pick(&[
-                BlendingPair::linear(),
-                BlendingPair::hermite_cubic(),
-                BlendingPair::new("shifted", |t: f64| 0.9 - t, |t: f64| 0.1 + t),
-            ]);
+            let f = match rng.below(3) {
+                0 => total("coons::BlendingPair::linear", BlendingPair::linear()),
+                1 => total(
+                    "coons::BlendingPair::hermite_cubic",
+                    BlendingPair::hermite_cubic(),
+                ),
+                _ => total(
+                    "coons::BlendingPair::new",
+                    BlendingPair::new("shifted", |t: f64| 0.9 - t, |t: f64| 0.1 + t),
+                ),
+            };
             total("coons::BlendingPair::eval", f.eval(u));
             total("coons::BlendingPair::name", f.name());
-            let made = if rng.below(2) == 0 {
-                GeneralizedCoonsPatch::new(c1, c2, d1, d2, f, BlendingPair::linear())
-            } else {
-                GeneralizedCoonsPatch::partially_bicubic(c1, c2, d1, d2)
+            let made = match rng.below(3) {
+                0 => any(
+                    "coons::GeneralizedCoonsPatch::new",
+                    GeneralizedCoonsPatch::new(c1, c2, d1, d2, f, BlendingPair::linear()),
+                ),
+                1 => any(
+                    "coons::GeneralizedCoonsPatch::partially_bicubic",
+                    GeneralizedCoonsPatch::partially_bicubic(c1, c2, d1, d2),
+                ),
+                _ => any(
+                    "coons::CoonsBoundary::with_corners",
+                    CoonsBoundary::with_corners(c1, c2, d1, d2, corners, tolerance),
+                )
+                .and_then(|b| {
+                    any(
+                        "coons::GeneralizedCoonsPatch::from_boundary",
+                        GeneralizedCoonsPatch::from_boundary(
+                            b,
+                            f,
+                            BlendingPair::hermite_cubic(),
+                            value(rng),
+                        ),
+                    )
+                }),
             };
-            if let Some(p) = any("coons::GeneralizedCoonsPatch::new", made) {
+            if let Some(p) = made {
                 total("coons::GeneralizedCoonsPatch::boundary", p.boundary());
                 total("coons::GeneralizedCoonsPatch::blending", p.blending());
                 total(
@@ -216,6 +242,61 @@ fn bicubic(rng: &Draws, d: usize, [c1, c2, d1, d2]: [Boundary; 4], tolerance: To
         let _ = s;
     }
     surface_methods(rng, "coons::BicubicCoonsPatch", &p);
+}
+
+/// Coons patches and Gordon surfaces of Bézier curves (of arbitrary control points through
+/// shared corners), as one Bézier patch.
+pub fn bezier_networks(rng: &Draws) {
+    use cagd::BezierCurve;
+    let d = 1 + small(rng) % 3;
+    let corners: [DVector<f64>; 4] = std::array::from_fn(|_| vector(rng, d));
+    let curve = |rng: &Draws, a: &DVector<f64>, b: &DVector<f64>| {
+        let mut control = matrix(rng, d, 2 + small(rng) % 3);
+        control.set_column(0, a);
+        let last = control.ncols() - 1;
+        control.set_column(last, b);
+        BezierCurve::new(control).ok()
+    };
+    let [p00, p10, p01, p11] = &corners;
+    let (Some(c1), Some(c2), Some(d1), Some(d2)) = (
+        curve(rng, p00, p10),
+        curve(rng, p01, p11),
+        curve(rng, p00, p01),
+        curve(rng, p10, p11),
+    ) else {
+        return;
+    };
+    if let Some(p) = any(
+        "coons::CoonsPatch::new",
+        CoonsPatch::new(c1.clone(), c2.clone(), d1.clone(), d2.clone()),
+    ) {
+        ok("coons::CoonsPatch::to_bezier", p.to_bezier());
+        let again = total(
+            "coons::CoonsPatch::from_boundary",
+            CoonsPatch::from_boundary(p.boundary().clone()),
+        );
+        surface_methods(rng, "coons::CoonsPatch", &again);
+    }
+    let nodes = vec![0.0, 1.0];
+    let points = vec![
+        vec![p00.clone(), p01.clone()],
+        vec![p10.clone(), p11.clone()],
+    ];
+    let at_u = vec![d1, d2];
+    let at_v = vec![c1, c2];
+    if let Some(g) = any(
+        "gordon::GordonSurface::new",
+        GordonSurface::new(nodes.clone(), nodes.clone(), at_u.clone(), at_v.clone()),
+    ) {
+        ok("gordon::GordonSurface::to_bezier", g.to_bezier());
+        let c = total("gordon::GordonSurface::conditioning", g.conditioning());
+        total("gordon::Conditioning::amplification", c.amplification());
+    }
+    let tolerance = rng.pick(&[Tolerance::default(), Tolerance::Absolute(value(rng))]);
+    any(
+        "gordon::GordonSurface::with_points",
+        GordonSurface::with_points(nodes.clone(), nodes, at_u, at_v, points, tolerance),
+    );
 }
 
 /// Gregory twists of arbitrary vectors.

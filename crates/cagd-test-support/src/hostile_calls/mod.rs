@@ -27,8 +27,11 @@ pub mod interpolation;
 
 pub use draws::Draws;
 
+/// A group of calls: its name, and the function that draws its arguments and makes them.
+pub type Group = (&'static str, fn(&Draws));
+
 /// The groups of calls: each draws its arguments and calls a family of functions.
-pub const GROUPS: [(&str, fn(&Draws)); 21] = [
+pub const GROUPS: [Group; 22] = [
     ("Bézier curves and schemes", bezier::curves),
     ("matrix forms", bezier::matrix_forms),
     ("Bézier patches and schemes", bezier::patches),
@@ -44,6 +47,10 @@ pub const GROUPS: [(&str, fn(&Draws)); 21] = [
     ("Gregory twists", coons::gregory),
     ("discrete Coons, masks", coons::discrete),
     ("Gordon surfaces", coons::gordon),
+    (
+        "Coons and Gordon of Bézier curves, as Bézier patches",
+        coons::bezier_networks,
+    ),
     (
         "sampled curves, ruled, matrix and Ferguson patches",
         coons::surfaces,
