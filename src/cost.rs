@@ -141,7 +141,7 @@ impl Cost {
     }
 }
 
-/// The size, in bits, of the largest of `values` ([`Scalar::size_in_bits`]: numerator and
+/// The size, in bits, of the largest of `values` ([`Scalar::bits`]: numerator and
 /// denominator together for rationals, `0` for `f64`): what the estimates take as the size of
 /// their inputs.
 ///
@@ -159,7 +159,7 @@ pub fn max_bits<'a, T: Scalar + 'a>(values: impl IntoIterator<Item = &'a T>) -> 
     }
     values
         .into_iter()
-        .map(Scalar::size_in_bits)
+        .map(Scalar::bits)
         .max()
         .unwrap_or(0)
 }

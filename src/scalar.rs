@@ -52,10 +52,10 @@ pub trait Scalar:
     /// ```
     /// use cagd::Scalar;
     /// use num_rational::BigRational;
-    /// assert_eq!(0.75f64.size_in_bits(), 0);
-    /// assert_eq!(<BigRational as Scalar>::from_ratio(3, 4).size_in_bits(), 2 + 3);
+    /// assert_eq!(0.75f64.bits(), 0);
+    /// assert_eq!(<BigRational as Scalar>::from_ratio(3, 4).bits(), 2 + 3);
     /// ```
-    fn size_in_bits(&self) -> u128 {
+    fn bits(&self) -> u128 {
         0
     }
     /// `n` as a scalar.
@@ -182,7 +182,7 @@ impl Scalar for BigRational {
     fn is_finite_value(&self) -> bool {
         true
     }
-    fn size_in_bits(&self) -> u128 {
+    fn bits(&self) -> u128 {
         u128::from(self.numer().bits() + self.denom().bits())
     }
 }

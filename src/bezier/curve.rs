@@ -265,7 +265,7 @@ impl<T: Scalar> BezierCurve<T> {
     /// ```
     pub fn try_eval(&self, u: T) -> Result<DVector<T>> {
         check_parameter("Bézier curve parameter", &u, &self.domain())?;
-        self.check_point_work(u.size_in_bits())?;
+        self.check_point_work(u.bits())?;
         crate::checked::point("Bézier curve point", self.dim(), self.eval(u))
     }
 

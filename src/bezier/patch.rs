@@ -308,7 +308,7 @@ impl<T: Scalar> BezierPatch<T> {
         let unit = (T::zero(), T::one());
         check_parameter("Bézier patch parameter u", &u, &unit)?;
         check_parameter("Bézier patch parameter v", &v, &unit)?;
-        self.check_point_work(u.size_in_bits(), v.size_in_bits())?;
+        self.check_point_work(u.bits(), v.bits())?;
         crate::checked::point("Bézier patch point", self.dim(), self.eval(u, v))
     }
 

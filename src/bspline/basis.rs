@@ -122,7 +122,7 @@ pub fn basis_functions<T: Scalar>(p: usize, knots: &[T], span: usize, u: &T) -> 
     }
     crate::checked::point_work::<T>(
         "B-spline basis",
-        basis_cost(p, u.size_in_bits(), crate::cost::max_bits(knots)),
+        basis_cost(p, u.bits(), crate::cost::max_bits(knots)),
     )?;
     let values = basis_values(p, knots, span, u);
     crate::error::check_overflow("B-spline basis", values.iter())?;
@@ -221,7 +221,7 @@ pub fn cox_de_boor<T: Scalar>(i: usize, p: usize, knots: &[T], u: &T) -> Result<
     crate::checked::point_work::<T>(
         "Cox-de Boor recursion",
         crate::cost::Cost::new(calls.saturating_mul(4 + knots.len() as u128 - i as u128), 0).grown(
-            crate::cost::polynomial_bits(p, u.size_in_bits(), crate::cost::max_bits(knots)),
+            crate::cost::polynomial_bits(p, u.bits(), crate::cost::max_bits(knots)),
         ),
     )?;
     crate::error::finite(

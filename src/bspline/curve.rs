@@ -182,7 +182,7 @@ impl<T: Scalar> BSplineCurve<T> {
     pub fn try_eval(&self, u: T) -> Result<DVector<T>> {
         let (p, knots) = (self.degree, self.knots.as_slice());
         let s = span_of(p, self.control.ncols(), knots, &u)?;
-        self.check_point_work(u.size_in_bits())?;
+        self.check_point_work(u.bits())?;
         let n = basis_values(p, knots, s, &u);
         crate::checked::point(
             "B-spline curve point",
@@ -240,7 +240,7 @@ impl<T: Scalar> BSplineCurve<T> {
     pub fn de_boor(&self, u: T) -> Result<DVector<T>> {
         let (p, knots) = (self.degree, self.knots.as_slice());
         let s = span_of(p, self.control.ncols(), knots, &u)?;
-        self.check_point_work(u.size_in_bits())?;
+        self.check_point_work(u.bits())?;
         let mut d: Vec<DVector<T>> = (0..=p)
             .map(|j| self.control.column(s - p + j).into_owned())
             .collect();

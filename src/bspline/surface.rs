@@ -131,7 +131,7 @@ impl<T: Scalar> BSplineSurface<T> {
         let (ku, kv) = (self.knots.0.as_slice(), self.knots.1.as_slice());
         let su = span_of(p, nu, ku, &u)?;
         let sv = span_of(q, nv, kv, &v)?;
-        self.check_point_work(u.size_in_bits(), v.size_in_bits())?;
+        self.check_point_work(u.bits(), v.bits())?;
         crate::checked::point(
             "B-spline surface point",
             self.coords.len(),

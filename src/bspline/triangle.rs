@@ -74,7 +74,7 @@ pub fn try_cox_de_boor_triangle<T: Scalar>(p: usize, knots: &[T], u: &T) -> Resu
         "Cox-de Boor triangle",
         Cost::new(6 * (p as u128 + 1) * m, 0).grown(crate::cost::polynomial_bits(
             p,
-            u.size_in_bits(),
+            u.bits(),
             3 * crate::cost::max_bits(knots),
         )),
     )?;

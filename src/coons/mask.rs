@@ -446,14 +446,14 @@ impl<T: Scalar> Band<T> {
                 for c in k + 1..=last_col {
                     let v = self.get(r, c) - factor.clone() * self.get(k, c);
                     if budget.is_some() {
-                        spent = spent.saturating_add(2 * exact_op_cost(v.size_in_bits()));
+                        spent = spent.saturating_add(2 * exact_op_cost(v.bits()));
                     }
                     self.set(r, c, v);
                 }
                 for j in 0..b.ncols() {
                     b[(r, j)] = b[(r, j)].clone() - factor.clone() * b[(k, j)].clone();
                     if budget.is_some() {
-                        spent = spent.saturating_add(2 * exact_op_cost(b[(r, j)].size_in_bits()));
+                        spent = spent.saturating_add(2 * exact_op_cost(b[(r, j)].bits()));
                     }
                 }
             }

@@ -90,13 +90,6 @@ pub trait LiteralScalar: Scalar {
         1
     }
 
-    /// The length of the number in bits, numerator and denominator together (exact numbers;
-    /// 0 for `f64`, whose cost does not depend on the value). Estimates of exact work weigh
-    /// each operation by the size its numbers reach ([`cagd::limits::exact_op_cost`]).
-    fn bits(&self) -> u128 {
-        0
-    }
-
     /// The value of a decimal literal (`text` as lexed; `nearest` its nearest double).
     /// `None` if it is not finite in this type.
     fn from_literal(text: &str, nearest: f64) -> Option<Self>;
@@ -208,10 +201,6 @@ impl LiteralScalar for BigRational {
 
     fn words(&self) -> u128 {
         self.bits().div_ceil(64).max(1)
-    }
-
-    fn bits(&self) -> u128 {
-        self.size_in_bits()
     }
 
     fn from_literal(text: &str, _nearest: f64) -> Option<Self> {

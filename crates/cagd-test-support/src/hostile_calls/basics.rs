@@ -251,7 +251,7 @@ pub fn numbers(rng: &Draws) {
         "scalar::Scalar::from_f64",
         <f64 as Scalar>::from_f64(value(rng)),
     );
-    total("scalar::Scalar::size_in_bits", value(rng).size_in_bits());
+    total("scalar::Scalar::bits", value(rng).bits());
     let x = value(rng);
     ok(
         "error::check_finite",
