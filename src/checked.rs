@@ -27,7 +27,7 @@ pub(crate) use crate::param::{eval_many_into, of_dim, point, try_eval_curve};
 /// # Errors
 /// [`Error::TooLarge`] (limit `Work`) above the limit.
 pub(crate) fn point_work<T: Scalar>(what: &'static str, cost: Cost) -> Result<()> {
-    Limits::DEFAULT.check_work(what, cost.weigh(T::IS_EXACT))
+    Limits::DEFAULT.check_work(what, cost.weigh(T::EXACT))
 }
 
 /// What `Surface::try_eval` does for the crate's surfaces, as [`try_eval_curve`].

@@ -250,13 +250,6 @@ pub enum Error {
         /// The tolerance used.
         tolerance: f64,
     },
-    /// A construction needs the derivative of a curve that does not provide one
-    /// ([`crate::Curve::eval_derivative`] returned `None`).
-    #[error("{what}: the curve provides no derivative, which this construction needs")]
-    MissingDerivative {
-        /// Which curve.
-        what: &'static str,
-    },
     /// A discrete Coons mask `(α, β)` that is not affinely invariant: the weights of the eight
     /// neighbours must sum to one, `4α + 4β = 1`.
     #[error("mask (alpha = {alpha}, beta = {beta}): 4*alpha + 4*beta = {sum}, expected 1")]
@@ -468,7 +461,7 @@ pub fn check_overflow<'a, T: Scalar>(
     what: &'static str,
     values: impl IntoIterator<Item = &'a T>,
 ) -> Result<()> {
-    if T::IS_EXACT {
+    if T::EXACT {
         return Ok(());
     }
     for (index, value) in values.into_iter().enumerate() {
@@ -513,7 +506,7 @@ where
 /// assert!(check_spacing("knots", &[-1e308, 0.0, 1e308]).is_err());
 /// ```
 pub fn check_spacing<T: Scalar>(what: &'static str, values: &[T]) -> Result<()> {
-    if T::IS_EXACT || values.len() < 2 {
+    if T::EXACT || values.len() < 2 {
         return Ok(());
     }
     let last = values.len() - 1;

@@ -33,27 +33,25 @@ pub trait Scalar:
     + Sync
     + 'static
 {
+    /// Whether arithmetic is exact (no rounding): `false` for `f64`, `true` for rationals.
+    const EXACT: bool;
     /// The exact value of a finite double; `None` for NaN and ±∞.
     fn from_f64(x: f64) -> Option<Self>;
     /// The value `num / den` (rounded to nearest for `f64`). `den` must not be zero.
     fn from_ratio(num: i64, den: i64) -> Self;
     /// The nearest double.
     fn to_f64(&self) -> f64;
-    /// Whether the type is exact (rationals: every value finite, no rounding), so that the
-    /// checks for overflow have nothing to look for and work estimates weigh the size of the
-    /// numbers.
-    const IS_EXACT: bool = false;
     /// Whether the value is a finite number (always true for rationals).
     fn is_finite_value(&self) -> bool;
-    /// The size of the number in bits, numerator and denominator together, for the work
-    /// estimates of exact arithmetic ([`crate::cost`]); `0` for `f64`, whose operations cost
-    /// the same whatever the value.
+    /// The length of the number in bits, numerator and denominator together (0 for `f64`,
+    /// whose cost does not depend on the value). Estimates of exact work weigh each operation
+    /// by the size its numbers reach ([`crate::limits::exact_op_cost`], [`crate::cost`]).
     ///
     /// ```
     /// use cagd::Scalar;
     /// use num_rational::BigRational;
-    /// assert_eq!(0.75f64.bits(), 0);
-    /// assert_eq!(<BigRational as Scalar>::from_ratio(3, 4).bits(), 2 + 3);
+    /// assert_eq!(<BigRational as Scalar>::from_ratio(7, 2).bits(), 5);
+    /// assert_eq!(0.1f64.bits(), 0);
     /// ```
     fn bits(&self) -> u128 {
         0
@@ -131,6 +129,7 @@ pub trait Scalar:
 }
 
 impl Scalar for f64 {
+    const EXACT: bool = false;
     #[inline]
     fn from_f64(x: f64) -> Option<Self> {
         x.is_finite().then_some(x)
@@ -169,7 +168,10 @@ impl Scalar for f64 {
 }
 
 impl Scalar for BigRational {
-    const IS_EXACT: bool = true;
+    const EXACT: bool = true;
+    fn bits(&self) -> u128 {
+        u128::from(self.numer().bits() + self.denom().bits())
+    }
     fn from_f64(x: f64) -> Option<Self> {
         <BigRational as FromPrimitive>::from_f64(x)
     }
@@ -181,9 +183,6 @@ impl Scalar for BigRational {
     }
     fn is_finite_value(&self) -> bool {
         true
-    }
-    fn bits(&self) -> u128 {
-        u128::from(self.numer().bits() + self.denom().bits())
     }
 }
 

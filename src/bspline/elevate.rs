@@ -22,6 +22,7 @@ use nalgebra::{DMatrix, DVector};
 
 use super::curve::BSplineCurve;
 use crate::bezier::BezierCurve;
+use crate::cost::{polynomial_bits, Cost};
 use crate::error::{Error, Result};
 use crate::scalar::Scalar;
 
@@ -72,9 +73,10 @@ impl<T: Scalar> BSplineCurve<T> {
         let q = p.saturating_add(r);
         let limits = crate::limits::Limits::DEFAULT;
         limits.check_degree("B-spline degree elevation", q)?;
-        let bits = crate::cost::max_bits(knots)
-            .saturating_add(crate::cost::max_bits(self.control().iter()));
-        crate::checked::point_work::<T>("B-spline degree elevation", self.elevate_cost(r, bits))?;
+        crate::checked::point_work::<T>(
+            "B-spline degree elevation",
+            self.elevate_cost(r, crate::cost::max_bits(self.control().iter()), crate::cost::max_bits(knots)),
+        )?;
         let d = self.dim();
         // The new knots: each distinct knot r times more.
         let mut new_knots: Vec<T> = Vec::with_capacity(knots.len() * (r + 1));
@@ -134,37 +136,45 @@ impl<T: Scalar> BSplineCurve<T> {
         BSplineCurve::new(q, new_knots, control)
     }
 
-    /// The work of [`elevate`](Self::elevate)`(r)` on numbers of `bits` bits (the knots' and
-    /// control points'): for each of the `s` non-empty spans, the Bézier form (`p + 1`
-    /// blossoms of `p²` combinations) raised `r` times (`q·d` each, `q = p + r`), then for each
-    /// of the about `s·q + p + 1` new control points a blossom of `q²/2 · d` combinations — in
-    /// all about `s·q³·d` operations, on numbers that grow by the bits of the knots at every
-    /// level ([`polynomial_bits`](crate::cost::polynomial_bits)`(q, bits, bits)`).
+    /// The cost of [`elevate`](Self::elevate) by `r`, on control points of `control_bits` and
+    /// knots of `knot_bits` bits: for each of the `s ≤ n − p` spans the `p + 1` blossoms of its
+    /// Bézier form (`p (p+1)/2` combinations each) and their elevation to degree `q = p + r`
+    /// ([`bernstein::elevate_cost`](crate::bernstein::elevate_cost) per coordinate), then for
+    /// each of the `n + s r` new control points a polar form of degree `q` (`q (q+1)/2`
+    /// combinations); a combination of `d`-dimensional points is `3d + 3` operations. The
+    /// numbers grow as a polynomial of degree `p + q` in ratios of two knots.
     ///
     /// ```
     /// use cagd::bspline::BSplineCurve;
-    /// let c = BSplineCurve::clamped(2, nalgebra::DMatrix::<f64>::zeros(2, 4))?; // 2 spans
-    /// assert!(c.elevate_cost(1, 0).ops() < c.elevate_cost(10, 0).ops());
-    /// assert_eq!(c.elevate_cost(usize::MAX, 0).ops(), u128::MAX);
+    /// use nalgebra::DMatrix;
+    /// let c = BSplineCurve::clamped(3, DMatrix::<f64>::zeros(2, 6))?;
+    /// // 3 spans, 6 + 3 = 9 new control points of degree 4.
+    /// assert_eq!(c.elevate_cost(1, 0, 0).ops(), 3 * (24 * 9 + 2 * 25) + 9 * 10 * 9);
     /// # Ok::<(), cagd::Error>(())
     /// ```
-    pub fn elevate_cost(&self, r: usize, bits: u128) -> crate::cost::Cost {
-        let p = self.degree() as u128;
-        let knots = self.knots().as_slice();
-        let spans = knots.windows(2).filter(|w| w[0] != w[1]).count() as u128;
-        let (q, d) = (p.saturating_add(r as u128), self.dim() as u128);
-        let pieces = spans.saturating_mul(
-            (p + 1)
-                .saturating_mul(p.saturating_mul(p).max(1))
-                .saturating_add((r as u128).saturating_mul(q).saturating_mul(d)),
-        );
-        let points = spans.saturating_mul(q).saturating_add(p + 1);
-        let blossoms = points
-            .saturating_mul(q.saturating_mul(q) / 2 + 1)
-            .saturating_mul(3 * d);
-        crate::cost::Cost::new(
-            pieces.saturating_add(blossoms),
-            crate::cost::polynomial_bits(usize::try_from(q).unwrap_or(usize::MAX), bits, bits),
+    pub fn elevate_cost(&self, r: usize, control_bits: u128, knot_bits: u128) -> Cost {
+        let (p, q) = (self.degree() as u128, self.degree().saturating_add(r) as u128);
+        let n = self.control().ncols() as u128;
+        let spans = n.saturating_sub(p);
+        let combination = 3 * self.dim() as u128 + 3;
+        let per_span = ((p + 1) * p * (p + 1) / 2)
+            .saturating_mul(combination)
+            .saturating_add(
+                crate::bernstein::elevate_cost(self.degree(), r, 0)
+                    .ops()
+                    .saturating_mul(self.dim() as u128),
+            );
+        let new_points = n.saturating_add(spans.saturating_mul(r as u128));
+        let per_point = (q.saturating_mul(q.saturating_add(1)) / 2).saturating_mul(combination);
+        Cost::new(
+            spans
+                .saturating_mul(per_span)
+                .saturating_add(new_points.saturating_mul(per_point)),
+            polynomial_bits(
+                self.degree().saturating_add(self.degree()).saturating_add(r),
+                knot_bits.saturating_mul(2),
+                control_bits,
+            ),
         )
     }
 

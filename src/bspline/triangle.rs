@@ -15,7 +15,7 @@
 
 use super::basis::cox_de_boor_unchecked;
 use super::KnotVector;
-use crate::cost::Cost;
+use crate::cost::{polynomial_bits, Cost};
 use crate::error::{check_finite, check_overflow, Error, Result};
 use crate::scalar::Scalar;
 
@@ -69,14 +69,9 @@ pub fn try_cox_de_boor_triangle<T: Scalar>(p: usize, knots: &[T], u: &T) -> Resu
     }
     check_finite("Cox-de Boor parameter", std::iter::once(u))?;
     let knots_checked = KnotVector::new(knots.to_vec())?;
-    let m = knots.len() as u128;
     crate::checked::point_work::<T>(
         "Cox-de Boor triangle",
-        Cost::new(6 * (p as u128 + 1) * m, 0).grown(crate::cost::polynomial_bits(
-            p,
-            u.bits(),
-            3 * crate::cost::max_bits(knots),
-        )),
+        triangle_cost(p, knots.len(), u.bits(), crate::cost::max_bits(knots)),
     )?;
     let levels = triangle(p, knots_checked.as_slice(), u);
     check_overflow("Cox-de Boor triangle", levels.iter().flatten())?;
@@ -112,6 +107,22 @@ fn triangle<T: Scalar>(p: usize, knots: &[T], u: &T) -> Vec<Vec<T>> {
         levels.push(level);
     }
     levels
+}
+
+/// The cost of [`cox_de_boor_triangle`] of degree `p` on `knot_count = m + 1` knots at one
+/// parameter of `param_bits` bits: at most `4m` operations per level, `p + 1` levels, on
+/// numbers of `p` levels of `(u − u_i)/(u_{i+j} − u_i)`
+/// ([`polynomial_bits`]`(p, param_bits + 3 knot_bits, 0)`, as [`basis_cost`](super::basis_cost)).
+///
+/// ```
+/// assert_eq!(cagd::bspline::triangle_cost(2, 6, 0, 0), cagd::cost::Cost::new(60, 2));
+/// ```
+pub fn triangle_cost(p: usize, knot_count: usize, param_bits: u128, knot_bits: u128) -> Cost {
+    let m = knot_count.saturating_sub(1) as u128;
+    Cost::new(
+        (p as u128 + 1).saturating_mul(m).saturating_mul(4),
+        polynomial_bits(p, param_bits.saturating_add(knot_bits.saturating_mul(3)), 0),
+    )
 }
 
 #[cfg(test)]

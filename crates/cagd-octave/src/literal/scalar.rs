@@ -71,9 +71,6 @@ pub enum PowerError {
 
 /// A number type the evaluator works in: `f64` (as Octave) or [`BigRational`] (exact).
 pub trait LiteralScalar: Scalar {
-    /// Whether arithmetic is exact (no rounding).
-    const EXACT: bool;
-
     /// Whether an exact number has grown too large to compute with in reasonable time
     /// (numerator and denominator together longer than [`MAX_EXACT_BITS`]); never for `f64`.
     fn is_oversized(&self) -> bool {
@@ -128,8 +125,6 @@ pub trait LiteralScalar: Scalar {
 }
 
 impl LiteralScalar for f64 {
-    const EXACT: bool = false;
-
     fn from_literal(_text: &str, nearest: f64) -> Option<Self> {
         nearest.is_finite().then_some(nearest)
     }
@@ -193,8 +188,6 @@ impl LiteralScalar for f64 {
 pub const MAX_EXACT_BITS: u64 = 1 << 12;
 
 impl LiteralScalar for BigRational {
-    const EXACT: bool = true;
-
     fn is_oversized(&self) -> bool {
         self.numer().bits() + self.denom().bits() > MAX_EXACT_BITS
     }

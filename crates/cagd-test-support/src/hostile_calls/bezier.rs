@@ -2,7 +2,7 @@
 
 use cagd::bezier::{bilinear_interpolate, BezierCurve, BezierPatch, Edge, MatrixForm};
 use cagd::grid::PointGrid;
-use cagd::{Curve, Surface};
+use cagd::{Curve, CurveDeriv, Surface};
 
 use super::check::{ok, total};
 use super::draws::*;
@@ -99,7 +99,7 @@ pub fn curves(rng: &Draws) {
         "bezier::DeCasteljauScheme::right_control",
         scheme.right_control(),
     );
-    curve_methods(rng, "bezier::BezierCurve", &c);
+    deriv_methods(rng, "bezier::BezierCurve", &c);
 }
 
 /// Matrix (monomial) forms from arbitrary coefficients.
@@ -256,6 +256,16 @@ pub fn surface_methods<S: Surface>(rng: &Draws, name: &'static str, s: &S) {
     }
 }
 
+/// The `Curve` and `CurveDeriv` trait methods of a curve that knows its derivative, under the
+/// names `"{name} as Curve::…"` and `"{name} as CurveDeriv::…"`.
+pub fn deriv_methods<C: CurveDeriv>(rng: &Draws, name: &'static str, c: &C) {
+    curve_methods(rng, name, c);
+    let t = parameter(rng);
+    let named = |method: &str| format!("{name} as CurveDeriv::{method}");
+    total(&named("eval_derivative"), c.eval_derivative(t));
+    ok(&named("try_eval_derivative"), c.try_eval_derivative(t));
+}
+
 /// The `Curve` trait methods of any curve, under the names `"{name} as Curve::…"`.
 pub fn curve_methods<C: Curve>(rng: &Draws, name: &'static str, c: &C) {
     let t = parameter(rng);
@@ -264,7 +274,7 @@ pub fn curve_methods<C: Curve>(rng: &Draws, name: &'static str, c: &C) {
     total(&named("domain"), c.domain());
     total(&named("eval"), c.eval(t));
     ok(&named("try_eval"), c.try_eval(t));
-    total(&named("eval_derivative"), c.eval_derivative(t));
+    total(&named("point_cost"), c.point_cost(rng.below(200) as u128));
     let ts = parameters(rng, small(rng));
     let mut out = vec![0.0; ts.len() * c.dim() + rng.below(2)];
     if ok(&named("eval_many_into"), c.eval_many_into(&ts, &mut out)).is_some() {

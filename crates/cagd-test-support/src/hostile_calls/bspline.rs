@@ -7,7 +7,7 @@ use cagd::bspline::{
 use cagd::nurbs::{conic_arc, ConicKind, NurbsCurve, NurbsSurface};
 use nalgebra::DMatrix;
 
-use super::bezier::{curve, curve_methods, surface_methods};
+use super::bezier::{curve, deriv_methods, surface_methods};
 use super::check::{ok, total};
 use super::draws::*;
 
@@ -155,7 +155,7 @@ pub fn bspline_curves(rng: &Draws) {
         c.insert_knots(&parameters(rng, small(rng))),
     );
     let r = size(rng);
-    total("bspline::BSplineCurve::elevate_cost", c.elevate_cost(r, 64));
+    total("bspline::BSplineCurve::elevate_cost", c.elevate_cost(r, 64, 64));
     ok("bspline::BSplineCurve::elevate", c.elevate(r));
     ok(
         "integral::bspline_antiderivative",
@@ -165,7 +165,7 @@ pub fn bspline_curves(rng: &Draws) {
         "integral::bspline_integral",
         cagd::integral::bspline_integral(&c),
     );
-    curve_methods(rng, "bspline::BSplineCurve", &c);
+    deriv_methods(rng, "bspline::BSplineCurve", &c);
     let nurbs = total(
         "nurbs::NurbsCurve::from_bspline",
         NurbsCurve::from_bspline(&c),
@@ -248,7 +248,7 @@ pub fn nurbs_curves(rng: &Draws) {
             ok(name, Ok(out));
         }
     }
-    curve_methods(rng, "nurbs::NurbsCurve", &c);
+    deriv_methods(rng, "nurbs::NurbsCurve", &c);
     ok(
         "nurbs::NurbsSurface::ruled",
         NurbsSurface::ruled(&c, &c.insert_knots(&[]).unwrap_or(c.clone())),

@@ -12,17 +12,17 @@ use cagd::cost::Cost;
 use cagd::gordon::{gordon_point_cost, gordon_setup_cost, GordonSurface};
 use cagd::surfaces::{CubicMatrixPatch, FergusonPatch, RuledSurface};
 use cagd::tolerance::Corner;
-use cagd::{Curve, FnCurve, OnUnitInterval, SampledCurve, Tolerance};
+use cagd::{Curve, CurveDeriv, FnCurve, OnUnitInterval, SampledCurve, Tolerance};
 use nalgebra::{DMatrix, DVector};
 
-use super::bezier::{curve_methods, surface_methods};
+use super::bezier::{curve_methods, deriv_methods, surface_methods};
 use super::check::{any, ok, total};
 use super::draws::*;
 
 /// A boundary curve of dimension `d`: Bézier (on `[0, 1]` or another interval), sampled, or a
 /// closure — a straight line of the given ends, or one returning a point of another
 /// dimension, NaN or ±∞ at some parameters.
-type Boundary = Box<dyn Curve + Send + Sync>;
+type Boundary = Box<dyn CurveDeriv + Send + Sync>;
 
 fn boundary(rng: &Draws, d: usize, from: &DVector<f64>, to: &DVector<f64>) -> Boundary {
     let (p, q) = (from.clone(), to.clone());
@@ -60,7 +60,7 @@ fn boundary(rng: &Draws, d: usize, from: &DVector<f64>, to: &DVector<f64>) -> Bo
 
 /// The line from `p` to `q` on `[0, 1]`, with its derivative; `bad` = 1 returns one coordinate
 /// too many away from the ends, 2 returns NaN there, 3 overflows there.
-fn line(p: DVector<f64>, q: DVector<f64>, bad: usize) -> impl Curve + Send + Sync {
+fn line(p: DVector<f64>, q: DVector<f64>, bad: usize) -> impl CurveDeriv + Send + Sync {
     let (p2, q2) = (p.clone(), q.clone());
     FnCurve::with_derivative(
         p.len(),
@@ -473,7 +473,7 @@ pub fn surfaces(rng: &Draws) {
         total("param::SampledCurve::params", b.params());
         total("param::SampledCurve::samples", b.samples());
         total("param::SampledCurve::eval_cost", b.eval_cost(64, 64));
-        curve_methods(rng, "param::SampledCurve", &b);
+        deriv_methods(rng, "param::SampledCurve", &b);
         ok(
             "param::SampledCurve::with_domain",
             b.clone()

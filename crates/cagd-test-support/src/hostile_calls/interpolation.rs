@@ -15,7 +15,7 @@ use cagd::spline::{
 };
 use nalgebra::DVector;
 
-use super::bezier::{curve, curve_methods};
+use super::bezier::{curve, curve_methods, deriv_methods};
 use super::check::{any, ok, total};
 use super::draws::*;
 
@@ -108,7 +108,7 @@ pub fn lagrange(rng: &Draws) {
     };
     total("lagrange::LagrangeInterpolant::basis", i.basis());
     total("lagrange::LagrangeInterpolant::values", i.values());
-    curve_methods(rng, "lagrange::LagrangeInterpolant", &i);
+    deriv_methods(rng, "lagrange::LagrangeInterpolant", &i);
 }
 
 /// The interpolation forms of the lecture notes: the Lagrange polynomial, piecewise linear
@@ -223,7 +223,7 @@ pub fn splines(rng: &Draws) {
     {
         ok("spline::CubicSpline::eval_many_into", Ok(out));
     }
-    curve_methods(rng, "spline::CubicSpline", &s);
+    deriv_methods(rng, "spline::CubicSpline", &s);
 }
 
 /// Hermite (Ferguson) cubics from arbitrary points and tangents, and their bases.
@@ -272,5 +272,5 @@ pub fn hermite(rng: &Draws) {
         h.scaled_tangents(mostly_finite(rng)),
     );
     ok("hermite::HermiteCubic::to_bezier", h.to_bezier());
-    curve_methods(rng, "hermite::HermiteCubic", &h);
+    deriv_methods(rng, "hermite::HermiteCubic", &h);
 }
