@@ -4,7 +4,7 @@
 
 use cagd::bernstein::{bernstein, bernstein_all, bernstein_derivative_all};
 use cagd::bezier::{BezierCurve, BezierPatch, Edge};
-use cagd::{Curve, Scalar};
+use cagd::Scalar;
 use nalgebra::{DMatrix, DVector};
 use num_rational::BigRational;
 use proptest::prelude::*;
