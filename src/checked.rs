@@ -1,5 +1,5 @@
 //! The checks every fallible evaluation of the crate makes, in one place: the parameters
-//! (NaN, ±∞, the domain), the work of one point against [`Limits::DEFAULT`], and the point
+//! (NaN, ±∞, the domain), the work of one point against [`Limits::DEFAULT`](crate::limits::Limits::DEFAULT), and the point
 //! itself — its dimension (a user's curve may return a point of another dimension) and that
 //! every coordinate is finite ([`Error::Overflow`] otherwise: finite control points can still
 //! give `1.7e308 + 1.7e308`).
@@ -11,24 +11,12 @@
 
 use nalgebra::DVector;
 
-use crate::cost::Cost;
 use crate::error::{check_finite, Error, Result};
-use crate::limits::Limits;
 use crate::param::{check_parameter, Surface};
 use crate::scalar::Scalar;
 
 // The checks of curves live with the `Curve` trait (the curves of `param` use them too).
-pub(crate) use crate::param::{eval_many_into, of_dim, point, try_eval_curve};
-
-/// The work of one point, `cost`, against [`Limits::DEFAULT`]`.max_work` (weighed as exact
-/// arithmetic for rationals): what keeps a `try_eval` of a degree-100 000 curve (10¹⁰
-/// operations per point) from running for minutes.
-///
-/// # Errors
-/// [`Error::TooLarge`] (limit `Work`) above the limit.
-pub(crate) fn point_work<T: Scalar>(what: &'static str, cost: Cost) -> Result<()> {
-    Limits::DEFAULT.check_work(what, cost.weigh(T::EXACT))
-}
+pub(crate) use crate::param::{eval_many_into, of_dim, point, point_work, try_eval_curve};
 
 /// What `Surface::try_eval` does for the crate's surfaces, as [`try_eval_curve`].
 ///

@@ -895,6 +895,16 @@ pub(crate) fn check_parameter<T: Scalar>(
 // ------------------------------------------------------------------------------------------
 // The checks of every fallible evaluation of a curve (re-exported by `crate::checked`).
 
+/// The work of one point, `cost`, against [`Limits::DEFAULT`](crate::limits::Limits::DEFAULT)`.max_work` (weighed as exact
+/// arithmetic for rationals): what keeps a `try_eval` of a degree-100 000 curve (10¹⁰
+/// operations per point) from running for minutes.
+///
+/// # Errors
+/// [`Error::TooLarge`] (limit `Work`) above the limit.
+pub(crate) fn point_work<T: Scalar>(what: &'static str, cost: Cost) -> Result<()> {
+    crate::limits::Limits::DEFAULT.check_work(what, cost.weigh(T::EXACT))
+}
+
 /// `point` if it has `dim` coordinates, all finite.
 ///
 /// # Errors
@@ -930,7 +940,7 @@ pub(crate) fn try_eval_curve<T: Scalar, C: Curve<T> + ?Sized>(
     t: T,
 ) -> Result<DVector<T>> {
     check_parameter(what, &t, &curve.domain())?;
-    crate::checked::point_work::<T>(what, curve.point_cost(t.bits()))?;
+    point_work::<T>(what, curve.point_cost(t.bits()))?;
     point(what, curve.dim(), curve.eval(t))
 }
 
@@ -967,7 +977,7 @@ pub(crate) fn of_dim<T: Scalar>(dim: usize, point: DVector<T>) -> DVector<T> {
         return point;
     }
     let nan = T::from_f64(0.0).map_or_else(T::zero, |z| {
-        if crate::grid::exact::is_rational::<T>() {
+        if T::EXACT {
             z
         } else {
             T::from_ratio(0, 1) / T::from_ratio(0, 1)

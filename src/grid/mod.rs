@@ -111,7 +111,7 @@ where
     if row_len == 0 || out.is_empty() {
         return Ok(());
     }
-    let scan = !exact::is_rational::<T>();
+    let scan = !T::EXACT;
     let run_block = |first: usize, block: &mut [T]| -> Option<usize> {
         let mut scratch = init();
         let mut bad = None;
