@@ -3,7 +3,7 @@
 
 Reads the public API of the crate `cagd` from rustdoc's JSON output (argument 1) and the names
 the calls check under (the string literals given to `ok`, `any`, `total`, `grid_into` and the
-type names given to `curve_methods` / `surface_methods` in
+type names given to `curve_methods`, `deriv_methods` / `surface_methods` in
 crates/cagd-test-support/src/hostile_calls/), and prints how many of the public functions are
 called, and the list of those that are not. Run it through fuzz/api_coverage.sh.
 """
@@ -85,16 +85,20 @@ source = "".join(p.read_text() for p in sorted(Path(sys.argv[2]).glob("*.rs")))
 called = set()
 # Every string literal naming a function: the checks' names (`ok("bezier::BezierCurve::new",
 # …)`) and the names in tables of functions checked in a loop.
-for m in re.finditer(r'"([a-z_]+::[A-Za-z0-9_:]+(?: as (?:Curve|Surface)::[a-z0-9_]+)?)(?: \([^"]*\))?"', source):
+for m in re.finditer(r'"([a-z_]+::[A-Za-z0-9_:]+(?: as (?:Curve|CurveDeriv|CurveDeriv2|Surface)::[a-z0-9_]+)?)(?: \([^"]*\))?"', source):
     called.add(m.group(1))
 types = set()
-for m in re.finditer(r'\b(curve|surface)_methods\(\s*rng,\s*"([^"]+)"', source):
+CURVE = ["dim", "domain", "eval", "try_eval", "point_cost", "eval_many_into"]
+METHODS = {
+    "curve": [("Curve", m) for m in CURVE],
+    "deriv": [("Curve", m) for m in CURVE]
+    + [("CurveDeriv", "eval_derivative"), ("CurveDeriv", "try_eval_derivative")],
+    "surface": [("Surface", m)
+                for m in ["dim", "domain", "eval", "try_eval", "eval_grid", "eval_grid_into"]],
+}
+for m in re.finditer(r'\b(curve|deriv|surface)_methods\(\s*rng,\s*"([^"]+)"', source):
     types.add(m.group(2))
-    trait = "Curve" if m.group(1) == "curve" else "Surface"
-    methods = (["dim", "domain", "eval", "try_eval", "eval_derivative", "eval_many_into"]
-               if trait == "Curve" else
-               ["dim", "domain", "eval", "try_eval", "eval_grid", "eval_grid_into"])
-    for method in methods:
+    for trait, method in METHODS[m.group(1)]:
         called.add(f"{m.group(2)} as {trait}::{method}")
 
 covered = [name for name, paths in api if paths & called]
