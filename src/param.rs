@@ -811,7 +811,10 @@ impl<T: Scalar, C: CurveDeriv<T>> CurveDeriv<T> for OnUnitInterval<C, T> {
     /// A derivative of another dimension than [`Curve::dim`] becomes NaNs of the right
     /// dimension, as in [`eval`](Curve::eval).
     fn eval_derivative(&self, s: T) -> DVector<T> {
-        let d = of_dim(self.curve.dim(), self.curve.eval_derivative(self.parameter(s)));
+        let d = of_dim(
+            self.curve.dim(),
+            self.curve.eval_derivative(self.parameter(s)),
+        );
         if self.is_identity() {
             return d;
         }

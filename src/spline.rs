@@ -489,7 +489,11 @@ impl<T: Scalar> CubicSpline<T> {
         // Finite points whose differences overflow: the spline's own error, not the solve's.
         crate::error::check_overflow(
             "spline tangent equations",
-            rhs.iter().flat_map(|r| r.iter()).chain(&diag).chain(&sub).chain(&sup),
+            rhs.iter()
+                .flat_map(|r| r.iter())
+                .chain(&diag)
+                .chain(&sub)
+                .chain(&sup),
         )?;
         let t = if closed {
             solve_cyclic_tridiagonal(&sub, &diag, &sup, &rhs)?

@@ -75,7 +75,11 @@ impl<T: Scalar> BSplineCurve<T> {
         limits.check_degree("B-spline degree elevation", q)?;
         crate::checked::point_work::<T>(
             "B-spline degree elevation",
-            self.elevate_cost(r, crate::cost::max_bits(self.control().iter()), crate::cost::max_bits(knots)),
+            self.elevate_cost(
+                r,
+                crate::cost::max_bits(self.control().iter()),
+                crate::cost::max_bits(knots),
+            ),
         )?;
         let d = self.dim();
         // The new knots: each distinct knot r times more.
@@ -153,7 +157,10 @@ impl<T: Scalar> BSplineCurve<T> {
     /// # Ok::<(), cagd::Error>(())
     /// ```
     pub fn elevate_cost(&self, r: usize, control_bits: u128, knot_bits: u128) -> Cost {
-        let (p, q) = (self.degree() as u128, self.degree().saturating_add(r) as u128);
+        let (p, q) = (
+            self.degree() as u128,
+            self.degree().saturating_add(r) as u128,
+        );
         let n = self.control().ncols() as u128;
         let spans = n.saturating_sub(p);
         let combination = 3 * self.dim() as u128 + 3;
@@ -171,7 +178,9 @@ impl<T: Scalar> BSplineCurve<T> {
                 .saturating_mul(per_span)
                 .saturating_add(new_points.saturating_mul(per_point)),
             polynomial_bits(
-                self.degree().saturating_add(self.degree()).saturating_add(r),
+                self.degree()
+                    .saturating_add(self.degree())
+                    .saturating_add(r),
                 knot_bits.saturating_mul(2),
                 control_bits,
             ),

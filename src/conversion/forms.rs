@@ -177,7 +177,10 @@ pub fn form_conversion<T: Scalar>(
 pub fn form_conversion_cost(k: usize, d: usize, geometry_bits: u128) -> Cost {
     let k = k as u128;
     Cost::new(
-        (4 * k * k * k).saturating_add(2 * d as u128 * k * k),
+        k.saturating_mul(k)
+            .saturating_mul(k)
+            .saturating_mul(4)
+            .saturating_add((2 * d as u128).saturating_mul(k).saturating_mul(k)),
         geometry_bits.saturating_add(2 * k + 8),
     )
 }

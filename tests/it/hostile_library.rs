@@ -439,3 +439,35 @@ proptest::proptest! {
         );
     }
 }
+
+#[test]
+fn periodic_wrapping_of_a_far_parameter_ends() {
+    // 10³⁰⁰ / 2: a double where k + 1 = k; the floor used to count up to it one by one.
+    let w = cagd::bspline::wrap_periodic(1e300, &1.0, &3.0);
+    assert!((1.0..3.0).contains(&w), "{w}");
+    let c = BSplineCurve::clamped(1, DMatrix::from_row_slice(1, 2, &[0.0, 1.0])).unwrap();
+    let mut out = [0.0];
+    let r =
+        c.eval_many_extrapolated_into(&[1e300], &mut out, &cagd::bspline::Extrapolation::Periodic);
+    assert!(r.is_ok() && out[0].is_finite(), "{r:?} {out:?}");
+}
+
+#[test]
+fn curvature_of_overflowing_or_non_finite_derivatives_is_an_error() {
+    use cagd::curvature::curvature_squared;
+    let big = DVector::from_vec(vec![1e200, 0.0]);
+    let r = curvature_squared(&big, &DVector::from_vec(vec![0.0, 1.0]));
+    assert!(matches!(r, Err(Error::Overflow { .. })), "{r:?}");
+    let nan = DVector::from_vec(vec![f64::NAN, 1.0]);
+    let r = curvature_squared(&nan, &DVector::from_vec(vec![0.0, 1.0]));
+    assert!(matches!(r, Err(Error::NonFinite { .. })), "{r:?}");
+}
+
+#[test]
+fn bernstein_integrals_of_any_degree_and_values_of_bad_indices() {
+    assert!(cagd::integral::bernstein_integral::<f64>(usize::MAX) > 0.0);
+    let r = cagd::integral::bernstein_antiderivative_values::<f64>(2, &[3], &[0.5]);
+    assert!(matches!(r, Err(Error::InvalidArgument { .. })), "{r:?}");
+    let r = cagd::integral::bernstein_antiderivative_values::<f64>(usize::MAX, &[0], &[0.5]);
+    assert!(too_large(r));
+}

@@ -85,6 +85,7 @@ pub fn bernstein(rng: &Draws) {
 /// The matrices of the matrix-form notes and the lecture notes, conversions of arbitrary
 /// geometry, inversion of arbitrary matrices.
 pub fn conversions(rng: &Draws) {
+    super::course::forms(rng);
     let forms = [CubicForm::Hermite, CubicForm::Bezier, CubicForm::BSpline];
     let (from, to) = (rng.pick(&forms), rng.pick(&forms));
     total("conversion::CubicForm::matrix", from.matrix::<f64>());
@@ -143,6 +144,9 @@ pub fn conversions(rng: &Draws) {
 
 /// Joints of arbitrary vectors and curves, free points; integrals of curves.
 pub fn continuity(rng: &Draws) {
+    super::course::joints(rng);
+    super::course::integrals(rng);
+    super::course::curvature(rng);
     let d = small(rng);
     let v = |rng: &Draws| vector(rng, if rng.below(10) == 0 { d + 1 } else { d });
     ok(

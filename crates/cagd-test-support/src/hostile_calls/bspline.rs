@@ -100,6 +100,7 @@ fn bspline(rng: &Draws) -> Option<BSplineCurve> {
 
 /// Evaluations, derivatives, knot insertion, elevation and integrals of a B-spline curve.
 pub fn bspline_curves(rng: &Draws) {
+    super::course::bspline_extras(rng);
     let Some(c) = bspline(rng) else { return };
     let t = parameter(rng);
     total("bspline::BSplineCurve::degree", c.degree());
@@ -155,7 +156,10 @@ pub fn bspline_curves(rng: &Draws) {
         c.insert_knots(&parameters(rng, small(rng))),
     );
     let r = size(rng);
-    total("bspline::BSplineCurve::elevate_cost", c.elevate_cost(r, 64, 64));
+    total(
+        "bspline::BSplineCurve::elevate_cost",
+        c.elevate_cost(r, 64, 64),
+    );
     ok("bspline::BSplineCurve::elevate", c.elevate(r));
     ok(
         "integral::bspline_antiderivative",
@@ -257,6 +261,7 @@ pub fn nurbs_curves(rng: &Draws) {
 
 /// B-spline and NURBS surfaces of arbitrary degrees, knots, nets and weights.
 pub fn surfaces(rng: &Draws) {
+    super::course::nurbs_extras(rng);
     let (p, q, d) = (small(rng), small(rng), 1 + small(rng) % 3);
     let (m, n) = (small(rng), small(rng));
     let coords: Vec<DMatrix<f64>> = (0..d).map(|_| matrix(rng, m, n)).collect();

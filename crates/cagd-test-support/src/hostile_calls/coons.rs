@@ -417,6 +417,7 @@ pub fn gordon(rng: &Draws) {
 
 /// Sampled curves, closures and reparametrised curves; ruled, matrix and Ferguson patches.
 pub fn surfaces(rng: &Draws) {
+    super::course::patch_extras(rng);
     let (d, n) = (small(rng), small(rng));
     let sampled = |rng: &Draws| SampledCurve::new(ordered(rng, n), matrix(rng, d, n));
     let f = FnCurve::new(1, |t: f64| DVector::from_element(1, t * t));

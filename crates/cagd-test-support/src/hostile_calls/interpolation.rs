@@ -22,6 +22,7 @@ use super::draws::*;
 /// Lagrange bases of arbitrary nodes (1001 equally spaced ones among them), their values,
 /// interpolants, power and Bernstein forms, node placements.
 pub fn lagrange(rng: &Draws) {
+    super::course::nodes(rng);
     let nodes = ordered(rng, count(rng));
     let t = parameter(rng);
     ok(
@@ -153,6 +154,7 @@ pub fn forms(rng: &Draws) {
 /// Interpolating cubic splines through arbitrary points at arbitrary parameters (5·10⁻³²⁴
 /// apart among them), and the tridiagonal solves behind them.
 pub fn splines(rng: &Draws) {
+    super::course::spline_extras(rng);
     let n = count(rng).min(60);
     let d = 1 + small(rng) % 3;
     let points = matrix(rng, d, n);

@@ -22,6 +22,7 @@ pub mod bezier;
 pub mod bspline;
 pub mod check;
 pub mod coons;
+pub mod course;
 pub mod draws;
 pub mod interpolation;
 
