@@ -51,8 +51,8 @@ def walk(module_id, prefix):
             walk(item_id, prefix + name + "::")
         elif kind == "function":
             found.setdefault(item_id, set()).add(prefix + name)
-        elif kind == "trait" and name not in ("Curve", "Surface"):
-            # Curve and Surface are counted per implementation (below); other traits (Scalar)
+        elif kind == "trait" and name not in ("Curve", "CurveDeriv", "CurveDeriv2", "Surface"):
+            # Curve, CurveDeriv(2) and Surface are counted per implementation (below); other traits (Scalar)
             # by their own methods.
             for method in trait_methods(item_id):
                 found.setdefault((item_id, method), set()).add(f"{prefix}{name}::{method}")

@@ -301,7 +301,8 @@ pub fn numbers(rng: &Draws) {
     total("tolerance::Corner::index", corner.index());
     let mut limits = Limits::default();
     let which = rng.pick(&Limit::ALL);
-    total("limits::Limits::set", limits.set(which, rng.bits()));
+    limits.set(which, rng.bits());
+    total("limits::Limits::set", &limits);
     total("limits::Limits::get", limits.get(which));
     total("limits::Limit::field", which.field());
     let n = size(rng);
