@@ -1,6 +1,6 @@
 //! Argument groups shared by the subcommands (clap derive), so that every subcommand spells
 //! the same option the same way: `--format`, `--exact`, `-o/--output`, `--plot`, `--mesh`,
-//! `--steps`, `--script`, `--t`, `--u`, `--v`, `--n`, `--rows`.
+//! `--steps`, `--script`, `--t`, `--u`, `--v`, `--n`, `--rows`/`--columns`.
 
 use std::path::PathBuf;
 
@@ -120,12 +120,18 @@ pub struct SurfaceParamArgs {
     pub list: bool,
 }
 
-/// Orientation of point matrices.
+/// Orientation of point matrices. Without either flag, a matrix that reads either way (both
+/// sizes at most 3) is read as columns with a note saying so.
 #[derive(Debug, Clone, Args)]
 pub struct RowsArgs {
-    /// Points are the rows of the input matrices (default: the columns, as in the thesis).
+    /// Points are the rows of the input matrices, as the notes write them (default: the
+    /// columns, as in the thesis).
     #[arg(long)]
     pub rows: bool,
+    /// Points are the columns of the input matrices, as the thesis writes them (the default,
+    /// stated: no note about the orientation).
+    #[arg(long, conflicts_with = "rows")]
+    pub columns: bool,
 }
 
 /// Resource limits (see [`cagd::limits`] and [`crate::limits`]); each overrides its `CAGD_MAX_…` environment

@@ -174,14 +174,14 @@ pub fn load_matrix<T: LiteralScalar>(
         } else {
             format!("{argument} {trimmed}")
         };
+        if !is_octave_text(&contents) {
+            crate::slips::decimal_commas_in_file(argument, &contents);
+        }
         return parse_data_text(limits, &shown, &contents);
     }
-    if !is_variable && looks_like_path(trimmed) {
-        return Err(CliError::io(
-            format!("{argument} {trimmed}"),
-            &std::io::Error::from(std::io::ErrorKind::NotFound),
-            MATRIX_FORM,
-        ));
+    if !is_variable {
+        missing_file(argument, trimmed)?;
+        crate::slips::decimal_commas(argument, text);
     }
     let mut env = match script {
         Some(s) => s.env().clone(),
@@ -213,6 +213,19 @@ pub fn load_matrix<T: LiteralScalar>(
     Ok(value)
 }
 
+/// "No such file" for a text that names a file (`net.txt`, `net.txt:B`) that does not exist.
+fn missing_file(argument: &str, text: &str) -> Result<(), CliError> {
+    let path = split_name(text).map_or(text, |(path, _)| path);
+    if !looks_like_path(path) {
+        return Ok(());
+    }
+    Err(CliError::io(
+        format!("{argument} {path}"),
+        &std::io::Error::from(std::io::ErrorKind::NotFound),
+        MATRIX_FORM,
+    ))
+}
+
 /// Refuses the first of `warnings`: what a data script accepts with a warning (Octave would
 /// refuse it), an argument typed on the command line must spell out (`.*` for `*`, …).
 fn refuse_lenient(
@@ -242,10 +255,15 @@ fn refuse_lenient(
 
 /// `file.txt:name` with an existing file `file.txt` and an Octave identifier `name`.
 fn split_variable(text: &str) -> Option<(&str, &str)> {
+    split_name(text).filter(|(path, _)| is_file(path))
+}
+
+/// `path:name` with an Octave identifier `name` (the path need not exist).
+fn split_name(text: &str) -> Option<(&str, &str)> {
     let (path, name) = text.rsplit_once(':')?;
     let valid = name.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
         && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
-    (valid && is_file(path)).then_some((path, name))
+    valid.then_some((path, name))
 }
 
 /// The form of an Octave text file argument, for error messages.

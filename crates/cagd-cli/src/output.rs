@@ -215,19 +215,17 @@ fn aligned(m: &DMatrix<String>) -> String {
     out
 }
 
-/// The entries of a matrix as the text format prints them: `digits` significant digits, and
-/// doubles below `10^−digits` times the largest magnitude of the matrix as 0 (round-off of a
-/// zero, such as cos(π/2) = 6.1e-17 next to 1); fractions in full.
+/// The entries of a matrix as the text format prints them: `digits` significant digits of
+/// the matrix's largest magnitude and of each entry ([`cagd_ops::number_text_scaled`]: round-off
+/// such as `0.0147999999999997` beside 4, or cos(π/2) = 6.1e-17 beside 1, does not show);
+/// fractions in full.
 fn text_entries<T: LiteralScalar>(m: &DMatrix<T>, digits: usize) -> DMatrix<String> {
-    let scale = m.iter().map(|x| x.to_f64().abs()).fold(0.0, f64::max);
-    let floor = scale * 10f64.powi(-(digits.clamp(1, 17) as i32));
-    m.map(|x| {
-        if !T::EXACT && x.to_f64().abs() < floor {
-            "0".to_string()
-        } else {
-            number_text_digits(&x, digits)
-        }
-    })
+    let scale = m
+        .iter()
+        .map(|x| x.to_f64().abs())
+        .filter(|x| x.is_finite())
+        .fold(0.0, f64::max);
+    m.map(|x| cagd_ops::number_text_scaled(&x, digits, scale))
 }
 
 fn text_matrix<T: LiteralScalar>(name: &str, m: &DMatrix<T>, digits: usize, out: &mut String) {

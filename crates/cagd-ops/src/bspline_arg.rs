@@ -8,8 +8,9 @@ use nalgebra::DMatrix;
 use crate::error::{lib, Kind, OpError, Result};
 use crate::Role;
 
-/// The form of a B-spline curve's data: `n + 1` control points, degree `p`, `n + p + 2` knots.
-pub const BSPLINE_FORM: &str = "degree p, n+1 ≥ p+1 control points and n+p+2 non-decreasing knots";
+/// The form of a B-spline curve's data: `n` control points, degree `p`, `n + p + 1` knots — the
+/// one knot-count rule and wording of [`crate::knots::KNOTS_FORM`].
+pub const BSPLINE_FORM: &str = crate::knots::KNOTS_FORM;
 
 /// The degree of a B-spline as given: the degree `p`, or the order `k = p + 1`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

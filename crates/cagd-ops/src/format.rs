@@ -49,6 +49,44 @@ pub fn number_text_digits<T: Scalar>(x: &T, digits: usize) -> String {
     double_text(rounded)
 }
 
+/// [`number_text_digits`] of an entry of a matrix whose largest magnitude is `scale`: rounded
+/// to `digits` significant digits of the scale as well as of itself, so round-off of the size
+/// of the matrix's last digit does not show (`0.0147999999999997` beside 4 is `0.0148`, and
+/// `cos(π/2) = 6.1e-17` beside 1 is `0`), as Octave shows a matrix with one scale. Fractions
+/// print in full.
+///
+/// ```
+/// use cagd_ops::number_text_scaled;
+/// assert_eq!(number_text_scaled(&0.0147999999999997f64, 15, 4.0), "0.0148");
+/// assert_eq!(number_text_scaled(&6.1e-17f64, 15, 1.0), "0");
+/// assert_eq!(number_text_scaled(&(2.0f64 / 3.0), 15, 2.0), "0.66666666666667");
+/// assert_eq!(number_text_scaled(&(1.0f64 / 3.0), 15, 0.5), "0.333333333333333");
+/// ```
+pub fn number_text_scaled<T: Scalar>(x: &T, digits: usize, scale: f64) -> String {
+    if T::EXACT {
+        return x.to_string();
+    }
+    let v = x.to_f64();
+    let digits = digits.clamp(1, 17);
+    if !v.is_finite() || !scale.is_finite() || scale <= 0.0 {
+        return number_text_digits(x, digits);
+    }
+    // The decimal place of the scale's last shown digit.
+    let last = scale.log10().floor() as i32 + 1 - digits as i32;
+    if v.abs() < 10f64.powi(last) / 2.0 {
+        return "0".into();
+    }
+    if last >= 0 {
+        return number_text_digits(x, digits);
+    }
+    let decimals = (-last) as usize;
+    let rounded: f64 = format!("{v:.decimals$}").parse().unwrap_or(v);
+    if rounded == 0.0 {
+        return "0".into();
+    }
+    number_text_digits(&rounded, digits)
+}
+
 /// The shortest round-trip decimal of a double, in exponent form below 1e-5 and from 1e15 on.
 fn double_text(v: f64) -> String {
     if v == 0.0 {

@@ -41,7 +41,7 @@ mod role;
 pub use context::{Context, Warning};
 pub use drawing::Drawing;
 pub use error::{Kind, OpError, Result};
-pub use format::{number_text, number_text_digits, TEXT_DIGITS};
+pub use format::{number_text, number_text_digits, number_text_scaled, TEXT_DIGITS};
 pub use output::{Item, Report, Value};
 pub use params::Params;
 pub use role::Role;

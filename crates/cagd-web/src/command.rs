@@ -139,4 +139,35 @@ mod tests {
         assert_eq!(v["ok"], true, "{v}");
         assert!(v["stdout"].as_str().unwrap().contains("x ="));
     }
+
+    /// Issue 24 through the page's command box: each slip gives its note, warning or error,
+    /// worded as on the command line, and the explicit readings stay silent.
+    #[test]
+    fn slips_are_named_in_the_command_box_and_explicit_readings_are_silent() {
+        let note = "cagd: warning: CONTROL: read as 3 points in 3-D, one per column; --rows if each row is a point";
+        let v = answer(&["decasteljau", "[0 0 0; 1 2 0; 2 0 1]", "--t", "0.5"]);
+        assert_eq!(v["warnings"], serde_json::json!([note]));
+        for stated in ["--rows", "--columns"] {
+            let v = answer(&["decasteljau", "[0 0 0; 1 2 0; 2 0 1]", "--t", "0.5", stated]);
+            assert_eq!(v["warnings"], serde_json::json!([]), "{stated}");
+        }
+        let v = answer(&["decasteljau", "[0,5 1,0 2,0; 1,5 2,5 0,5]", "--t", "0.5"]);
+        assert_eq!(
+            v["warnings"][0],
+            "cagd: warning: CONTROL: `0,5` read as two numbers 0 and 5; a decimal point is `0.5`"
+        );
+        let v = answer(&["lagrange", "--nodes", "[0 0,5 1]", "--points", "[1 2 3]"]);
+        let e = v["error"].as_str().unwrap();
+        assert!(
+            e.starts_with("cagd: error: --nodes: ") && e.contains("`0,5` read as two numbers"),
+            "{e}"
+        );
+        let v = answer(&["decastljau", "[0 1]"]);
+        assert!(
+            v["error"].as_str().unwrap().contains("decasteljau perhaps"),
+            "{v}"
+        );
+        let v = answer(&["decasteljau", "[0.5 1 2; 1.5 2.5 0.5]'", "--t", "0.5"]);
+        assert_eq!(v["warnings"], serde_json::json!([]));
+    }
 }

@@ -43,11 +43,12 @@ fn points(argument: &str, flat: &[f64], dim: usize) -> Result<DMatrix<f64>, CliE
             "control points given coordinate by coordinate, one point after the other",
         ));
     }
-    if let Some(i) = flat.iter().position(|x| !x.is_finite()) {
-        return Err(shape(
+    if let Some((problem, expected)) = cagd_ops::check::non_finite(flat) {
+        return Err(CliError::new(
             argument,
-            format!("coordinate {} is not a finite number", i + 1),
-            "finite numbers",
+            problem,
+            expected,
+            ErrorKind::Operation(cagd_ops::Kind::NonFinite),
         ));
     }
     Ok(DMatrix::from_column_slice(dim, flat.len() / dim, flat))
@@ -112,14 +113,19 @@ pub fn bezier_view(control: Vec<f64>, dim: usize, t: f64, samples: usize) -> Str
             ..DeCasteljau::new(b.clone())
         })?;
         warnings.extend(more);
-        let (elevated, _) = ops::execute(&Elevate::new(b.clone()))?;
+        // At the highest degree allowed the elevated curve is over the limit: the view shows
+        // the rest and says why that part is missing.
+        let elevated = ops::execute(&Elevate::new(b.clone()));
         let mut view = json!({
             "curve": item(&curve.report, "result"),
             "levels": levels(&scheme.report),
             "point": item(&scheme.report, "result"),
-            "elevated": item(&elevated.report, "control"),
+            "elevated": elevated.as_ref().map_or(Value::Null, |(e, _)| item(&e.report, "control")),
             "warnings": warnings.iter().map(|w| format!("{}: {}", w.role.key(), w.message)).collect::<Vec<_>>(),
         });
+        if let Err(e) = &elevated {
+            view["elevated_error"] = json!(format!("cagd: error: {e}"));
+        }
         match ops::execute(&Subdivide {
             t: Some(t),
             ..Subdivide::new(b)
@@ -479,12 +485,20 @@ mod tests {
     }
 
     /// The command line's words after `argument: ` for `args`.
+    /// The command line's words after `argument: `, without how it read a matrix of points
+    /// (the page takes coordinates, never a matrix to orient).
     fn cli_words(args: &[&str], argument: &str) -> String {
         let e = cagd_cli::run(std::iter::once("cagd").chain(args.iter().copied())).unwrap_err();
         let text = e.to_string();
-        text.strip_prefix(&format!("{argument}: "))
+        let mut words = text
+            .strip_prefix(&format!("{argument}: "))
             .unwrap_or_else(|| panic!("{text}"))
-            .to_string()
+            .to_string();
+        if let Some(i) = words.find(" (read as ") {
+            let end = words[i..].find(");").map_or(words.len(), |j| i + j + 1);
+            words.replace_range(i..end, "");
+        }
+        words
     }
 
     /// The page's words after `cagd: error: name: `.
@@ -521,7 +535,13 @@ mod tests {
         for (knots, text, degree, cli_name, page_name) in cases {
             let control = vec![0., 0., 1., 2., 3., 0.];
             let p = degree.to_string();
-            let mut args = vec!["bspline", "[0 1 3; 0 2 0]", "--degree", p.as_str()];
+            let mut args = vec![
+                "bspline",
+                "[0 1 3; 0 2 0]",
+                "--columns",
+                "--degree",
+                p.as_str(),
+            ];
             if !text.is_empty() {
                 args.extend(["--knots", text]);
             }
@@ -535,6 +555,7 @@ mod tests {
             let args = [
                 "nurbs",
                 "[0 1 3; 0 2 0]",
+                "--columns",
                 "--weights",
                 text,
                 "--degree",
@@ -545,7 +566,10 @@ mod tests {
         }
         // The degree limit is the operation's, without the command line's way to raise it.
         let page = bspline_view(vec![0., 0., 1., 2.], 2, 5000, vec![], 11);
-        let cli = cli_words(&["bspline", "[0 1; 0 2]", "--degree", "5000"], "--degree");
+        let cli = cli_words(
+            &["bspline", "[0 1; 0 2]", "--columns", "--degree", "5000"],
+            "--degree",
+        );
         let raise = " (raise it with --max-degree or CAGD_MAX_DEGREE)";
         assert_eq!(page_words(&page, "degree"), cli.replacen(raise, "", 1));
         assert!(cli.contains(raise), "{cli}");

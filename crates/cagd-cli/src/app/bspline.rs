@@ -19,7 +19,8 @@ Input: n control points as columns (rows with --rows), --degree p (default 3, cu
 --order k = p + 1 (as the lecture notes count), --knots: n + p + 1 non-decreasing values
 (default clamped uniform on [0, 1]). The curve is defined on [u_p, u_n]; --n samples it.
 Layout: result d×k at the parameters; --steps prints the basis functions N_i,p(t) (k×n) and
-the de Boor scheme of each t (span, α's and levels d0..dp).
+the de Boor scheme of each t (span, α's and levels d0..dp). The span is k with
+u_k ≤ t < u_(k+1), the knots numbered from 1 as the notes number them (u_1, u_2, …).
 
 Example:
   cagd bspline \"[0 0; 1 2; 3 2; 4 0]'\" --degree 2 --knots \"[0 0 0 0.5 1 1 1]\" --t 0.25 --steps --exact")]
@@ -52,7 +53,6 @@ pub struct BSplineCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "bspline",
     input: "CONTROL",
     special: &[],
 };

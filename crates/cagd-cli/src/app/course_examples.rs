@@ -19,8 +19,11 @@ use crate::plot::{Colour, Figure};
 use crate::{CliError, PendingWrites, Report, Value};
 
 use super::common::*;
-use super::thesis::{heading, q, text, Files, Q};
+use super::cx::Cx;
+use super::run::Run;
+use super::worked::{heading, q, text, Files, Q};
 use super::Outcome;
+use cagd_octave::literal::LiteralScalar;
 
 /// Reproduce the worked examples of the course notes (matrix-form, lecture and CAD notes).
 #[derive(Debug, Args)]
@@ -39,6 +42,12 @@ pub struct CourseCommand {
     /// The folder for the pictures (created if missing).
     #[arg(long, value_name = "DIR", default_value = "cagd-course")]
     pub out: PathBuf,
+}
+
+impl Run for CourseCommand {
+    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
+        course(&cx.limits, self)
+    }
 }
 
 const INTERNAL: &str = "a valid built-in example";
@@ -152,50 +161,10 @@ fn conversions(out: &mut String, files: &mut Files) -> Result<(), CliError> {
          \"from\"); all nine printed matrices are right.\n\
          (cagd convert \"[2 3; 3 5; 4 7; 5 3]\" --rows --from bezier --to bspline --steps --exact)\n\n",
     );
-    let mut r = Report::<Q>::new();
-    r.push(
-        "T(bezier → hermite)",
-        Value::Matrix(conversion_matrix(CubicForm::Bezier, CubicForm::Hermite)),
-    );
-    r.push(
-        "T(hermite → bezier)",
-        Value::Matrix(conversion_matrix(CubicForm::Hermite, CubicForm::Bezier)),
-    );
-    r.push(
-        "T(bezier → bspline)",
-        Value::Matrix(conversion_matrix(CubicForm::Bezier, CubicForm::BSpline)),
-    );
-    r.push(
-        "T(hermite → bspline)",
-        Value::Matrix(conversion_matrix(CubicForm::Hermite, CubicForm::BSpline)),
-    );
-    out.push_str(&text(&r));
-    out.push_str(
-        "T(bezier → hermite) is the notes' M_BH = [1 0 -3 0; 0 0 3 0; 0 0 0 -3; 0 1 0 3]:\n\
-         x'(0) = 3(x1 − x0), x'(1) = 3(x3 − x2), as they state.\n\n",
-    );
+    conversion_matrices(out);
     let mut figure = Figure::new("Lecture notes: one cubic, its Bézier and B-spline polygons");
     for (k, x2) in [[4, 7], [4, 1]].iter().enumerate() {
-        let b = rows_q(&[&[2, 3], &[3, 5], x2, &[5, 3]]);
-        let conv = |g: &DMatrix<Q>, from, to| convert(g, from, to).map_err(lib("course", INTERNAL));
-        let h = conv(&b, CubicForm::Bezier, CubicForm::Hermite)?;
-        let s = conv(&b, CubicForm::Bezier, CubicForm::BSpline)?;
-        let back = conv(&s, CubicForm::BSpline, CubicForm::Bezier)?;
-        let _ = writeln!(out, "x2 = ({}, {}):\n", x2[0], x2[1]);
-        let mut r = Report::<Q>::new();
-        r.push("X_B", Value::Matrix(b.clone()));
-        r.push("X_H = [x(0) x(1) x'(0) x'(1)]", Value::Matrix(h));
-        r.push("X_C (uniform cubic B-spline)", Value::Matrix(s.clone()));
-        out.push_str(&text(&r));
-        let _ = writeln!(
-            out,
-            "and back from X_C to Bézier: {}.\n",
-            if back == b {
-                "X_B again, exactly"
-            } else {
-                "DIFFERENT (a bug)"
-            }
-        );
+        let (b, s) = converted_cubic(out, x2)?;
         if k == 0 {
             let curve = BezierCurve::new(b.clone()).map_err(lib("course", INTERNAL))?;
             let dense = curve
@@ -210,6 +179,58 @@ fn conversions(out: &mut String, files: &mut Files) -> Result<(), CliError> {
     files.picture("conversion", &figure)
 }
 
+/// The conversion matrices T of the notes' table that the example uses.
+fn conversion_matrices(out: &mut String) {
+    let mut r = Report::<Q>::new();
+    for (name, from, to) in [
+        ("T(bezier → hermite)", CubicForm::Bezier, CubicForm::Hermite),
+        ("T(hermite → bezier)", CubicForm::Hermite, CubicForm::Bezier),
+        ("T(bezier → bspline)", CubicForm::Bezier, CubicForm::BSpline),
+        (
+            "T(hermite → bspline)",
+            CubicForm::Hermite,
+            CubicForm::BSpline,
+        ),
+    ] {
+        r.push(name, Value::Matrix(conversion_matrix(from, to)));
+    }
+    out.push_str(&text(&r));
+    out.push_str(
+        "T(bezier → hermite) is the notes' M_BH = [1 0 -3 0; 0 0 3 0; 0 0 0 -3; 0 1 0 3]:\n\
+         x'(0) = 3(x1 − x0), x'(1) = 3(x3 − x2), as they state.\n\n",
+    );
+}
+
+/// The notes' cubic with the third point `x2` in its Bézier, Hermite and B-spline forms, and
+/// back from the B-spline form; returns the Bézier and B-spline polygons.
+fn converted_cubic(out: &mut String, x2: &[i64; 2]) -> Result<(DMatrix<Q>, DMatrix<Q>), CliError> {
+    let b = rows_q(&[&[2, 3], &[3, 5], x2, &[5, 3]]);
+    let conv = |g: &DMatrix<Q>, from, to| convert(g, from, to).map_err(lib("course", INTERNAL));
+    let h = conv(&b, CubicForm::Bezier, CubicForm::Hermite)?;
+    let s = conv(&b, CubicForm::Bezier, CubicForm::BSpline)?;
+    let back = conv(&s, CubicForm::BSpline, CubicForm::Bezier)?;
+    let _ = writeln!(out, "x2 = ({}, {}):\n", x2[0], x2[1]);
+    let mut r = Report::<Q>::new();
+    r.push("X_B", Value::Matrix(b.clone()));
+    r.push("X_H = [x(0) x(1) x'(0) x'(1)]", Value::Matrix(h));
+    r.push("X_C (uniform cubic B-spline)", Value::Matrix(s.clone()));
+    out.push_str(&text(&r));
+    let _ = writeln!(
+        out,
+        "and back from X_C to Bézier: {}.\n",
+        if back == b {
+            "X_B again, exactly"
+        } else {
+            "DIFFERENT (a bug)"
+        }
+    );
+    Ok((b, s))
+}
+
+/// An end condition of the lecture notes' splines: its title, the condition, and what the
+/// notes print about it.
+type SplineCase = (&'static str, EndCondition<Q>, &'static str);
+
 /// The three splines of the lecture notes (cases a, b, c) on the points of their example.
 fn splines(out: &mut String, files: &mut Files) -> Result<(), CliError> {
     heading(
@@ -221,8 +242,29 @@ fn splines(out: &mut String, files: &mut Files) -> Result<(), CliError> {
          (cagd spline \"[0 0; 2 1; 4 4; 6 0]\" --rows --start-tangent \"[1;1]\" --end-tangent \"[-1;1]\" --steps --exact)\n\n",
     );
     let pts = rows_q(&[&[0, 0], &[2, 1], &[4, 4], &[6, 0]]);
+    let colours = [Colour::Blue, Colour::Orange, Colour::Purple];
+    let mut figure = Figure::new("Lecture notes: clamped, natural and closed cubic splines");
+    for (k, (title, end, note)) in spline_cases().into_iter().enumerate() {
+        let s =
+            CubicSpline::interpolate(pts.clone(), end.clone()).map_err(lib("course", INTERNAL))?;
+        spline_system(out, &s, title, &end, k == 0)?;
+        out.push_str(note);
+        let segs = s.segment_count();
+        let dense: Vec<Q> = (0..=20 * segs as i64).map(|j| q(j, 20)).collect();
+        figure = figure.curve(
+            f64m(&s.eval_many(&dense)),
+            colours[k],
+            title.split(',').next().unwrap_or(title),
+        );
+    }
+    figure = figure.control_polygon(f64m(&pts), "points x0..x3");
+    files.picture("splines", &figure)
+}
+
+/// The end conditions of the notes' cases a, b and c, with the errors of their printed text.
+fn spline_cases() -> [SplineCase; 3] {
     let v = |x: i64, y: i64| DVector::from_vec(vec![q(x, 1), q(y, 1)]);
-    let cases: [(&str, EndCondition<Q>, &str); 3] = [
+    [
         (
             "a) clamped, x'0 = (1,1), x'3 = (-1,1)",
             EndCondition::Clamped {
@@ -247,37 +289,33 @@ fn splines(out: &mut String, files: &mut Files) -> Result<(), CliError> {
             "The first entry of the notes' right-hand side, 3(x1 − x0), must be 3(x1 − x_(m-1))\n\
              (the joint at x0 joins the segment from x_(m-1)).\n\n",
         ),
-    ];
-    let colours = [Colour::Blue, Colour::Orange, Colour::Purple];
-    let mut figure = Figure::new("Lecture notes: clamped, natural and closed cubic splines");
-    for (k, (title, end, note)) in cases.into_iter().enumerate() {
-        let s =
-            CubicSpline::interpolate(pts.clone(), end.clone()).map_err(lib("course", INTERNAL))?;
-        let (a, rhs) = s.system(&end);
-        let _ = writeln!(out, "{title}:\n");
-        let mut r = Report::<Q>::new();
-        r.push("system A", Value::Matrix(a.clone()));
-        r.push("right-hand sides (rows x, y)", Value::Matrix(rhs));
-        if k == 0 {
-            let inverse = invert(&a).map_err(lib("course", INTERNAL))?;
-            r.push("A⁻¹", Value::Matrix(inverse));
-        }
-        r.push(
-            "tangents (rows x', y')",
-            Value::Matrix(s.tangents().clone()),
-        );
-        out.push_str(&text(&r));
-        out.push_str(note);
-        let segs = s.segment_count();
-        let dense: Vec<Q> = (0..=20 * segs as i64).map(|j| q(j, 20)).collect();
-        figure = figure.curve(
-            f64m(&s.eval_many(&dense)),
-            colours[k],
-            title.split(',').next().unwrap_or(title),
-        );
+    ]
+}
+
+/// The linear system of spline `s` under `end` and its tangents (with the system's inverse if
+/// `inverse`).
+fn spline_system(
+    out: &mut String,
+    s: &CubicSpline<Q>,
+    title: &str,
+    end: &EndCondition<Q>,
+    inverse: bool,
+) -> Result<(), CliError> {
+    let (a, rhs) = s.system(end);
+    let _ = writeln!(out, "{title}:\n");
+    let mut r = Report::<Q>::new();
+    r.push("system A", Value::Matrix(a.clone()));
+    r.push("right-hand sides (rows x, y)", Value::Matrix(rhs));
+    if inverse {
+        let inverse = invert(&a).map_err(lib("course", INTERNAL))?;
+        r.push("A⁻¹", Value::Matrix(inverse));
     }
-    figure = figure.control_polygon(f64m(&pts), "points x0..x3");
-    files.picture("splines", &figure)
+    r.push(
+        "tangents (rows x', y')",
+        Value::Matrix(s.tangents().clone()),
+    );
+    out.push_str(&text(&r));
+    Ok(())
 }
 
 /// The lecture notes' interpolation example and Příklad 1.
@@ -311,8 +349,17 @@ fn lagrange(out: &mut String, files: &mut Files) -> Result<(), CliError> {
     out.push_str(
         "f(x) = x⁴/6 − 2x³ + 47x²/6 − 11x + 6 = 3 − 7/6 (x−3)² + 1/6 (x−3)⁴. The notes print the\n\
          linear interpolation with the last factor (x_(i+1) − x_i) for (x − x_i), which would be\n\
-         constant; the Lagrange basis is right.\n\n\
-         Příklad 1 asks what happens with the parameters (0, 1/2, 1/4, 1), not monotone: the\n\
+         constant; the Lagrange basis is right.\n\n",
+    );
+    blending_example(out)?;
+    files.picture("lagrange", &lagrange_figure(&f, &xs, &ys))
+}
+
+/// Příklad 1 of the lecture notes: the blending matrix for parameters out of order, and for
+/// the uniform ones the notes print.
+fn blending_example(out: &mut String) -> Result<(), CliError> {
+    out.push_str(
+        "Příklad 1 asks what happens with the parameters (0, 1/2, 1/4, 1), not monotone: the\n\
          blending matrix G (rows: the cubic L_i, highest power first) exists for any distinct\n\
          values, and the curve passes x1, x3, x2, x4 in the order of the parameters.\n\
          (cagd lagrange --nodes \"[0 0.5 0.25 1]\" --coefficients --exact)\n\n",
@@ -330,6 +377,11 @@ fn lagrange(out: &mut String, files: &mut Files) -> Result<(), CliError> {
     );
     out.push_str(&text(&r));
     out.push_str("The second is the notes' G with rows (-4.5, 9, -5.5, 1), (13.5, -22.5, 9, 0), …: the same.\n\n");
+    Ok(())
+}
+
+/// The Lagrange polynomial `f` over [1, 5] and the piecewise-linear interpolant of its data.
+fn lagrange_figure(f: &LagrangePolynomial<Q>, xs: &[Q], ys: &[Q]) -> Figure {
     let dense: Vec<Q> = (0..=80).map(|k| q(20 + k, 20)).collect();
     let poly = DMatrix::from_fn(2, dense.len(), |r, k| {
         if r == 0 {
@@ -345,11 +397,10 @@ fn lagrange(out: &mut String, files: &mut Files) -> Result<(), CliError> {
             ys[k].to_f64_value()
         }
     });
-    let figure = Figure::new("Lecture notes: Lagrange polynomial and piecewise-linear interpolant")
+    Figure::new("Lecture notes: Lagrange polynomial and piecewise-linear interpolant")
         .curve(poly, Colour::Blue, "Lagrange polynomial")
         .boundary(data.clone(), Colour::Green, "piecewise linear")
-        .control_polygon(data, "data points");
-    files.picture("lagrange", &figure)
+        .control_polygon(data, "data points")
 }
 
 /// The lecture notes' C1 example: the free point of two cubic Bézier segments.

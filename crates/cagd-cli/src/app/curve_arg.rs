@@ -64,36 +64,67 @@ pub(crate) fn curve_arg<T: LiteralScalar>(
     }
     let data = names_data(cx, text, how.script);
     if let (Some(param), true) = (how.samples, data) {
-        let m = orient(
-            load_matrix(&cx.limits, argument, text, how.script)?,
-            how.rows,
-        );
-        let params = match how.script {
-            Some(s) => script_params(s, param, m.ncols()),
-            None => T::linspace(&T::zero(), &T::one(), m.ncols()),
-        };
-        return SampledCurve::new(params, m)
-            .map(CurveArg::Samples)
-            .map_err(lib(argument, "a curve sampled at increasing parameters"));
+        return samples(cx, argument, text, how, param);
     }
-    if let Some(m) = how.script.and_then(|s| s.value(text.trim())) {
-        if m.ncols() > 1 && m.nrows() > 1 {
-            let degree = if how.rows { m.nrows() } else { m.ncols() } - 1;
-            crate::slips::warn(
-                argument,
-                format!(
-                    "`{}` is a {}×{} matrix of the script, read as the control points of a Bézier curve of degree {degree}; if its columns are samples of the curve (as in the thesis's data scripts), add --samples",
-                    text.trim(),
-                    m.nrows(),
-                    m.ncols(),
-                ),
-            );
-        }
-    }
+    warn_matrix_as_control(argument, text, how);
     if data {
         let m = load_matrix(&cx.limits, argument, text, how.script)?;
-        return bezier(argument, m, how.rows);
+        return bezier(argument, text, m, how.rows);
     }
+    expression_curve(cx, argument, text, how, env)
+}
+
+/// With `--samples`, data read as samples of the curve, one column per parameter: the
+/// script's variable `param`, else `linspace(0,1,N)`.
+fn samples<T: LiteralScalar>(
+    cx: &Cx,
+    argument: &str,
+    text: &str,
+    how: Reading<'_, T>,
+    param: &str,
+) -> Result<CurveArg<T>, CliError> {
+    let m = orient(
+        load_matrix(&cx.limits, argument, text, how.script)?,
+        how.rows,
+    );
+    let params = match how.script {
+        Some(s) => script_params(s, param, m.ncols()),
+        None => T::linspace(&T::zero(), &T::one(), m.ncols()),
+    };
+    SampledCurve::new(params, m)
+        .map(CurveArg::Samples)
+        .map_err(lib(argument, "a curve sampled at increasing parameters"))
+}
+
+/// A warning when a matrix of the script (not a row or column) is about to be read as control
+/// points: the thesis's data scripts hold samples, which need `--samples`.
+fn warn_matrix_as_control<T: LiteralScalar>(argument: &str, text: &str, how: Reading<'_, T>) {
+    let Some(m) = how.script.and_then(|s| s.value(text.trim())) else {
+        return;
+    };
+    if m.ncols() > 1 && m.nrows() > 1 {
+        let degree = if how.rows { m.nrows() } else { m.ncols() } - 1;
+        crate::slips::warn(
+            argument,
+            format!(
+                "`{}` is a {}×{} matrix of the script, read as the control points of a Bézier curve of degree {degree}; if its columns are samples of the curve (as in the thesis's data scripts), add --samples",
+                text.trim(),
+                m.nrows(),
+                m.ncols(),
+            ),
+        );
+    }
+}
+
+/// An expression: constant, the control points of a Bézier curve; in one parameter, a curve
+/// evaluated where the construction needs it; in more, an error naming them.
+fn expression_curve<T: LiteralScalar>(
+    cx: &Cx,
+    argument: &str,
+    text: &str,
+    how: Reading<'_, T>,
+    env: &Rc<RefCell<Env<T>>>,
+) -> Result<CurveArg<T>, CliError> {
     let expr = load_expression(&cx.limits, argument, text, how.script)?;
     let params = expr.parameters(&env.borrow());
     match params.as_slice() {
@@ -101,7 +132,7 @@ pub(crate) fn curve_arg<T: LiteralScalar>(
             let m = expr
                 .eval_at(&env.borrow(), &[])
                 .map_err(|e| CliError::literal(argument, e, CURVE_ARG_FORM))?;
-            bezier(argument, m, how.rows)
+            bezier(argument, text, m, how.rows)
         }
         [p] => Ok(CurveArg::Evaluated(Box::new(ExprCurve::new(
             expr,
@@ -191,10 +222,13 @@ fn orient<T: LiteralScalar>(m: DMatrix<T>, rows: bool) -> DMatrix<T> {
 /// A Bézier curve of control points `m` (as typed), with the orientation slip noticed.
 fn bezier<T: LiteralScalar>(
     argument: &str,
+    text: &str,
     m: DMatrix<T>,
     rows: bool,
 ) -> Result<CurveArg<T>, CliError> {
-    crate::slips::point_matrix(argument, &m, rows);
+    // A constant expression is read here, not by load_matrix: its decimal commas too.
+    crate::slips::decimal_commas(argument, text);
+    crate::slips::point_matrix_text(argument, text, &m, rows);
     BezierCurve::new(orient(m, rows))
         .map(CurveArg::curve)
         .map_err(lib(argument, "control points, one per column"))
@@ -243,7 +277,7 @@ pub(crate) fn library_curve<T: LiteralScalar>(
         return Ok(curve);
     }
     let m = load_matrix(&cx.limits, argument, text, how.script)?;
-    crate::slips::point_matrix(argument, &m, how.rows);
+    crate::slips::point_matrix_text(argument, text, &m, how.rows);
     BezierCurve::new(orient(m, how.rows))
         .map(LibraryCurve::Bezier)
         .map_err(lib(argument, "control points, one per column"))
@@ -277,7 +311,7 @@ fn library_call<T: LiteralScalar>(
         ));
     }
     let points = load_matrix(&cx.limits, argument, args[0], how.script)?;
-    crate::slips::point_matrix(argument, &points, how.rows);
+    crate::slips::point_matrix_text(argument, args[0], &points, how.rows);
     let points = orient(points, how.rows);
     let list = |cx: &mut Cx, k: usize| load_params::<T>(&cx.limits, argument, args[k]);
     let degree = |knots: &[T]| {

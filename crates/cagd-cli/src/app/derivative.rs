@@ -18,14 +18,26 @@ use crate::{CliError, Outcome};
 Layout: control is d×(n-r+1), the points n!/(n-r)! Δ^r b_i as columns; with --t, result is d×k.
 
 Example:
-  cagd derivative \"[0 0 0; 0 2 2; 8 2 0; 4 0 0]'\" --order 1 --t 0.5 --exact")]
+  cagd derivative \"[0 0 0; 0 2 2; 8 2 0; 4 0 0]'\" -r 1 --t 0.5 --exact
+
+-r/--r is the derivative's order r; --order means the order of a B-spline (degree + 1) in every
+command, so it is refused here.")]
 pub struct DerivativeCommand {
     /// Control points of the curve (columns), as for decasteljau.
     #[arg(value_name = "CONTROL", allow_hyphen_values = true)]
     pub control: String,
-    /// The order r of the derivative.
-    #[arg(long, short = 'r', value_name = "R", default_value_t = 1)]
+    /// The order r of the derivative (the r-th derivative).
+    #[arg(long = "r", short = 'r', value_name = "R", default_value_t = 1)]
     pub order: usize,
+    /// Refused: --order is a B-spline's order (degree + 1) in every command; the derivative's
+    /// order is -r.
+    #[arg(
+        long = "order",
+        value_name = "K",
+        hide = true,
+        allow_hyphen_values = true
+    )]
+    pub spline_order: Option<String>,
     /// Also the values of the derivative at these parameters.
     #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
     pub t: Option<String>,
@@ -41,7 +53,6 @@ pub struct DerivativeCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "derivative",
     input: "CONTROL",
     special: &[],
 };
@@ -52,6 +63,13 @@ impl Run for DerivativeCommand {
     }
 
     fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
+        if let Some(k) = &self.spline_order {
+            return Err(crate::error::usage(
+                "--order",
+                &format!("--order {k} would be a B-spline's order (degree + 1), as in every command; the derivative's order is -r"),
+                "-r R (or --r R) for the R-th derivative",
+            ));
+        }
         let script = cx.script::<T>(&self.script, None)?;
         let control = points(
             cx,

@@ -7,38 +7,44 @@ use clap::Args;
 
 use super::answer::{respond, Destinations};
 use super::cx::Cx;
-use super::read::{bspline_arg, points};
+use super::read::{params, points};
 use super::run::{Names, Run};
 use crate::args::{OutputArgs, PlotArgs, RowsArgs, StepsArgs};
+use crate::error::shape;
 use crate::{CliError, Outcome};
+use cagd_ops::bspline_arg::{BSplineArg, SplineDegree};
 
 /// Raise the degree of a Bézier curve (or of a clamped B-spline curve) without changing it.
 #[derive(Debug, Args)]
 #[command(after_help = "\
-Input: control points as columns (rows with --rows); --by R. A Bézier curve, or a B-spline with
---degree/--order and --knots (clamped: first and last knot p+1 times; default clamped uniform).
+Input: control points as columns (rows with --rows); --by R, or the degree after elevation
+--degree P (the order after elevation --order K = P + 1; an error if it contradicts --by). A
+Bézier curve of degree n − 1 for n points, or with --knots a clamped B-spline (first and last
+knot p+1 times) of degree p = numel(knots) − n − 1.
 Layout: control is d×(n+R+1); for a B-spline also knots (each distinct knot R times more, as
 octave-nurbs nrbdegelev). --steps prints every intermediate Bézier polygon
 b'_i = i/(n+1)·b_(i-1) + (1 − i/(n+1))·b_i.
 
 Examples:
   cagd elevate \"[0 0; 1 2; 3 2; 4 0]\" --rows --by 1 --steps --exact
-  cagd elevate \"[0 0; 1 2; 3 2; 4 0]\" --rows --degree 2 --knots \"[0 0 0 0.5 1 1 1]\" --by 1 --exact")]
+  cagd elevate \"[0 0; 1 2; 3 2; 4 0]\" --rows --degree 5 --exact
+  cagd elevate \"[0 0; 1 2; 3 2; 4 0]\" --rows --knots \"[0 0 0 0.5 1 1 1]\" --by 1 --exact")]
 pub struct ElevateCommand {
     /// Control points, one per column (rows with --rows).
     #[arg(value_name = "CONTROL", allow_hyphen_values = true)]
     pub control: String,
-    /// Raise the degree by R.
-    #[arg(long = "by", short = 'r', value_name = "R", default_value_t = 1)]
-    pub by: usize,
-    /// A B-spline of degree P (with --knots, default clamped uniform on [0, 1]) instead of a
-    /// Bézier curve.
+    /// Raise the degree by R (default 1, or up to --degree).
+    #[arg(long = "by", short = 'r', value_name = "R")]
+    pub by: Option<usize>,
+    /// The degree P after elevation (the target, as "elevate to degree P" says); with --by,
+    /// it must equal the degree before plus R.
     #[arg(long, value_name = "P")]
     pub degree: Option<usize>,
-    /// A B-spline of order K = P + 1 (the lecture notes count by order).
+    /// The order K = P + 1 after elevation (the lecture notes count by order).
     #[arg(long, value_name = "K", conflicts_with = "degree")]
     pub order: Option<usize>,
-    /// The knot vector of the B-spline (clamped: first and last knot P+1 times).
+    /// A clamped B-spline with this knot vector (its degree is numel(knots) − n − 1 for n
+    /// control points) instead of a Bézier curve.
     #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
     pub knots: Option<String>,
     #[command(flatten)]
@@ -53,7 +59,6 @@ pub struct ElevateCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "elevate",
     input: "CONTROL",
     special: &[],
 };
@@ -64,10 +69,26 @@ impl Run for ElevateCommand {
     }
 
     fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
+        let control = points(cx, "CONTROL", &self.control, None, self.rows.rows)?;
+        let knots: Option<Vec<T>> = match &self.knots {
+            Some(text) => Some(params(cx, "--knots", text)?),
+            None => None,
+        };
+        // The degree before: n − 1 for a Bézier curve of n points, numel(U) − n − 1 for a
+        // B-spline (a count that fits no degree is the request's error to word).
+        let n = control.ncols();
+        let before = match &knots {
+            Some(u) => u.len().checked_sub(n + 1),
+            None => n.checked_sub(1),
+        };
+        let by = self.by_for(before)?;
         let op = Elevate::<T> {
-            control: points(cx, "CONTROL", &self.control, None, self.rows.rows)?,
-            by: self.by,
-            bspline: bspline_arg(cx, self.degree, self.order, &self.knots)?,
+            control,
+            by,
+            bspline: knots.map(|knots| BSplineArg {
+                degree: SplineDegree::Degree(before.unwrap_or(0)),
+                knots: Some(knots),
+            }),
             steps: self.steps.steps,
             drawing: self.plot.plot.is_some(),
         };
@@ -77,5 +98,40 @@ impl Run for ElevateCommand {
             mesh: None,
         };
         respond(cx, &NAMES, &op, to)
+    }
+}
+
+impl ElevateCommand {
+    /// The elevation R: `--by`, or the target `--degree`/`--order` less the degree `before`;
+    /// an error when the target contradicts `--by` or lies below the degree before.
+    fn by_for(&self, before: Option<usize>) -> Result<usize, CliError> {
+        let (argument, target) = match (self.degree, self.order) {
+            (Some(p), _) => ("--degree", p),
+            (None, Some(k)) => ("--order", k.saturating_sub(1)),
+            (None, None) => return Ok(self.by.unwrap_or(1)),
+        };
+        let Some(before) = before else {
+            return Ok(self.by.unwrap_or(1));
+        };
+        let expected = "the degree after elevation (the degree before plus --by), or --by alone";
+        match (target.checked_sub(before), self.by) {
+            (Some(r), None) => Ok(r),
+            (Some(r), Some(by)) if r == by => Ok(r),
+            (Some(_), Some(by)) => Err(shape(
+                argument,
+                format!(
+                    "the degree after elevation {target} contradicts --by {by} (degree {before} + {by} = {})",
+                    before + by
+                ),
+                expected,
+            )),
+            (None, _) => Err(shape(
+                argument,
+                format!(
+                    "the degree after elevation {target} is below the curve's degree {before} (elevation cannot lower it)"
+                ),
+                expected,
+            )),
+        }
     }
 }

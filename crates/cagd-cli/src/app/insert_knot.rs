@@ -21,7 +21,8 @@ Input: n control points as columns (rows with --rows), --degree p (default 3, cu
 [0, 1]), --insert the knots to add (strictly inside the domain [u_p, u_n]); --weights for a
 NURBS curve (the homogeneous points (w P, w) are refined).
 Layout: knots 1×(n+p+1+r) and control d×(n+r) (weights 1×(n+r) for NURBS). --steps prints each
-insertion: the span k, α_i = (u − u_i)/(u_(i+p) − u_i) for i = k−p+1..k, and the new polygon.
+insertion: the span k (u_k ≤ u < u_(k+1), the knots numbered from 1 as the notes number them),
+α_i = (u − u_i)/(u_(i+p) − u_i) for i = k−p+1..k, and the new polygon.
 
 Example:
   cagd insert-knot \"[0 0; 1 2; 3 2; 4 0]\" --rows --degree 2 --knots \"[0 0 0 0.5 1 1 1]\" --insert 0.25 --steps --exact")]
@@ -57,7 +58,6 @@ pub struct InsertKnotCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "insert-knot",
     input: "CONTROL",
     special: &[(Role::At, "--insert")],
 };

@@ -1,7 +1,6 @@
 //! The `cagd` command line in-process: parse the arguments, call the library, and return what
 //! would be printed and written (see [`crate::run`]).
 
-use cagd::limits::Limits;
 use std::ffi::OsString;
 
 use clap::error::{ContextKind, ErrorKind as ClapKind};
@@ -12,8 +11,6 @@ mod answer;
 mod arc;
 
 mod bernstein;
-
-mod bezier;
 
 mod bezier_patch;
 
@@ -38,7 +35,7 @@ mod derivative;
 
 mod expr_curve;
 
-mod legacy;
+mod serve;
 
 mod read;
 
@@ -64,8 +61,6 @@ mod convert;
 
 mod course_examples;
 
-mod curve;
-
 mod discrete_coons;
 
 mod elevate;
@@ -87,7 +82,7 @@ mod outcome;
 
 mod lagrange;
 
-mod patches;
+mod worked;
 
 mod ruled;
 
@@ -100,13 +95,12 @@ mod spline_surface_args;
 mod subdivide;
 
 mod thesis;
+mod usage;
 
 mod work;
 
-use crate::args::{LimitArgs, ScriptArgs};
-use crate::{load_script, CliError, ErrorKind, PendingWrites};
-use cagd_octave::literal::{Env, LiteralScalar};
-use cagd_octave::script::Script;
+use crate::args::LimitArgs;
+use crate::{CliError, ErrorKind, PendingWrites};
 
 /// Curves and surfaces of computer-aided geometric design, checked against GNU Octave.
 #[derive(Debug, Parser)]
@@ -185,32 +179,31 @@ where
     I: IntoIterator<Item = A>,
     A: Into<OsString> + Clone,
 {
-    let matches = match Cli::command().try_get_matches_from(args) {
+    let args: Vec<OsString> = args.into_iter().map(Into::into).collect();
+    let matches = match Cli::command().try_get_matches_from(&args) {
         Ok(m) => m,
-        Err(e) => return usage_error(e),
+        Err(e) => return usage_error(e, &args),
     };
     // Output targets are checked before any work (and before the limits, which may fail).
     crate::outputs::check(&matches)?;
     let cli = match Cli::from_arg_matches(&matches) {
         Ok(cli) => cli,
-        Err(e) => return usage_error(e),
+        Err(e) => return usage_error(e, &args),
     };
     let limits = &cli.limits.resolve()?;
-    crate::slips::take();
+    crate::slips::begin(orientation_stated(&matches));
     let mut cx = Cx::new(*limits);
     let outcome = cli.command.run(&mut cx).map_err(|e| {
-        // A non-finite result is about the command's input (see `common::finish`).
-        if e.argument == common::RESULT {
-            let (name, input) = cli.command.input();
+        // An error about points says how they were read; one about numbers read with
+        // decimal commas says so.
+        let how = crate::slips::explain(&e.argument, &e.problem);
+        if how.is_empty() {
+            e
+        } else {
             CliError {
-                argument: input.to_string(),
-                problem: e
-                    .problem
-                    .replacen("the result", &format!("the {name} result"), 1),
+                problem: format!("{} ({how})", e.problem),
                 ..e
             }
-        } else {
-            e
         }
     });
     // The slips noticed while reading the input come first; each warning is printed once.
@@ -221,45 +214,15 @@ where
     Ok(outcome)
 }
 
-impl Command {
-    /// The subcommand's name and the input its result is computed from.
-    fn input(&self) -> (&'static str, &'static str) {
-        match self {
-            Command::Thesis(_) => ("thesis", "thesis"),
-            Command::Decasteljau(_) => ("decasteljau", "CONTROL"),
-            Command::BezierPatch(_) => ("bezier-patch", "NET"),
-            Command::Coons(_) => ("coons", "--c1/--c2/--d1/--d2"),
-            Command::CoonsBicubic(_) => ("coons-bicubic", "--c1/--c2/--d1/--d2"),
-            Command::DiscreteCoons(_) => ("discrete-coons", "NET"),
-            Command::Gordon(_) => ("gordon", "--u-curve/--v-curve"),
-            Command::Lagrange(_) => ("lagrange", "--nodes/--points"),
-            Command::Bernstein(_) => ("bernstein", "--degree"),
-            Command::Derivative(_) => ("derivative", "CONTROL"),
-            Command::Spline(_) => ("spline", "POINTS"),
-            Command::Hermite(_) => ("hermite", "--p0/--p1/--t0/--t1"),
-            Command::Bspline(_) => ("bspline", "CONTROL"),
-            Command::Nurbs(_) => ("nurbs", "CONTROL"),
-            Command::Curve(_) => ("curve", "EXPR"),
-            Command::Surface(_) => ("surface", "EXPR"),
-            Command::Script(_) => ("script", "FILE"),
-            Command::Serve(_) => ("serve", "--dir"),
-            Command::Course(_) => ("course", "course"),
-            Command::Convert(_) => ("convert", "GEOMETRY"),
-            Command::Elevate(_) => ("elevate", "CONTROL"),
-            Command::Subdivide(_) => ("subdivide", "CONTROL"),
-            Command::InsertKnot(_) => ("insert-knot", "CONTROL"),
-            Command::BsplineBasis(_) => ("bspline-basis", "--knots"),
-            Command::Continuity(_) => ("continuity", "FIRST/SECOND"),
-            Command::Curvature(_) => ("curvature", "CURVE"),
-            Command::Integrate(_) => ("integrate", "CONTROL"),
-            Command::Ruled(_) => ("ruled", "--first/--second"),
-            Command::Ferguson(_) => ("ferguson", "--points"),
-            Command::BsplineSurface(_) => ("bspline-surface", "NET"),
-            Command::NurbsSurface(_) => ("nurbs-surface", "NET"),
-            Command::Circle(_) => ("circle", "--radius"),
-            Command::Arc(_) => ("arc", "--radius"),
-        }
-    }
+/// Whether the subcommand's command line states the orientation of points (`--rows` or
+/// `--columns`).
+fn orientation_stated(matches: &clap::ArgMatches) -> bool {
+    let Some((_, sub)) = matches.subcommand() else {
+        return false;
+    };
+    ["rows", "columns"]
+        .iter()
+        .any(|id| matches!(sub.try_get_one::<bool>(id), Ok(Some(true))))
 }
 
 /// The clap definition of the whole command line (see [`crate::schema`]).
@@ -291,17 +254,8 @@ where
     }
 }
 
-/// Runs `--script` if given, binding `N` first.
-pub fn prepare_script<T: LiteralScalar>(
-    limits: &Limits,
-    script: &ScriptArgs,
-    n: Option<usize>,
-) -> Result<Option<Script<T>>, CliError> {
-    read::run_script(limits, script, n)
-}
-
 /// Turns a clap error into the one-line form (help and version are printed as a result).
-fn usage_error(e: clap::Error) -> Result<Outcome, CliError> {
+fn usage_error(e: clap::Error, args: &[OsString]) -> Result<Outcome, CliError> {
     if matches!(e.kind(), ClapKind::DisplayHelp | ClapKind::DisplayVersion) {
         return Ok(Outcome {
             stdout: e.render().to_string(),
@@ -346,17 +300,12 @@ fn usage_error(e: clap::Error) -> Result<Outcome, CliError> {
             };
             (arg, format!("invalid value '{value}'{reason}"), expected)
         }
-        ClapKind::UnknownArgument => (
-            arg,
-            "unknown option".into(),
-            context(ContextKind::SuggestedArg)
-                .map(|s| format!("{s} perhaps, or an option listed by --help"))
-                .unwrap_or_else(|| "an option listed by --help".into()),
-        ),
-        ClapKind::InvalidSubcommand => (
+        ClapKind::UnknownArgument => {
+            usage::unknown_argument(args, arg, context(ContextKind::SuggestedArg))
+        }
+        ClapKind::InvalidSubcommand => usage::unknown_subcommand(
             context(ContextKind::InvalidSubcommand).unwrap_or(value),
-            "unknown subcommand".into(),
-            format!("one of {subcommands}"),
+            &subcommands,
         ),
         ClapKind::MissingSubcommand | ClapKind::DisplayHelpOnMissingArgumentOrSubcommand => (
             "cagd".into(),

@@ -1,7 +1,7 @@
 //! Reading a subcommand's arguments into the typed values of a request: points (columns, or
 //! rows with `--rows`), parameters (`--t`, `--u`, `--v`, `--n`), an interval, a data script.
 
-use cagd_octave::literal::{Env, LiteralScalar, Warning};
+use cagd_octave::literal::{Env, LiteralScalar};
 use cagd_octave::script::Script;
 use cagd_ops::bspline_arg::{BSplineArg, SplineDegree};
 use cagd_ops::Params;
@@ -22,7 +22,7 @@ pub(crate) fn points<T: LiteralScalar>(
     rows: bool,
 ) -> Result<DMatrix<T>, CliError> {
     let m = load_matrix(&cx.limits, argument, text, script)?;
-    crate::slips::point_matrix(argument, &m, rows);
+    crate::slips::point_matrix_text(argument, text, &m, rows);
     Ok(if rows { m.transpose() } else { m })
 }
 
@@ -60,6 +60,16 @@ pub(crate) fn given_or_samples<T: LiteralScalar>(
         (None, Some(n)) => Params::Samples(n),
         (None, None) => Params::Default,
     })
+}
+
+/// A list of numbers typed as `argument` (knots, weights, nodes, parameters), with decimal
+/// commas noticed.
+pub(crate) fn params<T: LiteralScalar>(
+    cx: &mut Cx,
+    argument: &str,
+    text: &str,
+) -> Result<Vec<T>, CliError> {
+    load_params(&cx.limits, argument, text)
 }
 
 /// The interval `a,b` of `--interval`, if given.
@@ -128,17 +138,6 @@ impl Outcome {
         self.warnings = warnings;
         self
     }
-}
-
-/// A warning of this command about `argument`.
-pub(crate) fn warning(argument: &str, message: String) -> (String, Warning) {
-    (
-        argument.to_string(),
-        Warning {
-            at: cagd_octave::literal::Position::default(),
-            message,
-        },
-    )
 }
 
 /// The one number of `argument` (a list of one value, as `--t` and `--k` take), else an error

@@ -35,8 +35,6 @@ pub(crate) fn run_any<R: Run>(command: &R, cx: &mut Cx) -> Result<Outcome, CliEr
 /// input (a result that overflows is about what it was computed from).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Names {
-    /// The subcommand (`decasteljau`).
-    pub command: &'static str,
     /// The argument the result is computed from (`CONTROL`).
     pub input: &'static str,
     /// Roles named otherwise than [`option_name`] says.
@@ -56,70 +54,92 @@ impl Names {
     }
 }
 
-/// The command line's usual name of a role.
+/// The command line's usual name of a role ("argument" for a role it has no name for).
 pub(crate) fn option_name(role: Role) -> &'static str {
-    match role {
-        Role::Control => "CONTROL",
-        Role::Net => "NET",
-        Role::Degree => "--degree",
-        Role::Order => "--order",
-        Role::Knots => "--knots",
-        Role::UKnots => "--uknots",
-        Role::VKnots => "--vknots",
-        Role::Weights => "--weights",
-        Role::Interval => "--interval",
-        Role::T => "--t",
-        Role::U => "--u",
-        Role::V => "--v",
-        Role::Grid => "--u/--v",
-        Role::Samples => "--n",
-        Role::DerivativeOrder => "--order",
-        Role::DerivativeV => "--dv",
-        Role::Nodes => "--nodes",
-        Role::Points => "POINTS",
-        Role::Ends => "--ends",
-        Role::C1 => "--c1",
-        Role::C2 => "--c2",
-        Role::D1 => "--d1",
-        Role::D2 => "--d2",
-        Role::Boundary => "--c1/--c2/--d1/--d2",
-        Role::C1v => "--c1v",
-        Role::C2v => "--c2v",
-        Role::D1u => "--d1u",
-        Role::D2u => "--d2u",
-        Role::Twist => "--twist",
-        Role::Twists => "--twists",
-        Role::Blend => "--blend",
-        Role::Mask => "--mask",
-        Role::UCurves => "--u-curve",
-        Role::VCurves => "--v-curve",
-        Role::UNodes => "--u-nodes",
-        Role::VNodes => "--v-nodes",
-        Role::Network => "--u-curve/--v-curve",
-        Role::Cross => "--c1v/--c2v/--d1u/--d2u",
-        Role::Du => "--du",
-        Role::Dv => "--dv",
-        Role::Steps => "--steps",
-        Role::First => "--first",
-        Role::Second => "--second",
-        Role::P0 => "--p0",
-        Role::P1 => "--p1",
-        Role::T0 => "--t0",
-        Role::T1 => "--t1",
-        Role::Hermite => "--p0/--p1/--t0/--t1",
-        Role::From => "--from",
-        Role::To => "--to",
-        Role::By => "--by",
-        Role::At => "--at",
-        Role::Radius => "--radius",
-        Role::Center => "--center",
-        Role::Angles => "--angles",
-        Role::Tolerance => "--tolerance",
-        Role::Index => "--i",
-        Role::Spline => "CONTROL/--degree/--knots",
-        Role::Factor => "--k",
-        Role::Joint => "FIRST/SECOND",
-        Role::Result => "RESULT",
-        _ => "argument",
+    OPTION_NAMES
+        .iter()
+        .find(|(r, _)| *r == role)
+        .map_or("argument", |(_, name)| *name)
+}
+
+/// The command line's usual names of the operation layer's roles: the one table of them
+/// (a subcommand naming a role otherwise says so in its [`Names::special`]).
+const OPTION_NAMES: &[(Role, &str)] = &[
+    (Role::Control, "CONTROL"),
+    (Role::Net, "NET"),
+    (Role::Degree, "--degree"),
+    (Role::Order, "--order"),
+    (Role::Knots, "--knots"),
+    (Role::UKnots, "--uknots"),
+    (Role::VKnots, "--vknots"),
+    (Role::Weights, "--weights"),
+    (Role::Interval, "--interval"),
+    (Role::T, "--t"),
+    (Role::U, "--u"),
+    (Role::V, "--v"),
+    (Role::Grid, "--u/--v"),
+    (Role::Samples, "--n"),
+    (Role::DerivativeOrder, "-r"),
+    (Role::DerivativeV, "--dv"),
+    (Role::Nodes, "--nodes"),
+    (Role::Points, "POINTS"),
+    (Role::Ends, "--ends"),
+    (Role::C1, "--c1"),
+    (Role::C2, "--c2"),
+    (Role::D1, "--d1"),
+    (Role::D2, "--d2"),
+    (Role::Boundary, "--c1/--c2/--d1/--d2"),
+    (Role::C1v, "--c1v"),
+    (Role::C2v, "--c2v"),
+    (Role::D1u, "--d1u"),
+    (Role::D2u, "--d2u"),
+    (Role::Twist, "--twist"),
+    (Role::Twists, "--twists"),
+    (Role::Blend, "--blend"),
+    (Role::Mask, "--mask"),
+    (Role::UCurves, "--u-curve"),
+    (Role::VCurves, "--v-curve"),
+    (Role::UNodes, "--u-nodes"),
+    (Role::VNodes, "--v-nodes"),
+    (Role::Network, "--u-curve/--v-curve"),
+    (Role::Cross, "--c1v/--c2v/--d1u/--d2u"),
+    (Role::Du, "--du"),
+    (Role::Dv, "--dv"),
+    (Role::Steps, "--steps"),
+    (Role::First, "--first"),
+    (Role::Second, "--second"),
+    (Role::P0, "--p0"),
+    (Role::P1, "--p1"),
+    (Role::T0, "--t0"),
+    (Role::T1, "--t1"),
+    (Role::Hermite, "--p0/--p1/--t0/--t1"),
+    (Role::From, "--from"),
+    (Role::To, "--to"),
+    (Role::By, "--by"),
+    (Role::At, "--at"),
+    (Role::Radius, "--radius"),
+    (Role::Center, "--center"),
+    (Role::Angles, "--angles"),
+    (Role::Tolerance, "--tolerance"),
+    (Role::Index, "--i"),
+    (Role::Spline, "CONTROL/--degree/--knots"),
+    (Role::Factor, "--k"),
+    (Role::Joint, "FIRST/SECOND"),
+    (Role::Result, "RESULT"),
+];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_role_has_one_usual_name() {
+        let mut roles: Vec<Role> = OPTION_NAMES.iter().map(|(r, _)| *r).collect();
+        roles.sort();
+        roles.dedup();
+        assert_eq!(roles.len(), OPTION_NAMES.len(), "a role named twice");
+        assert_eq!(option_name(Role::Knots), "--knots");
+        assert_eq!(option_name(Role::DerivativeOrder), "-r");
+        assert_eq!(option_name(Role::Result), "RESULT");
     }
 }

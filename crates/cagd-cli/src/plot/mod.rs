@@ -47,6 +47,9 @@ pub const PICTURE_EXTENSIONS: &[&str] = &["svg", "png"];
 #[cfg(target_arch = "wasm32")]
 pub const PICTURE_EXTENSIONS: &[&str] = &["svg"];
 
+mod chart_2d;
+mod chart_3d;
+mod layers;
 mod model;
 mod render;
 

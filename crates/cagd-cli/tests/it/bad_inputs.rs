@@ -270,8 +270,8 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
             "Shape",
         ),
         (
-            s(&["derivative", CUBIC, "--order", "4"]),
-            "--order",
+            s(&["derivative", CUBIC, "-r", "4"]),
+            "-r",
             "Library::DerivativeOrder",
         ),
         (
@@ -516,7 +516,14 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
         // A Bézier curve of degree 899 raised by 99 is some 10⁶ operations (it runs); the
         // blossoms of a cubic B-spline of 900 control points raised by 99 are 5.7·10⁹.
         (
-            s(&["elevate", "zeros(3, 900)", "--by", "99", "--degree", "3"]),
+            s(&[
+                "elevate",
+                "zeros(3, 900)",
+                "--by",
+                "99",
+                "--knots",
+                "[0 0 0 linspace(0, 1, 898) 1 1 1]",
+            ]),
             "--by",
             "Library::TooLarge",
         ),
@@ -1035,7 +1042,7 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
         ),
         // Results that overflow the range of doubles.
         (
-            s(&["derivative", "[zeros(1,171) 1]", "--order", "171"]),
+            s(&["derivative", "[zeros(1,171) 1]", "-r", "171"]),
             "--order",
             "Library::Overflow",
         ),

@@ -780,15 +780,7 @@ fn lagrange_bernstein_derivative() {
     );
     insta::assert_snapshot!(
         "derivative",
-        ok(&[
-            "derivative",
-            PRIMER_2_4,
-            "--order",
-            "1",
-            "--t",
-            "0.5",
-            "--exact"
-        ])
+        ok(&["derivative", PRIMER_2_4, "-r", "1", "--t", "0.5", "--exact"])
     );
 }
 
@@ -1227,10 +1219,7 @@ fn new_subcommands_reject_bad_input_cleanly() {
             vec!["bernstein", "--degree", "3", "--i", "4"],
             "--i: i = 4 exceeds the degree 3",
         ),
-        (
-            vec!["derivative", PRIMER_2_4, "--order", "4", "-o", &txt],
-            "--order",
-        ),
+        (vec!["derivative", PRIMER_2_4, "-r", "4", "-o", &txt], "-r"),
         (
             vec!["spline", "[0 0; 1 1]'", "--end", "clamped"],
             "--start-tangent: missing",

@@ -18,7 +18,7 @@ use cagd_test_support as common;
 
 /// Runs `cagd args…` in-process; the standard output and the warnings as
 /// `ARGUMENT: MESSAGE` (file arguments must be absolute paths: tests run in parallel).
-fn run_ok(args: &[&str]) -> (String, Vec<String>) {
+pub(super) fn run_ok(args: &[&str]) -> (String, Vec<String>) {
     let mut full = vec!["cagd".to_string()];
     full.extend(args.iter().map(|s| s.to_string()));
     let out = run(&full).unwrap_or_else(|e| panic!("cagd {args:?} failed: {e}"));
@@ -31,7 +31,7 @@ fn run_ok(args: &[&str]) -> (String, Vec<String>) {
 }
 
 /// The standard output of a command that must run without a warning.
-fn silent(args: &[&str]) -> String {
+pub(super) fn silent(args: &[&str]) -> String {
     let (out, warnings) = run_ok(args);
     assert!(warnings.is_empty(), "cagd {args:?} warned: {warnings:?}");
     out
@@ -45,7 +45,7 @@ fn json(args: &[&str]) -> J {
 }
 
 /// The error line of a command that must fail (in-process): `ARGUMENT: PROBLEM; expected …`.
-fn error(args: &[&str]) -> String {
+pub(super) fn error(args: &[&str]) -> String {
     let mut full = vec!["cagd".to_string()];
     full.extend(args.iter().map(|s| s.to_string()));
     match run(&full) {
@@ -155,11 +155,9 @@ fn slip_points_typed_as_rows_warn_and_both_right_readings_are_silent() {
     // columns would be 2 points in R⁴.
     let (out, warnings) = run_ok(&["decasteljau", "[0 0; 1 2; 3 3; 4 0]", "--t", "1/3"]);
     assert_eq!(warnings.len(), 1, "{warnings:?}");
-    assert!(
-        warnings[0].starts_with("CONTROL: read as 2 point(s) in 4 dimensions")
-            && warnings[0].contains("add --rows"),
-        "{}",
-        warnings[0]
+    assert_eq!(
+        warnings[0],
+        "CONTROL: read as 2 points in 4-D, one per column; --rows if each row is a point"
     );
     assert!(out.contains("result ="), "{out}");
     // The right readings: --rows, or the transpose.
@@ -187,18 +185,22 @@ fn slip_points_typed_as_rows_warn_and_both_right_readings_are_silent() {
     // Points of dimension 4 with --rows get the warning the other way round.
     let (_, warnings) = run_ok(&["decasteljau", "[0 0 0 0; 1 1 1 1]", "--rows", "--t", "0.5"]);
     assert!(
-        warnings.len() == 1 && warnings[0].contains("leave out --rows"),
+        warnings.len() == 1
+            && warnings[0].ends_with(
+                "read as 2 points in 4-D, one per row (--rows); leave out --rows if each column is a point"
+            ),
         "{warnings:?}"
     );
     // The same check guards every command that takes points.
     let (_, warnings) = run_ok(&["spline", "[0 0; 2 1; 4 4; 6 0]", "--t", "0.5"]);
     assert!(
-        warnings[0].starts_with("POINTS: read as 2 point(s)"),
+        warnings[0].starts_with("POINTS: read as 2 points in 4-D"),
         "{warnings:?}"
     );
     let (_, warnings) = run_ok(&["elevate", "[0 0; 1 2; 3 2]", "--by", "1"]);
     assert!(
-        warnings[0].starts_with("CONTROL: read as 2 point(s)"),
+        warnings[0]
+            == "CONTROL: read as 2 points in 3-D, one per column; --rows if each row is a point",
         "{warnings:?}"
     );
 }
@@ -214,7 +216,7 @@ fn slip_decimal_commas_warn_and_decimal_points_run_silently() {
     assert_eq!(warnings.len(), 2, "{warnings:?}");
     assert_eq!(
         warnings[0],
-        "--t: `0,2` is read as two values, 0 and 2 (a comma separates values); for the decimal number write 0.2"
+        "--t: `0,2` read as two numbers 0 and 2; a decimal point is `0.2`"
     );
     assert_eq!(
         warnings[1],
@@ -396,7 +398,7 @@ fn every_warning_is_printed_once() {
     let stderr = String::from_utf8(out.stderr).unwrap();
     assert_eq!(
         stderr,
-        "cagd: warning: --t: `0,5` is read as two values, 0 and 5 (a comma separates values); for the decimal number write 0.5\n\
+        "cagd: warning: --t: `0,5` read as two numbers 0 and 5; a decimal point is `0.5`\n\
          cagd: warning: --t: 2 values lie (the first t = 5) outside [0, 1]; the polynomials are extrapolated there\n"
     );
 }
@@ -518,8 +520,16 @@ fn text_hides_round_off_while_machine_formats_keep_every_bit() {
     let args = ["curve", "[t; t/3]", "--t", "[0.1 0.2 0.3]"];
     let out = silent(&args);
     assert!(out.contains("0.1  0.2  0.3\n"), "{out}");
+    // 15 significant digits of the matrix's largest entry (0.3): 15 decimals.
     assert!(
-        out.contains("0.0333333333333333  0.0666666666666667  0.1\n"),
+        out.contains("0.033333333333333  0.066666666666667  0.1\n"),
+        "{out}"
+    );
+    // Round-off below the matrix's last digit does not show (a spline's samples): the
+    // natural spline through (0,0), (2,1), (4,4), (6,0) at its default samples.
+    let out = silent(&["spline", "[0 0; 2 1; 4 4; 6 0]", "--rows"]);
+    assert!(
+        !out.contains("99999999") && !out.contains("00000000"),
         "{out}"
     );
     let out = silent(&["curve", "t+0.2", "--t", "0.1"]);
@@ -802,16 +812,8 @@ fn elevation_matches_nrbdegelev() {
         ("1", "el_bsp_C1", "el_bsp_K1"),
         ("2", "el_bsp_C2", "el_bsp_K2"),
     ] {
-        let out = json(&[
-            "elevate",
-            &lit(&c),
-            "--degree",
-            "2",
-            "--knots",
-            &row_lit(&k),
-            "--by",
-            r,
-        ]);
+        // The degree before (2) comes from the knots: numel(K) − columns(C) − 1.
+        let out = json(&["elevate", &lit(&c), "--knots", &row_lit(&k), "--by", r]);
         common::assert_close(
             kn,
             &mat(&out["knots"]).into_dyn(),
@@ -823,20 +825,23 @@ fn elevation_matches_nrbdegelev() {
             &common::matrix(&ws, cn).into_dyn(),
         );
     }
-    // Exactly by hand: the segment 0 → 3 as a quadratic and a cubic; --order counts k = p + 1.
+    // Exactly by hand: the segment 0 → 3 as a quadratic and a cubic; --degree and --order
+    // name the curve after elevation (the order k = p + 1).
     let out = json(&["elevate", "[0 3]", "--by", "2", "--steps", "--exact"]);
     assert_eq!(exact(&out["degree_2"]), strs(&[&["0", "3/2", "3"]]));
     assert_eq!(exact(&out["control"]), strs(&[&["0", "1", "2", "3"]]));
-    let by_order = json(&["elevate", &lit(&c), "--order", "3", "--knots", &row_lit(&k)]);
+    let by_order = json(&["elevate", &lit(&c), "--order", "4", "--knots", &row_lit(&k)]);
     let by_degree = json(&[
         "elevate",
         &lit(&c),
         "--degree",
-        "2",
+        "3",
         "--knots",
         &row_lit(&k),
     ]);
     assert_eq!(by_order, by_degree);
+    let by_one = json(&["elevate", &lit(&c), "--by", "1", "--knots", &row_lit(&k)]);
+    assert_eq!(by_one, by_degree);
 }
 
 #[test]
@@ -1179,6 +1184,7 @@ fn ruled_surface_matches_nrbruled() {
         &row_lit(&common::row(&ws, "ru_gu")),
         "--v",
         &row_lit(&common::row(&ws, "ru_gv")),
+        "--columns",
     ]);
     common::assert_close(
         "ru_S",
@@ -1913,7 +1919,8 @@ fn course_prints_every_example_and_writes_valid_pictures() {
         "coefficients of x⁴ … 1 =\n\n    1/6  -2  47/6  -11  6\n",
         "x = 3 + k, y = 4 − 2k, z = 3 + 3k, as the notes print",
         "C0 true, C1 true, G1 true",
-        "weights =\n\n    1  0.707106781186548  1",
+        // √2/2 to 15 digits of the matrix's largest entry, 1.
+        "weights =\n\n    1  0.70710678118655  1",
         "Formula and Coons mask agree: yes, exactly",
         "z by the mask α = 0, β = 1/4 =\n\n    0     1     2  0\n    1   9/8   9/8  0\n",
     ] {

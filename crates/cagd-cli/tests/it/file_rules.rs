@@ -34,7 +34,7 @@ fn no_temporaries(dir: &Path) {
     assert!(left.is_empty(), "left behind: {left:?}");
 }
 
-const CURVE: &str = "[0 1;0 1]";
+const CURVE: &str = "[0 1;0 1]'";
 
 #[test]
 fn a_failed_write_to_standard_output_replaces_no_file() {

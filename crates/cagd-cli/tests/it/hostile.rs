@@ -57,8 +57,8 @@ fn templates() -> Vec<Vec<String>> {
             "lagrange", "--nodes", "[0 1 2]", "--points", "M", "--t", "T",
         ]),
         s(&["bernstein", "--degree", "3", "--t", "T"]),
-        s(&["derivative", "M", "--order", "1"]),
-        s(&["derivative", PRIMER_2_4, "--order", "2", "--t", "T"]),
+        s(&["derivative", "M", "-r", "1"]),
+        s(&["derivative", PRIMER_2_4, "-r", "2", "--t", "T"]),
         s(&["spline", "M"]),
         s(&["spline", "M", "--t", "T"]),
         s(&[

@@ -17,3 +17,4 @@ mod packed_network;
 mod regressions;
 #[cfg(feature = "serve")]
 mod serve;
+mod slips;

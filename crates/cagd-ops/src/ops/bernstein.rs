@@ -83,10 +83,8 @@ impl<T: Scalar> Operation<T> for Bernstein<T> {
             None => all,
         };
         let mut report = Report::new();
-        report.push(
-            "t",
-            Value::Matrix(DMatrix::from_column_slice(ts.len(), 1, &ts)),
-        );
+        // One layout for parameter vectors: t is a row, as linspace makes it.
+        report.push("t", Value::row(&ts));
         report.push("result", Value::Matrix(result));
         let drawing = if self.drawing {
             Some(self.picture()?)
@@ -113,7 +111,8 @@ impl<T: Scalar> Bernstein<T> {
         };
         let values = basis_matrix(n, &dense).select_columns(&shown);
         let title = format!("Bernstein polynomials of degree {n}");
-        Ok(graphs(Drawing::new(title), &dense, &values, &shown, |i| {
+        let axes = Drawing::graph(title, "t", &format!("B_i^{n}(t)"));
+        Ok(graphs(axes, &dense, &values, &shown, |i| {
             format!("B_{i}^{n}")
         }))
     }

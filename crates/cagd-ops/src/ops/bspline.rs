@@ -77,6 +77,7 @@ impl<T: Scalar> BSpline<T> {
     /// # Errors
     /// The rules of [`crate::knots`]; non-finite control points.
     pub fn curve(&self, cx: &Context) -> Result<BSplineCurve<T>> {
+        crate::check::points(Role::Control, &self.control, 1, "control points")?;
         let p = self.degree.resolve(cx)?;
         let n = self.control.ncols();
         let knots = knots::knots_or_clamped(self.knots.as_deref(), p, n, knots::CURVE)?;
@@ -153,13 +154,14 @@ pub(crate) fn step_name(name: &str, k: usize, count: usize) -> String {
     }
 }
 
-/// The de Boor scheme at `t`: `t`, `span`, then per level `alpha{r}` (from level 1) and
-/// `d{r}` (`d × (p + 1 − r)`).
+/// The de Boor scheme at `t`: `t`, `span` (the `k` of `u_k ≤ t < u_(k+1)` with the knots
+/// numbered from 1, as the CAD notes number them — one more than the core's index from 0),
+/// then per level `alpha{r}` (from level 1) and `d{r}` (`d × (p + 1 − r)`).
 fn de_boor<T: Scalar>(t: &T, scheme: &DeBoorScheme<T>) -> Value<T> {
     let item = |name: String, value: Value<T>| Item { name, value };
     let mut parts = vec![
         item("t".into(), Value::scalar(t.clone())),
-        item("span".into(), Value::scalar(T::from_usize(scheme.span))),
+        item("span".into(), Value::scalar(T::from_usize(scheme.span + 1))),
     ];
     for (r, level) in scheme.levels.iter().enumerate() {
         if r > 0 {

@@ -84,10 +84,8 @@ impl<T: Scalar> Operation<T> for BSplineBasis<T> {
                 report.push(step_name("triangle", k, ts.len()), self.triangle(p, t));
             }
         }
-        report.push(
-            "t",
-            Value::Matrix(DMatrix::from_column_slice(ts.len(), 1, &ts)),
-        );
+        // One layout for parameter vectors: t is a row, as linspace makes it.
+        report.push("t", Value::row(&ts));
         let result = DMatrix::from_fn(ts.len(), n, |i, j| rows[i][j].clone());
         report.push("result", Value::Matrix(result.clone()));
         let drawing = if self.drawing {
@@ -165,7 +163,8 @@ fn picture<T: Scalar>(
         Colour::Black,
     ];
     let n = result.ncols();
-    let mut drawing = Drawing::new(format!("B-spline basis functions, degree {p}"));
+    let title = format!("B-spline basis functions, degree {p}");
+    let mut drawing = Drawing::graph(title, "t", &format!("N_i,{p}(t)"));
     for i in 0..n {
         let line = DMatrix::from_fn(2, dense.len(), |r, k| {
             if r == 0 {

@@ -14,6 +14,7 @@ use cagd::coons::{
 use cagd::{Curve, Scalar, Surface, Tolerance};
 use nalgebra::DVector;
 
+use super::patch::mark_result;
 use super::surface::{evaluated_points, grid_f64, picture_grid, push_terms, SurfaceParams};
 use super::to_f64;
 use crate::curves::{check_curves_work, needed, CurveArg, Evaluator, Realised};
@@ -161,7 +162,9 @@ impl<T: Scalar> Operation<T> for Coons<T> {
         if pictures {
             let grid = grid_f64(&patch.grid(&pus, &pvs));
             if self.drawing {
-                answer.drawing = Some(self.picture("Coons patch", grid.clone(), (&pus, &pvs))?);
+                let drawing = self.picture("Coons patch", grid.clone(), (&pus, &pvs))?;
+                let at = (us.as_slice(), vs.as_slice());
+                answer.drawing = Some(mark_result(drawing, &answer.report, at, single));
             }
             if self.mesh {
                 answer.mesh = Some(grid);

@@ -171,11 +171,12 @@ fn projected<T: Scalar>(h: &BSplineCurve<T>) -> Result<NurbsCurve<T>> {
     NurbsCurve::from_homogeneous(h.clone()).map_err(lib(Role::Weights, WEIGHTS_FORM))
 }
 
-/// One insertion: `u`, `span`, `alpha` (`α_{k−p+1} … α_k`) and the new `control` polygon.
+/// One insertion: `u`, `span` (the `k` of `u_k ≤ u < u_(k+1)`, knots numbered from 1 as the
+/// CAD notes number them), `alpha` (`α_{k−p+1} … α_k`) and the new `control` polygon.
 fn boehm_step<T: Scalar>(step: &BoehmStep<T>) -> Value<T> {
     Value::record(vec![
         ("u", Value::scalar(step.knot.clone())),
-        ("span", Value::scalar(T::from_usize(step.span))),
+        ("span", Value::scalar(T::from_usize(step.span + 1))),
         ("alpha", Value::row(&step.alphas)),
         ("control", Value::Matrix(step.curve.control().clone())),
     ])

@@ -177,8 +177,7 @@ impl<T: Scalar> Integrate<T> {
                 Role::T,
                 "parameters whose integrals stay within the range of doubles",
             ))?;
-            let t = DMatrix::from_column_slice(ts.len(), 1, &ts);
-            report.push("t", Value::Matrix(t));
+            report.push("t", Value::row(&ts));
             report.push("result", Value::Matrix(values));
         }
         let drawing = if self.drawing {
@@ -340,7 +339,8 @@ fn bernstein_picture<T: Scalar>(n: usize, rows: &[usize]) -> Result<Drawing> {
     let values =
         bernstein_antiderivative_values(n, rows, &dense).map_err(lib(Role::Degree, "a picture"))?;
     let title = format!("integrals of the Bernstein polynomials of degree {n}");
-    Ok(graphs(Drawing::new(title), &dense, &values, rows, |i| {
+    let axes = Drawing::graph(title, "t", &format!("∫₀ᵗ B_i^{n}"));
+    Ok(graphs(axes, &dense, &values, rows, |i| {
         format!("∫ B_{i}^{n}")
     }))
 }

@@ -1,0 +1,222 @@
+//! Drawing the layers of a [`Figure`] on a 2-D or 3-D chart: one function per kind of layer
+//! (the surface is the chart's own), then the legend.
+
+use cagd::grid::PointGrid;
+use plotters::chart::SeriesAnno;
+use plotters::prelude::*;
+
+use super::model::{Colour, Figure, Layer};
+use super::render::{drawing, rgb, FAMILY};
+use super::PlotError;
+
+impl Figure {
+    /// Draws the layers in order on a 2-D or 3-D chart, then the legend. `project` maps a
+    /// point (padded to 3-D) to the chart's coordinates; `surface` draws a surface layer,
+    /// which differs between the two kinds of chart; `net_points` marks the points of a net.
+    pub(super) fn draw_layers<'a, DB, CT, P>(
+        &self,
+        chart: &mut ChartContext<'a, DB, CT>,
+        project: impl Fn([f64; 3]) -> P + Copy,
+        net_points: bool,
+        mut surface: impl FnMut(
+            &mut ChartContext<'a, DB, CT>,
+            &PointGrid<f64>,
+            &str,
+        ) -> Result<(), PlotError>,
+    ) -> Result<(), PlotError>
+    where
+        DB: DrawingBackend + 'a,
+        CT: CoordTranslate<From = P>,
+        P: Clone + 'static,
+    {
+        let mut painter = Painter { chart, project };
+        for layer in self.ordered() {
+            match layer {
+                Layer::Surface { grid, label } => surface(&mut *painter.chart, grid, label)?,
+                Layer::Net {
+                    grid,
+                    colour,
+                    label,
+                } => {
+                    painter.net(grid, *colour, label)?;
+                    if net_points {
+                        painter.net_points(layer, *colour)?;
+                    }
+                }
+                Layer::Curve {
+                    colour,
+                    width,
+                    label,
+                    ..
+                } => painter.curve(layer, *colour, *width, label)?,
+                Layer::Points { labels, label, .. } => painter.points(layer, labels, label)?,
+                Layer::ControlPolygon { label, .. } => painter.control_polygon(layer, label)?,
+            }
+        }
+        if self.has_legend() {
+            painter.legend()?;
+        }
+        Ok(())
+    }
+}
+
+/// A chart to draw layers on, and where a point (padded to 3-D) goes on it.
+struct Painter<'c, 'a, DB: DrawingBackend, CT: CoordTranslate, F> {
+    chart: &'c mut ChartContext<'a, DB, CT>,
+    project: F,
+}
+
+impl<'a, DB, CT, P, F> Painter<'_, 'a, DB, CT, F>
+where
+    DB: DrawingBackend + 'a,
+    CT: CoordTranslate<From = P>,
+    P: Clone + 'static,
+    F: Fn([f64; 3]) -> P + Copy,
+{
+    /// A net: its grid lines in `colour`, one pixel wide.
+    fn net(&mut self, grid: &PointGrid<f64>, colour: Colour, label: &str) -> Result<(), PlotError> {
+        let project = self.project;
+        let style = rgb(colour).stroke_width(1);
+        let anno =
+            self.chart
+                .draw_series(net_lines(grid).into_iter().map(|l| {
+                    PathElement::new(l.into_iter().map(project).collect::<Vec<_>>(), style)
+                }))
+                .map_err(drawing)?;
+        line_legend(anno, label, style);
+        Ok(())
+    }
+
+    /// The points of a net, marked by small filled circles in `colour` (on 3-D charts).
+    fn net_points(&mut self, layer: &Layer, colour: Colour) -> Result<(), PlotError> {
+        let project = self.project;
+        self.chart
+            .draw_series(
+                layer
+                    .points()
+                    .into_iter()
+                    .map(|p| Circle::new(project(p), 3, rgb(colour).filled())),
+            )
+            .map_err(drawing)?;
+        Ok(())
+    }
+
+    /// A curve: a line through its points in `colour`, `width` pixels wide.
+    fn curve(
+        &mut self,
+        layer: &Layer,
+        colour: Colour,
+        width: u32,
+        label: &str,
+    ) -> Result<(), PlotError> {
+        let style = rgb(colour).stroke_width(width);
+        let anno = self
+            .chart
+            .draw_series(LineSeries::new(
+                layer.points().into_iter().map(self.project),
+                style,
+            ))
+            .map_err(drawing)?;
+        line_legend(anno, label, style);
+        Ok(())
+    }
+
+    /// Marked points: black discs, each with its text beside it.
+    fn points(&mut self, layer: &Layer, labels: &[String], label: &str) -> Result<(), PlotError> {
+        let project = self.project;
+        let black = rgb(Colour::Black);
+        let anno = self
+            .chart
+            .draw_series(
+                layer
+                    .points()
+                    .into_iter()
+                    .map(|p| Circle::new(project(p), 6, black.filled())),
+            )
+            .map_err(drawing)?;
+        if !label.is_empty() {
+            anno.label(label)
+                .legend(move |(x, y)| Circle::new((x + 10, y), 5, black.filled()));
+        }
+        let font = (FAMILY, 14).into_font().color(&black);
+        self.chart
+            .draw_series(layer.points().into_iter().zip(labels).map(|(p, text)| {
+                EmptyElement::at(project(p)) + Text::new(text.clone(), (9, -18), font.clone())
+            }))
+            .map_err(drawing)?;
+        Ok(())
+    }
+
+    /// A control polygon: red lines between its points, each point a red ring.
+    fn control_polygon(&mut self, layer: &Layer, label: &str) -> Result<(), PlotError> {
+        let project = self.project;
+        let red = rgb(Colour::Red);
+        let anno = self
+            .chart
+            .draw_series(LineSeries::new(
+                layer.points().into_iter().map(project),
+                red.stroke_width(1),
+            ))
+            .map_err(drawing)?;
+        if !label.is_empty() {
+            anno.label(label).legend(move |(x, y)| {
+                EmptyElement::at((x, y))
+                    + PathElement::new(vec![(0, 0), (20, 0)], red.stroke_width(1))
+                    + Circle::new((10, 0), 4, red.stroke_width(2))
+            });
+        }
+        self.chart
+            .draw_series(
+                layer
+                    .points()
+                    .into_iter()
+                    .map(|p| Circle::new(project(p), 5, red.stroke_width(2))),
+            )
+            .map_err(drawing)?;
+        Ok(())
+    }
+
+    /// The legend, in the upper right corner on a light background.
+    fn legend(&mut self) -> Result<(), PlotError> {
+        self.chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::UpperRight)
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK.mix(0.5))
+            .label_font((FAMILY, 15))
+            .draw()
+            .map_err(drawing)
+    }
+}
+
+/// The legend entry of a line drawn in `style`: a short stretch of it (none without a label).
+fn line_legend<'a, DB: DrawingBackend + 'a>(
+    anno: &mut SeriesAnno<'a, DB>,
+    label: &str,
+    style: ShapeStyle,
+) {
+    if !label.is_empty() {
+        anno.label(label)
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
+    }
+}
+
+/// The grid lines of a net: every row `i` and every column `j`, as 3-D points.
+pub(super) fn net_lines(grid: &PointGrid<f64>) -> Vec<Vec<[f64; 3]>> {
+    let (nu, nv, d) = grid.dim();
+    let p = |i: usize, j: usize| {
+        [
+            grid[[i, j, 0]],
+            grid[[i, j, 1]],
+            if d > 2 { grid[[i, j, 2]] } else { 0.0 },
+        ]
+    };
+    let mut lines = Vec::with_capacity(nu + nv);
+    for i in 0..nu {
+        lines.push((0..nv).map(|j| p(i, j)).collect());
+    }
+    for j in 0..nv {
+        lines.push((0..nu).map(|i| p(i, j)).collect());
+    }
+    lines
+}

@@ -1,0 +1,730 @@
+//! Issue 24: no silent wrong answer — points as the notes write them, decimal commas wherever
+//! numbers are read, one convention per word, messages that point to the fix, pictures that
+//! show the answer. Each slip gives its note, warning or error; the explicit, correct readings
+//! of the same data stay silent. Expected values are exact fractions worked out by hand from
+//! the textbook formulas (de Casteljau, Lagrange), never the program's own output.
+
+use std::path::Path;
+
+use assert_cmd::Command;
+use cagd_test_support::thesis_args::PRIMER_4_3;
+use serde_json::Value as J;
+
+use super::course::{error, run_ok, silent};
+
+/// Runs the `cagd` binary (which writes its pictures), requiring success.
+fn binary(args: &[&str]) {
+    let out = Command::cargo_bin("cagd")
+        .unwrap()
+        .args(args)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "cagd {args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+/// The exact `result` of a command (`--exact --format json`), row by row.
+fn exact_result(args: &[&str]) -> Vec<Vec<String>> {
+    exact_named(args, "result")
+}
+
+/// The exact output `name` of a command (`--exact --format json`), row by row.
+fn exact_named(args: &[&str], name: &str) -> Vec<Vec<String>> {
+    let mut a = args.to_vec();
+    a.extend(["--exact", "--format", "json"]);
+    let (out, _) = run_ok(&a);
+    let v: J = serde_json::from_str(&out).unwrap();
+    assert!(!v[name].is_null(), "{args:?}: no {name} in {v}");
+    rows(&v[name])
+}
+
+fn rows(v: &J) -> Vec<Vec<String>> {
+    let cell = |x: &J| x.as_str().map_or_else(|| x.to_string(), str::to_string);
+    match v {
+        J::Array(r) if r.iter().all(J::is_array) => r
+            .iter()
+            .map(|row| row.as_array().unwrap().iter().map(cell).collect())
+            .collect(),
+        J::Array(r) => vec![r.iter().map(cell).collect()],
+        x => vec![vec![cell(x)]],
+    }
+}
+
+fn col(values: &[&str]) -> Vec<Vec<String>> {
+    values.iter().map(|v| vec![v.to_string()]).collect()
+}
+
+const NOTE_3X3: &str =
+    "CONTROL: read as 3 points in 3-D, one per column; --rows if each row is a point";
+
+// ---------------------------------------------------------------------------------------
+// 1. Orientation never guessed in silence
+
+#[test]
+fn square_and_wide_point_matrices_get_the_orientation_note() {
+    // The issue's 3×3: the rows mean b0 = (0,0,0), b1 = (1,2,0), b2 = (2,0,1); by hand
+    // b(1/2) = (b0 + 2 b1 + b2)/4 = (1, 1, 1/4). Read as columns: (0, 5/4, 3/4), with the note.
+    let m = "[0 0 0; 1 2 0; 2 0 1]";
+    let (_, warnings) = run_ok(&["decasteljau", m, "--t", "0.5"]);
+    assert_eq!(warnings, vec![NOTE_3X3.to_string()]);
+    assert_eq!(
+        exact_result(&["decasteljau", m, "--t", "0.5", "--columns"]),
+        col(&["0", "5/4", "3/4"])
+    );
+    assert_eq!(
+        exact_result(&["decasteljau", m, "--t", "0.5", "--rows"]),
+        col(&["1", "1", "1/4"])
+    );
+    // "[0 0; 4 2]": rows (0,0), (4,2) at t = 1/4 → (1, 1/2); columns (0,4), (0,2) → (0, 7/2).
+    let (_, warnings) = run_ok(&["decasteljau", "[0 0; 4 2]", "--t", "1/4"]);
+    assert_eq!(
+        warnings,
+        vec!["CONTROL: read as 2 points in 2-D, one per column; --rows if each row is a point"]
+    );
+    assert_eq!(
+        exact_result(&["decasteljau", "[0 0; 4 2]", "--t", "1/4", "--rows"]),
+        col(&["1", "1/2"])
+    );
+    // Every command that reads points: elevate, subdivide, spline, bspline, nurbs, convert,
+    // integrate, lagrange --points, continuity.
+    for args in [
+        vec!["elevate", m, "--by", "1"],
+        vec!["subdivide", m],
+        vec!["integrate", m],
+        vec!["convert", m, "--from", "bezier", "--to", "monomial"],
+        vec!["bspline", m, "--degree", "2"],
+        vec!["nurbs", m, "--degree", "2", "--weights", "[1 1 1]"],
+    ] {
+        let (_, warnings) = run_ok(&args);
+        assert!(
+            warnings.iter().any(|w| w.ends_with(
+                "read as 3 points in 3-D, one per column; --rows if each row is a point"
+            )),
+            "{args:?}: {warnings:?}"
+        );
+        for stated in ["--rows", "--columns"] {
+            let mut a = args.clone();
+            a.push(stated);
+            silent(&a);
+        }
+    }
+}
+
+#[test]
+fn shapes_only_one_reading_makes_valid_stay_silent() {
+    // 2×4: four points in the plane (as rows they would be 2 points in 4-D).
+    silent(&["decasteljau", "[0 1 3 4; 0 2 2 0]", "--t", "0.5"]);
+    // 4×2 with --rows: four points in the plane.
+    silent(&[
+        "decasteljau",
+        "[0 0; 1 2; 3 2; 4 0]",
+        "--rows",
+        "--t",
+        "0.5",
+    ]);
+    // A row of numbers: points in 1-D (a function's Bézier ordinates).
+    silent(&["decasteljau", "[1 2 3]", "--t", "0.5"]);
+    silent(&[
+        "lagrange",
+        "--nodes",
+        "1:5",
+        "--points",
+        "[1 2 3 2 1]",
+        "--t",
+        "2.5",
+    ]);
+    // 4×2 as columns gives points in 4-D: a warning naming --rows, not a note.
+    let (_, warnings) = run_ok(&["decasteljau", "[0 0; 1 2; 3 2; 4 0]", "--t", "0.5"]);
+    assert_eq!(
+        warnings,
+        vec!["CONTROL: read as 2 points in 4-D, one per column; --rows if each row is a point"]
+    );
+}
+
+#[test]
+fn every_error_about_points_names_the_orientation_and_the_flip() {
+    // lagrange --points as rows: 3 points in the plane read as 2 points in 3-D.
+    let e = error(&["lagrange", "--nodes", "1:3", "--points", "[0 0; 1 1; 2 0]"]);
+    assert!(
+        e.contains("read as 2 points in 3-D, one per column; --rows if each row is a point"),
+        "{e}"
+    );
+    // With --rows stated the error still says how the points were read.
+    let e = error(&[
+        "lagrange",
+        "--nodes",
+        "1:2",
+        "--points",
+        "[0 0; 1 1; 2 0]",
+        "--rows",
+    ]);
+    assert!(
+        e.contains("read as 3 points in 2-D, one per row (--rows); leave out --rows if each column is a point"),
+        "{e}"
+    );
+    // convert: the B-spline form is cubic, 4 points typed as rows read as 2 in 4-D.
+    let e = error(&[
+        "convert",
+        "[0 0; 1 1; 2 0; 3 1]",
+        "--from",
+        "bezier",
+        "--to",
+        "bspline",
+    ]);
+    assert!(
+        e.contains("(read as 2 points in 4-D, one per column; --rows if each row is a point)"),
+        "{e}"
+    );
+    // continuity --free-point with the points as rows but read as columns.
+    let e = error(&[
+        "continuity",
+        "[2 3 4; 3 1 5]",
+        "[3 4 3; 2 6 0; 5 7 5; 5 2 3]",
+        "--free-point",
+    ]);
+    assert!(e.contains("--rows"), "{e}");
+    // The help of each names --rows and --columns.
+    for command in ["convert", "continuity", "lagrange", "decasteljau"] {
+        let help = silent(&[command, "--help"]);
+        assert!(
+            help.contains("--rows") && help.contains("--columns"),
+            "{command}"
+        );
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// 2. Decimal commas wherever numbers are read
+
+const COMMA_05: &str = "`0,5` read as two numbers 0 and 5; a decimal point is `0.5`";
+
+#[test]
+fn decimal_commas_in_control_points_lists_and_files_warn() {
+    // The issue's control points: meant (0.5, 1.5), (1, 2.5), (2, 0.5); at t = 1/2 by hand
+    // (b0 + 2 b1 + b2)/4 = (1.125, 1.75).
+    let (_, warnings) = run_ok(&["decasteljau", "[0,5 1,0 2,0; 1,5 2,5 0,5]", "--t", "0.5"]);
+    assert_eq!(warnings, vec![format!("CONTROL: {COMMA_05}")]);
+    assert_eq!(
+        exact_result(&["decasteljau", "[0.5 1.0 2.0; 1.5 2.5 0.5]", "--t", "0.5"]),
+        col(&["9/8", "7/4"])
+    );
+    // A list whose pieces fall inside the domain: p(5/2) = 87/32 is meant.
+    let args = ["lagrange", "--nodes", "1:5", "--points", "[1 2 3 2 1]"];
+    let mut a = args.to_vec();
+    a.extend(["--t", "[2,5]"]);
+    let (_, warnings) = run_ok(&a);
+    assert_eq!(
+        warnings,
+        vec!["--t: `2,5` read as two numbers 2 and 5; a decimal point is `2.5`"]
+    );
+    let mut a = args.to_vec();
+    a.extend(["--t", "2.5"]);
+    assert_eq!(exact_result(&a), vec![vec!["87/32".to_string()]]);
+    // A numeric file with decimal commas.
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("points.txt");
+    std::fs::write(&file, "0,5 1,5\n1,0 2,5\n2,0 0,5\n").unwrap();
+    let (_, warnings) = run_ok(&[
+        "decasteljau",
+        file.to_str().unwrap(),
+        "--rows",
+        "--t",
+        "0.5",
+    ]);
+    assert_eq!(warnings[0], format!("CONTROL: {COMMA_05}"));
+    // A CSV file of x,y rows is read as written.
+    std::fs::write(&file, "0,1\n1,2\n2,0\n").unwrap();
+    silent(&[
+        "decasteljau",
+        file.to_str().unwrap(),
+        "--rows",
+        "--t",
+        "0.5",
+    ]);
+}
+
+#[test]
+fn errors_caused_by_decimal_commas_say_so() {
+    let cases: [(&[&str], &str); 4] = [
+        (&["decasteljau", "[0 1 2; 0 1 0]", "--t", "0,5"], "--t: "),
+        (
+            &[
+                "bspline",
+                "[0 1 2 3; 0 1 0 1]",
+                "--degree",
+                "3",
+                "--knots",
+                "[0 0 0 0 0,5 1 1 1 1]",
+            ],
+            "--knots: ",
+        ),
+        (
+            &[
+                "nurbs",
+                "[0 1 2; 0 1 0]",
+                "--columns",
+                "--degree",
+                "2",
+                "--weights",
+                "[1 0,5 1]",
+            ],
+            "--weights: ",
+        ),
+        (
+            &["lagrange", "--nodes", "[0 0,5 1]", "--points", "[1 2 3]"],
+            "--nodes: ",
+        ),
+    ];
+    for (args, start) in cases {
+        let e = error(args);
+        assert!(
+            e.starts_with(start) && e.contains(COMMA_05),
+            "{args:?}: {e}"
+        );
+    }
+}
+
+#[test]
+fn decimal_points_and_comma_separated_lists_stay_silent() {
+    for t in [
+        "[0.2 0.4]",
+        "0:0.2:1",
+        "[0, 0.5, 1]",
+        "[0;0.5]",
+        "[0,0.5,1]",
+        "0.5",
+    ] {
+        silent(&["decasteljau", "[0 1 3 4; 0 2 2 0]", "--t", t]);
+    }
+    silent(&[
+        "bspline",
+        "[0 1 3 4; 0 2 2 0]",
+        "--degree",
+        "2",
+        "--knots",
+        "[0,0,0,0.5,1,1,1]",
+    ]);
+    silent(&["decasteljau", "[0,1,3,4;0,2,2,0]", "--t", "0.5"]);
+}
+
+// ---------------------------------------------------------------------------------------
+// 3. One convention per word
+
+#[test]
+fn convention_elevate_degree_is_the_degree_after_elevation() {
+    // A quadratic raised to degree 4 = raised by 2: the same control points.
+    let q = "[0 1 2; 0 1 0]";
+    let elevate = |extra: &[&str]| {
+        let mut a = vec!["elevate", q, "--columns"];
+        a.extend(extra);
+        exact_named(&a, "control")
+    };
+    let by = elevate(&["--by", "2"]);
+    assert_eq!(elevate(&["--degree", "4"]), by);
+    assert_eq!(elevate(&["--order", "5"]), by);
+    assert_eq!(elevate(&["--degree", "4", "--by", "2"]), by);
+    // By hand (degree 2 → 4): b'_i = Σ C(2,j) C(2,i−j)/C(4,i) b_j: x = 0, 1/2, 1, 3/2, 2;
+    // y = 0, 1/2, 2/3, 1/2, 0.
+    assert_eq!(
+        by,
+        vec![
+            vec!["0", "1/2", "1", "3/2", "2"],
+            vec!["0", "1/2", "2/3", "1/2", "0"]
+        ]
+        .into_iter()
+        .map(|r| r.into_iter().map(String::from).collect::<Vec<_>>())
+        .collect::<Vec<_>>()
+    );
+    let e = error(&["elevate", q, "--columns", "--degree", "4", "--by", "1"]);
+    assert!(
+        e.starts_with("--degree: the degree after elevation 4 contradicts --by 1"),
+        "{e}"
+    );
+    let e = error(&["elevate", q, "--columns", "--degree", "1"]);
+    assert!(
+        e.starts_with("--degree: the degree after elevation 1 is below"),
+        "{e}"
+    );
+    // A B-spline: its degree comes from its knots (7 knots, 4 points: degree 2).
+    let b = [
+        "elevate",
+        "[0 1 3 4; 0 2 2 0]",
+        "--knots",
+        "[0 0 0 0.5 1 1 1]",
+    ];
+    let mut by1 = b.to_vec();
+    by1.extend(["--by", "1"]);
+    let mut to3 = b.to_vec();
+    to3.extend(["--degree", "3"]);
+    assert_eq!(exact_named(&by1, "control"), exact_named(&to3, "control"));
+    assert_eq!(exact_named(&by1, "knots"), exact_named(&to3, "knots"));
+}
+
+#[test]
+fn convention_order_is_a_bsplines_order_in_every_command() {
+    let p = "[0 1 3 4; 0 2 2 0]";
+    let u = "[0 0 0 0.5 1 1 1]";
+    for (command, extra) in [
+        ("bspline", vec!["--t", "0.25"]),
+        ("integrate", vec![]),
+        ("insert-knot", vec!["--insert", "0.25"]),
+        ("nurbs", vec!["--weights", "[1 2 1 1]", "--t", "0.25"]),
+    ] {
+        let mut by_degree = vec![command, p, "--knots", u, "--degree", "2"];
+        by_degree.extend(&extra);
+        let mut by_order = vec![command, p, "--knots", u, "--order", "3"];
+        by_order.extend(&extra);
+        let name = match command {
+            "integrate" => "integral",
+            "insert-knot" => "control",
+            _ => "result",
+        };
+        assert_eq!(
+            exact_named(&by_degree, name),
+            exact_named(&by_order, name),
+            "{command}"
+        );
+    }
+    let basis =
+        |w: &str, v: &str| exact_result(&["bspline-basis", "--knots", u, w, v, "--t", "0.25"]);
+    assert_eq!(basis("--degree", "2"), basis("--order", "3"));
+    // The derivative's order is -r; --order there is refused, naming -r.
+    let e = error(&["derivative", "[0 1 2; 0 1 0]", "--order", "1"]);
+    assert!(e.starts_with("--order: ") && e.contains("-r"), "{e}");
+    let d = exact_named(
+        &["derivative", "[0 1 2; 0 1 0]", "--columns", "-r", "1"],
+        "control",
+    );
+    assert_eq!(
+        d,
+        vec![vec!["2", "2"], vec!["2", "-2"]]
+            .into_iter()
+            .map(|r| r.into_iter().map(String::from).collect::<Vec<_>>())
+            .collect::<Vec<_>>()
+    );
+}
+
+#[test]
+fn convention_default_degree_is_cubic_for_bspline_and_nurbs() {
+    let p = "[0 1 2 3 4; 0 2 0 2 0]";
+    for (command, extra) in [
+        ("bspline", vec![]),
+        ("nurbs", vec!["--weights", "[1 1 1 1 1]"]),
+    ] {
+        let mut default = vec![command, p, "--t", "0.3"];
+        default.extend(&extra);
+        let mut cubic = default.clone();
+        cubic.extend(["--degree", "3"]);
+        assert_eq!(exact_result(&default), exact_result(&cubic), "{command}");
+    }
+}
+
+#[test]
+fn convention_one_knot_count_rule_and_wording() {
+    let wrong = "[0 0 0 1 1 1]";
+    let p = "[0 1 3 4; 0 2 2 0]";
+    for command in ["bspline", "insert-knot", "integrate"] {
+        let mut a = vec![command, p, "--degree", "2", "--knots", wrong];
+        if command == "insert-knot" {
+            a.extend(["--insert", "0.5"]);
+        }
+        let e = error(&a);
+        assert!(
+            e.contains("n + p + 1") && !e.contains("n + p + 2"),
+            "{command}: {e}"
+        );
+    }
+}
+
+#[test]
+fn convention_default_samples_cover_the_data() {
+    // Lagrange samples its nodes' range: no value extrapolated, no warning.
+    let out = silent(&[
+        "lagrange",
+        "--nodes",
+        "1:5",
+        "--points",
+        "[1 2 3 2 1]",
+        "--format",
+        "json",
+    ]);
+    let v: J = serde_json::from_str(&out).unwrap();
+    let t: Vec<f64> = rows(&v["t"])[0]
+        .iter()
+        .map(|x| x.parse().unwrap())
+        .collect();
+    assert_eq!((t[0], *t.last().unwrap()), (1.0, 5.0));
+}
+
+#[test]
+fn convention_parameter_vectors_are_rows() {
+    for args in [
+        vec!["decasteljau", "[0 1 3 4; 0 2 2 0]", "--t", "[0 0.5 1]"],
+        vec!["bernstein", "--degree", "2", "--t", "[0 0.5 1]"],
+        vec![
+            "bspline-basis",
+            "--knots",
+            "[0 0 0 1 1 1]",
+            "--degree",
+            "2",
+            "--t",
+            "[0 0.5 1]",
+        ],
+        vec![
+            "bspline",
+            "[0 1 3 4; 0 2 2 0]",
+            "--degree",
+            "2",
+            "--t",
+            "[0 0.5 1]",
+        ],
+        vec!["lagrange", "--nodes", "[0 0.5 1]", "--t", "[0 0.5 1]"],
+        vec!["integrate", "--bernstein", "2", "--t", "[0 0.5 1]"],
+    ] {
+        let mut a = args.clone();
+        a.extend(["--format", "json"]);
+        let (out, _) = run_ok(&a);
+        let v: J = serde_json::from_str(&out).unwrap();
+        let t: Vec<Vec<f64>> = rows(&v["t"])
+            .iter()
+            .map(|r| r.iter().map(|x| x.parse().unwrap()).collect())
+            .collect();
+        assert_eq!(t, vec![vec![0.0, 0.5, 1.0]], "{args:?}: {}", v["t"]);
+    }
+}
+
+#[test]
+fn convention_de_boor_span_counts_knots_from_one() {
+    // Knots u_1..u_7 = 0 0 0 ½ 1 1 1 (the notes count from 1): t = 1/4 lies in [u_3, u_4).
+    let out = run_ok(&[
+        "bspline",
+        "[0 1 3 4; 0 2 2 0]",
+        "--degree",
+        "2",
+        "--knots",
+        "[0 0 0 0.5 1 1 1]",
+        "--t",
+        "0.25",
+        "--steps",
+        "--format",
+        "json",
+    ])
+    .0;
+    let v: J = serde_json::from_str(&out).unwrap();
+    assert_eq!(
+        rows(&v["de_boor"]["span"]),
+        vec![vec!["3.0"]],
+        "{}",
+        v["de_boor"]
+    );
+    let out = run_ok(&[
+        "insert-knot",
+        "[0 1 3 4; 0 2 2 0]",
+        "--degree",
+        "2",
+        "--knots",
+        "[0 0 0 0.5 1 1 1]",
+        "--insert",
+        "0.25",
+        "--steps",
+        "--format",
+        "json",
+    ])
+    .0;
+    let v: J = serde_json::from_str(&out).unwrap();
+    let span = &v["insert_1"]["span"];
+    assert_eq!(rows(span), vec![vec!["3.0"]], "{v}");
+}
+
+// ---------------------------------------------------------------------------------------
+// 4. Messages that point to the fix
+
+#[test]
+fn messages_name_what_was_typed_and_what_was_meant() {
+    let e = error(&["integrate", "--bernstien", "3"]);
+    assert!(
+        e.starts_with("--bernstien: unknown option; expected --bernstein perhaps"),
+        "{e}"
+    );
+    let e = error(&[
+        "bspline-surface",
+        "[0 0 0 1 0 0; 0 1 0 1 1 0]",
+        "--knots",
+        "[0 0 1 1]",
+    ]);
+    assert!(
+        e.starts_with("--knots: unknown option; expected --uknots and --vknots"),
+        "{e}"
+    );
+    let e = error(&["decastljau", "[0 1]"]);
+    assert!(
+        e.starts_with("decastljau: unknown subcommand; expected decasteljau perhaps"),
+        "{e}"
+    );
+    for surface in [
+        vec![
+            "coons", "--c1", "[u;0;0]", "--c2", "[u;1;0]", "--d1", "[0;v;0]", "--d2", "[1;v;0]",
+        ],
+        vec!["bezier-patch", "[0 0 0 1 0 0; 0 1 0 1 1 1]"],
+    ] {
+        let mut a = surface.clone();
+        a.extend(["--t", "0.5"]);
+        let e = error(&a);
+        assert!(
+            e.starts_with("--t: unknown option; expected --u and --v"),
+            "{e}"
+        );
+    }
+    let e = error(&[
+        "decasteljau",
+        "/nonexistent/dir/nonexist.txt:B",
+        "--t",
+        "0.5",
+    ]);
+    assert!(e.contains("no such file"), "{e}");
+    let e = error(&["decasteljau", "nonexist.txt:B", "--t", "0.5"]);
+    assert!(e.starts_with("CONTROL nonexist.txt: no such file"), "{e}");
+}
+
+// ---------------------------------------------------------------------------------------
+// 5. Pictures that show the answer
+
+/// The circles of an SVG: (cx, cy, r, the element's text).
+fn circles(svg: &str) -> Vec<(f64, f64, f64, String)> {
+    svg.split("<circle")
+        .skip(1)
+        .map(|c| {
+            let end = c.find("/>").unwrap_or(c.len());
+            let el = &c[..end];
+            let attr = |name: &str| -> f64 {
+                let at = el.find(&format!(" {name}=\"")).unwrap() + name.len() + 3;
+                el[at..].split('"').next().unwrap().parse().unwrap()
+            };
+            (attr("cx"), attr("cy"), attr("r"), el.to_string())
+        })
+        .collect()
+}
+
+/// Checks that the SVG of `decasteljau P --t ts --plot` marks each point b(t) (`expected`,
+/// worked out by hand) where the control points' own circles put it.
+fn marker_at(dir: &Path, ts: &str, expected: &[(f64, f64)]) {
+    let svg = dir.join(format!("m{}.svg", expected.len()));
+    let svg = svg.to_str().unwrap();
+    // b0 = (0,0), b1 = (1,2), b2 = (3,2), b3 = (4,0).
+    binary(&[
+        "decasteljau",
+        "[0 1 3 4; 0 2 2 0]",
+        "--t",
+        ts,
+        "--plot",
+        svg,
+    ]);
+    let text = std::fs::read_to_string(svg).unwrap();
+    let all = circles(&text);
+    // The control points: red circles of radius 5 (not the legend's radius 4).
+    let control: Vec<_> = all
+        .iter()
+        .filter(|c| c.2 == 5.0 && c.3.contains("fill=\"none\""))
+        .collect();
+    assert_eq!(control.len(), 4, "{all:?}");
+    // Pixel = a + b·coordinate, from b0 and b3 (x) and b0 and b1 (y).
+    let bx = (control[3].0 - control[0].0) / 4.0;
+    let by = (control[1].1 - control[0].1) / 2.0;
+    let pixel = |(x, y): (f64, f64)| (control[0].0 + bx * x, control[0].1 + by * y);
+    let markers: Vec<_> = all.iter().filter(|c| c.2 == 6.0).collect();
+    assert_eq!(markers.len(), expected.len(), "{all:?}");
+    for (m, p) in markers.iter().zip(expected) {
+        let (px, py) = pixel(*p);
+        assert!(
+            (m.0 - px).abs() <= 1.0 && (m.1 - py).abs() <= 1.0,
+            "marker at ({}, {}), b = {p:?} at ({px}, {py})",
+            m.0,
+            m.1
+        );
+    }
+    // Labelled with its parameter.
+    assert!(
+        text.contains("t = 0.5") || text.contains("t = 1/2"),
+        "labels"
+    );
+}
+
+#[test]
+fn the_plot_marks_each_evaluated_point_where_it_is() {
+    let dir = tempfile::tempdir().unwrap();
+    // By hand: x(t) = 3t(1−t)² + 9t²(1−t) + 4t³, y(t) = 6t(1−t)² + 6t²(1−t) = 6t(1−t).
+    let b = |t: f64| {
+        let s = 1.0 - t;
+        (
+            3.0 * t * s * s + 9.0 * t * t * s + 4.0 * t * t * t,
+            6.0 * t * s,
+        )
+    };
+    marker_at(dir.path(), "0.5", &[(2.0, 1.5)]);
+    marker_at(dir.path(), "[0.25 0.5 0.75]", &[b(0.25), b(0.5), b(0.75)]);
+}
+
+#[test]
+fn every_plotting_command_marks_its_evaluated_points() {
+    let dir = tempfile::tempdir().unwrap();
+    let svg = |name: &str| {
+        dir.path()
+            .join(format!("{name}.svg"))
+            .to_str()
+            .unwrap()
+            .to_string()
+    };
+    let p = "[0 1 3 4; 0 2 2 0]";
+    let cases: Vec<(&str, Vec<&str>)> = vec![
+        ("bezier", vec!["decasteljau", p, "--t", "0.5"]),
+        ("bspline", vec!["bspline", p, "--degree", "2", "--t", "0.5"]),
+        (
+            "nurbs",
+            vec![
+                "nurbs",
+                p,
+                "--degree",
+                "2",
+                "--weights",
+                "[1 2 2 1]",
+                "--t",
+                "0.5",
+            ],
+        ),
+        ("spline", vec!["spline", p, "--t", "0.5"]),
+        (
+            "coons",
+            [&["coons"][..], &PRIMER_4_3, &["--u", "0.2", "--v", "0.5"]].concat(),
+        ),
+        (
+            "gordon",
+            vec![
+                "gordon",
+                "--u-curve",
+                "[u;0;0]",
+                "--u-curve",
+                "[u;1;u]",
+                "--v-curve",
+                "[0;v;0]",
+                "--v-curve",
+                "[1;v;v]",
+                "--u",
+                "0.2",
+                "--v",
+                "0.5",
+            ],
+        ),
+    ];
+    for (name, args) in cases {
+        let path = svg(name);
+        let mut a = args.clone();
+        a.extend(["--plot", &path]);
+        binary(&a);
+        let text = std::fs::read_to_string(&path).unwrap();
+        let markers = circles(&text).into_iter().filter(|c| c.2 == 6.0).count();
+        assert_eq!(markers, 1, "{name}: the evaluated point is marked once");
+    }
+}
