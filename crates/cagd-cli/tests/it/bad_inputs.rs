@@ -1043,7 +1043,7 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
         // Results that overflow the range of doubles.
         (
             s(&["derivative", "[zeros(1,171) 1]", "-r", "171"]),
-            "--order",
+            "-r",
             "Library::Overflow",
         ),
         (
@@ -1087,7 +1087,7 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
         ),
         (
             s(&["derivative", "[1.7e308 -1.7e308 1.7e308]", "--t", "0.5"]),
-            "--order",
+            "-r",
             "Library::Overflow",
         ),
         (
