@@ -34,7 +34,10 @@ pub struct Joint {
 /// in exact arithmetic) and `tol · |a| |b|` on the parallelism minors.
 ///
 /// # Errors
-/// [`Error::ShapeMismatch`] for vectors of different dimensions, [`Error::NonFinite`].
+/// [`Error::ShapeMismatch`] for vectors of different dimensions, [`Error::NonFinite`] for a
+/// NaN or infinite coordinate or tolerance, [`Error::InvalidArgument`] for a negative
+/// tolerance, [`Error::Overflow`] when the products the classification compares overflow
+/// (derivatives near ±10¹⁵⁴).
 ///
 /// ```
 /// use cagd::continuity::joint;
@@ -68,6 +71,13 @@ pub fn joint<T: Scalar>(
             .chain(start.0.iter())
             .chain(start.1.iter()),
     )?;
+    crate::error::check_finite("joint tolerance", std::iter::once(&tol))?;
+    if tol < T::zero() {
+        return Err(Error::InvalidArgument {
+            what: "joint tolerance",
+            message: format!("expected a value >= 0, got {tol}"),
+        });
+    }
     let near = |a: &DVector<T>, b: &DVector<T>| {
         a.iter()
             .zip(b.iter())
@@ -83,14 +93,21 @@ pub fn joint<T: Scalar>(
     let norm1 = |v: &DVector<T>| v.iter().fold(T::zero(), |s, x| s + x.abs());
     let scale = tol.clone() * norm1(a) * norm1(b);
     let mut parallel = true;
+    let mut minors = Vec::new();
     for i in 0..d {
         for j in i + 1..d {
             let minor = a[i].clone() * b[j].clone() - a[j].clone() * b[i].clone();
             if minor.abs() > scale {
                 parallel = false;
             }
+            minors.push(minor);
         }
     }
+    // The classification compares these: one that overflowed would decide it wrongly.
+    crate::error::check_overflow(
+        "joint derivatives (products of their coordinates)",
+        [&dot, &scale].into_iter().chain(&minors),
+    )?;
     let g1 = c0 && parallel && dot > T::zero();
     Ok(Joint { c0, c1, g1 })
 }
@@ -99,7 +116,8 @@ pub fn joint<T: Scalar>(
 /// values and derivatives ([`CurveDeriv::eval_derivative`]).
 ///
 /// # Errors
-/// The errors of [`joint`].
+/// [`Error::NonFinite`] for a NaN or infinite parameter, [`Error::Overflow`] for a point or
+/// derivative whose double overflows, and the errors of [`joint`].
 pub fn curve_joint<T: Scalar>(
     first: &impl CurveDeriv<T>,
     t1: T,
@@ -107,9 +125,15 @@ pub fn curve_joint<T: Scalar>(
     t0: T,
     tol: T,
 ) -> Result<Joint> {
+    crate::error::check_finite("curve joint parameters", [&t1, &t0])?;
     let d1 = first.eval_derivative(t1.clone());
     let d0 = second.eval_derivative(t0.clone());
-    joint((&first.eval(t1), &d1), (&second.eval(t0), &d0), tol)
+    let (p1, p0) = (first.eval(t1), second.eval(t0));
+    crate::error::check_overflow(
+        "curve joint points and derivatives",
+        p1.iter().chain(&d1).chain(&p0).chain(&d0),
+    )?;
+    joint((&p1, &d1), (&p0, &d0), tol)
 }
 
 /// The lecture notes' example: two cubic Bézier segments `x_A x_B x_C x_D` and `x_D x_E x_F x_G`
@@ -120,7 +144,8 @@ pub fn curve_joint<T: Scalar>(
 /// `x_E = (2, 6, 0)`) this is `x = 3 + k, y = 4 − 2k, z = 3 + 3k`, as printed.
 ///
 /// # Errors
-/// [`Error::ShapeMismatch`] for points of different dimensions.
+/// [`Error::ShapeMismatch`] for points of different dimensions, [`Error::NonFinite`] for a
+/// NaN or infinite coordinate, [`Error::Overflow`] for a direction whose double overflows.
 pub fn c1_free_point<T: Scalar>(
     x_d: &DVector<T>,
     x_e: &DVector<T>,
@@ -132,7 +157,9 @@ pub fn c1_free_point<T: Scalar>(
             found: format!("{}", x_e.len()),
         });
     }
+    check_finite("C1 free point", x_d.iter().chain(x_e.iter()))?;
     let dir = DVector::from_fn(x_d.len(), |r, _| x_d[r].clone() - x_e[r].clone());
+    crate::error::check_overflow("C1 free direction", dir.iter())?;
     Ok((x_d.clone(), dir))
 }
 
@@ -166,7 +193,8 @@ pub struct BezierJoint<T> {
 /// largest control coordinate (at least 1).
 ///
 /// # Errors
-/// [`Error::ShapeMismatch`] for curves of different dimensions.
+/// [`Error::ShapeMismatch`] for curves of different dimensions; [`Error::Overflow`] for a
+/// point or derivative whose double overflows.
 ///
 /// ```
 /// use cagd::bezier::BezierCurve;
@@ -196,6 +224,12 @@ pub fn bezier_joint<T: Scalar>(
         derivative_at(second, 1, zero.clone()),
     );
     let (dd_end, dd_start) = (derivative_at(first, 2, one), derivative_at(second, 2, zero));
+    crate::error::check_overflow(
+        "Bézier joint points and derivatives",
+        [&end, &start, &d_end, &d_start, &dd_end, &dd_start]
+            .into_iter()
+            .flat_map(|v| v.iter()),
+    )?;
     let tol = if T::EXACT {
         T::zero()
     } else {
@@ -267,7 +301,8 @@ fn parallel_factor<T: Scalar>(a: &DVector<T>, b: &DVector<T>, tol: &T) -> Option
 ///
 /// # Errors
 /// [`Error::TooFewPoints`] for fewer than 2 known points or a second curve of degree 0;
-/// [`Error::ShapeMismatch`] for points of different dimensions.
+/// [`Error::ShapeMismatch`] for points of different dimensions; [`Error::NonFinite`] for a
+/// NaN or infinite known point, [`Error::Overflow`] for a direction whose double overflows.
 ///
 /// ```
 /// use cagd::bezier::BezierCurve;
@@ -306,6 +341,8 @@ pub fn free_point_line<T: Scalar>(
     let direction = DVector::from_fn(base.len(), |r, _| {
         ratio.clone() * (y0[r].clone() - y1[r].clone())
     });
+    check_finite("free point of a joint", base.iter())?;
+    crate::error::check_overflow("free point direction", direction.iter())?;
     Ok((base, direction))
 }
 

@@ -75,7 +75,9 @@ impl<T: Scalar> CurveDeriv2<T> for NurbsCurve<T> {
 ///
 /// # Errors
 /// [`Error::ShapeMismatch`] for derivatives of different lengths; [`Error::InvalidArgument`]
-/// where `x′ = 0` (a singular point: the curvature is not defined).
+/// where `x′ = 0` (a singular point: the curvature is not defined); [`Error::NonFinite`] for
+/// a NaN or infinite coordinate; [`Error::Overflow`] where the double of `κ²` (or of `|x′|⁶`)
+/// overflows or underflows to zero.
 ///
 /// ```
 /// use num_rational::BigRational;
@@ -88,6 +90,7 @@ impl<T: Scalar> CurveDeriv2<T> for NurbsCurve<T> {
 /// ```
 pub fn curvature_squared<T: Scalar>(d1: &DVector<T>, d2: &DVector<T>) -> Result<T> {
     check_lengths(d1, d2)?;
+    crate::error::check_finite("curve derivatives", d1.iter().chain(d2.iter()))?;
     let dot = |a: &DVector<T>, b: &DVector<T>| {
         a.iter()
             .zip(b.iter())
@@ -100,7 +103,9 @@ pub fn curvature_squared<T: Scalar>(d1: &DVector<T>, d2: &DVector<T>) -> Result<
     let s22 = dot(d2, d2);
     let s12 = dot(d1, d2);
     let cross2 = s11.clone() * s22 - s12.clone() * s12;
-    Ok(cross2 / (s11.clone() * s11.clone() * s11))
+    let k2 = cross2 / (s11.clone() * s11.clone() * s11);
+    crate::error::check_overflow("squared curvature", [&k2])?;
+    Ok(k2)
 }
 
 /// The curvature and the Frenet frame at a point of a plane or space curve.
@@ -121,7 +126,8 @@ pub struct Frenet {
 /// # Errors
 /// [`Error::ShapeMismatch`] for derivatives other than both 2-D or both 3-D;
 /// [`Error::InvalidArgument`] where `x′ = 0`; [`Error::NonFinite`] for non-finite
-/// derivatives or a curvature that overflows.
+/// derivatives or a curvature that overflows; [`Error::Overflow`] for a frame vector whose
+/// double overflows.
 ///
 /// ```
 /// use nalgebra::dvector;
@@ -195,6 +201,15 @@ pub fn frenet(d1: &DVector<f64>, d2: &DVector<f64>) -> Result<Frenet> {
             value: frame.curvature,
         });
     }
+    let frame_vectors = [
+        Some(&frame.tangent),
+        frame.normal.as_ref(),
+        frame.binormal.as_ref(),
+    ];
+    crate::error::check_overflow(
+        "Frenet frame",
+        frame_vectors.into_iter().flatten().flat_map(|v| v.iter()),
+    )?;
     Ok(frame)
 }
 

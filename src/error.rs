@@ -137,7 +137,7 @@ pub enum Error {
     /// A curve whose domain a construction cannot reparametrise onto `[0, 1]` (an infinite end,
     /// or a start not below the end): Coons, Gordon and ruled surfaces map each curve's domain
     /// `[a, b]` affinely onto `[0, 1]` (see [`crate::param`]).
-    #[error("{what}: its domain [{start}, {end}] cannot be mapped onto [0, 1] (expected finite ends, start below end)")]
+    #[error("{what}: its domain [{start}, {end}] cannot be mapped onto [0, 1] (expected finite ends, start below end, a width within the range of doubles)")]
     UnusableDomain {
         /// Which curve.
         what: &'static str,
@@ -283,6 +283,24 @@ pub enum Error {
         /// The smallest eigenvalue in absolute value (0 for an exactly singular system).
         eigenvalue: f64,
     },
+    /// A value computed from finite input is not a finite double: a product or sum overflowed
+    /// to ±∞, or a quotient by a difference that rounded to zero gave ±∞ or NaN (control points
+    /// near ±1.7·10³⁰⁸, an interval `[−10³⁰⁸, 10³⁰⁸]` whose width overflows, knots or nodes
+    /// 5·10⁻³²⁴ apart, weights all 10³⁰⁸). Every `Result`-returning function checks what it
+    /// computes ([`check_overflow`]) instead of returning a non-finite value; exact values are
+    /// converted to doubles the same way ([`crate::exact::to_finite_f64`]). `what` names the
+    /// quantity, `index` its first non-finite entry (column-major, as Octave counts).
+    #[error(
+        "{what}: value at index {index} is not a finite double ({value}): the input's magnitudes are too large (or too close together) for double precision"
+    )]
+    Overflow {
+        /// Which computed quantity.
+        what: &'static str,
+        /// Flat index of the first offending value.
+        index: usize,
+        /// The value computed (±∞ or NaN).
+        value: f64,
+    },
     /// A size that would need more memory or time than the [`crate::limits::Limits`] passed
     /// allow (a grid, a degree, a linear system, an input): refused before anything is
     /// allocated.
@@ -416,6 +434,101 @@ pub fn check_finite<'a, T: Scalar>(
                 index,
                 value: value.to_f64(),
             });
+        }
+    }
+    Ok(())
+}
+
+/// Checks that every value a computation produced is finite; reports the first one that is not.
+///
+/// The one check behind the crate's promise "finite in, finite out": a value computed in `f64`
+/// from finite input can still overflow (`1.7e308 + 1.7e308`), or divide by a difference that
+/// rounded to zero (`0/0`), and every `Result`-returning function runs its results through
+/// this before it returns `Ok` (for exact rationals every value is finite and the check costs
+/// one comparison per value).
+///
+/// # Errors
+/// [`Error::Overflow`] naming `what`, the index and the value of the first non-finite value.
+///
+/// ```
+/// use cagd::error::{check_overflow, Error};
+/// assert!(check_overflow("sum", &[1.0, 2.0]).is_ok());
+/// let big = f64::MAX;
+/// let err = check_overflow("sum", &[1.0, big + big]).unwrap_err();
+/// assert!(matches!(err, Error::Overflow { what: "sum", index: 1, .. }));
+/// ```
+pub fn check_overflow<'a, T: Scalar>(
+    what: &'static str,
+    values: impl IntoIterator<Item = &'a T>,
+) -> Result<()> {
+    if T::EXACT {
+        return Ok(());
+    }
+    for (index, value) in values.into_iter().enumerate() {
+        if !value.is_finite_value() {
+            return Err(Error::Overflow {
+                what,
+                index,
+                value: value.to_f64(),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// `value` if all its entries are finite ([`check_overflow`]): the last step of the evaluations
+/// that return a point.
+///
+/// # Errors
+/// [`Error::Overflow`] naming `what`.
+pub(crate) fn finite<T: Scalar, V>(what: &'static str, value: V) -> Result<V>
+where
+    for<'a> &'a V: IntoIterator<Item = &'a T>,
+{
+    check_overflow(what, &value)?;
+    Ok(value)
+}
+
+/// Checks increasing values that a construction divides differences of (knots, nodes, the
+/// parameters of a spline or a sampled curve): the whole range `last − first` must be a finite
+/// double, and every gap between two different values must have a finite reciprocal (a gap of
+/// 5·10⁻³²⁴ has none). Values out of order are left to the caller's own check.
+///
+/// # Errors
+/// [`Error::Overflow`] naming `what`: at the last index for a range that overflows (values
+/// from −10³⁰⁸ to 10³⁰⁸), at the upper value of a gap whose reciprocal overflows.
+///
+/// ```
+/// use cagd::error::{check_spacing, Error};
+/// assert!(check_spacing("knots", &[0.0, 0.0, 0.5, 1.0]).is_ok());
+/// let err = check_spacing("knots", &[0.0, 0.0, 5e-324, 1.0]).unwrap_err();
+/// assert!(matches!(err, Error::Overflow { what: "knots", index: 2, .. }));
+/// assert!(check_spacing("knots", &[-1e308, 0.0, 1e308]).is_err());
+/// ```
+pub fn check_spacing<T: Scalar>(what: &'static str, values: &[T]) -> Result<()> {
+    if T::EXACT || values.len() < 2 {
+        return Ok(());
+    }
+    let last = values.len() - 1;
+    let range = values[last].clone() - values[0].clone();
+    if !range.is_finite_value() {
+        return Err(Error::Overflow {
+            what,
+            index: last,
+            value: range.to_f64(),
+        });
+    }
+    for (k, w) in values.windows(2).enumerate() {
+        let gap = w[1].clone() - w[0].clone();
+        if !gap.is_zero() {
+            let reciprocal = T::one() / gap;
+            if !reciprocal.is_finite_value() {
+                return Err(Error::Overflow {
+                    what,
+                    index: k + 1,
+                    value: reciprocal.to_f64(),
+                });
+            }
         }
     }
     Ok(())

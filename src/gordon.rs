@@ -301,13 +301,26 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
             unit_views(curves_at_u, &domains_at_u),
             unit_views(curves_at_v, &domains_at_v),
         );
-        // Compatibility: g(u_i, ·)(v_j) against g(·, v_j)(u_i).
+        // The bases first (their weights are refused at once for nodes no double can hold,
+        // 1001 equally spaced ones), and the k_u · k_v crossings counted before they are
+        // evaluated: the work grows with the product of the two families.
+        let bases = (
+            Lagrange::new(u_nodes.to_vec())?,
+            Lagrange::new(v_nodes.to_vec())?,
+        );
+        let crossings = (u_nodes.len() as u128).saturating_mul(v_nodes.len() as u128);
+        crate::checked::point_work::<T>(
+            "Gordon network crossings",
+            crate::cost::Cost::new(crossings.saturating_mul(2 * (dim as u128 + 1)), 0),
+        )?;
+        // Compatibility: g(u_i, ·)(v_j) against g(·, v_j)(u_i), each curve as it is (a point
+        // of another dimension is named as such).
         let mut worst: Option<(usize, usize, T, T)> = None;
         let mut count = 0;
         for (i, u) in u_nodes.iter().enumerate() {
             for (j, v) in v_nodes.iter().enumerate() {
-                let p = at_u[i].eval(v.clone());
-                let q = at_v[j].eval(u.clone());
+                let p = at_u[i].curve().eval(at_u[i].parameter(v.clone()));
+                let q = at_v[j].curve().eval(at_v[j].parameter(u.clone()));
                 if p.len() != dim || q.len() != dim {
                     return Err(Error::ShapeMismatch {
                         what: "Gordon network curves",
@@ -323,13 +336,7 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
         if let Some(e) = mismatch(worst, count, u_nodes, v_nodes, *tolerance) {
             return Err(e);
         }
-        Ok((
-            (
-                Lagrange::new(u_nodes.to_vec())?,
-                Lagrange::new(v_nodes.to_vec())?,
-            ),
-            (domains_at_u, domains_at_v),
-        ))
+        Ok((bases, (domains_at_u, domains_at_v)))
     }
 
     #[allow(clippy::type_complexity)]
@@ -403,6 +410,7 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
         let d = self.dim();
         let len = crate::grid::grid_len("Gordon surface grid", &[us.len(), vs.len(), d])?;
         crate::grid::check_len("Gordon surface grid buffer", len, out)?;
+        crate::error::check_finite("Gordon surface grid parameters", us.iter().chain(vs))?;
         if len == 0 {
             return Ok(());
         }
@@ -436,6 +444,7 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
         let r = at_v;
         let work = out.len().saturating_mul(mu + mv);
         crate::grid::for_each_row(
+            "Gordon surface grid",
             out,
             vs.len() * d,
             work,
@@ -445,8 +454,7 @@ impl<T: Scalar, C: Curve<T>> GordonSurface<C, T> {
                 let ra = &r[a * mv * d..(a + 1) * mv * d];
                 crate::grid::blend_row(&lv, mv, ra, la, &at_u, row);
             },
-        );
-        Ok(())
+        )
     }
 
     /// `g(u, v)` with its parts `g1`, `g2`, `g12`.
@@ -584,10 +592,10 @@ impl<T: Scalar, C> GordonSurface<C, T> {
         Conditioning {
             u: self
                 .u_basis
-                .lebesgue_constant(0.0, 1.0, samples(&self.u_basis)),
+                .lebesgue_estimate(0.0, 1.0, samples(&self.u_basis)),
             v: self
                 .v_basis
-                .lebesgue_constant(0.0, 1.0, samples(&self.v_basis)),
+                .lebesgue_estimate(0.0, 1.0, samples(&self.v_basis)),
         }
     }
 }
@@ -673,6 +681,42 @@ impl<T: Scalar, C: Curve<T>> Surface<T> for GordonSurface<C, T> {
         self.eval_parts(u, v).g
     }
 
+    /// [`eval`](Surface::eval) on `[0, 1]²`, every network curve through its own `try_eval`
+    /// (its work bounded, its point checked: a curve returning a point of another dimension
+    /// is an [`Error::ShapeMismatch`]), the point checked for overflow.
+    fn try_eval(&self, u: T, v: T) -> Result<DVector<T>> {
+        let unit = (T::zero(), T::one());
+        crate::param::check_parameter("Gordon surface parameter u", &u, &unit)?;
+        crate::param::check_parameter("Gordon surface parameter v", &v, &unit)?;
+        let values = |curves: &[C], domains: &[(T, T)], t: &T, what| -> Result<Vec<DVector<T>>> {
+            curves
+                .iter()
+                .zip(domains)
+                .map(|(c, d)| {
+                    OnUnitInterval::from_checked(c, d.clone())
+                        .try_eval(t.clone())
+                        .and_then(|p| crate::checked::point(what, self.dim(), p))
+                        .map_err(|e| crate::checked::named(what, e))
+                })
+                .collect()
+        };
+        let at_u = values(
+            &self.curves_at_u,
+            &self.domains_at_u,
+            &v,
+            "Gordon curve g(u_i, v)",
+        )?;
+        let at_v = values(
+            &self.curves_at_v,
+            &self.domains_at_v,
+            &u,
+            "Gordon curve g(u, v_j)",
+        )?;
+        let (lu, lv) = (self.u_basis.basis(&u), self.v_basis.basis(&v));
+        let g = self.combine(&lu, &lv, &at_u, &at_v).g;
+        crate::checked::point("Gordon surface point", self.dim(), g)
+    }
+
     /// The surface on the grid `us × vs`, shape `(us.len(), vs.len(), d)` (the layout of
     /// `P = tenzor(R)` in `krpaGordon`); each network curve and each Lagrange basis is evaluated
     /// once per grid line.
@@ -713,7 +757,7 @@ impl<T: Scalar, C: Curve<T>> Surface<T> for GordonSurface<C, T> {
 /// The control points of a Bézier curve elevated to degree `to`, as one vector of
 /// coefficients per coordinate. They are those of the curve reparametrised onto `[0, 1]`
 /// whatever its interval `[a, b]` (the Bernstein form is in `(u − a)/(b − a)`).
-fn elevated_control<T: Scalar>(curve: &BezierCurve<T>, to: usize) -> Vec<Vec<T>> {
+fn elevated_control<T: Scalar>(curve: &BezierCurve<T>, to: usize) -> Result<Vec<Vec<T>>> {
     let c = curve.control();
     (0..c.nrows())
         .map(|k| {
@@ -736,16 +780,16 @@ pub(crate) fn gordon_bezier_net<T: Scalar>(
     let p = curves_at_v.iter().map(|c| c.degree()).max().unwrap_or(0);
     let q = curves_at_u.iter().map(|c| c.degree()).max().unwrap_or(0);
     let (deg_u, deg_v) = (m.max(p), n.max(q));
-    let lu = bernstein_coefficients(u_nodes, deg_u);
-    let lv = bernstein_coefficients(v_nodes, deg_v);
-    let at_u: Vec<_> = curves_at_u
+    let lu = bernstein_coefficients(u_nodes, deg_u)?;
+    let lv = bernstein_coefficients(v_nodes, deg_v)?;
+    let at_u = curves_at_u
         .iter()
         .map(|c| elevated_control(c, deg_v))
-        .collect();
-    let at_v: Vec<_> = curves_at_v
+        .collect::<Result<Vec<_>>>()?;
+    let at_v = curves_at_v
         .iter()
         .map(|c| elevated_control(c, deg_u))
-        .collect();
+        .collect::<Result<Vec<_>>>()?;
     let dim = points[0][0].len();
     let coords = (0..dim)
         .map(|d| {
@@ -767,7 +811,11 @@ pub(crate) fn gordon_bezier_net<T: Scalar>(
                 g1 + g2 - g12
             })
         })
-        .collect();
+        .collect::<Vec<_>>();
+    crate::error::check_overflow(
+        "Bézier net of a Gordon surface",
+        coords.iter().flat_map(|c| c.iter()),
+    )?;
     BezierPatch::new(coords)
 }
 
@@ -845,7 +893,9 @@ pub fn gordon_point_cost(
     };
     blended(
         curves,
-        (4 * (ku + kv) + 2 * ku * kv) * (1 + d as u128),
+        (4 * (ku + kv))
+            .saturating_add(ku.saturating_mul(kv).saturating_mul(2))
+            .saturating_mul(1 + d as u128),
         basis_bits(k_u, u).saturating_add(basis_bits(k_v, v)),
     )
 }

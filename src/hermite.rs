@@ -207,14 +207,20 @@ impl<T: Scalar> HermiteCubic<T> {
 
     /// The same end points with both tangents multiplied by `q` (the lecture notes: `q ≠ 0`; the
     /// directions are kept for `q > 0`).
-    pub fn scaled_tangents(&self, q: T) -> Self {
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] for a NaN or infinite `q`; [`Error::Overflow`] for a tangent whose
+    /// double overflows.
+    pub fn scaled_tangents(&self, q: T) -> Result<Self> {
+        check_finite("tangent factor", std::iter::once(&q))?;
         let mut g = self.geometry.clone();
         for r in 0..g.nrows() {
             for c in 2..4 {
                 g[(r, c)] = g[(r, c)].clone() * q.clone();
             }
         }
-        HermiteCubic { geometry: g }
+        crate::error::check_overflow("scaled tangents", g.iter())?;
+        Ok(HermiteCubic { geometry: g })
     }
 
     /// The same cubic in Bézier form: `b_0 = x_1`, `b_1 = x_1 + x'_1/3`, `b_2 = x_2 − x'_2/3`,
@@ -274,6 +280,15 @@ impl<T: Scalar> Curve<T> for HermiteCubic<T> {
     fn eval(&self, t: T) -> DVector<T> {
         HermiteCubic::eval(self, t)
     }
+
+    fn try_eval(&self, t: T) -> Result<DVector<T>> {
+        crate::checked::try_eval_curve(self, "Hermite cubic point", t)
+    }
+
+    fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
+        crate::checked::eval_many_into(self, "Hermite cubic points", ts, out)
+    }
+
     /// [`HermiteCubic::eval_cost`] on the cubic's own data.
     fn point_cost(&self, param_bits: u128) -> crate::cost::Cost {
         HermiteCubic::eval_cost(

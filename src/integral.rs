@@ -26,31 +26,43 @@ use crate::error::Result;
 use crate::scalar::Scalar;
 
 /// The Bernstein coefficients (degree `n + 1`, `n + 2` values) of `∫₀ᵗ B_i^n`: `0` for
-/// `j ≤ i`, `1/(n+1)` for `j > i`. `i ≤ n` is assumed.
+/// `j ≤ i`, `1/(n+1)` for `j > i` (all zero for `i > n`).
+///
+/// # Panics
+/// If `n + 2` values cannot be held (`n` near `usize::MAX`); the front ends check the degree
+/// against their limits first.
 ///
 /// ```
 /// let c: Vec<f64> = cagd::integral::bernstein_antiderivative(2, 1);
 /// assert_eq!(c, vec![0.0, 0.0, 1.0 / 3.0, 1.0 / 3.0]);
 /// ```
 pub fn bernstein_antiderivative<T: Scalar>(n: usize, i: usize) -> Vec<T> {
-    let w = T::from_ratio(1, n as i64 + 1);
-    (0..=n + 1)
-        .map(|j| if j > i { w.clone() } else { T::zero() })
-        .collect()
+    let len = n.checked_add(2).expect("n + 2 Bernstein coefficients");
+    let w = T::one() / T::from_usize(len - 1);
+    let mut c = crate::grid::try_filled("Bernstein antiderivative", len, T::zero())
+        .unwrap_or_else(|e| panic!("{e}"));
+    for x in c.iter_mut().skip(i.saturating_add(1)) {
+        *x = w.clone();
+    }
+    c
 }
 
 /// The antiderivative `u ↦ ∫_a^u c` of a Bézier curve over `[a, b]`: degree `n + 1`, same
 /// interval, control points `c_0 = 0`, `c_k = (b − a)/(n+1) Σ_{j<k} b_j`.
+///
+/// # Errors
+/// [`Error::Overflow`](crate::Error::Overflow) for a control point whose double overflows
+/// (control points near ±1.7·10³⁰⁸ summed, or a wide interval).
 ///
 /// ```
 /// use cagd::bezier::BezierCurve;
 /// use cagd::integral::bezier_antiderivative;
 /// // ∫₀ᵘ 2t dt = u²: the segment 0 → 2 integrates to the control points 0, 0, 1.
 /// let c = BezierCurve::from_points(&[[0.0], [2.0]])?;
-/// assert_eq!(bezier_antiderivative(&c).control().as_slice(), &[0.0, 0.0, 1.0]);
+/// assert_eq!(bezier_antiderivative(&c)?.control().as_slice(), &[0.0, 0.0, 1.0]);
 /// # Ok::<(), cagd::Error>(())
 /// ```
-pub fn bezier_antiderivative<T: Scalar>(curve: &BezierCurve<T>) -> BezierCurve<T> {
+pub fn bezier_antiderivative<T: Scalar>(curve: &BezierCurve<T>) -> Result<BezierCurve<T>> {
     let (n, d) = (curve.degree(), curve.dim());
     let (a, b) = curve.interval();
     let scale = (b.clone() - a.clone()) / T::from_usize(n + 1);
@@ -61,21 +73,24 @@ pub fn bezier_antiderivative<T: Scalar>(curve: &BezierCurve<T>) -> BezierCurve<T
                 control[(r, k - 1)].clone() + scale.clone() * curve.control()[(r, k - 1)].clone();
         }
     }
+    crate::error::check_overflow("antiderivative control points", control.iter())?;
     BezierCurve::new_on_interval(control, a.clone(), b.clone())
-        .expect("the control points and the interval of a valid curve")
 }
 
 /// `∫_a^b c = (b − a)/(n + 1) · Σ b_j`, one value per coordinate.
 ///
+/// # Errors
+/// As [`bezier_antiderivative`].
+///
 /// ```
 /// use cagd::bezier::BezierCurve;
 /// let c = BezierCurve::from_points(&[[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]])?;
-/// assert_eq!(cagd::integral::bezier_integral(&c).as_slice(), &[1.0, 2.0 / 3.0]);
+/// assert_eq!(cagd::integral::bezier_integral(&c)?.as_slice(), &[1.0, 2.0 / 3.0]);
 /// # Ok::<(), cagd::Error>(())
 /// ```
-pub fn bezier_integral<T: Scalar>(curve: &BezierCurve<T>) -> DVector<T> {
-    let anti = bezier_antiderivative(curve);
-    anti.control().column(curve.degree() + 1).into_owned()
+pub fn bezier_integral<T: Scalar>(curve: &BezierCurve<T>) -> Result<DVector<T>> {
+    let anti = bezier_antiderivative(curve)?;
+    Ok(anti.control().column(curve.degree() + 1).into_owned())
 }
 
 /// The antiderivative `u ↦ ∫_{u_0}^u C` of a B-spline curve (see the
@@ -83,7 +98,8 @@ pub fn bezier_integral<T: Scalar>(curve: &BezierCurve<T>) -> DVector<T> {
 /// `n + 1` control points.
 ///
 /// # Errors
-/// Those of [`BSplineCurve::new`] (none for a valid curve).
+/// [`Error::Overflow`](crate::Error::Overflow) for a control point whose double overflows;
+/// otherwise those of [`BSplineCurve::new`] (none for a valid curve).
 ///
 /// ```
 /// use cagd::bspline::BSplineCurve;
@@ -109,6 +125,7 @@ pub fn bspline_antiderivative<T: Scalar>(curve: &BSplineCurve<T>) -> Result<BSpl
                 control[(r, i - 1)].clone() + width.clone() * curve.control()[(r, i - 1)].clone();
         }
     }
+    crate::error::check_overflow("antiderivative control points", control.iter())?;
     let mut knots = Vec::with_capacity(u.len() + 2);
     knots.push(u[0].clone());
     knots.extend(u.iter().cloned());
@@ -135,44 +152,69 @@ pub fn bspline_integral<T: Scalar>(curve: &BSplineCurve<T>) -> Result<DVector<T>
     let f = bspline_antiderivative(curve)?;
     let (a, b) = curve.domain();
     let (fb, fa) = (f.try_eval(b)?, f.try_eval(a)?);
-    Ok(DVector::from_fn(fb.len(), |r, _| {
-        fb[r].clone() - fa[r].clone()
-    }))
+    crate::error::finite(
+        "B-spline integral",
+        DVector::from_fn(fb.len(), |r, _| fb[r].clone() - fa[r].clone()),
+    )
 }
 
-/// `∫₀¹ B_i^n = 1/(n+1)`, the same for every `i`.
+/// `∫₀¹ B_i^n = 1/(n+1)`, the same for every `i` (for any `n`: `n + 1` is taken as an
+/// integer of any size).
 ///
 /// ```
 /// assert_eq!(cagd::integral::bernstein_integral::<f64>(3), 0.25);
+/// assert!(cagd::integral::bernstein_integral::<f64>(usize::MAX) > 0.0);
 /// ```
 pub fn bernstein_integral<T: Scalar>(n: usize) -> T {
-    T::from_ratio(1, n as i64 + 1)
+    let n1 = num_bigint::BigUint::from(n) + 1u32;
+    T::one() / T::from_biguint(&n1)
 }
 
 /// The values `∫₀ᵗ B_i^n` at each of `ts` for each `i` of `rows` (`k × rows.len()`, row = parameter):
 /// the Bernstein polynomials of degree `n + 1` at `t` times the coefficients of
-/// [`bernstein_antiderivative`], `1/(n+1) Σ_{j>i} B_j^{n+1}(t)`. Indices `i ≤ n` are assumed.
+/// [`bernstein_antiderivative`], `1/(n+1) Σ_{j>i} B_j^{n+1}(t)`.
+///
+/// # Errors
+/// [`Error::InvalidArgument`](crate::Error::InvalidArgument) for an index `i > n`;
+/// [`Error::TooLarge`](crate::Error::TooLarge) for a degree `n + 1` above
+/// [`Limits::DEFAULT`](crate::limits::Limits::DEFAULT) (the caller prices the work with
+/// [`bernstein_antiderivative_cost`]);
+/// [`Error::NonFinite`](crate::Error::NonFinite) for a NaN or infinite parameter;
+/// [`Error::Overflow`](crate::Error::Overflow) for a value whose double overflows.
 ///
 /// ```
 /// // ∫₀^½ B_0^1 = ∫₀^½ (1 − t) dt = 3/8.
-/// let v = cagd::integral::bernstein_antiderivative_values::<f64>(1, &[0, 1], &[0.5]);
+/// let v = cagd::integral::bernstein_antiderivative_values::<f64>(1, &[0, 1], &[0.5])?;
 /// assert_eq!(v.as_slice(), &[0.375, 0.125]);
+/// assert!(cagd::integral::bernstein_antiderivative_values::<f64>(1, &[2], &[0.5]).is_err());
+/// # Ok::<(), cagd::Error>(())
 /// ```
 pub fn bernstein_antiderivative_values<T: Scalar>(
     n: usize,
     rows: &[usize],
     ts: &[T],
-) -> DMatrix<T> {
+) -> Result<DMatrix<T>> {
+    let what = "Bernstein antiderivative values";
+    if let Some(i) = rows.iter().find(|&&i| i > n) {
+        return Err(crate::Error::InvalidArgument {
+            what,
+            message: format!("index {i} exceeds the degree {n}"),
+        });
+    }
+    crate::limits::Limits::DEFAULT.check_degree(what, n.saturating_add(1))?;
+    crate::error::check_finite(what, ts.iter())?;
+    crate::grid::grid_len(what, &[ts.len(), rows.len()])?;
     let coefficients: Vec<Vec<T>> = rows
         .iter()
         .map(|&i| bernstein_antiderivative::<T>(n, i))
         .collect();
     let basis = crate::bernstein::basis_matrix(n + 1, ts);
-    DMatrix::from_fn(ts.len(), rows.len(), |k, r| {
+    let values = DMatrix::from_fn(ts.len(), rows.len(), |k, r| {
         (0..n + 2).fold(T::zero(), |s, j| {
             s + basis[(k, j)].clone() * coefficients[r][j].clone()
         })
-    })
+    });
+    crate::error::finite(what, values)
 }
 
 /// The cost of the coefficients of `rows` antiderivatives of degree-`n` Bernstein polynomials
@@ -192,29 +234,35 @@ pub fn bernstein_antiderivative_cost(
     param_bits: u128,
 ) -> Cost {
     let n2 = n as u128 + 2;
-    let rows = rows as u128;
-    let per_param = crate::bernstein::basis_cost(n + 1, param_bits);
+    let terms = (rows as u128).saturating_mul(n2);
+    let per_param = crate::bernstein::basis_cost(n.saturating_add(1), param_bits);
     Cost::new(
         per_param
             .ops()
-            .saturating_add(2 * rows * n2)
+            .saturating_add(terms.saturating_mul(2))
             .saturating_mul(params as u128)
-            .saturating_add(rows * n2),
+            .saturating_add(terms),
         per_param.bits().saturating_add(2 * n2),
     )
 }
 
 /// The factor `(b − a)/(n + 1)` of the partial sums of [`bezier_antiderivative`].
 ///
+/// # Errors
+/// [`Error::Overflow`](crate::Error::Overflow) when `b − a` is not a finite double (an
+/// interval such as `[−10³⁰⁸, 10³⁰⁸]`).
+///
 /// ```
 /// use cagd::bezier::BezierCurve;
 /// let c = BezierCurve::new_on_interval(nalgebra::dmatrix![0.0, 1.0, 2.0], 1.0, 4.0)?;
-/// assert_eq!(cagd::integral::bezier_antiderivative_factor(&c), 1.0);
+/// assert_eq!(cagd::integral::bezier_antiderivative_factor(&c)?, 1.0);
 /// # Ok::<(), cagd::Error>(())
 /// ```
-pub fn bezier_antiderivative_factor<T: Scalar>(curve: &BezierCurve<T>) -> T {
+pub fn bezier_antiderivative_factor<T: Scalar>(curve: &BezierCurve<T>) -> Result<T> {
     let (a, b) = curve.interval();
-    (b.clone() - a.clone()) / T::from_usize(curve.degree() + 1)
+    let factor = (b.clone() - a.clone()) / T::from_usize(curve.degree() + 1);
+    crate::error::check_overflow("Bézier antiderivative factor", [&factor])?;
+    Ok(factor)
 }
 
 /// `∫ N_{i,p} = (u_{i+p+1} − u_i)/(p + 1)` for each basis function of the curve (over all the
@@ -279,7 +327,7 @@ pub fn bspline_integral_to<T: Scalar>(
 /// ```
 pub fn antiderivative_cost(points: usize, d: usize, degree: usize, control_bits: u128) -> Cost {
     Cost::new(
-        4 * d as u128 * (points as u128 + 1),
+        (4 * d as u128).saturating_mul(points as u128 + 1),
         control_bits.saturating_add(2 * (degree as u128 + 2)),
     )
 }
@@ -301,7 +349,7 @@ mod tests {
             q(4, 1),
         )
         .unwrap();
-        let f = bezier_antiderivative(&c);
+        let f = bezier_antiderivative(&c).unwrap();
         assert_eq!(f.derivative(1).unwrap().control(), c.control());
         let knots = vec![
             q(0, 1),

@@ -12,14 +12,16 @@
 use nalgebra::{DMatrix, DVector};
 
 use crate::error::{check_finite, Error, Result};
-use crate::lagrange::{basis_product_unchecked, check_distinct_nodes, power_coefficients};
+use crate::lagrange::{
+    basis_product_unchecked, check_distinct_nodes, power_coefficients_unchecked,
+};
 use crate::param::Curve;
 use crate::scalar::Scalar;
 
 /// The coefficients of `L_{i,n}` highest power first (the lecture notes' and `polyfit`'s
 /// order): [`power_coefficients`] reversed.
 fn descending_coefficients<T: Scalar>(xs: &[T], i: usize) -> Vec<T> {
-    let mut c = power_coefficients(xs, i);
+    let mut c = power_coefficients_unchecked(xs, i);
     c.reverse();
     c
 }
@@ -76,15 +78,32 @@ impl<T: Scalar> LagrangePolynomial<T> {
 
     /// The monomial coefficients, highest power first (as Octave's
     /// `polyfit(x, y, n)`; exact in rationals).
-    pub fn coefficients(&self) -> Vec<T> {
+    ///
+    /// # Errors
+    /// [`Error::TooLarge`] when the `n³` operations of `n` nodes (weighed by the size of exact
+    /// numbers) exceed the default work limit; [`Error::Overflow`] for a coefficient whose
+    /// double overflows (the power form of a high degree, nodes close together).
+    pub fn coefficients(&self) -> Result<Vec<T>> {
         let n = self.xs.len();
+        let m = n as u128;
+        crate::checked::point_work::<T>(
+            "Lagrange polynomial coefficients",
+            crate::cost::Cost::new(m.saturating_pow(3).saturating_mul(3), 0).grown(
+                crate::cost::polynomial_bits(
+                    n,
+                    0,
+                    crate::cost::max_bits(self.xs.iter().chain(&self.ys)),
+                ),
+            ),
+        )?;
         let mut c = vec![T::zero(); n];
         for (i, y) in self.ys.iter().enumerate() {
             for (k, b) in descending_coefficients(&self.xs, i).into_iter().enumerate() {
                 c[k] = c[k].clone() + y.clone() * b;
             }
         }
-        c
+        crate::error::check_overflow("Lagrange polynomial coefficients", c.iter())?;
+        Ok(c)
     }
 }
 
@@ -163,17 +182,28 @@ impl<T: Scalar> PiecewiseLinear<T> {
 /// `(4.5, −4.5, 1, 0)` (both checked exactly in the tests).
 ///
 /// This is the lecture notes' printed view, highest power first; the crate's own power order
-/// is ascending ([`power_coefficients`]): `G` is those coefficients with the columns
+/// is ascending ([`power_coefficients`](crate::lagrange::power_coefficients)): `G` is those coefficients with the columns
 /// reversed.
 ///
 /// # Errors
 /// [`Error::DuplicateNodes`] for repeated parameters, [`Error::NonFinite`],
-/// [`Error::TooFewPoints`] for none.
+/// [`Error::TooFewPoints`] for none; [`Error::TooLarge`] when the `k³` operations (weighed by
+/// the size of exact numbers) exceed the default work limit; [`Error::Overflow`] for an entry
+/// whose double overflows (many parameters, or close ones).
 pub fn blending_matrix<T: Scalar>(params: &[T]) -> Result<DMatrix<T>> {
     check_distinct_nodes("interpolation parameters", params, 1)?;
     let k = params.len();
+    let m = k as u128;
+    crate::checked::point_work::<T>(
+        "blending matrix",
+        crate::cost::Cost::new(m.saturating_pow(3).saturating_mul(3), 0).grown(
+            crate::cost::polynomial_bits(k, 0, crate::cost::max_bits(params)),
+        ),
+    )?;
     let rows: Vec<Vec<T>> = (0..k).map(|i| descending_coefficients(params, i)).collect();
-    Ok(DMatrix::from_fn(k, k, |i, j| rows[i][j].clone()))
+    let g = DMatrix::from_fn(k, k, |i, j| rows[i][j].clone());
+    crate::error::check_overflow("blending matrix", g.iter())?;
+    Ok(g)
 }
 
 /// The parametric polynomial curve of degree `k − 1` through `k` points at chosen parameter
@@ -220,6 +250,7 @@ impl<T: Scalar> ParametricInterpolant<T> {
         check_finite("interpolated points", points.iter())?;
         let g = blending_matrix(&params)?;
         let algebraic = crate::bezier::mat_mul(&points, &g);
+        crate::error::check_overflow("algebraic form of the interpolant", algebraic.iter())?;
         Ok(ParametricInterpolant {
             params,
             points,
@@ -274,6 +305,14 @@ impl<T: Scalar> Curve<T> for ParametricInterpolant<T> {
     }
     fn eval(&self, t: T) -> DVector<T> {
         ParametricInterpolant::eval(self, t)
+    }
+
+    fn try_eval(&self, t: T) -> Result<DVector<T>> {
+        crate::checked::try_eval_curve(self, "parametric interpolant point", t)
+    }
+
+    fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
+        crate::checked::eval_many_into(self, "parametric interpolant points", ts, out)
     }
 
     /// Horner's rule on the algebraic coefficients: `2kd` operations on numbers of degree

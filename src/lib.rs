@@ -36,7 +36,14 @@
 //! scripts, every command-line input) answers a non-finite number with a typed error
 //! ([`Error::NonFinite`]; in the Octave layer `LiteralError::NonFinite`) instead of propagating
 //! it. Only the Octave layer's text-format reader keeps the `Inf`, `NaN` and `NA` that Octave
-//! wrote, as data.
+//! wrote, as data. Finite input can still leave the range of doubles (control points near
+//! ±1.7·10³⁰⁸, an interval `[−10³⁰⁸, 10³⁰⁸]`, knots 5·10⁻³²⁴ apart, a thousand equally spaced
+//! Lagrange nodes): every `Result`-returning function checks what it computes and answers
+//! [`Error::Overflow`], naming the quantity, instead of an `Ok` holding `inf` or NaN (the
+//! checks live in one place each: [`error::check_overflow`], [`error::check_spacing`], the
+//! grid kernels' row scan, the checked `try_eval` of every curve and surface). Exact results
+//! are converted to doubles by [`exact::to_finite_f64`], which names a value whose double
+//! overflows.
 //!
 //! **Resource limits** ([`limits`], a plain value passed to what needs it) refuse sizes that
 //! would not fit in memory with [`Error::TooLarge`]; every error variant of the workspace, with
@@ -53,12 +60,14 @@
 pub mod bernstein;
 pub mod bezier;
 pub mod bspline;
+mod checked;
 pub mod continuity;
 pub mod conversion;
 pub mod coons;
 pub mod cost;
 pub mod curvature;
 pub mod error;
+pub mod exact;
 pub mod gordon;
 pub mod grid;
 pub mod hermite;

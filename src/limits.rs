@@ -57,6 +57,39 @@
 //! values of degree 95 passed the operation count alone; degree 1 000 would have run for
 //! minutes.
 //!
+//! **Bounded work in the library itself.** Every function of the crate that can fail checks,
+//! before it starts, whatever would make its work or memory grow faster than the data it was
+//! given — one rule, applied against the `Limits` value the function takes (as
+//! [`solve_mask`](crate::coons::solve_mask) does) or, for every function without one, against
+//! the documented defaults [`Limits::DEFAULT`]:
+//!
+//! - **a count, degree or exponent given as a number** — the `r` of
+//!   [`BSplineCurve::elevate`](crate::BSplineCurve::elevate), the `n` of
+//!   [`bezier_to_monomial_matrix`](crate::conversion::bezier_to_monomial_matrix) and
+//!   [`bernstein::elevate`](crate::bernstein::elevate), the exponent of
+//!   [`rational_from_decimal`](crate::exact::rational_from_decimal), the samples of
+//!   [`Lagrange::lebesgue_constant`](crate::lagrange::Lagrange::lebesgue_constant) — against
+//!   `max_degree`, `max_samples` or `max_expression_bytes`, and memory sized by such a number
+//!   is reserved with `try_reserve` ([`Error::TooLarge`] if it cannot be);
+//! - **the work of one result** — one point of a curve or surface (de Casteljau's `d (n+1)²`,
+//!   a B-spline's `(p+1)²`), one basis, one inverse (`n³`), one set of Lagrange weights
+//!   (`(m+1)²`), the Cox–de Boor recursion's `2^(p+1)` calls, a degree elevation — estimated by
+//!   the construction's own `*_cost` function ([`crate::cost`]), weighed by the size of the
+//!   numbers in exact arithmetic ([`Cost::weigh`](crate::cost::Cost::weigh)), against
+//!   `max_work`: `try_eval` of a degree-100 000 Bézier curve (10¹⁰ operations per point) is
+//!   refused at once, a cubic's is not looked at twice.
+//!
+//! The total of a batch — many points, a large grid, an exact spline through many points — is
+//! linear in what the caller asks for: the command line, the Octave package and the page
+//! estimate it with the same `*_cost` functions against their own `Limits` (raised with
+//! `--max-work` and friends) before they call the library. Functions that cannot fail
+//! (`eval`, `linspace`, the Bernstein bases) cannot refuse: each documents in `# Panics` what
+//! it cannot hold (it panics naming the size, never aborts: its memory is reserved with
+//! `try_reserve`) and has a fallible twin (`try_linspace`,
+//! [`PointGrid::try_from_elem`](crate::grid::PointGrid::try_from_elem),
+//! [`try_cox_de_boor_triangle`](crate::bspline::try_cox_de_boor_triangle)) where a front end
+//! passes a user's number.
+//!
 //! ```
 //! use cagd::limits::Limits;
 //! let limits = Limits { max_grid_points: 100, ..Limits::default() };
@@ -98,19 +131,9 @@ pub struct Limits {
 }
 
 impl Default for Limits {
+    /// [`Limits::DEFAULT`].
     fn default() -> Self {
-        Limits {
-            max_input_bytes: 64 << 20,
-            max_expression_bytes: 1 << 20,
-            max_depth: 64,
-            max_elements: 4_000_000,
-            max_iterations: 1_000_000,
-            max_samples: 1_000_000,
-            max_grid_points: 10_000_000,
-            max_degree: 1000,
-            max_system_entries: 100_000_000,
-            max_work: 2_000_000_000,
-        }
+        Limits::DEFAULT
     }
 }
 
@@ -119,6 +142,22 @@ fn to_usize(x: u64) -> usize {
 }
 
 impl Limits {
+    /// The defaults (see the [module documentation](self) for why these numbers): what
+    /// `Limits::default()` gives, and what every function of the crate that takes no `Limits`
+    /// argument checks against.
+    pub const DEFAULT: Limits = Limits {
+        max_input_bytes: 64 << 20,
+        max_expression_bytes: 1 << 20,
+        max_depth: 64,
+        max_elements: 4_000_000,
+        max_iterations: 1_000_000,
+        max_samples: 1_000_000,
+        max_grid_points: 10_000_000,
+        max_degree: 1000,
+        max_system_entries: 100_000_000,
+        max_work: 2_000_000_000,
+    };
+
     /// The value of one limit.
     ///
     /// ```

@@ -19,24 +19,51 @@ use crate::scalar::Scalar;
 /// assert!(cagd::linspace(0.0, 1.0, 0).is_empty());
 /// ```
 ///
+/// Like Octave, any ends are taken: NaN or ±∞ ends, or ends whose difference overflows
+/// (`−10³⁰⁸, 10³⁰⁸`), give NaNs where Octave gives them; [`try_linspace`] refuses them.
+///
 /// # Panics
-/// When `n` numbers cannot be allocated; [`try_linspace`] refuses such an `n` instead.
+/// When `n` numbers cannot be allocated (`1 << 40`, say: a panic naming the size, never an
+/// abort); [`try_linspace`] refuses such an `n` instead. The front ends check `n` against
+/// their `max_samples` before they call it.
 pub fn linspace(a: f64, b: f64, n: usize) -> Vec<f64> {
-    match try_linspace(a, b, n) {
+    match fill(a, b, n) {
         Ok(v) => v,
         Err(e) => panic!("{e}"),
     }
 }
 
-/// [`linspace`], with [`Error::TooLarge`](crate::Error::TooLarge) for an `n` whose numbers
-/// cannot be allocated (`usize::MAX`, say) instead of an abort.
+/// [`linspace`] for ends and counts from anywhere: the same numbers, or an error.
+///
+/// # Errors
+/// [`Error::NonFinite`](crate::Error::NonFinite) for a NaN or infinite end;
+/// [`Error::Overflow`](crate::Error::Overflow) when `b − a` overflows (and the samples would
+/// hold NaNs); [`Error::TooLarge`](crate::Error::TooLarge) for an `n` whose numbers cannot be
+/// allocated (`usize::MAX`, say).
 ///
 /// ```
 /// assert_eq!(cagd::linspace::try_linspace(0.0, 1.0, 3)?, vec![0.0, 0.5, 1.0]);
 /// assert!(cagd::linspace::try_linspace(0.0, 1.0, usize::MAX).is_err());
+/// assert!(cagd::linspace::try_linspace(f64::NAN, 1.0, 5).is_err());
+/// assert!(cagd::linspace::try_linspace(-1e308, 1e308, 5).is_err());
 /// # Ok::<(), cagd::Error>(())
 /// ```
 pub fn try_linspace(a: f64, b: f64, n: usize) -> crate::Result<Vec<f64>> {
+    crate::error::check_finite("linspace ends", [&a, &b])?;
+    if n > 2 && !(b - a).is_finite() {
+        return Err(crate::Error::Overflow {
+            what: "linspace step (b − a)/(n − 1)",
+            index: 0,
+            value: b - a,
+        });
+    }
+    let out = fill(a, b, n)?;
+    crate::error::check_overflow("linspace samples", out.iter())?;
+    Ok(out)
+}
+
+/// The samples of [`linspace`], Octave's arithmetic (NaNs where its step overflows).
+fn fill(a: f64, b: f64, n: usize) -> crate::Result<Vec<f64>> {
     let mut out = crate::grid::try_filled("linspace samples", n, 0.0)?;
     match n {
         0 => return Ok(out),

@@ -176,13 +176,15 @@ pub trait CurveDeriv<T: Scalar = f64>: Curve<T> {
     /// The first derivative `c'(t)`; outside the domain the derivative of the continued curve.
     fn eval_derivative(&self, t: T) -> DVector<T>;
 
-    /// `c'(t)` for `t` in the domain.
+    /// `c'(t)` for `t` in the domain, of [`Curve::dim`] coordinates, all finite.
     ///
     /// # Errors
-    /// As [`Curve::try_eval`]: [`Error::NonFinite`], [`Error::ParameterOutOfRange`].
+    /// As [`Curve::try_eval`]: [`Error::NonFinite`], [`Error::ParameterOutOfRange`];
+    /// [`Error::ShapeMismatch`] for a derivative of another dimension, [`Error::Overflow`] for
+    /// one whose double overflows.
     fn try_eval_derivative(&self, t: T) -> Result<DVector<T>> {
         check_parameter("curve parameter", &t, &self.domain())?;
-        Ok(self.eval_derivative(t))
+        point("curve derivative", self.dim(), self.eval_derivative(t))
     }
 }
 
@@ -458,9 +460,17 @@ where
     fn eval(&self, t: T) -> DVector<T> {
         (self.f)(t)
     }
+    /// The closure's value at `t` in the domain, checked: a point of another dimension is an
+    /// [`Error::ShapeMismatch`], a non-finite coordinate an [`Error::Overflow`].
+    fn try_eval(&self, t: T) -> Result<DVector<T>> {
+        try_eval_curve(self, "closure curve point", t)
+    }
     fn point_cost(&self, param_bits: u128) -> Cost {
         self.cost
             .unwrap_or_else(|| Cost::new(self.dim as u128, param_bits))
+    }
+    fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
+        eval_many_into(self, "closure curve points", ts, out)
     }
 }
 
@@ -525,6 +535,7 @@ impl<T: Scalar> SampledCurve<T> {
                 ),
             });
         }
+        crate::error::check_spacing("sampled curve parameters", &params)?;
         let domain = (params[0].clone(), params[params.len() - 1].clone());
         Ok(SampledCurve {
             params,
@@ -561,6 +572,7 @@ impl<T: Scalar> SampledCurve<T> {
                 b: end.to_f64(),
             });
         }
+        crate::error::check_spacing("sampled curve domain", &[start.clone(), end.clone()])?;
         Ok(SampledCurve {
             domain: (start, end),
             ..self
@@ -633,8 +645,16 @@ impl<T: Scalar> Curve<T> for SampledCurve<T> {
         )
     }
 
+    fn try_eval(&self, t: T) -> Result<DVector<T>> {
+        try_eval_curve(self, "sampled curve point", t)
+    }
+
+    fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
+        eval_many_into(self, "sampled curve points", ts, out)
+    }
+
     fn point_cost(&self, param_bits: u128) -> Cost {
-        let sample_bits = self.samples.iter().map(Scalar::bits).max().unwrap_or(0);
+        let sample_bits = crate::cost::max_bits(self.samples.iter());
         self.eval_cost(param_bits, sample_bits)
     }
 }
@@ -750,8 +770,17 @@ impl<T: Scalar, C: Curve<T>> Curve<T> for OnUnitInterval<C, T> {
         (T::zero(), T::one())
     }
 
+    /// The curve at `a + (b − a)s`; a point of another dimension than [`Curve::dim`] (a
+    /// closure that returns the wrong length) becomes a point of NaNs of the right dimension,
+    /// so that no construction indexes past it (their `try_eval` then refuse the point).
     fn eval(&self, s: T) -> DVector<T> {
-        self.curve.eval(self.parameter(s))
+        of_dim(self.curve.dim(), self.curve.eval(self.parameter(s)))
+    }
+
+    fn try_eval(&self, s: T) -> Result<DVector<T>> {
+        check_parameter("curve parameter", &s, &(T::zero(), T::one()))?;
+        // The curve's own checks (its work, its point), at a parameter inside its domain.
+        self.curve.try_eval(self.parameter(s))
     }
 
     /// The curve's own cost at a parameter `a + (b − a)s`: the mapping's three operations
@@ -768,6 +797,7 @@ impl<T: Scalar, C: Curve<T>> Curve<T> for OnUnitInterval<C, T> {
     }
 
     fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
+        crate::error::check_finite("curve parameters", ts.iter())?;
         if self.is_identity() {
             return self.curve.eval_many_into(ts, out);
         }
@@ -778,8 +808,13 @@ impl<T: Scalar, C: Curve<T>> Curve<T> for OnUnitInterval<C, T> {
 
 /// `(b − a) c'(a + (b − a)s)`.
 impl<T: Scalar, C: CurveDeriv<T>> CurveDeriv<T> for OnUnitInterval<C, T> {
+    /// A derivative of another dimension than [`Curve::dim`] becomes NaNs of the right
+    /// dimension, as in [`eval`](Curve::eval).
     fn eval_derivative(&self, s: T) -> DVector<T> {
-        let d = self.curve.eval_derivative(self.parameter(s));
+        let d = of_dim(
+            self.curve.dim(),
+            self.curve.eval_derivative(self.parameter(s)),
+        );
         if self.is_identity() {
             return d;
         }
@@ -812,7 +847,7 @@ pub(crate) fn to_domain<T: Scalar>(a: &T, b: &T, s: T) -> T {
 }
 
 /// The domain of `curve` if a construction can reparametrise it onto `[0, 1]`: finite ends,
-/// start below end.
+/// start below end, a width `b − a` that is a finite double.
 ///
 /// # Errors
 /// [`Error::UnusableDomain`] naming `what` and the domain otherwise.
@@ -821,7 +856,9 @@ pub(crate) fn usable_domain<T: Scalar, C: Curve<T> + ?Sized>(
     curve: &C,
 ) -> Result<(T, T)> {
     let (start, end) = curve.domain();
-    if start.is_finite_value() && end.is_finite_value() && start < end {
+    // The width b − a must be a finite double too: `[−10³⁰⁸, 10³⁰⁸]` has none.
+    let width = end.clone() - start.clone();
+    if start.is_finite_value() && end.is_finite_value() && start < end && width.is_finite_value() {
         Ok((start, end))
     } else {
         Err(Error::UnusableDomain {
@@ -856,4 +893,98 @@ pub(crate) fn check_parameter<T: Scalar>(
         });
     }
     Ok(())
+}
+
+// ------------------------------------------------------------------------------------------
+// The checks of every fallible evaluation of a curve (re-exported by `crate::checked`).
+
+/// The work of one point, `cost`, against [`Limits::DEFAULT`](crate::limits::Limits::DEFAULT)`.max_work` (weighed as exact
+/// arithmetic for rationals): what keeps a `try_eval` of a degree-100 000 curve (10¹⁰
+/// operations per point) from running for minutes.
+///
+/// # Errors
+/// [`Error::TooLarge`] (limit `Work`) above the limit.
+pub(crate) fn point_work<T: Scalar>(what: &'static str, cost: Cost) -> Result<()> {
+    crate::limits::Limits::DEFAULT.check_work(what, cost.weigh(T::EXACT))
+}
+
+/// `point` if it has `dim` coordinates, all finite.
+///
+/// # Errors
+/// [`Error::ShapeMismatch`] for another number of coordinates, [`Error::Overflow`] for a
+/// non-finite one.
+pub(crate) fn point<T: Scalar>(
+    what: &'static str,
+    dim: usize,
+    point: DVector<T>,
+) -> Result<DVector<T>> {
+    if point.len() != dim {
+        return Err(Error::ShapeMismatch {
+            what,
+            expected: format!("{dim} coordinates"),
+            found: format!("{} coordinates", point.len()),
+        });
+    }
+    crate::error::check_overflow(what, point.iter())?;
+    Ok(point)
+}
+
+/// What `Curve::try_eval` does for the crate's curves: the parameter checked against the
+/// domain, the work of the point ([`Curve::point_cost`]) against
+/// [`Limits::DEFAULT`](crate::limits::Limits::DEFAULT), the curve evaluated, the point checked
+/// ([`point`]).
+///
+/// # Errors
+/// [`Error::NonFinite`], [`Error::ParameterOutOfRange`], [`Error::TooLarge`] (work), and
+/// those of [`point`].
+pub(crate) fn try_eval_curve<T: Scalar, C: Curve<T> + ?Sized>(
+    curve: &C,
+    what: &'static str,
+    t: T,
+) -> Result<DVector<T>> {
+    check_parameter(what, &t, &curve.domain())?;
+    point_work::<T>(what, curve.point_cost(t.bits()))?;
+    point(what, curve.dim(), curve.eval(t))
+}
+
+/// `Curve::eval_many_into` by one evaluation per parameter: finite parameters (anywhere: the
+/// curve continues outside its domain), every point of the right dimension and finite.
+///
+/// # Errors
+/// [`Error::NonFinite`] for a NaN or infinite parameter, [`Error::ShapeMismatch`] for a
+/// buffer of another length, and those of [`point`].
+pub(crate) fn eval_many_into<T: Scalar, C: Curve<T> + ?Sized>(
+    curve: &C,
+    what: &'static str,
+    ts: &[T],
+    out: &mut [T],
+) -> Result<()> {
+    crate::error::check_finite(what, ts.iter())?;
+    let d = curve.dim();
+    let len = crate::grid::grid_len(what, &[ts.len(), d])?;
+    crate::grid::check_len(what, len, out)?;
+    if d == 0 {
+        return Ok(());
+    }
+    for (t, p) in ts.iter().zip(out.chunks_exact_mut(d)) {
+        p.clone_from_slice(point(what, d, curve.eval(t.clone()))?.as_slice());
+    }
+    Ok(())
+}
+
+/// `point` if it has `dim` coordinates, else `dim` NaNs (for `f64`; zeros for exact numbers,
+/// which have no NaN): how the infallible evaluations of constructions keep a user's curve
+/// that returns a point of another dimension from making them index past it.
+pub(crate) fn of_dim<T: Scalar>(dim: usize, point: DVector<T>) -> DVector<T> {
+    if point.len() == dim {
+        return point;
+    }
+    let nan = T::from_f64(0.0).map_or_else(T::zero, |z| {
+        if T::EXACT {
+            z
+        } else {
+            T::from_ratio(0, 1) / T::from_ratio(0, 1)
+        }
+    });
+    DVector::from_element(dim, nan)
 }

@@ -186,66 +186,9 @@ impl Scalar for BigRational {
     }
 }
 
-/// Parses an exact decimal such as `"0.2"` or `"-3.25e-1"` into a rational (so that `0.2` means
-/// 1/5, not the nearest double). Returns `None` if the text is not a plain decimal number.
-pub fn rational_from_decimal(text: &str) -> Option<BigRational> {
-    let text = text.trim();
-    let (mantissa, exponent) = match text.find(['e', 'E']) {
-        Some(pos) => (&text[..pos], text[pos + 1..].parse::<i32>().ok()?),
-        None => (text, 0),
-    };
-    let (negative, digits) = match mantissa.strip_prefix('-') {
-        Some(rest) => (true, rest),
-        None => (false, mantissa.strip_prefix('+').unwrap_or(mantissa)),
-    };
-    let (int_part, frac_part) = match digits.find('.') {
-        Some(pos) => (&digits[..pos], &digits[pos + 1..]),
-        None => (digits, ""),
-    };
-    if int_part.is_empty() && frac_part.is_empty() {
-        return None;
-    }
-    if !int_part
-        .bytes()
-        .chain(frac_part.bytes())
-        .all(|b| b.is_ascii_digit())
-    {
-        return None;
-    }
-    let all_digits = format!("{int_part}{frac_part}");
-    let mut value = BigRational::from_integer(BigInt::from_str_radix(&all_digits, 10).ok()?);
-    let scale = exponent - frac_part.len() as i32;
-    let ten = BigRational::from_integer(BigInt::from(10));
-    let power = num_traits::pow(ten, scale.unsigned_abs() as usize);
-    if scale >= 0 {
-        value *= power;
-    } else {
-        value /= power;
-    }
-    Some(if negative { -value } else { value })
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn decimal_is_exact() {
-        assert_eq!(
-            rational_from_decimal("0.2"),
-            Some(BigRational::from_ratio(1, 5))
-        );
-        assert_eq!(
-            rational_from_decimal("-3.25e-1"),
-            Some(BigRational::from_ratio(-13, 40))
-        );
-        assert_eq!(
-            rational_from_decimal("12e2"),
-            Some(BigRational::from_ratio(1200, 1))
-        );
-        assert_eq!(rational_from_decimal("abc"), None);
-        assert_eq!(rational_from_decimal("."), None);
-    }
 
     #[test]
     fn f64_lift_is_exact() {

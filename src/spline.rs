@@ -30,7 +30,7 @@
 use nalgebra::{DMatrix, DVector};
 
 use crate::cost::Cost;
-use crate::error::{check_finite, Error, Result};
+use crate::error::{check_finite, check_overflow, Error, Result};
 use crate::hermite::HermiteCubic;
 use crate::param::Curve;
 use crate::scalar::Scalar;
@@ -139,7 +139,10 @@ pub fn interpolation_cost<T: Scalar>(
         1
     };
     let (n, d) = (points as u128, d as u128);
-    Cost::new(10 * solves * n * d, solved_bits(points, data_bits))
+    Cost::new(
+        (10 * solves * n).saturating_mul(d),
+        solved_bits(points, data_bits),
+    )
 }
 
 /// The cost of one point of an interpolating spline through `points` points in `d`
@@ -169,7 +172,9 @@ fn solved_bits(points: usize, data_bits: u128) -> u128 {
 /// point per row). Generic: exact in rationals.
 ///
 /// # Errors
-/// [`Error::ShapeMismatch`] for lengths that differ, [`Error::Singular`] for a zero pivot.
+/// [`Error::ShapeMismatch`] for lengths that differ, [`Error::NonFinite`] for a NaN or
+/// infinite entry, [`Error::Singular`] for a zero pivot, [`Error::Overflow`] for a solution
+/// whose double overflows (a nearly singular system).
 ///
 /// ```
 /// use cagd::spline::solve_tridiagonal;
@@ -207,6 +212,11 @@ pub fn solve_tridiagonal<T: Scalar>(
             found: format!("{} entries in row {k}", rhs[k].len()),
         });
     }
+    check_finite("tridiagonal system", sub.iter().chain(diag).chain(sup))?;
+    check_finite(
+        "tridiagonal right-hand sides",
+        rhs.iter().flat_map(|r| r.iter()),
+    )?;
     let mut c = vec![T::zero(); n];
     let mut d: Vec<DVector<T>> = Vec::with_capacity(n);
     for k in 0..n {
@@ -240,6 +250,7 @@ pub fn solve_tridiagonal<T: Scalar>(
             d[k][r].clone() - c[k].clone() * next[r].clone()
         });
     }
+    check_overflow("tridiagonal solution", d.iter().flat_map(|r| r.iter()))?;
     Ok(d)
 }
 
@@ -248,7 +259,8 @@ pub fn solve_tridiagonal<T: Scalar>(
 /// formula (two tridiagonal solves). Needs `n ≥ 3`.
 ///
 /// # Errors
-/// As [`solve_tridiagonal`]; [`Error::TooFewPoints`] for `n < 3`.
+/// As [`solve_tridiagonal`]; [`Error::TooFewPoints`] for `n < 3`; [`Error::Singular`] for a
+/// zero first diagonal entry or a zero Sherman–Morrison denominator.
 pub fn solve_cyclic_tridiagonal<T: Scalar>(
     sub: &[T],
     diag: &[T],
@@ -263,8 +275,25 @@ pub fn solve_cyclic_tridiagonal<T: Scalar>(
             found: n,
         });
     }
+    if sub.len() != n || sup.len() != n {
+        return Err(Error::ShapeMismatch {
+            what: "cyclic tridiagonal system",
+            expected: format!("{n} entries in every band"),
+            found: format!("{}, {}, {}", sub.len(), diag.len(), sup.len()),
+        });
+    }
+    check_finite(
+        "cyclic tridiagonal system",
+        sub.iter().chain(diag).chain(sup),
+    )?;
     let (alpha, beta) = (sub[0].clone(), sup[n - 1].clone());
     let gamma = -diag[0].clone();
+    if gamma.is_zero() {
+        return Err(Error::Singular {
+            what: "cyclic tridiagonal system",
+            reason: "the first diagonal entry is zero".into(),
+        });
+    }
     let mut b = diag.to_vec();
     b[0] = diag[0].clone() - gamma.clone();
     b[n - 1] = diag[n - 1].clone() - alpha.clone() * beta.clone() / gamma.clone();
@@ -286,12 +315,18 @@ pub fn solve_cyclic_tridiagonal<T: Scalar>(
     let fact: Vec<T> = (0..dim)
         .map(|r| (x[0][r].clone() + ratio.clone() * x[n - 1][r].clone()) / denom.clone())
         .collect();
-    Ok(x.iter()
+    let solution: Vec<DVector<T>> = x
+        .iter()
         .zip(&z)
         .map(|(xk, zk)| {
             DVector::from_fn(dim, |r, _| xk[r].clone() - fact[r].clone() * zk[0].clone())
         })
-        .collect())
+        .collect();
+    check_overflow(
+        "cyclic tridiagonal solution",
+        solution.iter().flat_map(|r| r.iter()),
+    )?;
+    Ok(solution)
 }
 
 /// An interpolating cubic spline: Hermite cubics between consecutive points with `C²` joints.
@@ -339,7 +374,9 @@ impl<T: Scalar> CubicSpline<T> {
     /// [`Error::TooFewPoints`] for fewer than 2 points (3 when closed);
     /// [`Error::ShapeMismatch`] for a wrong number of parameters, points with no coordinates
     /// or end tangents of another dimension; [`Error::NonFinite`];
-    /// [`Error::InvalidArgument`] for parameters that do not increase.
+    /// [`Error::InvalidArgument`] for parameters that do not increase; [`Error::Overflow`] for
+    /// parameters whose range or gaps no double can divide by (5·10⁻³²⁴ apart), or tangents
+    /// whose doubles overflow (points near ±1.7·10³⁰⁸).
     pub fn interpolate_with_params(
         points: DMatrix<T>,
         params: Vec<T>,
@@ -380,6 +417,7 @@ impl<T: Scalar> CubicSpline<T> {
                 message: format!("expected strictly increasing values, but value {k} ({}) is not below value {} ({})", params[k], k + 1, params[k + 1]),
             });
         }
+        crate::error::check_spacing("spline parameters", &params)?;
         if let EndCondition::Clamped { start, end } = &end {
             if start.len() != d || end.len() != d {
                 return Err(Error::ShapeMismatch {
@@ -448,12 +486,22 @@ impl<T: Scalar> CubicSpline<T> {
             sup.push(c);
             rhs.push(r);
         }
+        // Finite points whose differences overflow: the spline's own error, not the solve's.
+        crate::error::check_overflow(
+            "spline tangent equations",
+            rhs.iter()
+                .flat_map(|r| r.iter())
+                .chain(&diag)
+                .chain(&sub)
+                .chain(&sup),
+        )?;
         let t = if closed {
             solve_cyclic_tridiagonal(&sub, &diag, &sup, &rhs)?
         } else {
             solve_tridiagonal(&sub, &diag, &sup, &rhs)?
         };
         let tangents = DMatrix::from_fn(d, m, |r, c| t[c][r].clone());
+        check_overflow("spline tangents", tangents.iter())?;
         Ok(CubicSpline {
             params,
             points,
@@ -587,7 +635,8 @@ impl<T: Scalar> CubicSpline<T> {
     /// `u = (t − t_k)/h_k`: its tangents are `h_k x'_k`, `h_k x'_{k+1}`.
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] for `k ≥ segment_count()`.
+    /// [`Error::InvalidArgument`] for `k ≥ segment_count()`; [`Error::Overflow`] for a scaled
+    /// tangent whose double overflows.
     pub fn segment(&self, k: usize) -> Result<HermiteCubic<T>> {
         if k >= self.segment_count() {
             return Err(Error::InvalidArgument {
@@ -607,6 +656,7 @@ impl<T: Scalar> CubicSpline<T> {
             2 => h.clone() * self.tangents[(r, k)].clone(),
             _ => h.clone() * self.tangents[(r, j)].clone(),
         });
+        check_overflow("spline segment tangents", g.iter())?;
         HermiteCubic::from_geometry(g)
     }
 
@@ -661,14 +711,15 @@ impl<T: Scalar> CubicSpline<T> {
     /// bit).
     pub fn eval_many(&self, ts: &[T]) -> DMatrix<T> {
         let mut out = DMatrix::from_element(self.dim(), ts.len(), T::zero());
-        self.fill_many(ts, out.as_mut_slice());
+        // Infallible: a non-finite point (far outside, or a NaN parameter) stays in place.
+        let _ = self.fill_many(ts, out.as_mut_slice());
         out
     }
 
     /// The points at all parameters `ts` written into `out`, one after the other:
     /// `out[k·d + c]` is coordinate `c` of `x(ts[k])` (`ts.len() × d` row-major, the storage
     /// of [`eval_many`](Self::eval_many)'s `d × ts.len()` matrix; see [`crate::grid`]). As
-    /// [`eval`](Self::eval), any parameter is accepted: outside `[t_0, t_last]` the end
+    /// [`eval`](Self::eval), any finite parameter is accepted: outside `[t_0, t_last]` the end
     /// segments continue.
     ///
     /// The coefficients `y_k, x'_k, c_2, c_3` of every segment's local polynomial are computed
@@ -680,7 +731,9 @@ impl<T: Scalar> CubicSpline<T> {
     /// values bit for bit. Long batches are split over all cores.
     ///
     /// # Errors
-    /// [`Error::ShapeMismatch`] unless `out.len() == ts.len() · d`.
+    /// [`Error::ShapeMismatch`] unless `out.len() == ts.len() · d`; [`Error::NonFinite`] for
+    /// a NaN or infinite parameter; [`Error::Overflow`] for a point whose double overflows
+    /// (far outside; the buffer is written all the same).
     ///
     /// ```
     /// use cagd::spline::{CubicSpline, EndCondition};
@@ -696,12 +749,12 @@ impl<T: Scalar> CubicSpline<T> {
     pub fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
         let len = crate::grid::grid_len("spline points", &[ts.len(), self.dim()])?;
         crate::grid::check_len("spline point buffer", len, out)?;
-        self.fill_many(ts, out);
-        Ok(())
+        crate::error::check_finite("spline parameters", ts.iter())?;
+        self.fill_many(ts, out)
     }
 
     /// [`eval_many_into`](Self::eval_many_into) after the length check.
-    fn fill_many(&self, ts: &[T], out: &mut [T]) {
+    fn fill_many(&self, ts: &[T], out: &mut [T]) -> Result<()> {
         /// Points per block (one segment hint per block).
         const BLOCK: usize = 256;
         let d = self.dim();
@@ -727,6 +780,7 @@ impl<T: Scalar> CubicSpline<T> {
         let last = segs - 1;
         let work = ts.len().saturating_mul(6 * d + 8);
         crate::grid::for_each_row(
+            "spline points",
             out,
             BLOCK * d,
             work,
@@ -743,7 +797,7 @@ impl<T: Scalar> CubicSpline<T> {
                     }
                 }
             },
-        );
+        )
     }
 }
 
@@ -780,6 +834,11 @@ impl<T: Scalar> Curve<T> for CubicSpline<T> {
     fn eval(&self, t: T) -> DVector<T> {
         CubicSpline::eval(self, t)
     }
+
+    fn try_eval(&self, t: T) -> Result<DVector<T>> {
+        crate::checked::try_eval_curve(self, "spline point", t)
+    }
+
     /// [`sample_cost`] on the spline's own points and tangents.
     fn point_cost(&self, param_bits: u128) -> crate::cost::Cost {
         let data = crate::cost::max_bits(self.points.iter().chain(self.tangents.iter()));

@@ -237,7 +237,9 @@ pub fn accuracy_study(degrees: &[usize], curves: usize, params: usize) -> Vec<Ac
                     &values.iter().map(|&x| lift(x)).collect::<Vec<_>>(),
                 ))
                 .expect("valid");
-                let form = curve.matrix_form();
+                let form = curve
+                    .matrix_form()
+                    .expect("degrees up to 40 stay within the range of doubles");
                 let ts: Vec<f64> = (0..params)
                     .map(|k| match k {
                         0 => 0.0,

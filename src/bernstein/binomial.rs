@@ -37,6 +37,10 @@ fn binomial_u128(n: usize, k: usize) -> Option<u128> {
 /// partial product is itself a binomial coefficient, so each division is exact (in 128-bit
 /// integers while they hold the partial products, in [`BigUint`] beyond).
 ///
+/// The work is `min(k, n − k)` products of numbers growing to about `min(k, n − k) · log₂ n`
+/// bits — quadratic in that size: the crate asks for it at degrees its limits bound (at most
+/// `Limits::max_degree`); a caller passing `n = 10⁹, k = n/2` waits for hours.
+///
 /// ```
 /// use cagd::bernstein::binomial;
 /// use num_bigint::BigUint;
@@ -72,6 +76,11 @@ pub fn binomial(n: usize, k: usize) -> BigUint {
 /// assert_eq!(c.to_string(), "100891344545564193334812497256");
 /// ```
 pub fn binomial_scalar<T: Scalar>(n: usize, k: usize) -> T {
+    if !crate::grid::exact::is_rational::<T>() && k <= n && k.min(n - k) > 1030 {
+        // Above f64::MAX (as binomial_f64), at once rather than after min(k, n − k) big
+        // products: a double is infinite there.
+        return T::from_f64(f64::MAX).map_or_else(T::zero, |m| m.clone() + m);
+    }
     match binomial_u128(n, k) {
         Some(c) => match i64::try_from(c) {
             Ok(small) => T::from_ratio(small, 1),
@@ -113,7 +122,19 @@ pub fn binomial_f64(n: usize, k: usize) -> f64 {
 /// assert_eq!(falling_factorial::<f64>(3, 0), 1.0);
 /// ```
 pub fn falling_factorial<T: Scalar>(n: usize, r: usize) -> T {
-    (0..r.min(n + 1)).fold(T::one(), |acc, k| acc * T::from_usize(n - k))
+    if r > n {
+        // One of the factors is n − n = 0.
+        return T::zero();
+    }
+    let mut acc = T::one();
+    for k in 0..r {
+        acc = acc * T::from_usize(n - k);
+        if !acc.is_finite_value() {
+            // Every further factor is at least 1: a double stays infinite (not r steps).
+            break;
+        }
+    }
+    acc
 }
 
 /// `x^k` by repeated squaring.

@@ -5,6 +5,8 @@
 //! (one coordinate of a Bézier curve's control points) or anything else a [`Scalar`] holds.
 
 use crate::cost::Cost;
+use crate::error::Result;
+use crate::limits::Limits;
 use crate::scalar::Scalar;
 
 use super::binomial::binomial_scalar;
@@ -51,21 +53,38 @@ pub fn elevate_once<T: Scalar>(a: &[T]) -> Vec<T> {
 ///
 /// `to` below the degree returns the coefficients unchanged.
 ///
+/// # Errors
+/// [`Error::TooLarge`](crate::Error::TooLarge) for `to` above
+/// [`Limits::DEFAULT`]`.max_degree` (each degree is one more pass), or when the work, weighed
+/// by the size of exact numbers, exceeds the default work limit; [`Error::NonFinite`](crate::Error::NonFinite)
+/// for a non-finite coefficient; [`Error::Overflow`](crate::Error::Overflow) for a result
+/// whose double overflows.
+///
 /// ```
 /// use cagd::bernstein::elevate;
 /// use cagd::Scalar;
 /// use num_rational::BigRational;
 /// let q = |n: i64, d: i64| BigRational::from_ratio(n, d);
 /// // t² = Σ_k k(k−1)/12 · B_k^4(t).
-/// let e = elevate(&[q(0, 1), q(0, 1), q(1, 1)], 4);
+/// let e = elevate(&[q(0, 1), q(0, 1), q(1, 1)], 4)?;
 /// assert_eq!(e, vec![q(0, 1), q(0, 1), q(1, 6), q(1, 2), q(1, 1)]);
+/// assert!(elevate(&[1.0], usize::MAX).is_err());
+/// # Ok::<(), cagd::Error>(())
 /// ```
-pub fn elevate<T: Scalar>(a: &[T], to: usize) -> Vec<T> {
+pub fn elevate<T: Scalar>(a: &[T], to: usize) -> Result<Vec<T>> {
+    Limits::DEFAULT.check_degree("Bernstein degree elevation", to)?;
+    crate::error::check_finite("Bernstein coefficients", a.iter())?;
+    let n = a.len().saturating_sub(1);
+    crate::checked::point_work::<T>(
+        "Bernstein degree elevation",
+        elevate_cost(n, to.saturating_sub(n), crate::cost::max_bits(a)),
+    )?;
     let mut c = a.to_vec();
     while c.len() < to + 1 && !c.is_empty() {
         c = elevate_once(&c);
     }
-    c
+    crate::error::check_overflow("elevated Bernstein coefficients", c.iter())?;
+    Ok(c)
 }
 
 /// The cost of raising `n + 1` coefficients (degree `n`) by `r` degrees with [`elevate`]:
@@ -153,7 +172,7 @@ mod tests {
         let a = [q(1, 2), q(-3, 1), q(2, 5)];
         let b = [q(7, 3), q(0, 1)];
         let c = product(&a, &b);
-        let e = elevate(&a, 5);
+        let e = elevate(&a, 5).unwrap();
         assert_eq!((c.len(), e.len()), (4, 6));
         for t in [q(0, 1), q(1, 3), q(4, 5), q(1, 1), q(3, 2)] {
             assert_eq!(eval(&c, &t), eval(&a, &t) * eval(&b, &t));
@@ -165,7 +184,7 @@ mod tests {
     fn repeated_steps_are_the_closed_formula() {
         let a = [q(1, 2), q(-3, 1), q(2, 5), q(9, 7)];
         let (r, to) = (3, 7);
-        let e = elevate(&a, to);
+        let e = elevate(&a, to).unwrap();
         for (k, ek) in e.iter().enumerate() {
             let closed = (k.saturating_sub(to - r)..=k.min(r)).fold(q(0, 1), |s, i| {
                 s + binomial_scalar::<Q>(r, i) * binomial_scalar::<Q>(to - r, k - i) * a[i].clone()
@@ -176,10 +195,19 @@ mod tests {
 
     #[test]
     fn degenerate_inputs() {
-        assert_eq!(elevate(&[2.0], 0), vec![2.0]);
-        assert_eq!(elevate(&[2.0], 3), vec![2.0; 4]);
-        assert_eq!(elevate(&[1.0, 2.0, 3.0], 1), vec![1.0, 2.0, 3.0]);
-        assert!(elevate::<f64>(&[], 3).is_empty());
+        assert_eq!(elevate(&[2.0], 0).unwrap(), vec![2.0]);
+        assert_eq!(elevate(&[2.0], 3).unwrap(), vec![2.0; 4]);
+        assert_eq!(elevate(&[1.0, 2.0, 3.0], 1).unwrap(), vec![1.0, 2.0, 3.0]);
+        assert!(elevate::<f64>(&[], 3).unwrap().is_empty());
+        assert!(matches!(
+            elevate(&[1.0], 1001),
+            Err(crate::Error::TooLarge { .. })
+        ));
+        assert!(elevate(&[f64::MAX, -f64::MAX], 3).is_ok());
+        assert!(matches!(
+            elevate(&[f64::NAN], 3),
+            Err(crate::Error::NonFinite { .. })
+        ));
         assert!(product::<f64>(&[], &[1.0]).is_empty());
     }
 }

@@ -80,8 +80,12 @@ pub fn bernstein<T: Scalar>(i: usize, n: usize, t: T) -> T {
 /// let b = bernstein_all(2, t);
 /// assert_eq!(b[1], BigRational::from_ratio(4, 9)); // 2 · (1/3) · (2/3)
 /// ```
+///
+/// # Panics
+/// If `n + 1` values cannot be held (`n` near `usize::MAX`): a panic naming the size, never an
+/// abort. Its work is `(n+1)²`: the front ends check the degree against their limits first.
 pub fn bernstein_all<T: Scalar>(n: usize, t: T) -> Vec<T> {
-    let mut b = vec![T::zero(); n + 1];
+    let mut b = crate::grid::filled("Bernstein basis", n.checked_add(1), T::zero());
     bernstein_all_into(&t, &mut b);
     b
 }
@@ -152,7 +156,10 @@ pub(crate) fn recurrence<T: Scalar>(t: &T, out: &mut [T]) {
 /// assert_eq!(cagd::bernstein::basis_cost(3, 2), Cost::new(16, 9));
 /// ```
 pub fn basis_cost(n: usize, param_bits: u128) -> Cost {
-    Cost::new((n as u128 + 1).pow(2), polynomial_bits(n, param_bits, 0))
+    Cost::new(
+        (n as u128 + 1).saturating_pow(2),
+        polynomial_bits(n, param_bits, 0),
+    )
 }
 
 /// The `r`-th derivative of `B_i^n` at `t`.
@@ -206,7 +213,7 @@ pub fn bernstein_derivative<T: Scalar>(i: usize, n: usize, r: usize, t: T) -> T 
 /// ```
 pub fn bernstein_derivative_all<T: Scalar>(n: usize, r: usize, t: T) -> Vec<T> {
     if r > n {
-        return vec![T::zero(); n + 1];
+        return crate::grid::filled("Bernstein derivatives", n.checked_add(1), T::zero());
     }
     let lower = bernstein_all(n - r, t);
     let factor = falling_factorial::<T>(n, r);
@@ -248,8 +255,17 @@ pub fn bernstein_derivative_all<T: Scalar>(n: usize, r: usize, t: T) -> Vec<T> {
 /// assert_eq!(b.row(1).iter().copied().collect::<Vec<_>>(), vec![0.25, 0.5, 0.25]);
 /// assert_eq!(b[(2, 2)], 1.0);
 /// ```
+///
+/// # Panics
+/// If the `ts.len() × (n + 1)` values cannot be held: a panic naming the size, never an abort.
 pub fn basis_matrix<T: Scalar>(n: usize, ts: &[T]) -> DMatrix<T> {
-    let mut m = DMatrix::from_element(ts.len(), n + 1, T::zero());
+    let cols = n.checked_add(1).expect("n + 1 basis functions");
+    let data = crate::grid::filled(
+        "Bernstein basis matrix",
+        ts.len().checked_mul(cols),
+        T::zero(),
+    );
+    let mut m = DMatrix::from_vec(ts.len(), cols, data);
     for (k, t) in ts.iter().enumerate() {
         for (i, b) in bernstein_all(n, t.clone()).into_iter().enumerate() {
             m[(k, i)] = b;
@@ -267,7 +283,13 @@ pub fn basis_matrix<T: Scalar>(n: usize, ts: &[T]) -> DMatrix<T> {
 /// assert_eq!((d[(0, 0)], d[(0, 1)]), (-1.0, 1.0));
 /// ```
 pub fn basis_derivative_matrix<T: Scalar>(n: usize, r: usize, ts: &[T]) -> DMatrix<T> {
-    let mut m = DMatrix::from_element(ts.len(), n + 1, T::zero());
+    let cols = n.checked_add(1).expect("n + 1 basis functions");
+    let data = crate::grid::filled(
+        "Bernstein derivative matrix",
+        ts.len().checked_mul(cols),
+        T::zero(),
+    );
+    let mut m = DMatrix::from_vec(ts.len(), cols, data);
     for (k, t) in ts.iter().enumerate() {
         for (i, b) in bernstein_derivative_all(n, r, t.clone())
             .into_iter()

@@ -54,7 +54,8 @@ impl<T: Scalar> BilinearWeights<T> {
 ///
 /// # Errors
 /// [`Error::ShapeMismatch`] if the points differ in dimension; [`Error::NonFinite`] for a NaN
-/// or infinite coordinate or parameter.
+/// or infinite coordinate or parameter; [`Error::Overflow`] for a point whose double
+/// overflows (parameters far outside `[0, 1]`, corners near ±1.7·10³⁰⁸).
 ///
 /// ```
 /// use cagd::bezier::bilinear_interpolate;
@@ -77,9 +78,12 @@ pub fn bilinear_interpolate<T: Scalar>(
     super::check_param("bilinear interpolation parameter u", &u)?;
     super::check_param("bilinear interpolation parameter v", &v)?;
     let w = BilinearWeights::new(&u, &v);
-    Ok(DVector::from_fn(b00.len(), |c, _| {
-        w.combine(&b00[c], &b10[c], &b01[c], &b11[c])
-    }))
+    crate::error::finite(
+        "bilinear interpolation point",
+        DVector::from_fn(b00.len(), |c, _| {
+            w.combine(&b00[c], &b10[c], &b01[c], &b11[c])
+        }),
+    )
 }
 
 pub(super) fn check_corners<T: Scalar>(b00: &[T], b01: &[T], b10: &[T], b11: &[T]) -> Result<()> {

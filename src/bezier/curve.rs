@@ -6,7 +6,7 @@ use super::scheme::DeCasteljauScheme;
 use super::{check_param, check_params};
 use crate::bernstein::{bernstein_all, bernstein_all_into, falling_factorial, power};
 use crate::cost::{polynomial_bits, Cost};
-use crate::error::{check_finite, Error, Result};
+use crate::error::{check_finite, check_overflow, Error, Result};
 use crate::param::check_parameter;
 use crate::param::Curve;
 use crate::scalar::Scalar;
@@ -77,8 +77,9 @@ impl<T: Scalar> BezierCurve<T> {
     /// `u ∈ [a, b]` is the value of the `[0, 1]` curve at `t = (u − a)/(b − a)` (thesis §2.3.2).
     ///
     /// # Errors
-    /// As [`new`](Self::new), plus [`Error::NonFinite`] for a non-finite end and
-    /// [`Error::EmptyInterval`] unless `a < b`.
+    /// As [`new`](Self::new), plus [`Error::NonFinite`] for a non-finite end,
+    /// [`Error::EmptyInterval`] unless `a < b`, and [`Error::Overflow`] for an interval whose
+    /// width `b − a` (or its reciprocal) is not a finite double (`[−10³⁰⁸, 10³⁰⁸]`).
     ///
     /// ```
     /// use cagd::bezier::BezierCurve;
@@ -247,7 +248,10 @@ impl<T: Scalar> BezierCurve<T> {
     ///
     /// # Errors
     /// [`Error::NonFinite`] for a NaN or infinite `u`, [`Error::ParameterOutOfRange`] for a
-    /// finite `u` outside `[a, b]`.
+    /// finite `u` outside `[a, b]`, [`Error::TooLarge`] when the work of the point
+    /// ([`eval_cost`](Self::eval_cost): `d (n+1)²` operations, weighed by the size of the
+    /// numbers in exact arithmetic) exceeds [`Limits::DEFAULT`](crate::limits::Limits::DEFAULT)
+    /// (a curve of degree 100 000), [`Error::Overflow`] for a point whose double overflows.
     ///
     /// ```
     /// use cagd::bezier::BezierCurve;
@@ -261,7 +265,15 @@ impl<T: Scalar> BezierCurve<T> {
     /// ```
     pub fn try_eval(&self, u: T) -> Result<DVector<T>> {
         check_parameter("Bézier curve parameter", &u, &self.domain())?;
-        Ok(self.eval(u))
+        self.check_point_work(u.bits())?;
+        crate::checked::point("Bézier curve point", self.dim(), self.eval(u))
+    }
+
+    /// One point's work ([`eval_cost`](Self::eval_cost)) at a parameter of `param_bits` bits
+    /// against the default limit ([`crate::checked::point_work`]).
+    fn check_point_work(&self, param_bits: u128) -> Result<()> {
+        let cost = self.eval_cost(param_bits, crate::cost::max_bits(self.control.iter()));
+        crate::checked::point_work::<T>("Bézier curve point", cost)
     }
 
     /// The domain `[a, b]` (the interval the curve was built on, `[0, 1]` by default).
@@ -301,7 +313,7 @@ impl<T: Scalar> BezierCurve<T> {
     pub fn eval_cost(&self, param_bits: u128, control_bits: u128) -> Cost {
         let n = self.degree();
         Cost::new(
-            self.dim() as u128 * (n as u128 + 1).pow(2),
+            (self.dim() as u128).saturating_mul((n as u128 + 1).saturating_pow(2)),
             polynomial_bits(n, param_bits, control_bits),
         )
     }
@@ -334,7 +346,9 @@ impl<T: Scalar> BezierCurve<T> {
     ///
     /// # Errors
     /// [`Error::EmptyGrid`] for an empty list, [`Error::NonFinite`] for a NaN or infinite
-    /// parameter.
+    /// parameter, [`Error::TooLarge`] when one point's work ([`eval_cost`](Self::eval_cost))
+    /// exceeds the default limit, [`Error::Overflow`] for a point whose double overflows (far
+    /// outside the domain, or control points near ±1.7·10³⁰⁸).
     ///
     /// ```
     /// use cagd::bezier::BezierCurve;
@@ -347,21 +361,31 @@ impl<T: Scalar> BezierCurve<T> {
     /// ```
     pub fn eval_many(&self, us: &[T]) -> Result<DMatrix<T>> {
         check_params("Bézier curve parameters", us)?;
+        let len = crate::grid::grid_len("Bézier curve points", &[us.len(), self.dim()])?;
+        let mut out = DMatrix::from_vec(
+            self.dim(),
+            us.len(),
+            crate::grid::try_filled("Bézier curve points", len, T::zero())?,
+        );
         if crate::grid::exact::is_rational::<T>() {
             // Exact: the same values from the Bernstein sums of the batch, a fraction of the
             // operations (and gcds) of de Casteljau's triangle.
-            let mut out = DMatrix::from_element(self.dim(), us.len(), T::zero());
             self.eval_many_into(us, out.as_mut_slice())?;
             return Ok(out);
         }
-        let columns: Vec<DVector<T>> = us.iter().map(|u| self.eval(u.clone())).collect();
-        Ok(DMatrix::from_columns(&columns))
+        self.check_point_work(0)?;
+        for (u, mut column) in us.iter().zip(out.column_iter_mut()) {
+            column.copy_from(&self.eval(u.clone()));
+        }
+        check_overflow("Bézier curve points", out.iter())?;
+        Ok(out)
     }
 
     /// The points at all parameters `us` written into `out`, one after the other:
     /// `out[p·d + c]` is coordinate `c` of `b^n(us[p])` (`us.len() × d` row-major, which is
     /// the storage of the `d × k` matrix of [`eval_many`](Self::eval_many); see
-    /// [`crate::grid`]). Like [`eval`](Self::eval), any parameter is accepted.
+    /// [`crate::grid`]). Like [`eval_many`](Self::eval_many), any finite parameter is accepted
+    /// (the polynomial continues outside the domain).
     ///
     /// Each point is the Bernstein sum `Σ_i B_i^n(t) b_i`: for degree ≤ 3 in 2-D or 3-D with the
     /// basis as the products `C(n, i) t^i (1 − t)^(n−i)` and every size fixed at compile time,
@@ -373,7 +397,10 @@ impl<T: Scalar> BezierCurve<T> {
     /// rationals.
     ///
     /// # Errors
-    /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · d`.
+    /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · d`; [`Error::NonFinite`] for a
+    /// NaN or infinite parameter; [`Error::TooLarge`] when one point's work
+    /// ([`eval_cost`](Self::eval_cost)) exceeds the default limit; [`Error::Overflow`] for a
+    /// point whose double overflows (the buffer is written all the same).
     ///
     /// ```
     /// use cagd::bezier::BezierCurve;
@@ -387,6 +414,8 @@ impl<T: Scalar> BezierCurve<T> {
         let d = self.dim();
         let len = crate::grid::grid_len("Bézier curve points", &[us.len(), d])?;
         crate::grid::check_len("Bézier curve point buffer", len, out)?;
+        check_finite("Bézier curve parameters", us.iter())?;
+        self.check_point_work(crate::cost::max_bits(us))?;
         let local = |u: &T| self.local_parameter(u.clone());
         if crate::grid::exact::bezier_points(self.control.as_slice(), d, local, us, out) {
             return Ok(());
@@ -408,7 +437,8 @@ impl<T: Scalar> BezierCurve<T> {
                     std::array::from_fn(|i| std::array::from_fn(|k| control[i * $d + k].clone()));
                 let binomials: [T; $l] =
                     std::array::from_fn(|i| crate::bernstein::binomial_scalar($l - 1, i));
-                crate::grid::for_each_row(
+                return crate::grid::for_each_row(
+                    "Bézier curve points",
                     out,
                     BLOCK * $d,
                     work,
@@ -428,7 +458,6 @@ impl<T: Scalar> BezierCurve<T> {
                         }
                     },
                 );
-                return Ok(());
             }};
         }
         match (terms, d) {
@@ -441,6 +470,7 @@ impl<T: Scalar> BezierCurve<T> {
             _ => {}
         }
         crate::grid::for_each_row(
+            "Bézier curve points",
             out,
             BLOCK * d,
             work,
@@ -456,8 +486,7 @@ impl<T: Scalar> BezierCurve<T> {
                 }
                 crate::grid::contract_row(&basis[..count * terms], terms, control, chunk);
             },
-        );
-        Ok(())
+        )
     }
 
     /// The `r`-th derivative as a Bézier curve of degree `n − r` over the same interval
@@ -472,7 +501,9 @@ impl<T: Scalar> BezierCurve<T> {
     /// is the chain rule for `t = (u−a)/(b−a)`; it is 1 on `[0, 1]`). `r = 0` gives a copy.
     ///
     /// # Errors
-    /// [`Error::DerivativeOrder`] if `r > n`.
+    /// [`Error::DerivativeOrder`] if `r > n`; [`Error::Overflow`] for a control point whose
+    /// double overflows (differences of control points near ±1.7·10³⁰⁸, or the factor
+    /// `n!/(n−r)!`).
     ///
     /// ```
     /// use cagd::bezier::BezierCurve;
@@ -505,6 +536,7 @@ impl<T: Scalar> BezierCurve<T> {
         if r > 0 {
             diff = diff.map(|x| factor.clone() * x);
         }
+        check_overflow("Bézier derivative control points", diff.iter())?;
         Ok(BezierCurve::from_valid(
             diff,
             self.a.clone(),
@@ -590,9 +622,16 @@ impl<T: Scalar> BezierCurve<T> {
                 b: self.b.to_f64(),
             });
         }
+        check_interval("left half of a subdivided Bézier curve", &self.a, &u)?;
+        check_interval("right half of a subdivided Bézier curve", &u, &self.b)?;
         let scheme = self.scheme(u.clone());
-        let left = BezierCurve::from_valid(scheme.left_control(), self.a.clone(), u.clone());
-        let right = BezierCurve::from_valid(scheme.right_control(), u, self.b.clone());
+        let (left, right) = (scheme.left_control(), scheme.right_control());
+        check_overflow(
+            "subdivided Bézier curve control points",
+            left.iter().chain(right.iter()),
+        )?;
+        let left = BezierCurve::from_valid(left, self.a.clone(), u.clone());
+        let right = BezierCurve::from_valid(right, u, self.b.clone());
         Ok((left, right))
     }
 
@@ -740,7 +779,8 @@ pub(crate) fn check_control<T: Scalar>(what: &'static str, control: &DMatrix<T>)
     check_finite(what, control.iter())
 }
 
-/// An interval must have finite ends with `a < b`.
+/// An interval must have finite ends with `a < b`, and a width `b − a` that is a finite double
+/// with a finite reciprocal (the local parameter divides by it).
 pub(crate) fn check_interval<T: Scalar>(what: &'static str, a: &T, b: &T) -> Result<()> {
     check_finite(what, [a, b])?;
     if a >= b {
@@ -750,7 +790,7 @@ pub(crate) fn check_interval<T: Scalar>(what: &'static str, a: &T, b: &T) -> Res
             b: b.to_f64(),
         });
     }
-    Ok(())
+    crate::error::check_spacing(what, &[a.clone(), b.clone()])
 }
 
 #[cfg(test)]

@@ -24,7 +24,7 @@ use nalgebra::{DMatrix, DVector};
 use super::curve::{check_control, BezierCurve};
 use super::mat_mul;
 use crate::conversion::{bezier_to_monomial_matrix, monomial_to_bezier_matrix};
-use crate::error::Result;
+use crate::error::{check_overflow, Result};
 use crate::scalar::Scalar;
 
 /// A polynomial curve in monomial form, `p(u) = Σ_j a_j t^j` with `t = (u − a)/(b − a)`.
@@ -53,7 +53,7 @@ use crate::scalar::Scalar;
 /// ```
 /// use cagd::bezier::BezierCurve;
 /// let p = BezierCurve::from_points(&[[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]])?;
-/// let form = p.matrix_form();
+/// let form = p.matrix_form()?;
 /// assert_eq!(form.coefficients().row(1).iter().copied().collect::<Vec<_>>(), vec![0.0, 3.0, -6.0, 4.0]);
 /// assert_eq!(form.eval(1.0).as_slice(), &[3.0, 1.0]);
 /// # Ok::<(), cagd::Error>(())
@@ -133,16 +133,23 @@ impl<T: Scalar> MatrixForm<T> {
     /// use nalgebra::DMatrix;
     /// // p(t) = t² has Bézier points 0, 0, 1.
     /// let form = MatrixForm::from_coefficients(DMatrix::from_row_slice(1, 3, &[0.0, 0.0, 1.0]))?;
-    /// assert_eq!(form.to_bezier().control().as_slice(), &[0.0, 0.0, 1.0]);
+    /// assert_eq!(form.to_bezier()?.control().as_slice(), &[0.0, 0.0, 1.0]);
     /// # Ok::<(), cagd::Error>(())
     /// ```
-    pub fn to_bezier(&self) -> BezierCurve<T> {
-        let inverse = monomial_to_bezier_matrix::<T>(self.degree());
-        BezierCurve::from_valid(
-            mat_mul(&self.coefficients, &inverse),
+    ///
+    /// # Errors
+    /// Those of [`monomial_to_bezier_matrix`] (a degree above the default limit, an entry that
+    /// overflows), and [`Error::Overflow`](crate::Error::Overflow) for a control point whose
+    /// double overflows.
+    pub fn to_bezier(&self) -> Result<BezierCurve<T>> {
+        let inverse = monomial_to_bezier_matrix::<T>(self.degree())?;
+        let control = mat_mul(&self.coefficients, &inverse);
+        check_overflow("Bézier points of a matrix form", control.iter())?;
+        Ok(BezierCurve::from_valid(
+            control,
             self.a.clone(),
             self.b.clone(),
-        )
+        ))
     }
 }
 
@@ -150,14 +157,21 @@ impl<T: Scalar> BezierCurve<T> {
     /// The matrix (monomial) form `P · M` of this curve, over the same interval (the matrix-form notes;
     /// [`cubic_bezier_matrix`](crate::conversion::cubic_bezier_matrix) for cubics,
     /// [`bezier_to_monomial_matrix`] in general).
-    pub fn matrix_form(&self) -> MatrixForm<T> {
-        let m = bezier_to_monomial_matrix::<T>(self.degree());
+    ///
+    /// # Errors
+    /// Those of [`bezier_to_monomial_matrix`] (a degree above the default limit, an entry
+    /// that overflows), and [`Error::Overflow`](crate::Error::Overflow) for a coefficient whose
+    /// double overflows (the coefficients reach about `3^n` times the control points).
+    pub fn matrix_form(&self) -> Result<MatrixForm<T>> {
+        let m = bezier_to_monomial_matrix::<T>(self.degree())?;
         let (a, b) = self.interval();
-        MatrixForm {
-            coefficients: mat_mul(self.control(), &m),
+        let coefficients = mat_mul(self.control(), &m);
+        check_overflow("matrix form coefficients", coefficients.iter())?;
+        Ok(MatrixForm {
+            coefficients,
             a: a.clone(),
             b: b.clone(),
-        }
+        })
     }
 
     /// The point at `u` from the matrix form (builds [`matrix_form`](Self::matrix_form) each
@@ -167,12 +181,18 @@ impl<T: Scalar> BezierCurve<T> {
     /// ```
     /// use cagd::bezier::BezierCurve;
     /// let p = BezierCurve::from_points(&[[0.0, 0.0], [1.0, 1.0], [2.0, 0.0], [3.0, 1.0]])?;
-    /// let x = p.eval_matrix_form(0.4);
+    /// let x = p.eval_matrix_form(0.4)?;
     /// assert!((x[0] - 1.2).abs() < 1e-15 && (x[1] - 0.496).abs() < 1e-15);
     /// # Ok::<(), cagd::Error>(())
     /// ```
-    pub fn eval_matrix_form(&self, u: T) -> DVector<T> {
-        self.matrix_form().eval(u)
+    ///
+    /// # Errors
+    /// Those of [`matrix_form`](Self::matrix_form), [`Error::NonFinite`](crate::Error::NonFinite)
+    /// for a NaN or infinite `u`, and [`Error::Overflow`](crate::Error::Overflow) for a point
+    /// whose double overflows.
+    pub fn eval_matrix_form(&self, u: T) -> Result<DVector<T>> {
+        super::check_param("matrix form parameter", &u)?;
+        crate::error::finite("matrix form point", self.matrix_form()?.eval(u))
     }
 }
 
@@ -189,6 +209,14 @@ impl<T: Scalar> crate::param::Curve<T> for MatrixForm<T> {
 
     fn eval(&self, t: T) -> DVector<T> {
         MatrixForm::eval(self, t)
+    }
+
+    fn try_eval(&self, t: T) -> crate::error::Result<DVector<T>> {
+        crate::checked::try_eval_curve(self, "matrix form point", t)
+    }
+
+    fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> crate::error::Result<()> {
+        crate::checked::eval_many_into(self, "matrix form points", ts, out)
     }
 
     /// Horner's rule per coordinate after mapping `t` onto `[0, 1]`: `2(n+1)d + 3`
@@ -217,11 +245,11 @@ mod tests {
     #[test]
     fn matrix_times_inverse_is_identity_in_rationals() {
         for n in 0..9 {
-            let m = bezier_to_monomial_matrix::<BigRational>(n);
+            let m = bezier_to_monomial_matrix::<BigRational>(n).unwrap();
             let curve = BezierCurve::new(DMatrix::identity(n + 1, n + 1)).unwrap();
-            let back = curve.matrix_form().to_bezier();
+            let back = curve.matrix_form().unwrap().to_bezier().unwrap();
             assert_eq!(back.control(), &DMatrix::identity(n + 1, n + 1), "n = {n}");
-            assert_eq!(curve.matrix_form().coefficients(), &m);
+            assert_eq!(curve.matrix_form().unwrap().coefficients(), &m);
         }
     }
 
@@ -240,7 +268,7 @@ mod tests {
                 .map(|x| <BigRational as Scalar>::from_f64(x).unwrap()),
         )
         .unwrap();
-        let form = curve.matrix_form();
+        let form = curve.matrix_form().unwrap();
         let (mut worst_casteljau, mut worst_monomial) = (0.0f64, 0.0f64);
         for k in 0..=20 {
             let t = k as f64 / 20.0;

@@ -8,7 +8,7 @@ use super::curve::BezierCurve;
 use super::scheme::{patch_step_in_place, patch_steps, PatchScheme};
 use crate::bernstein::{bernstein_all, bernstein_all_into, falling_factorial};
 use crate::cost::{polynomial_bits, Cost};
-use crate::error::{check_finite, Error, Result};
+use crate::error::{check_finite, check_overflow, Error, Result};
 use crate::param::{check_parameter, Surface};
 use crate::scalar::Scalar;
 
@@ -308,7 +308,17 @@ impl<T: Scalar> BezierPatch<T> {
         let unit = (T::zero(), T::one());
         check_parameter("Bézier patch parameter u", &u, &unit)?;
         check_parameter("Bézier patch parameter v", &v, &unit)?;
-        Ok(self.eval(u, v))
+        self.check_point_work(u.bits(), v.bits())?;
+        crate::checked::point("Bézier patch point", self.dim(), self.eval(u, v))
+    }
+
+    /// The work of one point against the default limit ([`crate::checked::point_work`]).
+    fn check_point_work(&self, u_bits: u128, v_bits: u128) -> Result<()> {
+        let control_bits = crate::cost::max_bits(self.coords.iter().flat_map(|x| x.iter()));
+        crate::checked::point_work::<T>(
+            "Bézier patch point",
+            self.scheme_cost(u_bits, v_bits, control_bits),
+        )
     }
 
     /// Every level of the tensor de Casteljau algorithm at `(u, v)`; the last point equals
@@ -403,7 +413,8 @@ impl<T: Scalar> BezierPatch<T> {
     /// follows in the same way, since the differences in `i` and `j` commute.
     ///
     /// # Errors
-    /// [`Error::DerivativeOrder`] if `r > m` or `s > n`.
+    /// [`Error::DerivativeOrder`] if `r > m` or `s > n`; [`Error::Overflow`] for a control
+    /// point whose double overflows.
     ///
     /// ```
     /// use cagd::bezier::BezierPatch;
@@ -448,7 +459,11 @@ impl<T: Scalar> BezierPatch<T> {
                 }
                 diff
             })
-            .collect();
+            .collect::<Vec<_>>();
+        check_overflow(
+            "Bézier patch derivative control points",
+            coords.iter().flat_map(|x| x.iter()),
+        )?;
         Ok(BezierPatch { coords })
     }
 
@@ -519,7 +534,23 @@ impl<T: Scalar> BezierPatch<T> {
     pub fn try_eval_grid(&self, us: &[T], vs: &[T]) -> Result<PointGrid<T>> {
         check_params("Bézier patch u grid", us)?;
         check_params("Bézier patch v grid", vs)?;
-        Ok(self.grid(us, vs))
+        let mut grid = PointGrid::try_from_elem((us.len(), vs.len(), self.dim()), T::zero())?;
+        self.check_grid_work(us, vs)?;
+        self.fill_grid(us, vs, grid.as_mut_slice())?;
+        Ok(grid)
+    }
+
+    /// The work of one grid point against the default limit ([`crate::checked::point_work`]).
+    fn check_grid_work(&self, us: &[T], vs: &[T]) -> Result<()> {
+        let control_bits = crate::cost::max_bits(self.coords.iter().flat_map(|x| x.iter()));
+        crate::checked::point_work::<T>(
+            "Bézier patch grid point",
+            self.grid_cost(
+                crate::cost::max_bits(us),
+                crate::cost::max_bits(vs),
+                control_bits,
+            ),
+        )
     }
 
     /// The cost of one point of [`try_eval_grid`](Self::try_eval_grid): the basis rows in `u`
@@ -539,17 +570,19 @@ impl<T: Scalar> BezierPatch<T> {
         Cost::new(6 * m1 * n1, self.point_bits(u_bits, v_bits, control_bits))
     }
 
+    /// The grid for the infallible `Surface::eval_grid` (non-finite values, if any, are
+    /// left in place there).
     fn grid(&self, us: &[T], vs: &[T]) -> PointGrid<T> {
         let mut grid = PointGrid::from_elem((us.len(), vs.len(), self.dim()), T::zero());
         let out = grid.as_mut_slice();
-        self.fill_grid(us, vs, out);
+        let _ = self.fill_grid(us, vs, out);
         grid
     }
 
     /// The patch on the grid `us × vs` written into `out`, row by row:
     /// `out[(a·nv + b)·d + c]` is coordinate `c` of `x(us[a], vs[b])` (`(nu, nv, d)` row-major,
     /// the memory layout of [`try_eval_grid`](Self::try_eval_grid)'s array; see
-    /// [`crate::grid`]). Like [`eval`](Self::eval), any parameter is accepted.
+    /// [`crate::grid`]). Like [`try_eval_grid`](Self::try_eval_grid), any finite parameter is accepted (the polynomial continues outside `[0, 1]`).
     ///
     /// The algorithm (the same as `try_eval_grid`): the basis rows `B^m(us[a])` and
     /// `B^n(vs[b])` are computed once (`O(N·(m+n))` memory for an `N × N` grid); for each row
@@ -564,7 +597,10 @@ impl<T: Scalar> BezierPatch<T> {
     /// for rationals.
     ///
     /// # Errors
-    /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · vs.len() · d`.
+    /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · vs.len() · d`;
+    /// [`Error::NonFinite`] for a NaN or infinite parameter; [`Error::TooLarge`] when the work
+    /// of one point exceeds the default limit; [`Error::Overflow`] for a point whose double
+    /// overflows (the grid is written all the same).
     ///
     /// ```
     /// use cagd::bezier::BezierPatch;
@@ -579,12 +615,13 @@ impl<T: Scalar> BezierPatch<T> {
     pub fn eval_grid_into(&self, us: &[T], vs: &[T], out: &mut [T]) -> Result<()> {
         let len = crate::grid::grid_len("Bézier patch grid", &[us.len(), vs.len(), self.dim()])?;
         crate::grid::check_len("Bézier patch grid buffer", len, out)?;
-        self.fill_grid(us, vs, out);
-        Ok(())
+        check_finite("Bézier patch grid parameters", us.iter().chain(vs))?;
+        self.check_grid_work(us, vs)?;
+        self.fill_grid(us, vs, out)
     }
 
     /// [`eval_grid_into`](Self::eval_grid_into) after the length check.
-    fn fill_grid(&self, us: &[T], vs: &[T], out: &mut [T]) {
+    fn fill_grid(&self, us: &[T], vs: &[T], out: &mut [T]) -> Result<()> {
         let (m, n) = self.degree();
         let d = self.dim();
         let (rows_u, terms) = (m + 1, n + 1);
@@ -599,6 +636,7 @@ impl<T: Scalar> BezierPatch<T> {
         }
         let work = out.len().saturating_mul(terms);
         crate::grid::for_each_row(
+            "Bézier patch grid",
             out,
             vs.len() * d,
             work,
@@ -607,7 +645,7 @@ impl<T: Scalar> BezierPatch<T> {
                 crate::grid::weighted_sum_into(&bu[a * rows_u..(a + 1) * rows_u], &net, coeffs);
                 crate::grid::contract_row_planar(&bv, vs.len(), 0, terms, coeffs, row);
             },
-        );
+        )
     }
 }
 

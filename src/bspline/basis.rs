@@ -11,8 +11,9 @@ use crate::scalar::Scalar;
 /// which numbers from 0 too).
 ///
 /// # Errors
-/// [`Error::NonFinite`](crate::Error::NonFinite) for NaN or ±∞, [`Error::ParameterOutOfRange`](crate::Error::ParameterOutOfRange) unless
-/// `u_p ≤ u ≤ u_{n_control}`.
+/// [`Error::NonFinite`](crate::Error::NonFinite) for a NaN or infinite `u` or knot,
+/// [`Error::ParameterOutOfRange`](crate::Error::ParameterOutOfRange) unless
+/// `u_p ≤ u ≤ u_{n_control}`; the count errors of [`BSplineCurve::new`](super::BSplineCurve::new).
 ///
 /// ```
 /// use cagd::bspline::find_span;
@@ -24,6 +25,13 @@ use crate::scalar::Scalar;
 /// # Ok::<(), cagd::Error>(())
 /// ```
 pub fn find_span<T: Scalar>(p: usize, n_control: usize, knots: &[T], u: &T) -> Result<usize> {
+    crate::error::check_finite("knot vector", knots.iter())?;
+    span_of(p, n_control, knots, u)
+}
+
+/// [`find_span`] for knots already known to be finite (a [`KnotVector`](super::KnotVector)):
+/// `O(log n)`.
+pub(crate) fn span_of<T: Scalar>(p: usize, n_control: usize, knots: &[T], u: &T) -> Result<usize> {
     super::knots::check_knot_slice("knot vector", p, n_control, knots)?;
     let (lo, hi) = (&knots[p], &knots[n_control]);
     check_in_domain(u, lo, hi)?;
@@ -73,22 +81,56 @@ pub(crate) fn extended_span<T: Scalar>(
     } else {
         u
     };
-    find_span(p, n_control, knots, at).ok()
+    span_of(p, n_control, knots, at).ok()
 }
 
 /// The non-zero basis functions `N_{s−p,p}(u), …, N_{s,p}(u)` on the span `s`
 /// (from [`find_span`]), by the triangular scheme of Cox–de Boor (Piegl & Tiller, A2.2),
 /// in the operation order of octave-nurbs `basisfun`. They are non-negative and sum to one.
 ///
+/// # Errors
+/// [`Error::NonFinite`](crate::Error::NonFinite) for a NaN or infinite `u` or knot;
+/// [`Error::InvalidArgument`](crate::Error::InvalidArgument) unless the knots
+/// `u_{s−p+1} … u_{s+p}` the scheme reads exist (`p ≤ s + 1` and `s + p < knots.len()`);
+/// [`Error::TooLarge`](crate::Error::TooLarge) when the `(p+1)²` operations exceed the
+/// default work limit; [`Error::Overflow`](crate::Error::Overflow) for a value that is not a
+/// finite double (knots out of order or too close together).
+///
 /// ```
 /// use cagd::bspline::{basis_functions, find_span};
 /// let knots = [0.0, 0.0, 0.0, 1.0, 1.0, 1.0];
 /// // One span: the quadratic Bernstein polynomials.
-/// let n = basis_functions(2, &knots, find_span(2, 3, &knots, &0.5)?, &0.5);
+/// let n = basis_functions(2, &knots, find_span(2, 3, &knots, &0.5)?, &0.5)?;
 /// assert_eq!(n, vec![0.25, 0.5, 0.25]);
+/// assert!(basis_functions(2, &knots, 4, &0.5).is_err()); // u_6 does not exist
 /// # Ok::<(), cagd::Error>(())
 /// ```
-pub fn basis_functions<T: Scalar>(p: usize, knots: &[T], span: usize, u: &T) -> Vec<T> {
+pub fn basis_functions<T: Scalar>(p: usize, knots: &[T], span: usize, u: &T) -> Result<Vec<T>> {
+    crate::error::check_finite("B-spline parameter", std::iter::once(u))?;
+    crate::error::check_finite("knot vector", knots.iter())?;
+    let reads = span
+        .checked_add(p)
+        .filter(|&last| last < knots.len() && p <= span + 1);
+    if reads.is_none() {
+        return Err(crate::Error::InvalidArgument {
+            what: "B-spline basis span",
+            message: format!(
+                "the basis of degree {p} on span {span} reads the knots u_{{{span}+1−{p}}} … u_{{{span}+{p}}}, but there are {} knots",
+                knots.len()
+            ),
+        });
+    }
+    crate::checked::point_work::<T>(
+        "B-spline basis",
+        basis_cost(p, u.bits(), crate::cost::max_bits(knots)),
+    )?;
+    let values = basis_values(p, knots, span, u);
+    crate::error::check_overflow("B-spline basis", values.iter())?;
+    Ok(values)
+}
+
+/// [`basis_functions`] for a span and knots already checked.
+pub(crate) fn basis_values<T: Scalar>(p: usize, knots: &[T], span: usize, u: &T) -> Vec<T> {
     let mut n = vec![T::zero(); p + 1];
     let mut left = vec![T::zero(); p + 1];
     let mut right = vec![T::zero(); p + 1];
@@ -154,7 +196,10 @@ pub(crate) fn basis_functions_into<T: Scalar>(
 ///
 /// # Errors
 /// [`Error::InvalidArgument`](crate::Error::InvalidArgument) unless the knots `u_i … u_{i+p+1}`
-/// exist.
+/// exist; [`Error::NonFinite`](crate::Error::NonFinite) for a NaN or infinite `u` or knot;
+/// [`Error::TooLarge`](crate::Error::TooLarge) when the recursion's `2^(p+1)` calls exceed the
+/// default work limit (from degree 27 or so); [`Error::Overflow`](crate::Error::Overflow) for a
+/// value that is not a finite double.
 pub fn cox_de_boor<T: Scalar>(i: usize, p: usize, knots: &[T], u: &T) -> Result<T> {
     let needed = i.checked_add(p).and_then(|x| x.checked_add(1));
     if needed.is_none_or(|last| last >= knots.len()) {
@@ -166,7 +211,24 @@ pub fn cox_de_boor<T: Scalar>(i: usize, p: usize, knots: &[T], u: &T) -> Result<
             ),
         });
     }
-    Ok(cox_de_boor_unchecked(i, p, knots, u))
+    crate::error::check_finite("Cox-de Boor parameter", std::iter::once(u))?;
+    crate::error::check_finite("knot vector", knots[i..=i + p + 1].iter())?;
+    // The recursion makes 2^(p+1) − 1 calls, each reading up to the whole knot vector at the
+    // bottom: refused before it starts when that exceeds the default work limit.
+    let calls = 1u128
+        .checked_shl(p.saturating_add(1).min(127) as u32)
+        .unwrap_or(u128::MAX);
+    crate::checked::point_work::<T>(
+        "Cox-de Boor recursion",
+        crate::cost::Cost::new(calls.saturating_mul(4 + knots.len() as u128 - i as u128), 0).grown(
+            crate::cost::polynomial_bits(p, u.bits(), crate::cost::max_bits(knots)),
+        ),
+    )?;
+    crate::error::finite(
+        "Cox-de Boor basis function",
+        [cox_de_boor_unchecked(i, p, knots, u)],
+    )
+    .map(|[v]| v)
 }
 
 /// [`cox_de_boor`] for `i + p + 1 < knots.len()`.
@@ -202,11 +264,12 @@ pub(crate) fn cox_de_boor_unchecked<T: Scalar>(i: usize, p: usize, knots: &[T], 
 /// degree-`p` spline with `n_control` control points.
 ///
 /// # Errors
-/// [`Error::ParameterOutOfRange`](crate::Error::ParameterOutOfRange) outside the domain `[u_p, u_n]`.
+/// [`Error::ParameterOutOfRange`](crate::Error::ParameterOutOfRange) outside the domain
+/// `[u_p, u_n]`; those of [`find_span`] and [`basis_functions`].
 pub fn basis_all<T: Scalar>(p: usize, n_control: usize, knots: &[T], u: &T) -> Result<Vec<T>> {
     let s = find_span(p, n_control, knots, u)?;
-    let local = basis_functions(p, knots, s, u);
-    let mut all = vec![T::zero(); n_control];
+    let local = basis_functions(p, knots, s, u)?;
+    let mut all = crate::grid::try_filled("B-spline basis", n_control, T::zero())?;
     for (k, v) in local.into_iter().enumerate() {
         all[s - p + k] = v;
     }
@@ -223,7 +286,7 @@ pub fn basis_all<T: Scalar>(p: usize, n_control: usize, knots: &[T], u: &T) -> R
 /// ```
 pub fn basis_cost(p: usize, param_bits: u128, knot_bits: u128) -> Cost {
     Cost::new(
-        (p as u128 + 1).pow(2),
+        (p as u128 + 1).saturating_pow(2),
         polynomial_bits(p, span_bits(param_bits, knot_bits), 0),
     )
 }
@@ -247,7 +310,9 @@ pub fn curve_point_cost(
     coefficient_bits: u128,
 ) -> Cost {
     Cost::new(
-        basis_cost(p, param_bits, knot_bits).ops() + 2 * d as u128 * (p as u128 + 1),
+        basis_cost(p, param_bits, knot_bits)
+            .ops()
+            .saturating_add((2 * d as u128).saturating_mul(p as u128 + 1)),
         polynomial_bits(p, span_bits(param_bits, knot_bits), coefficient_bits),
     )
 }

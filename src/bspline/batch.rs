@@ -40,6 +40,7 @@
 //! four-lane and the one-point code do the same operations per point), nor on the threads.
 
 use super::grid::SpanFinder;
+use crate::error::Result;
 use crate::grid::for_each_row;
 use crate::scalar::Scalar;
 
@@ -215,10 +216,11 @@ impl<T: Scalar> Curve<'_, T> {
     }
 
     /// All points, degree `N − 1`, `DH` numbers per control point.
-    fn run<const N: usize, const DH: usize>(&self, ts: &[T], out: &mut [T]) {
+    fn run<const N: usize, const DH: usize>(&self, ts: &[T], out: &mut [T]) -> Result<()> {
         let d = DH - usize::from(self.project);
         let work = ts.len().saturating_mul(N * (N + DH));
         for_each_row(
+            "spline curve points",
             out,
             BLOCK * d,
             work,
@@ -237,7 +239,7 @@ impl<T: Scalar> Curve<'_, T> {
                     );
                 }
             },
-        );
+        )
     }
 }
 
@@ -256,7 +258,7 @@ pub(crate) fn curve_points_fast_into<T: Scalar>(
     project: bool,
     ts: &[T],
     out: &mut [T],
-) {
+) -> Result<()> {
     let n = control.len() / dh;
     let c = Curve {
         finder: SpanFinder::new(p, n, knots),
@@ -287,7 +289,13 @@ pub(crate) fn curve_points_fast_into<T: Scalar>(
 
 /// [`curve_points_fast_into`] for any degree and dimension, one point at a time: the
 /// operations of [`points`] with sizes known at run time.
-fn general<T: Scalar>(c: &Curve<'_, T>, p: usize, dh: usize, ts: &[T], out: &mut [T]) {
+fn general<T: Scalar>(
+    c: &Curve<'_, T>,
+    p: usize,
+    dh: usize,
+    ts: &[T],
+    out: &mut [T],
+) -> Result<()> {
     let d = dh - usize::from(c.project);
     let w = p + 1;
     let work = ts.len().saturating_mul(w * (w + dh));
@@ -302,57 +310,64 @@ fn general<T: Scalar>(c: &Curve<'_, T>, p: usize, dh: usize, ts: &[T], out: &mut
         right: vec![T::zero(); w],
         acc: vec![T::zero(); dh],
     };
-    for_each_row(out, BLOCK * d, work, init, |sc, block, chunk| {
-        for (t, x) in ts[block * BLOCK..].iter().zip(chunk.chunks_exact_mut(d)) {
-            let Some((s, u)) = c.finder.locate(t, &mut sc.hint) else {
-                x.iter_mut().for_each(|o| *o = t.clone() - t.clone());
-                continue;
-            };
-            if s != sc.s {
-                sc.s = s;
-                for j in 1..w {
-                    sc.kl[j] = c.knots[s + 1 - j].clone();
-                    sc.kr[j] = c.knots[s + j].clone();
-                    for r in 0..j {
-                        sc.inv[j * w + r] = T::one()
-                            / (c.knots[s + r + 1].clone() - c.knots[s + r + 1 - j].clone());
+    for_each_row(
+        "spline curve points",
+        out,
+        BLOCK * d,
+        work,
+        init,
+        |sc, block, chunk| {
+            for (t, x) in ts[block * BLOCK..].iter().zip(chunk.chunks_exact_mut(d)) {
+                let Some((s, u)) = c.finder.locate(t, &mut sc.hint) else {
+                    x.iter_mut().for_each(|o| *o = t.clone() - t.clone());
+                    continue;
+                };
+                if s != sc.s {
+                    sc.s = s;
+                    for j in 1..w {
+                        sc.kl[j] = c.knots[s + 1 - j].clone();
+                        sc.kr[j] = c.knots[s + j].clone();
+                        for r in 0..j {
+                            sc.inv[j * w + r] = T::one()
+                                / (c.knots[s + r + 1].clone() - c.knots[s + r + 1 - j].clone());
+                        }
                     }
                 }
-            }
-            for j in 1..w {
-                sc.left[j] = u.clone() - sc.kl[j].clone();
-                sc.right[j] = sc.kr[j].clone() - u.clone();
-            }
-            sc.n[0] = T::one();
-            for j in 1..w {
-                let mut saved = T::zero();
-                for r in 0..j {
-                    let t = sc.n[r].clone() * sc.inv[j * w + r].clone();
-                    let a = sc.right[r + 1].clone() * t.clone();
-                    sc.n[r] = if r == 0 { a } else { saved + a };
-                    saved = sc.left[j - r].clone() * t;
+                for j in 1..w {
+                    sc.left[j] = u.clone() - sc.kl[j].clone();
+                    sc.right[j] = sc.kr[j].clone() - u.clone();
                 }
-                sc.n[j] = saved;
-            }
-            let terms = &c.control[(s - p) * dh..(s + 1) * dh];
-            for (a, c0) in sc.acc.iter_mut().zip(terms) {
-                *a = sc.n[0].clone() * c0.clone();
-            }
-            for (ni, ci) in sc.n[1..].iter().zip(terms[dh..].chunks_exact(dh)) {
-                for (a, ck) in sc.acc.iter_mut().zip(ci) {
-                    *a = a.clone() + ni.clone() * ck.clone();
+                sc.n[0] = T::one();
+                for j in 1..w {
+                    let mut saved = T::zero();
+                    for r in 0..j {
+                        let t = sc.n[r].clone() * sc.inv[j * w + r].clone();
+                        let a = sc.right[r + 1].clone() * t.clone();
+                        sc.n[r] = if r == 0 { a } else { saved + a };
+                        saved = sc.left[j - r].clone() * t;
+                    }
+                    sc.n[j] = saved;
+                }
+                let terms = &c.control[(s - p) * dh..(s + 1) * dh];
+                for (a, c0) in sc.acc.iter_mut().zip(terms) {
+                    *a = sc.n[0].clone() * c0.clone();
+                }
+                for (ni, ci) in sc.n[1..].iter().zip(terms[dh..].chunks_exact(dh)) {
+                    for (a, ck) in sc.acc.iter_mut().zip(ci) {
+                        *a = a.clone() + ni.clone() * ck.clone();
+                    }
+                }
+                if c.project {
+                    let r = T::one() / sc.acc[dh - 1].clone();
+                    for (o, a) in x.iter_mut().zip(&sc.acc) {
+                        *o = a.clone() * r.clone();
+                    }
+                } else {
+                    x.clone_from_slice(&sc.acc);
                 }
             }
-            if c.project {
-                let r = T::one() / sc.acc[dh - 1].clone();
-                for (o, a) in x.iter_mut().zip(&sc.acc) {
-                    *o = a.clone() * r.clone();
-                }
-            } else {
-                x.clone_from_slice(&sc.acc);
-            }
-        }
-    });
+        },
+    )
 }
 
 /// Scratch of [`general`]: the loaded span's knots and reciprocals, the triangle, the sums.

@@ -2,7 +2,9 @@
 
 use nalgebra::{DMatrix, DVector};
 
-use super::basis::{basis_all, basis_functions, check_in_domain, extended_span, find_span};
+use super::basis::{
+    basis_all, basis_values, check_in_domain, curve_point_cost, extended_span, span_of,
+};
 use super::batch::curve_points_fast_into;
 use super::grid::curve_points_into;
 use super::knots::{check_knots, KnotVector};
@@ -131,7 +133,8 @@ impl<T: Scalar> BSplineCurve<T> {
         knots.extend(std::iter::repeat_n(b.clone(), n + 1));
         BSplineCurve {
             degree: n,
-            knots: KnotVector::new(knots).expect("a < b"),
+            // a < b with b − a and its reciprocal finite: the interval's own check.
+            knots: KnotVector::from_valid(knots),
             control: curve.control().clone(),
         }
     }
@@ -173,12 +176,32 @@ impl<T: Scalar> BSplineCurve<T> {
     /// order): [`eval`](Self::eval)'s value, bit for bit.
     ///
     /// # Errors
-    /// [`Error::NonFinite`] for NaN or ±∞, [`Error::ParameterOutOfRange`] outside the domain.
+    /// [`Error::NonFinite`] for NaN or ±∞, [`Error::ParameterOutOfRange`] outside the domain,
+    /// [`Error::TooLarge`] when one point's work ([`curve_point_cost`]) exceeds the default
+    /// limit, [`Error::Overflow`] for a point whose double overflows.
     pub fn try_eval(&self, u: T) -> Result<DVector<T>> {
         let (p, knots) = (self.degree, self.knots.as_slice());
-        let s = find_span(p, self.control.ncols(), knots, &u)?;
-        let n = basis_functions(p, knots, s, &u);
-        Ok(combine(&self.control, s - p, &n))
+        let s = span_of(p, self.control.ncols(), knots, &u)?;
+        self.check_point_work(u.bits())?;
+        let n = basis_values(p, knots, s, &u);
+        crate::checked::point(
+            "B-spline curve point",
+            self.dim(),
+            combine(&self.control, s - p, &n),
+        )
+    }
+
+    /// One point's work ([`curve_point_cost`]) at a parameter of `param_bits` bits against
+    /// the default limit ([`crate::checked::point_work`]).
+    fn check_point_work(&self, param_bits: u128) -> Result<()> {
+        let cost = curve_point_cost(
+            self.degree,
+            self.dim(),
+            param_bits,
+            crate::cost::max_bits(self.knots.as_slice()),
+            crate::cost::max_bits(self.control.iter()),
+        );
+        crate::checked::point_work::<T>("B-spline curve point", cost)
     }
 
     /// The point `C(u)` for any `u`: inside the domain [`try_eval`](Self::try_eval)'s value;
@@ -201,7 +224,7 @@ impl<T: Scalar> BSplineCurve<T> {
         let (p, knots) = (self.degree, self.knots.as_slice());
         match extended_span(p, self.control.ncols(), knots, &u) {
             Some(s) => {
-                let n = basis_functions(p, knots, s, &u);
+                let n = basis_values(p, knots, s, &u);
                 combine(&self.control, s - p, &n)
             }
             None => DVector::from_element(self.dim(), u.clone() - u),
@@ -216,7 +239,8 @@ impl<T: Scalar> BSplineCurve<T> {
     /// [`Error::ParameterOutOfRange`] outside the domain.
     pub fn de_boor(&self, u: T) -> Result<DVector<T>> {
         let (p, knots) = (self.degree, self.knots.as_slice());
-        let s = find_span(p, self.control.ncols(), knots, &u)?;
+        let s = span_of(p, self.control.ncols(), knots, &u)?;
+        self.check_point_work(u.bits())?;
         let mut d: Vec<DVector<T>> = (0..=p)
             .map(|j| self.control.column(s - p + j).into_owned())
             .collect();
@@ -229,7 +253,11 @@ impl<T: Scalar> BSplineCurve<T> {
                 d[j] = blend(&d[j - 1], one_minus, &d[j], alpha);
             }
         }
-        Ok(d.swap_remove(p))
+        crate::checked::point(
+            "B-spline curve point (de Boor)",
+            self.dim(),
+            d.swap_remove(p),
+        )
     }
 
     /// The points at the parameters `us`, one per column (`d × us.len()`), by
@@ -240,7 +268,9 @@ impl<T: Scalar> BSplineCurve<T> {
     /// [`Error::NonFinite`] or [`Error::ParameterOutOfRange`] for a parameter outside the
     /// domain.
     pub fn eval_many(&self, us: &[T]) -> Result<DMatrix<T>> {
-        let mut out = DMatrix::from_element(self.dim(), us.len(), T::zero());
+        let len = crate::grid::grid_len("B-spline curve points", &[us.len(), self.dim()])?;
+        let zeros = crate::grid::try_filled("B-spline curve points", len, T::zero())?;
+        let mut out = DMatrix::from_vec(self.dim(), us.len(), zeros);
         self.try_eval_many_into(us, out.as_mut_slice())?;
         Ok(out)
     }
@@ -249,11 +279,11 @@ impl<T: Scalar> BSplineCurve<T> {
     /// `out[k·d + c]` is coordinate `c` of `C(us[k])` (`us.len() × d` row-major, which is the
     /// storage of the `d × us.len()` matrix of [`eval_many`](Self::eval_many); see
     /// [`crate::grid`]). As [`eval`](Self::eval), outside the domain `[u_p, u_n]` the end
-    /// pieces continue and a NaN or infinite parameter gives a point of NaNs.
+    /// pieces continue; a NaN or infinite parameter is refused.
     ///
     /// The fast batch: per parameter the knot span `s` (the previous parameter's span or the
     /// next one is tried first, so sorted parameters cost `O(1)`; otherwise a binary search),
-    /// the `p + 1` non-zero basis values by the triangular scheme of [`basis_functions`] with
+    /// the `p + 1` non-zero basis values by the triangular scheme of [`basis_functions`](super::basis_functions) with
     /// its divisions by knot differences replaced by products with their reciprocals,
     /// computed once per span, then `Σ_{i=0}^{p} N_{s−p+i,p}(u) P_{s−p+i}`: `O(p² + p·d)`
     /// multiplications and additions and no division per point, the parameters of one span
@@ -263,12 +293,15 @@ impl<T: Scalar> BSplineCurve<T> {
     /// Accuracy: `|C_batch(u) − C(u)| ≤ (4p + 1) ε · max_i |P_i|` on the domain (every
     /// quantity of the scheme is non-negative, so relative roundings add up; derivation, and
     /// the bound of the continued end pieces beyond the domain, in the module docs of the
-    /// kernel), exact for rationals; NaN or ±∞ gives NaNs, as [`eval`](Self::eval). For the operations of
+    /// kernel), exact for rationals. For the operations of
     /// [`try_eval`](Self::try_eval) and octave-nurbs `bspeval`, bit for bit, use
     /// [`eval_many_exact_order_into`](Self::eval_many_exact_order_into).
     ///
     /// # Errors
-    /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · d`.
+    /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · d`; [`Error::NonFinite`] for a
+    /// NaN or infinite parameter; [`Error::TooLarge`] when one point's work exceeds the default
+    /// limit; [`Error::Overflow`] for a point whose double overflows (the buffer is written all
+    /// the same).
     ///
     /// ```
     /// use cagd::bspline::BSplineCurve;
@@ -285,21 +318,22 @@ impl<T: Scalar> BSplineCurve<T> {
         let d = self.dim();
         let len = crate::grid::grid_len("B-spline curve points", &[us.len(), d])?;
         crate::grid::check_len("B-spline curve point buffer", len, out)?;
+        check_finite("B-spline curve parameters", us.iter())?;
+        self.check_point_work(crate::cost::max_bits(us))?;
         let (p, knots) = (self.degree, self.knots.as_slice());
-        curve_points_fast_into(p, knots, self.control.as_slice(), d, false, us, out);
-        Ok(())
+        curve_points_fast_into(p, knots, self.control.as_slice(), d, false, us, out)
     }
 
     /// [`eval_many_into`](Self::eval_many_into) in the exact order of
     /// [`try_eval`](Self::try_eval): per parameter the span, the basis by the triangular
-    /// scheme of [`basis_functions`] with its divisions, in the operation order of
+    /// scheme of [`basis_functions`](super::basis_functions) with its divisions, in the operation order of
     /// octave-nurbs `basisfun`, then the sum from zero, `i` ascending — the values of
     /// `try_eval` (and of `bspeval`) bit for bit, at about three times the cost of the fast
     /// batch for cubics. Outside the domain the end pieces continue, as in `eval` and
     /// `eval_many_into`.
     ///
     /// # Errors
-    /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · d`.
+    /// As [`eval_many_into`](Self::eval_many_into).
     ///
     /// ```
     /// use cagd::bspline::BSplineCurve;
@@ -318,9 +352,10 @@ impl<T: Scalar> BSplineCurve<T> {
         let d = self.dim();
         let len = crate::grid::grid_len("B-spline curve points", &[us.len(), d])?;
         crate::grid::check_len("B-spline curve point buffer", len, out)?;
+        check_finite("B-spline curve parameters", us.iter())?;
+        self.check_point_work(crate::cost::max_bits(us))?;
         let (p, knots) = (self.degree, self.knots.as_slice());
-        curve_points_into(p, knots, self.control.as_slice(), d, false, us, out);
-        Ok(())
+        curve_points_into(p, knots, self.control.as_slice(), d, false, us, out)
     }
 
     /// [`eval_many_exact_order_into`](Self::eval_many_exact_order_into) for parameters that
@@ -371,6 +406,7 @@ impl<T: Scalar> BSplineCurve<T> {
                     tmp.clone() * (self.control[(r, i + 1)].clone() - self.control[(r, i)].clone());
             }
         }
+        crate::error::check_overflow("B-spline derivative control points", q.iter())?;
         Ok(BSplineCurve {
             degree: p - 1,
             knots: KnotVector::new(k[1..k.len() - 1].to_vec())?,
@@ -437,8 +473,8 @@ impl<T: Scalar> BSplineCurve<T> {
         let nc = c.ncols();
         let nu = u.len();
         let (n, r, m) = (nc - 1, nu - 1, nc - 1 + d + 1);
-        let a = find_span(d, nc, k, &u[0])?;
-        let b = find_span(d, nc, k, &u[r])? + 1;
+        let a = span_of(d, nc, k, &u[0])?;
+        let b = span_of(d, nc, k, &u[r])? + 1;
         let mut ic: Vec<DVector<T>> = vec![DVector::from_element(c.nrows(), T::zero()); nc + nu];
         let mut ik = vec![T::zero(); k.len() + nu];
         for (j, slot) in ic.iter_mut().enumerate().take(a - d + 1) {
@@ -480,6 +516,10 @@ impl<T: Scalar> BSplineCurve<T> {
             s -= 1;
         }
         let control = DMatrix::from_fn(c.nrows(), ic.len(), |row, col| ic[col][row].clone());
+        crate::error::check_overflow(
+            "B-spline control points after knot insertion",
+            control.iter(),
+        )?;
         Ok(BSplineCurve {
             degree: d,
             knots: KnotVector::new(ik)?,

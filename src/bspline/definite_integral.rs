@@ -23,7 +23,8 @@ impl<T: Scalar> BSplineCurve<T> {
     /// For `b < a` it is `−∫_b^a`. Rational: exact in `BigRational`.
     ///
     /// # Errors
-    /// [`Error::NonFinite`](crate::Error::NonFinite) for a NaN or infinite bound.
+    /// [`Error::NonFinite`](crate::Error::NonFinite) for a NaN or infinite bound;
+    /// [`Error::Overflow`](crate::Error::Overflow) for an integral whose double overflows.
     ///
     /// ```
     /// use cagd::bspline::{BSplineCurve, Extrapolation};
@@ -37,9 +38,19 @@ impl<T: Scalar> BSplineCurve<T> {
     /// # Ok::<(), cagd::Error>(())
     /// ```
     pub fn integral(&self, a: T, b: T, extrapolation: Extrapolation<T>) -> Result<DVector<T>> {
+        let value = self.integral_unchecked(a, b, extrapolation)?;
+        crate::error::finite("B-spline definite integral", value)
+    }
+
+    fn integral_unchecked(
+        &self,
+        a: T,
+        b: T,
+        extrapolation: Extrapolation<T>,
+    ) -> Result<DVector<T>> {
         check_finite("integration bounds", [&a, &b])?;
         if b < a {
-            return Ok(self.integral(b, a, extrapolation)?.map(|x| -x));
+            return Ok(self.integral_unchecked(b, a, extrapolation)?.map(|x| -x));
         }
         let f = crate::integral::bspline_antiderivative(self)?;
         let (lo, hi) = self.domain();

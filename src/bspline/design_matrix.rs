@@ -87,7 +87,7 @@ pub fn design_matrix<T: Scalar>(
             find_span(p, n, knots, x)?
         };
         first_column.push(span - p);
-        values.extend(basis_functions(p, knots, span, x));
+        values.extend(basis_functions(p, knots, span, x)?);
     }
     Ok(DesignMatrix {
         rows: xs.len(),

@@ -36,7 +36,11 @@ impl<T: Scalar> BSplineCurve<T> {
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] unless the knot vector is clamped (first and last knot
-    /// `p + 1` times: the domain is then the whole knot range).
+    /// `p + 1` times: the domain is then the whole knot range); [`Error::TooLarge`] for a
+    /// degree `p + r` above [`Limits::DEFAULT`](crate::limits::Limits::DEFAULT)`.max_degree`,
+    /// or when the estimated work ([`elevate_cost`](Self::elevate_cost), weighed by the size
+    /// of exact numbers) exceeds its `max_work` — before anything is computed;
+    /// [`Error::Overflow`] for a control point whose double overflows.
     ///
     /// ```
     /// use cagd::bspline::BSplineCurve;
@@ -66,7 +70,17 @@ impl<T: Scalar> BSplineCurve<T> {
         if r == 0 {
             return Ok(self.clone());
         }
-        let q = p + r;
+        let q = p.saturating_add(r);
+        let limits = crate::limits::Limits::DEFAULT;
+        limits.check_degree("B-spline degree elevation", q)?;
+        crate::checked::point_work::<T>(
+            "B-spline degree elevation",
+            self.elevate_cost(
+                r,
+                crate::cost::max_bits(self.control().iter()),
+                crate::cost::max_bits(knots),
+            ),
+        )?;
         let d = self.dim();
         // The new knots: each distinct knot r times more.
         let mut new_knots: Vec<T> = Vec::with_capacity(knots.len() * (r + 1));
@@ -122,6 +136,7 @@ impl<T: Scalar> BSplineCurve<T> {
             let point = polar_bezier(piece.control(), &ts);
             control.set_column(i, &point);
         }
+        crate::error::check_overflow("elevated B-spline control points", control.iter())?;
         BSplineCurve::new(q, new_knots, control)
     }
 
@@ -142,7 +157,10 @@ impl<T: Scalar> BSplineCurve<T> {
     /// # Ok::<(), cagd::Error>(())
     /// ```
     pub fn elevate_cost(&self, r: usize, control_bits: u128, knot_bits: u128) -> Cost {
-        let (p, q) = (self.degree() as u128, (self.degree() + r) as u128);
+        let (p, q) = (
+            self.degree() as u128,
+            self.degree().saturating_add(r) as u128,
+        );
         let n = self.control().ncols() as u128;
         let spans = n.saturating_sub(p);
         let combination = 3 * self.dim() as u128 + 3;
@@ -154,14 +172,16 @@ impl<T: Scalar> BSplineCurve<T> {
                     .saturating_mul(self.dim() as u128),
             );
         let new_points = n.saturating_add(spans.saturating_mul(r as u128));
-        let per_point = (q * (q + 1) / 2).saturating_mul(combination);
+        let per_point = (q.saturating_mul(q.saturating_add(1)) / 2).saturating_mul(combination);
         Cost::new(
             spans
                 .saturating_mul(per_span)
                 .saturating_add(new_points.saturating_mul(per_point)),
             polynomial_bits(
-                self.degree() + self.degree() + r,
-                2 * knot_bits,
+                self.degree()
+                    .saturating_add(self.degree())
+                    .saturating_add(r),
+                knot_bits.saturating_mul(2),
                 control_bits,
             ),
         )

@@ -19,16 +19,17 @@ pub enum Extrapolation<T> {
     Periodic,
 }
 
-/// The largest integer `≤ x`, in `T` (exact for rationals: the double's floor, corrected).
+/// The largest integer `≤ x`, in `T`: exact for rationals, the double's `floor` otherwise (NaN
+/// and ±∞ stay as they are). No loop: a double such as `10³⁰⁰`, where `k + 1 = k`, or a
+/// rational far beyond the range of doubles is floored in one step.
 pub(crate) fn floor<T: Scalar>(x: &T) -> T {
-    let mut k = T::from_f64(x.to_f64().floor()).unwrap_or_else(T::zero);
-    while &k > x {
-        k = k - T::one();
+    if let Some(q) = (x as &dyn std::any::Any).downcast_ref::<num_rational::BigRational>() {
+        let floored: Box<dyn std::any::Any> = Box::new(q.floor());
+        if let Ok(k) = floored.downcast::<T>() {
+            return *k;
+        }
     }
-    while &(k.clone() + T::one()) <= x {
-        k = k + T::one();
-    }
-    k
+    T::from_f64(x.to_f64().floor()).unwrap_or_else(|| x.clone())
 }
 
 /// `u` wrapped into `[lo, hi)`: `lo + (u − lo) mod (hi − lo)` (scipy's periodic parameter).
@@ -44,8 +45,9 @@ pub fn wrap_periodic<T: Scalar>(u: T, lo: &T, hi: &T) -> T {
     let offset = u - lo.clone();
     let k = floor(&(offset.clone() / period.clone()));
     let wrapped = lo.clone() + offset - k * period;
-    // Rounding in f64 may land on `hi` itself.
-    if &wrapped >= hi {
+    // Rounding in f64 may land on `hi` itself, or (for `u` far beyond the period, where
+    // `lo + offset` loses `lo`) below `lo`.
+    if &wrapped >= hi || &wrapped < lo {
         lo.clone()
     } else {
         wrapped

@@ -9,6 +9,7 @@
 //! (written `t − t`, NaN for both).
 
 use super::basis::{basis_functions_into, last_span};
+use crate::error::Result;
 use crate::grid::{contract_row_planar, for_each_row, weighted_sum_into};
 use crate::scalar::Scalar;
 
@@ -162,7 +163,7 @@ pub(crate) fn curve_points_into<T: Scalar>(
     project: bool,
     ts: &[T],
     out: &mut [T],
-) {
+) -> Result<()> {
     let n = control.len() / dh;
     let d = dh - usize::from(project);
     let finder = SpanFinder::new(p, n, knots);
@@ -203,6 +204,7 @@ pub(crate) fn curve_points_into<T: Scalar>(
     macro_rules! fixed {
         ($n:literal, $dh:literal) => {
             for_each_row(
+                "spline curve points",
                 out,
                 BLOCK * d,
                 work,
@@ -238,11 +240,18 @@ pub(crate) fn curve_points_into<T: Scalar>(
         (3, 1..=4) => by_dim!(4),
         (4, 1..=4) => by_dim!(5),
         (5, 1..=4) => by_dim!(6),
-        _ => for_each_row(out, BLOCK * d, work, init, |sc, block, chunk| {
-            for (t, x) in ts[block * BLOCK..].iter().zip(chunk.chunks_exact_mut(d)) {
-                point(sc, t, x);
-            }
-        }),
+        _ => for_each_row(
+            "spline curve points",
+            out,
+            BLOCK * d,
+            work,
+            init,
+            |sc, block, chunk| {
+                for (t, x) in ts[block * BLOCK..].iter().zip(chunk.chunks_exact_mut(d)) {
+                    point(sc, t, x);
+                }
+            },
+        ),
     }
 }
 
@@ -336,7 +345,12 @@ pub(crate) struct Net<'a, T> {
 /// The sums run along `u` first, where `BSplineSurface::try_eval` runs along `v` first: the
 /// values agree with it to a few units of `(p + q) ε · max |P_{i,j}|`, and exactly for
 /// rationals.
-pub(crate) fn surface_grid_into<T: Scalar>(s: &Net<'_, T>, us: &[T], vs: &[T], out: &mut [T]) {
+pub(crate) fn surface_grid_into<T: Scalar>(
+    s: &Net<'_, T>,
+    us: &[T],
+    vs: &[T],
+    out: &mut [T],
+) -> Result<()> {
     let (p, q) = (s.u.degree(), s.v.degree());
     let dh = s.dh;
     let d = dh - usize::from(s.project);
@@ -381,39 +395,46 @@ pub(crate) fn surface_grid_into<T: Scalar>(s: &Net<'_, T>, us: &[T], vs: &[T], o
         let homogeneous = if s.project { vs.len() * dh } else { 0 };
         (vec![T::zero(); nv * dh], vec![T::zero(); homogeneous])
     };
-    for_each_row(out, vs.len() * d, work, init, |(coeffs, hrow), a, row| {
-        let Some(span) = su[a] else {
-            row.iter_mut()
-                .for_each(|o| *o = us[a].clone() - us[a].clone());
-            return;
-        };
-        let block = nv * dh;
-        weighted_sum_into(
-            &bu[a * (p + 1)..(a + 1) * (p + 1)],
-            &s.net[(span - p) * block..(span + 1) * block],
-            coeffs,
-        );
-        if !s.project {
-            fill(coeffs, row);
-        } else if (2..=4).contains(&dh) && no_nan_v {
-            // Homogeneous sums kept in registers and projected at once, no second pass.
-            for &(b0, b1, span) in &runs {
-                let t = span.unwrap_or(q);
-                let c = &coeffs[(t - q) * dh..];
-                let x = &mut row[b0 * d..b1 * d];
-                match dh {
-                    2 => contract_project_row::<T, 2>(&bv, nvs, b0, q + 1, c, x),
-                    3 => contract_project_row::<T, 3>(&bv, nvs, b0, q + 1, c, x),
-                    _ => contract_project_row::<T, 4>(&bv, nvs, b0, q + 1, c, x),
+    for_each_row(
+        "spline surface grid",
+        out,
+        vs.len() * d,
+        work,
+        init,
+        |(coeffs, hrow), a, row| {
+            let Some(span) = su[a] else {
+                row.iter_mut()
+                    .for_each(|o| *o = us[a].clone() - us[a].clone());
+                return;
+            };
+            let block = nv * dh;
+            weighted_sum_into(
+                &bu[a * (p + 1)..(a + 1) * (p + 1)],
+                &s.net[(span - p) * block..(span + 1) * block],
+                coeffs,
+            );
+            if !s.project {
+                fill(coeffs, row);
+            } else if (2..=4).contains(&dh) && no_nan_v {
+                // Homogeneous sums kept in registers and projected at once, no second pass.
+                for &(b0, b1, span) in &runs {
+                    let t = span.unwrap_or(q);
+                    let c = &coeffs[(t - q) * dh..];
+                    let x = &mut row[b0 * d..b1 * d];
+                    match dh {
+                        2 => contract_project_row::<T, 2>(&bv, nvs, b0, q + 1, c, x),
+                        3 => contract_project_row::<T, 3>(&bv, nvs, b0, q + 1, c, x),
+                        _ => contract_project_row::<T, 4>(&bv, nvs, b0, q + 1, c, x),
+                    }
+                }
+            } else {
+                fill(coeffs, hrow);
+                for (x, h) in row.chunks_exact_mut(d).zip(hrow.chunks_exact(dh)) {
+                    finish(h, true, x);
                 }
             }
-        } else {
-            fill(coeffs, hrow);
-            for (x, h) in row.chunks_exact_mut(d).zip(hrow.chunks_exact(dh)) {
-                finish(h, true, x);
-            }
-        }
-    });
+        },
+    )
 }
 
 /// For every point of a run: the homogeneous sum `h = Σ_l w_b[l] · c_l` (`D` numbers,

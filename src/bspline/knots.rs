@@ -45,6 +45,7 @@ impl<T: Scalar> KnotVector<T> {
                 next: knots[k + 1].to_f64(),
             });
         }
+        crate::error::check_spacing(what, &knots)?;
         Ok(KnotVector { knots })
     }
 
@@ -92,6 +93,12 @@ impl<T: Scalar> KnotVector<T> {
         Ok(KnotVector { knots })
     }
 
+    /// Knots already known to be valid (sorted, finite, spaced as [`KnotVector::new`]
+    /// requires).
+    pub(crate) fn from_valid(knots: Vec<T>) -> Self {
+        KnotVector { knots }
+    }
+
     /// The knots.
     pub fn as_slice(&self) -> &[T] {
         &self.knots
@@ -115,7 +122,9 @@ impl<T: Scalar> KnotVector<T> {
     /// Whether the first and the last knot occur `p + 1` times each.
     pub fn is_clamped(&self, p: usize) -> bool {
         let m = self.knots.len();
-        m >= 2 * (p + 1)
+        p.checked_add(1)
+            .and_then(|q| q.checked_mul(2))
+            .is_some_and(|needed| m >= needed)
             && self.knots[..=p].iter().all(|k| *k == self.knots[0])
             && self.knots[m - p - 1..]
                 .iter()

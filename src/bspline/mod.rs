@@ -34,7 +34,7 @@ pub use design_matrix::{design_matrix, DesignMatrix};
 pub use extrapolate::{wrap_periodic, Extrapolation};
 pub use knots::KnotVector;
 pub use surface::BSplineSurface;
-pub use triangle::{cox_de_boor_triangle, triangle_cost};
+pub use triangle::{cox_de_boor_triangle, triangle_cost, try_cox_de_boor_triangle};
 
 pub(crate) use basis::check_in_domain;
 pub(crate) use batch::curve_points_fast_into;

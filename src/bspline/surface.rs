@@ -3,7 +3,7 @@
 use crate::grid::PointGrid;
 use nalgebra::{DMatrix, DVector};
 
-use super::basis::{basis_functions, extended_span, find_span};
+use super::basis::{basis_cost, basis_values, extended_span, span_of};
 use super::grid::{surface_grid_into, Net, SpanFinder};
 use super::knots::{check_knots, KnotVector};
 use crate::error::{check_finite, Error, Result};
@@ -157,14 +157,41 @@ impl<T: Scalar> BSplineSurface<T> {
     /// The point `S(u, v)` for `(u, v)` in the domain: [`Surface::eval`]'s value, bit for bit.
     ///
     /// # Errors
-    /// [`Error::NonFinite`] for NaN or ±∞, [`Error::ParameterOutOfRange`] outside the domain.
+    /// [`Error::NonFinite`] for NaN or ±∞, [`Error::ParameterOutOfRange`] outside the domain,
+    /// [`Error::TooLarge`] when one point's work exceeds the default limit,
+    /// [`Error::Overflow`] for a point whose double overflows.
     pub fn try_eval(&self, u: T, v: T) -> Result<DVector<T>> {
         let (p, q) = self.degrees;
         let (nu, nv) = self.coords[0].shape();
         let (ku, kv) = (self.knots.0.as_slice(), self.knots.1.as_slice());
-        let su = find_span(p, nu, ku, &u)?;
-        let sv = find_span(q, nv, kv, &v)?;
-        Ok(self.eval_on_spans(su, sv, &u, &v))
+        let su = span_of(p, nu, ku, &u)?;
+        let sv = span_of(q, nv, kv, &v)?;
+        self.check_point_work(u.bits(), v.bits())?;
+        crate::checked::point(
+            "B-spline surface point",
+            self.coords.len(),
+            self.eval_on_spans(su, sv, &u, &v),
+        )
+    }
+
+    /// One point's work — the two bases and `(p+1)(q+1)` products per coordinate — against
+    /// the default limit ([`crate::checked::point_work`]).
+    fn check_point_work(&self, u_bits: u128, v_bits: u128) -> Result<()> {
+        let (p, q) = self.degrees;
+        let knot_bits = crate::cost::max_bits(
+            self.knots
+                .0
+                .as_slice()
+                .iter()
+                .chain(self.knots.1.as_slice()),
+        );
+        let control_bits = crate::cost::max_bits(self.coords.iter().flat_map(|x| x.iter()));
+        let products = 2 * (p as u128 + 1) * (q as u128 + 1) * self.coords.len() as u128;
+        let cost = basis_cost(p, u_bits, knot_bits)
+            .and(basis_cost(q, v_bits, knot_bits))
+            .and(crate::cost::Cost::new(products, 0))
+            .grown(control_bits);
+        crate::checked::point_work::<T>("B-spline surface point", cost)
     }
 
     /// The point `S(u, v)` for any `(u, v)`: [`try_eval`](Self::try_eval)'s value in the
@@ -184,8 +211,8 @@ impl<T: Scalar> BSplineSurface<T> {
     fn eval_on_spans(&self, su: usize, sv: usize, u: &T, v: &T) -> DVector<T> {
         let (p, q) = self.degrees;
         let (ku, kv) = (self.knots.0.as_slice(), self.knots.1.as_slice());
-        let bu = basis_functions(p, ku, su, u);
-        let bv = basis_functions(q, kv, sv, v);
+        let bu = basis_values(p, ku, su, u);
+        let bv = basis_values(q, kv, sv, v);
         DVector::from_fn(self.coords.len(), |k, _| {
             let c = &self.coords[k];
             bu.iter().enumerate().fold(T::zero(), |acc, (a, nu_a)| {
@@ -201,8 +228,8 @@ impl<T: Scalar> BSplineSurface<T> {
     /// The surface on the grid `us × vs` written into `out`, row by row:
     /// `out[(a·nv + b)·d + c]` is coordinate `c` of `S(us[a], vs[b])` (`(nu, nv, d)` row-major,
     /// the memory layout of [`Surface::eval_grid`]; see [`crate::grid`]). As
-    /// [`eval`](Self::eval), outside the domain the end pieces continue and a NaN or infinite
-    /// parameter gives points of NaNs.
+    /// [`eval`](Self::eval), outside the domain the end pieces continue; a NaN or infinite
+    /// parameter is refused.
     ///
     /// The algorithm: the knot span and the `p + 1` (`q + 1`) non-zero basis values of every
     /// `u` (`v`) are computed once (`O(N·(p + q))` memory for an `N × N` grid, binary search
@@ -220,7 +247,10 @@ impl<T: Scalar> BSplineSurface<T> {
     /// `(p + q) ε · max |P_{i,j}|` in `f64` and exactly for rationals.
     ///
     /// # Errors
-    /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · vs.len() · d`.
+    /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · vs.len() · d`;
+    /// [`Error::NonFinite`] for a NaN or infinite parameter; [`Error::TooLarge`] when one
+    /// point's work exceeds the default limit; [`Error::Overflow`] for a point whose double
+    /// overflows (the grid is written all the same).
     ///
     /// ```
     /// use cagd::bspline::BSplineSurface;
@@ -239,14 +269,15 @@ impl<T: Scalar> BSplineSurface<T> {
         let d = self.coords.len();
         let len = crate::grid::grid_len("B-spline surface grid", &[us.len(), vs.len(), d])?;
         crate::grid::check_len("B-spline surface grid buffer", len, out)?;
-        self.fill_grid(us, vs, out, false);
-        Ok(())
+        check_finite("B-spline surface grid parameters", us.iter().chain(vs))?;
+        self.check_point_work(crate::cost::max_bits(us), crate::cost::max_bits(vs))?;
+        self.fill_grid(us, vs, out, false)
     }
 
     /// [`eval_grid_into`](Self::eval_grid_into) after the length check; with `project` the
     /// last coordinate is a weight and the points written are the others divided by it
     /// (`d − 1` numbers per point: the NURBS surface of this homogeneous one).
-    pub(crate) fn fill_grid(&self, us: &[T], vs: &[T], out: &mut [T], project: bool) {
+    pub(crate) fn fill_grid(&self, us: &[T], vs: &[T], out: &mut [T], project: bool) -> Result<()> {
         let (p, q) = self.degrees;
         let (nu, nv) = self.coords[0].shape();
         let dh = self.coords.len();
@@ -263,7 +294,7 @@ impl<T: Scalar> BSplineSurface<T> {
             dh,
             project,
         };
-        surface_grid_into(&net, us, vs, out);
+        surface_grid_into(&net, us, vs, out)
     }
 
     /// The grid `us × vs` as an array of shape `(us.len(), vs.len(), d)` by
@@ -271,7 +302,8 @@ impl<T: Scalar> BSplineSurface<T> {
     pub(crate) fn grid_array(&self, us: &[T], vs: &[T], d: usize, project: bool) -> PointGrid<T> {
         let mut grid = PointGrid::from_elem((us.len(), vs.len(), d), T::zero());
         let out = grid.as_mut_slice();
-        self.fill_grid(us, vs, out, project);
+        // The infallible `Surface::eval_grid`: non-finite points, if any, stay in place.
+        let _ = self.fill_grid(us, vs, out, project);
         grid
     }
 }

@@ -14,11 +14,18 @@
 //! function.
 
 use super::basis::cox_de_boor_unchecked;
+use super::KnotVector;
 use crate::cost::{polynomial_bits, Cost};
+use crate::error::{check_finite, check_overflow, Error, Result};
 use crate::scalar::Scalar;
 
 /// The triangle at `u`: `triangle[j][i] = N_{i,j}(u)` for `j = 0..=p`, `i = 0..m−j` (`m + 1`
-/// knots). Needs `p + 1 < knots.len()`.
+/// knots).
+///
+/// # Panics
+/// Unless `p + 2 ≤ knots.len()` (the triangle of degree `p` needs `p + 2` knots for one basis
+/// function): the command line and the Octave package check that before they call it;
+/// [`try_cox_de_boor_triangle`] answers an error instead.
 ///
 /// ```
 /// use cagd::bspline::cox_de_boor_triangle;
@@ -29,6 +36,50 @@ use crate::scalar::Scalar;
 /// assert_eq!(t[2], vec![0.25, 0.5, 0.25]);
 /// ```
 pub fn cox_de_boor_triangle<T: Scalar>(p: usize, knots: &[T], u: &T) -> Vec<Vec<T>> {
+    assert!(
+        p.checked_add(2).is_some_and(|needed| needed <= knots.len()),
+        "the Cox–de Boor triangle of degree {p} needs at least p + 2 knots, got {}",
+        knots.len()
+    );
+    triangle(p, knots, u)
+}
+
+/// [`cox_de_boor_triangle`] for any arguments.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] for fewer than `p + 2` knots; [`Error::NonFinite`] for a NaN or
+/// infinite `u` or knot; [`Error::DecreasingKnots`] for knots out of order;
+/// [`Error::TooLarge`] when the triangle's `(p+1)·m` values (for `m + 1` knots) exceed the
+/// default work limit; [`Error::Overflow`] for a value that is not a finite double (knots too
+/// close together).
+///
+/// ```
+/// use cagd::bspline::try_cox_de_boor_triangle;
+/// assert_eq!(try_cox_de_boor_triangle(1, &[0.0, 1.0, 2.0], &1.0)?[1], vec![1.0]);
+/// assert!(try_cox_de_boor_triangle(2, &[0.0, 1.0, 2.0], &1.0).is_err()); // needs 4 knots
+/// assert!(try_cox_de_boor_triangle(1, &[0.0, 1.0, 2.0], &f64::NAN).is_err());
+/// # Ok::<(), cagd::Error>(())
+/// ```
+pub fn try_cox_de_boor_triangle<T: Scalar>(p: usize, knots: &[T], u: &T) -> Result<Vec<Vec<T>>> {
+    if p.checked_add(2).is_none_or(|needed| needed > knots.len()) {
+        return Err(Error::InvalidArgument {
+            what: "Cox-de Boor triangle",
+            message: format!("degree {p} needs at least p + 2 knots, got {}", knots.len()),
+        });
+    }
+    check_finite("Cox-de Boor parameter", std::iter::once(u))?;
+    let knots_checked = KnotVector::new(knots.to_vec())?;
+    crate::checked::point_work::<T>(
+        "Cox-de Boor triangle",
+        triangle_cost(p, knots.len(), u.bits(), crate::cost::max_bits(knots)),
+    )?;
+    let levels = triangle(p, knots_checked.as_slice(), u);
+    check_overflow("Cox-de Boor triangle", levels.iter().flatten())?;
+    Ok(levels)
+}
+
+/// The triangle, for `p + 2 ≤ knots.len()`.
+fn triangle<T: Scalar>(p: usize, knots: &[T], u: &T) -> Vec<Vec<T>> {
     let m = knots.len() - 1;
     let mut levels: Vec<Vec<T>> = Vec::with_capacity(p + 1);
     levels.push(

@@ -3,7 +3,6 @@
 
 use nalgebra::DMatrix;
 
-use super::monomial::bezier_to_monomial_matrix;
 use crate::scalar::Scalar;
 
 /// The three cubic forms of the lecture notes.
@@ -36,7 +35,7 @@ impl CubicForm {
     /// | form | geometry `X` | `M` (rows) |
     /// |---|---|---|
     /// | `Hermite` | `[x(0) x(1) x'(0) x'(1)]` | `1 − 3u² + 2u³`, `3u² − 2u³`, `u − 2u² + u³`, `−u² + u³` |
-    /// | `Bezier` | `[b_0 b_1 b_2 b_3]` | [`bezier_to_monomial_matrix`]`(3)`: `B_0³ … B_3³` |
+    /// | `Bezier` | `[b_0 b_1 b_2 b_3]` | [`bezier_to_monomial_matrix`](super::bezier_to_monomial_matrix)`(3)`: `B_0³ … B_3³` |
     /// | `BSpline` | `[x_{i−1} x_i x_{i+1} x_{i+2}]` | `(1 − u)³/6`, `(4 − 6u² + 3u³)/6`, `(1 + 3u + 3u² − 3u³)/6`, `u³/6` |
     ///
     /// ```
@@ -50,7 +49,7 @@ impl CubicForm {
                 [[1, 0, -3, 2], [0, 0, 3, -2], [0, 1, -2, 1], [0, 0, -1, 1]],
                 1,
             ),
-            CubicForm::Bezier => bezier_to_monomial_matrix(3),
+            CubicForm::Bezier => super::monomial::cubic_bezier_matrix(),
             CubicForm::BSpline => int_matrix(
                 [[1, -3, 3, -1], [4, 0, -6, 3], [1, 3, 3, -3], [0, 0, 0, 1]],
                 6,

@@ -88,10 +88,10 @@ impl GeometryForm {
             GeometryForm::Hermite | GeometryForm::BSpline => {
                 conversion_matrix(self.cubic().unwrap_or(CubicForm::Bezier), CubicForm::Bezier)
             }
-            GeometryForm::Monomial => invert(&bezier_to_monomial_matrix::<T>(k - 1))?,
+            GeometryForm::Monomial => invert(&bezier_to_monomial_matrix::<T>(k - 1)?)?,
             GeometryForm::Algebraic => T::mat_mul(
                 &reversal(k),
-                &invert(&bezier_to_monomial_matrix::<T>(k - 1))?,
+                &invert(&bezier_to_monomial_matrix::<T>(k - 1)?)?,
             ),
         })
     }
@@ -116,9 +116,9 @@ impl GeometryForm {
             GeometryForm::Hermite | GeometryForm::BSpline => {
                 conversion_matrix(CubicForm::Bezier, self.cubic().unwrap_or(CubicForm::Bezier))
             }
-            GeometryForm::Monomial => bezier_to_monomial_matrix::<T>(k - 1),
+            GeometryForm::Monomial => bezier_to_monomial_matrix::<T>(k - 1)?,
             GeometryForm::Algebraic => {
-                T::mat_mul(&bezier_to_monomial_matrix::<T>(k - 1), &reversal(k))
+                T::mat_mul(&bezier_to_monomial_matrix::<T>(k - 1)?, &reversal(k))
             }
         })
     }
@@ -177,7 +177,10 @@ pub fn form_conversion<T: Scalar>(
 pub fn form_conversion_cost(k: usize, d: usize, geometry_bits: u128) -> Cost {
     let k = k as u128;
     Cost::new(
-        (4 * k * k * k).saturating_add(2 * d as u128 * k * k),
+        k.saturating_mul(k)
+            .saturating_mul(k)
+            .saturating_mul(4)
+            .saturating_add((2 * d as u128).saturating_mul(k).saturating_mul(k)),
         geometry_bits.saturating_add(2 * k + 8),
     )
 }

@@ -9,7 +9,11 @@ use crate::scalar::Scalar;
 /// absolute value in the column), generic so that it is exact in rationals.
 ///
 /// # Errors
-/// [`Error::ShapeMismatch`] for a non-square matrix, [`Error::Singular`] for a singular one.
+/// [`Error::ShapeMismatch`] for a non-square matrix, [`Error::NonFinite`] for a NaN or
+/// infinite entry, [`Error::Singular`] for a singular one, [`Error::TooLarge`] when the `n³`
+/// operations (weighed by the size of exact numbers) exceed the default work limit,
+/// [`Error::Overflow`] for an entry of the inverse whose double overflows (a nearly singular
+/// matrix).
 pub fn invert<T: Scalar>(m: &DMatrix<T>) -> Result<DMatrix<T>> {
     let n = m.nrows();
     if m.ncols() != n {
@@ -19,6 +23,13 @@ pub fn invert<T: Scalar>(m: &DMatrix<T>) -> Result<DMatrix<T>> {
             found: format!("{} × {}", n, m.ncols()),
         });
     }
+    crate::error::check_finite("matrix to invert", m.iter())?;
+    let size = n as u128;
+    crate::checked::point_work::<T>(
+        "matrix inverse",
+        crate::cost::Cost::new(size.saturating_pow(3).saturating_mul(4), 0)
+            .grown(size.saturating_mul(crate::cost::max_bits(m.iter()).saturating_add(1))),
+    )?;
     let mut a = m.clone();
     let mut inv = DMatrix::from_fn(n, n, |i, j| if i == j { T::one() } else { T::zero() });
     for col in 0..n {
@@ -54,6 +65,7 @@ pub fn invert<T: Scalar>(m: &DMatrix<T>) -> Result<DMatrix<T>> {
             }
         }
     }
+    crate::error::check_overflow("inverse matrix", inv.iter())?;
     Ok(inv)
 }
 

@@ -75,7 +75,9 @@ pub fn conversion_matrix<T: Scalar>(from: CubicForm, to: CubicForm) -> DMatrix<T
 /// The geometry `X_to = X_from · conversion_matrix(from, to)` (`d × 4` in, `d × 4` out).
 ///
 /// # Errors
-/// [`Error::ShapeMismatch`](crate::Error::ShapeMismatch) unless `geometry` has 4 columns.
+/// [`Error::ShapeMismatch`](crate::Error::ShapeMismatch) unless `geometry` has 4 columns,
+/// [`Error::NonFinite`](crate::Error::NonFinite) for a NaN or infinite entry,
+/// [`Error::Overflow`](crate::Error::Overflow) for a result whose double overflows.
 pub fn convert<T: Scalar>(
     geometry: &DMatrix<T>,
     from: CubicForm,
@@ -88,7 +90,10 @@ pub fn convert<T: Scalar>(
             found: format!("{} × {}", geometry.nrows(), geometry.ncols()),
         });
     }
-    Ok(T::mat_mul(geometry, &conversion_matrix(from, to)))
+    crate::error::check_finite("cubic geometry", geometry.iter())?;
+    let converted = T::mat_mul(geometry, &conversion_matrix(from, to));
+    crate::error::check_overflow("converted cubic geometry", converted.iter())?;
+    Ok(converted)
 }
 
 #[cfg(test)]

@@ -442,15 +442,19 @@ impl<T: Scalar, C: CurveDeriv<T>, D: CurveDeriv<T>> BicubicCoonsPatch<C, D, T> {
     /// twist differentiated as a rational function).
     ///
     /// # Errors
-    /// None today (the curves' derivatives are known by their type); the `Result` is kept
-    /// for the checks a later patch may need.
+    /// [`Error::NonFinite`] or [`Error::ParameterOutOfRange`] for a parameter outside
+    /// `[0, 1]`; [`Error::ShapeMismatch`] or [`Error::Overflow`] for a curve's derivative of
+    /// another dimension or not finite.
     pub fn eval_partials(&self, u: T, v: T) -> Result<SurfacePartials<T>> {
         let [c1, c2, d1, d2] = self.boundary.unit_curves();
         let [du0, du1, dv0, dv1] = self.unit_cross();
-        let deriv = |c: &dyn Fn(T) -> DVector<T>,
-                     _what: &'static str,
-                     t: &T|
-         -> Result<DVector<T>> { Ok(c(t.clone())) };
+        let unit = (T::zero(), T::one());
+        crate::param::check_parameter("bicubic Coons patch parameter u", &u, &unit)?;
+        crate::param::check_parameter("bicubic Coons patch parameter v", &v, &unit)?;
+        let dim = self.boundary.dim();
+        let deriv = |c: &dyn Fn(T) -> DVector<T>, what: &'static str, t: &T| {
+            crate::checked::point(what, dim, c(t.clone()))
+        };
         let at_u = self.values_at_u(&u);
         let at_v = self.values_at_v(&v);
         let at_u_d = [
@@ -485,7 +489,6 @@ impl<T: Scalar, C: CurveDeriv<T>, D: CurveDeriv<T>> BicubicCoonsPatch<C, D, T> {
                 )
             }
         };
-        let dim = self.boundary.dim();
         let x = self.combine(&u, &v, &at_u, &at_v);
         let xu = DVector::from_fn(dim, |k, _| {
             dot(&hu_d, &at_v, k) + dot(&hv, &at_u_d, k)
@@ -497,6 +500,9 @@ impl<T: Scalar, C: CurveDeriv<T>, D: CurveDeriv<T>> BicubicCoonsPatch<C, D, T> {
                 - self.corner_blend(&hu, &hv_d, &tw, k)
                 - self.corner_blend_twist_only(&hu, &hv, &tw_v, k)
         });
+        let x = crate::checked::point("bicubic Coons patch point", dim, x)?;
+        let xu = crate::checked::point("bicubic Coons patch derivative x_u", dim, xu)?;
+        let xv = crate::checked::point("bicubic Coons patch derivative x_v", dim, xv)?;
         Ok(SurfacePartials { x, xu, xv })
     }
 
@@ -564,6 +570,43 @@ impl<T: Scalar, C: CurveDeriv<T>, D: CurveDeriv<T>> Surface<T> for BicubicCoonsP
         let at_u = self.values_at_u(&u);
         let at_v = self.values_at_v(&v);
         self.combine(&u, &v, &at_u, &at_v)
+    }
+
+    /// [`eval`](Surface::eval) on `[0, 1]²`, the eight curves through their own `try_eval`
+    /// (their work bounded, their points checked), the point checked for overflow.
+    fn try_eval(&self, u: T, v: T) -> Result<DVector<T>> {
+        let unit = (T::zero(), T::one());
+        crate::param::check_parameter("bicubic Coons patch parameter u", &u, &unit)?;
+        crate::param::check_parameter("bicubic Coons patch parameter v", &v, &unit)?;
+        let dim = self.boundary.dim();
+        let checked = |c: &dyn Curve<T>, what: &'static str, t: &T| -> Result<DVector<T>> {
+            c.try_eval(t.clone())
+                .and_then(|p| crate::checked::point(what, dim, p))
+                .map_err(|e| crate::checked::named(what, e))
+        };
+        let [c1, c2, d1, d2] = self.boundary.unit_curves();
+        let [du0, du1, dv0, dv1] = self.unit_cross();
+        let at_u = [
+            checked(&c1, "Coons boundary curve c1", &u)?,
+            checked(&dv0, "cross-boundary curve x_v(u,0)", &u)?,
+            checked(&dv1, "cross-boundary curve x_v(u,1)", &u)?,
+            checked(&c2, "Coons boundary curve c2", &u)?,
+        ];
+        let at_v = [
+            checked(&d1, "Coons boundary curve d1", &v)?,
+            checked(&du0, "cross-boundary curve x_u(0,v)", &v)?,
+            checked(&du1, "cross-boundary curve x_u(1,v)", &v)?,
+            checked(&d2, "Coons boundary curve d2", &v)?,
+        ];
+        crate::checked::point(
+            "bicubic Coons patch point",
+            dim,
+            self.combine(&u, &v, &at_u, &at_v),
+        )
+    }
+
+    fn eval_grid_into(&self, us: &[T], vs: &[T], out: &mut [T]) -> Result<()> {
+        crate::checked::eval_grid_into(self, "bicubic Coons patch grid", us, vs, out)
     }
 
     /// The patch on the grid `us × vs`, shape `(us.len(), vs.len(), d)`; each of the eight

@@ -167,6 +167,7 @@ impl<T: Scalar, C: Curve<T>> CoonsPatch<C, T> {
         let d = self.boundary.dim();
         let len = crate::grid::grid_len("Coons patch grid", &[us.len(), vs.len(), d])?;
         crate::grid::check_len("Coons patch grid buffer", len, out)?;
+        crate::error::check_finite("Coons patch grid parameters", us.iter().chain(vs))?;
         if len == 0 {
             return Ok(());
         }
@@ -201,6 +202,7 @@ impl<T: Scalar, C: Curve<T>> CoonsPatch<C, T> {
         });
         let work = out.len().saturating_mul(4);
         crate::grid::for_each_row(
+            "Coons patch grid",
             out,
             vs.len() * d,
             work,
@@ -211,8 +213,7 @@ impl<T: Scalar, C: Curve<T>> CoonsPatch<C, T> {
                 let ea = &e[a * 2 * d..(a + 1) * 2 * d];
                 crate::grid::blend_row(&g, 2, ea, &f, &dd, row);
             },
-        );
-        Ok(())
+        )
     }
 
     /// The point `x(u, v)` with its parts `r_c`, `r_d`, `r_cd` (thesis `vrednostCoons`).
@@ -247,6 +248,16 @@ impl<T: Scalar, C: Curve<T>> Surface<T> for CoonsPatch<C, T> {
 
     fn eval(&self, u: T, v: T) -> DVector<T> {
         self.eval_parts(u, v).x
+    }
+
+    /// [`eval`](Surface::eval) on `[0, 1]²`, each boundary curve through its own `try_eval`
+    /// (its work bounded, its point checked: a curve returning a point of another dimension
+    /// is an [`Error::ShapeMismatch`](crate::Error::ShapeMismatch) naming it), the point
+    /// checked for overflow.
+    fn try_eval(&self, u: T, v: T) -> Result<DVector<T>> {
+        let f = (T::one() - u.clone(), u.clone());
+        let g = (T::one() - v.clone(), v.clone());
+        self.boundary.try_blend(&u, &v, &f, &g)
     }
 
     /// The patch on the grid `us × vs`, shape `(us.len(), vs.len(), d)` (the layout of the

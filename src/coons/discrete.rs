@@ -67,7 +67,9 @@ pub(crate) fn net_degree<T: Scalar>(
 ///
 /// # Errors
 /// [`Error::ShapeMismatch`] for no coordinates or coordinate matrices of different shapes,
-/// [`Error::TooFewPoints`] for an empty net, [`Error::NonFinite`] for non-finite entries.
+/// [`Error::TooFewPoints`] for an empty net, [`Error::NonFinite`] for non-finite entries,
+/// [`Error::Overflow`] for an interior point whose double overflows (a boundary near
+/// ±1.7·10³⁰⁸).
 ///
 /// ```
 /// use cagd::coons::discrete_coons;
@@ -102,6 +104,7 @@ pub fn discrete_coons<T: Scalar>(net: &[DMatrix<T>]) -> Result<Vec<DMatrix<T>>> 
             }
         }
     }
+    crate::error::check_overflow("discrete Coons net", out.iter().flat_map(|c| c.iter()))?;
     Ok(out)
 }
 

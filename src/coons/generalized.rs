@@ -271,6 +271,20 @@ impl<T: Scalar, C: Curve<T>> Surface<T> for GeneralizedCoonsPatch<C, T> {
         self.eval_parts(u, v).x
     }
 
+    /// [`eval`](Surface::eval) on `[0, 1]²`, each boundary curve through its own `try_eval`
+    /// and the point checked (as the bilinear Coons patch's `try_eval`).
+    fn try_eval(&self, u: T, v: T) -> Result<DVector<T>> {
+        crate::param::check_parameter("Coons patch parameter u", &u, &(T::zero(), T::one()))?;
+        crate::param::check_parameter("Coons patch parameter v", &v, &(T::zero(), T::one()))?;
+        let f = self.f.eval(u.clone());
+        let g = self.g.eval(v.clone());
+        self.boundary.try_blend(&u, &v, &f, &g)
+    }
+
+    fn eval_grid_into(&self, us: &[T], vs: &[T], out: &mut [T]) -> Result<()> {
+        crate::checked::eval_grid_into(self, "Coons patch grid", us, vs, out)
+    }
+
     /// The patch on the grid `us × vs`, shape `(us.len(), vs.len(), d)`; curves and blending
     /// functions are evaluated once per grid line.
     fn eval_grid(&self, us: &[T], vs: &[T]) -> crate::grid::PointGrid<T> {

@@ -5,7 +5,7 @@ use nalgebra::DMatrix;
 use super::discrete::net_degree;
 use crate::cost::Cost;
 use crate::error::{Error, Result};
-use crate::limits::Limits;
+use crate::limits::{exact_op_cost, Limits};
 use crate::scalar::Scalar;
 
 /// A symmetric 3×3 mask (notes (9)): every interior control point is the weighted sum of its
@@ -51,8 +51,9 @@ use crate::scalar::Scalar;
 /// let coons = Mask::<f64>::coons();
 /// assert_eq!((coons.alpha(), coons.beta()), (-0.25, 0.5));
 /// assert!(Mask::new(0.1, 0.2).is_err()); // 4α + 4β = 1.2
-/// let laplace = Mask::from_alpha(0.0); // the discrete harmonic (Laplace) mask, β = 1/4
+/// let laplace = Mask::from_alpha(0.0)?; // the discrete harmonic (Laplace) mask, β = 1/4
 /// assert_eq!(laplace.beta(), 0.25);
+/// # Ok::<(), cagd::Error>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Mask<T: Scalar = f64> {
@@ -103,9 +104,22 @@ impl<T: Scalar> Mask<T> {
     }
 
     /// The affine mask with corner weight `alpha` and edge weight `β = 1/4 − α`.
-    pub fn from_alpha(alpha: T) -> Self {
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] for a NaN or infinite `alpha`; [`Error::Overflow`] when `β`
+    /// overflows (`alpha` near `−f64::MAX`).
+    ///
+    /// ```
+    /// use cagd::coons::Mask;
+    /// assert_eq!(Mask::from_alpha(0.0)?.beta(), 0.25);
+    /// assert!(Mask::from_alpha(f64::NAN).is_err());
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn from_alpha(alpha: T) -> Result<Self> {
+        crate::error::check_finite("mask weight alpha", std::iter::once(&alpha))?;
         let beta = T::from_ratio(1, 4) - alpha.clone();
-        Mask { alpha, beta }
+        crate::error::check_overflow("mask weight beta = 1/4 − alpha", std::iter::once(&beta))?;
+        Ok(Mask { alpha, beta })
     }
 
     /// The corner weight `α`.
@@ -120,6 +134,8 @@ impl<T: Scalar> Mask<T> {
 
     /// The eigenvalue `λ_pq` of smallest modulus of the system on a net of degree `(m, n)`
     /// (see the type docs), as `(p, q, λ_pq)` in `f64`; `None` if the net has no interior.
+    /// It looks at every mode, `(m − 1)(n − 1)` of them: pass the degrees of a net held in
+    /// memory.
     ///
     /// ```
     /// use cagd::coons::Mask;
@@ -148,24 +164,54 @@ impl<T: Scalar> Mask<T> {
     }
 
     /// The cost of [`solve_mask`] on a net of degree `(m, n)`, one coordinate: banded
-    /// elimination of the `(m−1)(n−1)` unknowns with half-bandwidth `w = min(m, n)`,
-    /// `(m−1)(n−1)(w+1)²` operations (numbers of 0 bits: grow it by the size of the net and the
-    /// mask). [`solve_mask`] refuses this count above `limits.max_work`, counting each as one.
-    /// In exact arithmetic the operations took 60–160 ns each (N × N nets of random digits,
-    /// N = 40…120, 0.4 s to 12 s: the band starts mostly zero and the mask's weights are
-    /// small), so each weighs a sixteenth of [`exact_op_cost`](crate::limits::exact_op_cost)
-    /// ([`Cost::cheaper_when_exact`]).
+    /// elimination of the `N = (m−1)(n−1)` unknowns with half-bandwidth `w = min(m, n)`,
+    /// `N (w+1)²` operations, on numbers that grow as the elimination proceeds (grow it by the
+    /// size of the net and the mask).
+    ///
+    /// How they grow depends on the mask, measured in exact arithmetic (the band's entries
+    /// after each pivot, nets of `n × n` ones, `bench/discrete_coons_exact.sh`,
+    /// docs/PERFORMANCE.md):
+    /// - the **Coons mask** (`α = −β²`, the tensor product of two 1-D masks: `α = −1/4`,
+    ///   `β = 1/2` is the only affine one) keeps its numbers small (at most 19 bits for
+    ///   `n = 15`) and its band mostly zero: the operations took 60–160 ns each (N × N nets of
+    ///   random digits, N = 40…120), so each weighs a sixteenth of
+    ///   [`exact_op_cost`](crate::limits::exact_op_cost) ([`Cost::cheaper_when_exact`]);
+    /// - **every other mask** (the Laplace mask `α = 0`, `β = 1/4` among them) builds numbers of
+    ///   about 3 bits per unknown (at most 192 bits for `n = 10`, 1 032 for `n = 20`: the
+    ///   determinants of the leading blocks), so the operations are weighed at `3N` bits: the
+    ///   estimate is then 1.0–1.2 times the run time in nanoseconds, and ones(30, 90) — 70 s
+    ///   before, estimated at 1.3·10⁸ — is 1.2·10¹¹, refused at once.
+    ///
+    /// [`solve_mask`] refuses the estimate above `limits.max_work` before it starts, and in
+    /// exact arithmetic meters the elimination as it runs as well (every operation weighed by
+    /// the size of its operands), so an estimate that is too low still stops at the limit.
     ///
     /// ```
     /// use cagd::coons::Mask;
     /// let c = Mask::<f64>::coons().solve_cost(4, 3);
     /// assert_eq!(c.ops(), 3 * 2 * 16);
     /// assert_eq!(c.weigh(true), 96 * 1016 / 16);
+    /// // The Laplace mask: 6 unknowns, numbers of 18 bits.
+    /// let laplace = Mask::<f64>::new(0.0, 0.25).unwrap().solve_cost(4, 3);
+    /// assert_eq!((laplace.ops(), laplace.bits()), (96, 18));
+    /// assert_eq!(laplace.weigh(true), 96 * 1016);
     /// ```
     pub fn solve_cost(&self, m: usize, n: usize) -> Cost {
         let inner = m.min(n).saturating_sub(1) as u128;
         let outer = m.max(n).saturating_sub(1) as u128;
-        Cost::new(inner * outer * (inner + 2).pow(2), 0).cheaper_when_exact(16)
+        let unknowns = inner.saturating_mul(outer);
+        let ops = unknowns.saturating_mul((inner + 2).saturating_pow(2));
+        if self.is_tensor_product() {
+            Cost::new(ops, 0).cheaper_when_exact(16)
+        } else {
+            Cost::new(ops, unknowns.saturating_mul(BITS_PER_UNKNOWN))
+        }
+    }
+
+    /// Whether `α = −β²`: the mask is the tensor product of two one-dimensional ones (the
+    /// Coons mask), whose elimination keeps its numbers small.
+    fn is_tensor_product(&self) -> bool {
+        (self.alpha.clone() + self.beta.clone() * self.beta.clone()).is_zero()
     }
 
     fn singular(&self, m: usize, n: usize, p: usize, q: usize, eigenvalue: f64) -> Error {
@@ -180,6 +226,11 @@ impl<T: Scalar> Mask<T> {
         }
     }
 }
+
+/// How many bits the numbers of an exact elimination gain per unknown, for masks other than the
+/// Coons mask (measured: the largest entry of the band had 3.0–3.2 bits per unknown for nets of
+/// 10 × 10 to 20 × 20 points with the Laplace mask).
+const BITS_PER_UNKNOWN: u128 = 3;
 
 /// Relative size below which an eigenvalue of the mask system counts as zero.
 const SINGULAR_EIGENVALUE: f64 = 1e-12;
@@ -227,9 +278,15 @@ pub fn solve_mask<T: Scalar>(
     if m < 2 || n < 2 {
         return Ok(out);
     }
-    let (p, q, lambda) = mask
-        .smallest_eigenvalue(m, n)
-        .expect("m, n >= 2 give at least one mode");
+    // Sizes first: the eigenvalue search below visits every one of the (m−1)(n−1) modes.
+    // The band stores size × (3w + 1) entries, w = min(m, n): refuse what would not fit.
+    limits.check_system(
+        "mask net",
+        (m as u128 - 1) * (n as u128 - 1) * (3 * m.min(n) as u128 + 1),
+    )?;
+    let Some((p, q, lambda)) = mask.smallest_eigenvalue(m, n) else {
+        return Ok(out);
+    };
     let scale = 1.0 + 4.0 * mask.alpha.to_f64().abs() + 4.0 * mask.beta.to_f64().abs();
     if lambda.abs() <= SINGULAR_EIGENVALUE * scale {
         return Err(mask.singular(m, n, p, q, lambda));
@@ -251,10 +308,20 @@ pub fn solve_mask<T: Scalar>(
             (j - 1) * inner_len + (i - 1)
         }
     };
-    // The band stores size × (3w + 1) entries: refuse what would not fit in memory.
-    limits.check_system("mask net", size as u128 * (3 * w as u128 + 1))?;
-    // Banded elimination: about size · w² operations per coordinate.
-    limits.check_work("mask net", mask.solve_cost(m, n).ops())?;
+    // Banded elimination: about size · w² operations per coordinate, on numbers as large as
+    // the net's and the mask's grown by the elimination (Mask::solve_cost).
+    let exact = crate::grid::exact::is_rational::<T>();
+    let input_bits = crate::cost::max_bits(
+        net.iter()
+            .flat_map(|c| c.iter())
+            .chain([&mask.alpha, &mask.beta]),
+    );
+    let estimate = mask
+        .solve_cost(m, n)
+        .times(net.len() as u128)
+        .grown(input_bits)
+        .weigh(exact);
+    limits.check_work("mask net", estimate)?;
     let dims = net.len();
     let mut band = Band::new(size, w);
     let mut rhs = DMatrix::from_element(size, dims, T::zero());
@@ -286,9 +353,20 @@ pub fn solve_mask<T: Scalar>(
             }
         }
     }
-    let x = band
-        .solve(rhs)
-        .ok_or_else(|| mask.singular(m, n, p, q, lambda))?;
+    // In exact arithmetic the elimination is metered as well, by the sizes its numbers reach.
+    let budget = exact.then_some(u128::from(limits.max_work));
+    let x = match band.solve(rhs, budget) {
+        Solved::Done(x) => x,
+        Solved::Singular => return Err(mask.singular(m, n, p, q, lambda)),
+        Solved::OverBudget(spent) => {
+            return Err(Error::TooLarge {
+                what: "mask net (exact elimination, metered by the size of its numbers)",
+                requested: spent,
+                limit: u128::from(limits.max_work),
+                which: crate::limits::Limit::Work,
+            })
+        }
+    };
     for i in 1..m {
         for j in 1..n {
             let r = index(i, j);
@@ -297,6 +375,7 @@ pub fn solve_mask<T: Scalar>(
             }
         }
     }
+    crate::error::check_overflow("mask net", out.iter().flat_map(|c| c.iter()))?;
     Ok(out)
 }
 
@@ -327,7 +406,11 @@ impl<T: Scalar> Band<T> {
 
     /// Solves `A X = B` by Gaussian elimination with partial pivoting; `None` on an exactly
     /// zero pivot.
-    fn solve(mut self, mut b: DMatrix<T>) -> Option<DMatrix<T>> {
+    /// Solves the system for the right-hand sides `b` (one per column). With a `budget`, every
+    /// elimination update is charged two exact operations on numbers the size of its result
+    /// ([`exact_op_cost`]), and the solve stops once the total passes the budget.
+    fn solve(mut self, mut b: DMatrix<T>, budget: Option<u128>) -> Solved<T> {
+        let mut spent = 0u128;
         let (n, w) = (self.n, self.w);
         for k in 0..n {
             let last_row = (k + w).min(n - 1);
@@ -342,7 +425,7 @@ impl<T: Scalar> Band<T> {
                 }
             }
             if best.is_zero() {
-                return None;
+                return Solved::Singular;
             }
             if pivot != k {
                 for c in k..=last_col {
@@ -362,11 +445,20 @@ impl<T: Scalar> Band<T> {
                 self.set(r, k, T::zero());
                 for c in k + 1..=last_col {
                     let v = self.get(r, c) - factor.clone() * self.get(k, c);
+                    if budget.is_some() {
+                        spent = spent.saturating_add(2 * exact_op_cost(v.bits()));
+                    }
                     self.set(r, c, v);
                 }
                 for j in 0..b.ncols() {
                     b[(r, j)] = b[(r, j)].clone() - factor.clone() * b[(k, j)].clone();
+                    if budget.is_some() {
+                        spent = spent.saturating_add(2 * exact_op_cost(b[(r, j)].bits()));
+                    }
                 }
+            }
+            if budget.is_some_and(|limit| spent > limit) {
+                return Solved::OverBudget(spent);
             }
         }
         for k in (0..n).rev() {
@@ -380,8 +472,18 @@ impl<T: Scalar> Band<T> {
                 b[(k, j)] = s / diag.clone();
             }
         }
-        Some(b)
+        Solved::Done(b)
     }
+}
+
+/// How a band solve ended.
+enum Solved<T: Scalar> {
+    /// The solution.
+    Done(DMatrix<T>),
+    /// A zero pivot: the system is singular.
+    Singular,
+    /// The metered work (exact arithmetic) passed the budget: this much was spent.
+    OverBudget(u128),
 }
 
 #[cfg(test)]
@@ -404,7 +506,8 @@ mod tests {
             solve_mask(&net, &mask, &limits),
             Err(Error::TooLarge { requested, .. }) if requested == 99 * 49 * 51 * 51
         ));
-        // Exactly, a sixteenth of an exact operation each.
+        // Exactly, a sixteenth of an exact operation each (the Coons mask keeps its numbers
+        // small).
         let c = mask.solve_cost(3, 3).grown(64);
         assert_eq!(
             c.weigh(true),
@@ -426,9 +529,10 @@ mod tests {
         ] {
             band.set(r, c, v);
         }
-        let x = band
-            .solve(DMatrix::from_column_slice(3, 1, &[1.0, 2.0, 3.0]))
-            .unwrap();
+        let Solved::Done(x) = band.solve(DMatrix::from_column_slice(3, 1, &[1.0, 2.0, 3.0]), None)
+        else {
+            panic!("solvable")
+        };
         assert_eq!(x.as_slice(), &[0.0, 1.0, 2.0]);
     }
 
@@ -438,6 +542,42 @@ mod tests {
         for (r, c, v) in [(0, 0, 1.0), (0, 1, 2.0), (1, 0, 2.0), (1, 1, 4.0)] {
             band.set(r, c, v);
         }
-        assert!(band.solve(DMatrix::from_element(2, 1, 1.0)).is_none());
+        assert!(matches!(
+            band.solve(DMatrix::from_element(2, 1, 1.0), None),
+            Solved::Singular
+        ));
+    }
+
+    #[test]
+    fn the_exact_elimination_is_estimated_by_its_growth_and_metered() {
+        use num_rational::BigRational;
+        let q = |n: i64, d: i64| <BigRational as Scalar>::from_ratio(n, d);
+        let laplace = Mask::new(q(0, 1), q(1, 4)).unwrap();
+        let coons = Mask::<BigRational>::coons();
+        // A net of 30 × 30 ones (the 70-second case of ones(30, 90)): 28² unknowns, 3 bits each.
+        let (m, n) = (29, 29);
+        assert_eq!(laplace.solve_cost(m, n).bits(), 28 * 28 * 3);
+        assert_eq!(coons.solve_cost(m, n).bits(), 0);
+        let net = vec![DMatrix::from_element(30, 30, q(1, 1)); 3];
+        let err = solve_mask(&net, &laplace, &Limits::default()).unwrap_err();
+        assert!(
+            matches!(err, Error::TooLarge { which: crate::limits::Limit::Work, requested, .. } if requested > 100_000_000_000),
+            "{err:?}"
+        );
+        // The Coons mask on the same net stays cheap, and gives the ones back.
+        let solved = solve_mask(&net, &coons, &Limits::default()).unwrap();
+        assert!(solved[0].iter().all(|x| *x == q(1, 1)));
+        // Past an estimate that let it start, the meter stops the elimination at the limit.
+        let small = vec![DMatrix::from_fn(8, 8, |i, j| q((i * j % 7) as i64, 3)); 1];
+        let estimate = laplace.solve_cost(7, 7).grown(3).weigh(true);
+        let limits = Limits {
+            max_work: estimate as u64,
+            ..Limits::default()
+        };
+        match solve_mask(&small, &laplace, &limits) {
+            Ok(_) => {}
+            Err(Error::TooLarge { what, .. }) => assert!(what.contains("metered"), "{what}"),
+            Err(e) => panic!("{e:?}"),
+        }
     }
 }

@@ -302,8 +302,52 @@ impl<T: Scalar, C: Curve<T>> CoonsBoundary<C, T> {
     /// Octave bit for bit.
     pub(crate) fn blend(&self, u: &T, v: &T, f: &(T, T), g: &(T, T)) -> CoonsPoint<T> {
         let [c1, c2, d1, d2] = self.unit_curves();
-        let (c1, c2) = (c1.eval(u.clone()), c2.eval(u.clone()));
-        let (d1, d2) = (d1.eval(v.clone()), d2.eval(v.clone()));
+        let values = [
+            c1.eval(u.clone()),
+            c2.eval(u.clone()),
+            d1.eval(v.clone()),
+            d2.eval(v.clone()),
+        ];
+        self.blend_values(values, f, g)
+    }
+
+    /// The point `x(u, v)` for `(u, v)` in `[0, 1]²` as [`blend`](Self::blend) computes it
+    /// (bit for bit), with each boundary curve evaluated by its own `try_eval` — its work
+    /// bounded, its point checked — and the result checked: the `try_eval` of the Coons
+    /// patches.
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`], [`Error::ParameterOutOfRange`] for a parameter outside
+    /// `[0, 1]`; a curve's own error (named after it: `"Coons boundary curve c1"`, …) for a
+    /// point of another dimension, a non-finite point or too much work;
+    /// [`Error::Overflow`] for a blended point whose double overflows.
+    pub(crate) fn try_blend(&self, u: &T, v: &T, f: &(T, T), g: &(T, T)) -> Result<DVector<T>> {
+        let unit = (T::zero(), T::one());
+        crate::param::check_parameter("Coons patch parameter u", u, &unit)?;
+        crate::param::check_parameter("Coons patch parameter v", v, &unit)?;
+        let [c1, c2, d1, d2] = self.unit_curves();
+        let names = [
+            "Coons boundary curve c1",
+            "Coons boundary curve c2",
+            "Coons boundary curve d1",
+            "Coons boundary curve d2",
+        ];
+        let mut values: [DVector<T>; 4] = Default::default();
+        for (k, (curve, t)) in [(&c1, u), (&c2, u), (&d1, v), (&d2, v)]
+            .into_iter()
+            .enumerate()
+        {
+            values[k] = curve
+                .try_eval(t.clone())
+                .map_err(|e| crate::checked::named(names[k], e))?;
+        }
+        let x = self.blend_values(values, f, g).x;
+        crate::checked::point("Coons patch point", self.dim(), x)
+    }
+
+    /// `x = r_c + r_d − r_cd` from the curves' values `[c1(u), c2(u), d1(v), d2(v)]`.
+    fn blend_values(&self, values: [DVector<T>; 4], f: &(T, T), g: &(T, T)) -> CoonsPoint<T> {
+        let [c1, c2, d1, d2] = values;
         let w = corner_weights(f, g);
         let dim = self.dim();
         let mut point = CoonsPoint {

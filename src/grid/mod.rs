@@ -64,6 +64,13 @@ pub(crate) fn try_filled<T: Clone>(what: &'static str, len: usize, value: T) -> 
     Ok(v)
 }
 
+/// [`try_filled`] for the infallible functions of the crate: a length that cannot be held is a
+/// panic naming it (what their `# Panics` sections document), never an abort.
+pub(crate) fn filled<T: Clone>(what: &'static str, len: Option<usize>, value: T) -> Vec<T> {
+    let len = len.unwrap_or_else(|| panic!("{what}: the number of values overflows usize"));
+    try_filled(what, len, value).unwrap_or_else(|e| panic!("{e}"))
+}
+
 /// `rows · row_len` without overflow (an overflowing request is a shape error, not a panic).
 pub(crate) fn grid_len(what: &'static str, sizes: &[usize]) -> Result<usize> {
     sizes
@@ -80,20 +87,49 @@ pub(crate) fn grid_len(what: &'static str, sizes: &[usize]) -> Result<usize> {
 /// one shorter if `out.len()` is not a multiple of `row_len`), with a scratch value made by
 /// `init` once per block of rows. Runs on several threads when `work` (an estimate of the
 /// multiply-adds) is at least [`PARALLEL_MIN_WORK`] and the feature `parallel` is on.
-pub(crate) fn for_each_row<T, S, I, F>(out: &mut [T], row_len: usize, work: usize, init: I, row: F)
+///
+/// Every grid kernel of the crate writes through here, so this is where a non-finite value
+/// computed from finite input (a sum that overflowed) is caught: each chunk is scanned right
+/// after it is written, while it is in cache (in `f64`; exact numbers are always finite).
+///
+/// # Errors
+/// [`Error::Overflow`] naming `what` and the index in `out` of the first non-finite value
+/// (the whole of `out` is written all the same).
+pub(crate) fn for_each_row<T, S, I, F>(
+    what: &'static str,
+    out: &mut [T],
+    row_len: usize,
+    work: usize,
+    init: I,
+    row: F,
+) -> Result<()>
 where
     T: Scalar,
     I: Fn() -> S + Sync,
     F: Fn(&mut S, usize, &mut [T]) + Sync,
 {
     if row_len == 0 || out.is_empty() {
-        return;
+        return Ok(());
     }
-    let run_block = |first: usize, block: &mut [T]| {
+    let scan = !T::EXACT;
+    let run_block = |first: usize, block: &mut [T]| -> Option<usize> {
         let mut scratch = init();
+        let mut bad = None;
         for (r, chunk) in block.chunks_mut(row_len).enumerate() {
             row(&mut scratch, first + r, chunk);
+            if scan && bad.is_none() {
+                bad = chunk
+                    .iter()
+                    .position(|x| !x.is_finite_value())
+                    .map(|k| r * row_len + k);
+            }
         }
+        bad
+    };
+    let overflow = |index: usize, out: &[T]| Error::Overflow {
+        what,
+        index,
+        value: out[index].to_f64(),
     };
     #[cfg(feature = "parallel")]
     {
@@ -103,14 +139,24 @@ where
             use rayon::prelude::*;
             // A few blocks per thread, so that a thread slowed by other load can be helped out.
             let rows_per_block = rows.div_ceil(4 * threads).max(1);
-            out.par_chunks_mut(rows_per_block * row_len)
+            let bad = out
+                .par_chunks_mut(rows_per_block * row_len)
                 .enumerate()
-                .for_each(|(k, block)| run_block(k * rows_per_block, block));
-            return;
+                .filter_map(|(k, block)| {
+                    run_block(k * rows_per_block, block).map(|i| k * rows_per_block * row_len + i)
+                })
+                .min();
+            return match bad {
+                Some(index) => Err(overflow(index, out)),
+                None => Ok(()),
+            };
         }
     }
     let _ = work;
-    run_block(0, out);
+    match run_block(0, out) {
+        Some(index) => Err(overflow(index, out)),
+        None => Ok(()),
+    }
 }
 
 /// The rows `f(t)` for every `t` in `ts`, each of length `width`, one after the other
@@ -424,6 +470,7 @@ mod tests {
         for (rows, work) in [(7, 0), (1000, usize::MAX)] {
             let mut out = vec![0.0f64; rows * 3];
             for_each_row(
+                "rows",
                 &mut out,
                 3,
                 work,
@@ -432,11 +479,43 @@ mod tests {
                     *seen += 1;
                     chunk.fill(r as f64);
                 },
-            );
+            )
+            .unwrap();
             for (r, chunk) in out.chunks(3).enumerate() {
                 let r = r as f64;
                 assert_eq!(chunk, &[r, r, r]);
             }
+        }
+    }
+
+    #[test]
+    fn a_non_finite_value_written_is_reported_with_its_first_index() {
+        for (rows, work) in [(7, 0), (1000, usize::MAX)] {
+            let mut out = vec![0.0f64; rows * 3];
+            let err = for_each_row(
+                "rows",
+                &mut out,
+                3,
+                work,
+                || (),
+                |_, r, chunk| {
+                    if r >= 5 {
+                        chunk[1] = f64::MAX * 2.0;
+                    }
+                },
+            )
+            .unwrap_err();
+            assert_eq!(
+                err,
+                Error::Overflow {
+                    what: "rows",
+                    index: 16,
+                    value: f64::INFINITY
+                },
+                "{rows} rows"
+            );
+            // The whole buffer is written all the same.
+            assert!(out[3 * rows - 2].is_infinite());
         }
     }
 

@@ -3,6 +3,8 @@
 
 use std::ops::{Index, IndexMut};
 
+use crate::error::{Error, Limit, Result};
+
 /// An array of shape `(nu, nv, d)` in row-major order: entry `[[a, b, c]]` is coordinate `c` of
 /// the point at `(us[a], vs[b])` of a grid, or of the control point `b_{a,b}` of a net.
 ///
@@ -28,16 +30,50 @@ impl<T> PointGrid<T> {
     /// A grid of shape `(nu, nv, d)` whose entry `[[a, b, c]]` is `f((a, b, c))`.
     ///
     /// # Panics
-    /// If `nu · nv · d` overflows `usize` (no such grid fits in memory).
+    /// If `nu · nv · d` entries cannot be held (the product overflows `usize`, or the memory
+    /// cannot be reserved): a panic naming the shape, never an abort.
+    /// [`try_from_shape_fn`](Self::try_from_shape_fn) answers [`Error::TooLarge`] instead.
     pub fn from_shape_fn(
+        shape: (usize, usize, usize),
+        f: impl FnMut((usize, usize, usize)) -> T,
+    ) -> Self {
+        Self::try_from_shape_fn(shape, f).unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    /// [`from_shape_fn`](Self::from_shape_fn) for a shape that may not fit in memory.
+    ///
+    /// # Errors
+    /// [`Error::TooLarge`] (limit `Elements`) when `nu · nv · d` overflows or its memory
+    /// cannot be reserved (`try_reserve`), before `f` is called.
+    ///
+    /// ```
+    /// use cagd::grid::PointGrid;
+    /// assert!(PointGrid::try_from_shape_fn((1 << 20, 1 << 20, 3), |_| 0.0).is_err());
+    /// assert_eq!(PointGrid::try_from_shape_fn((1, 2, 1), |(_, b, _)| b)?.as_slice(), &[0, 1]);
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn try_from_shape_fn(
         (nu, nv, d): (usize, usize, usize),
         mut f: impl FnMut((usize, usize, usize)) -> T,
-    ) -> Self {
-        let len = nu
-            .checked_mul(nv)
-            .and_then(|n| n.checked_mul(d))
-            .expect("grid size overflows usize");
-        let mut data = Vec::with_capacity(len);
+    ) -> Result<Self> {
+        let requested = (nu as u128 * nv as u128).saturating_mul(d as u128);
+        let limit = (isize::MAX as usize / std::mem::size_of::<T>().max(1)) as u128;
+        let too_large = || Error::TooLarge {
+            what: "point grid",
+            requested,
+            limit,
+            which: Limit::Elements,
+        };
+        let len = usize::try_from(requested).map_err(|_| too_large())?;
+        let mut data = Vec::new();
+        data.try_reserve_exact(len).map_err(|_| too_large())?;
+        // An empty grid may still have 2⁴⁰ × 2⁴⁰ rows and columns: no loop over them.
+        if len == 0 {
+            return Ok(PointGrid {
+                shape: [nu, nv, d],
+                data,
+            });
+        }
         for a in 0..nu {
             for b in 0..nv {
                 for c in 0..d {
@@ -45,10 +81,10 @@ impl<T> PointGrid<T> {
                 }
             }
         }
-        PointGrid {
+        Ok(PointGrid {
             shape: [nu, nv, d],
             data,
-        }
+        })
     }
 
     /// A grid of shape `(nu, nv, d)` holding `data` in row-major order, or `None` unless
@@ -132,9 +168,25 @@ impl<T: Clone> PointGrid<T> {
     /// A grid of shape `(nu, nv, d)` with every entry `value`.
     ///
     /// # Panics
-    /// If `nu · nv · d` overflows `usize`.
+    /// As [`from_shape_fn`](Self::from_shape_fn): a grid that cannot be held (2⁴⁰ points,
+    /// say) is a panic naming its size, never an abort; [`try_from_elem`](Self::try_from_elem)
+    /// answers [`Error::TooLarge`] instead.
     pub fn from_elem(shape: (usize, usize, usize), value: T) -> Self {
         Self::from_shape_fn(shape, |_| value.clone())
+    }
+
+    /// [`from_elem`](Self::from_elem) for a shape that may not fit in memory.
+    ///
+    /// # Errors
+    /// As [`try_from_shape_fn`](Self::try_from_shape_fn).
+    ///
+    /// ```
+    /// use cagd::grid::PointGrid;
+    /// assert!(PointGrid::try_from_elem((1 << 40, 1, 1), 0.0).is_err());
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn try_from_elem(shape: (usize, usize, usize), value: T) -> Result<Self> {
+        Self::try_from_shape_fn(shape, |_| value.clone())
     }
 }
 

@@ -14,7 +14,8 @@ use nalgebra::{DMatrix, DVector};
 
 use super::check_nodes;
 use crate::cost::{polynomial_bits, Cost};
-use crate::error::{Error, Result};
+use crate::error::{check_overflow, Error, Result};
+use crate::limits::Limits;
 use crate::param::Curve;
 use crate::scalar::Scalar;
 
@@ -42,7 +43,11 @@ impl<T: Scalar> Lagrange<T> {
     /// `w_i = 1 / Π_{j≠i} (t_i − t_j)`.
     ///
     /// # Errors
-    /// See [`check_nodes`] (at least one node, finite, strictly increasing).
+    /// See [`check_nodes`] (at least one node, finite, strictly increasing, spaced so that a
+    /// double can divide by their gaps); [`Error::TooLarge`] when the `(m+1)²` operations of
+    /// the weights ([`weights_cost`](Self::weights_cost), weighed by the size of exact numbers)
+    /// exceed the default work limit; [`Error::Overflow`] for a weight whose double overflows
+    /// (about 1 000 equally spaced nodes on `[0, 1]`: their products `Π (t_i − t_j)` underflow).
     ///
     /// ```
     /// use cagd::lagrange::Lagrange;
@@ -53,7 +58,11 @@ impl<T: Scalar> Lagrange<T> {
     /// ```
     pub fn new(nodes: Vec<T>) -> Result<Self> {
         check_nodes("Lagrange nodes", &nodes, 1)?;
-        let weights = nodes
+        crate::checked::point_work::<T>(
+            "Lagrange barycentric weights",
+            Self::weights_cost(nodes.len(), crate::cost::max_bits(&nodes)),
+        )?;
+        let weights: Vec<T> = nodes
             .iter()
             .enumerate()
             .map(|(i, ti)| {
@@ -66,6 +75,8 @@ impl<T: Scalar> Lagrange<T> {
                 T::one() / p
             })
             .collect();
+        // 1001 equally spaced nodes on [0, 1]: the products underflow, the weights overflow.
+        check_overflow("Lagrange barycentric weights", weights.iter())?;
         Ok(Lagrange { nodes, weights })
     }
 
@@ -161,7 +172,9 @@ impl<T: Scalar> Lagrange<T> {
     /// for bit, no allocation).
     ///
     /// # Errors
-    /// [`Error::ShapeMismatch`] unless `out.len()` is the number of nodes.
+    /// [`Error::ShapeMismatch`] unless `out.len()` is the number of nodes;
+    /// [`Error::NonFinite`] for a NaN or infinite `t`; [`Error::Overflow`] for a value whose
+    /// double overflows (far from the nodes; the slice is written all the same).
     ///
     /// ```
     /// use cagd::lagrange::Lagrange;
@@ -174,8 +187,9 @@ impl<T: Scalar> Lagrange<T> {
     /// ```
     pub fn basis_into(&self, t: &T, out: &mut [T]) -> Result<()> {
         crate::grid::check_len("Lagrange basis values", self.nodes.len(), out)?;
+        crate::error::check_finite("Lagrange basis parameter", std::iter::once(t))?;
         self.fill_basis(t, out);
-        Ok(())
+        check_overflow("Lagrange basis values", out.iter())
     }
 
     /// The basis at `t` into `out` (of length `m + 1`).
@@ -197,10 +211,14 @@ impl<T: Scalar> Lagrange<T> {
     /// `Σ_i y_i L_i(t)` for values `y_i` (one per column of `values`, d × (m+1)).
     ///
     /// # Errors
-    /// [`Error::ShapeMismatch`] unless `values` has one column per node.
+    /// [`Error::ShapeMismatch`] unless `values` has one column per node;
+    /// [`Error::NonFinite`] for a NaN or infinite value or `t`; [`Error::Overflow`] for a
+    /// point whose double overflows.
     pub fn interpolate(&self, values: &DMatrix<T>, t: &T) -> Result<DVector<T>> {
         self.check_values(values)?;
-        Ok(self.combine(values, &self.basis(t)))
+        crate::error::check_finite("Lagrange values", values.iter())?;
+        crate::error::check_finite("Lagrange parameter", std::iter::once(t))?;
+        crate::error::finite("Lagrange interpolant", self.combine(values, &self.basis(t)))
     }
 
     fn check_values(&self, values: &DMatrix<T>) -> Result<()> {
@@ -234,11 +252,41 @@ impl<T: Scalar> Lagrange<T> {
     /// use cagd::lagrange::{Lagrange, NodePlacement};
     /// let uniform = Lagrange::new(NodePlacement::Uniform.nodes::<f64>(11)).unwrap();
     /// let chebyshev = Lagrange::new(NodePlacement::Chebyshev.nodes::<f64>(11)).unwrap();
-    /// let (lu, lc) = (uniform.lebesgue_constant(0.0, 1.0, 10001), chebyshev.lebesgue_constant(0.0, 1.0, 10001));
+    /// let (lu, lc) = (uniform.lebesgue_constant(0.0, 1.0, 10001)?, chebyshev.lebesgue_constant(0.0, 1.0, 10001)?);
     /// assert!(lu.value > 29.0 && lu.value < 30.0); // 29.89…
     /// assert!(lc.value < 2.5);                     // 2.4…
+    /// assert!(uniform.lebesgue_constant(0.0, 1.0, usize::MAX).is_err());
+    /// # Ok::<(), cagd::Error>(())
     /// ```
-    pub fn lebesgue_constant(&self, a: f64, b: f64, samples: usize) -> LebesgueEstimate {
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] for a NaN or infinite end; [`Error::TooLarge`] for more samples
+    /// than [`Limits::DEFAULT`]`.max_samples`, or more work than its `max_work`;
+    /// [`Error::Overflow`] when the estimate is not a finite double.
+    pub fn lebesgue_constant(&self, a: f64, b: f64, samples: usize) -> Result<LebesgueEstimate> {
+        crate::error::check_finite("Lebesgue constant interval", [&a, &b])?;
+        Limits::DEFAULT.check_samples("Lebesgue constant samples", samples)?;
+        crate::checked::point_work::<f64>(
+            "Lebesgue constant",
+            Cost::new(
+                (samples as u128).saturating_mul(4 * self.nodes.len() as u128),
+                0,
+            ),
+        )?;
+        let estimate = self.lebesgue_estimate(a, b, samples);
+        if !estimate.value.is_finite() {
+            return Err(Error::Overflow {
+                what: "Lebesgue constant",
+                index: 0,
+                value: estimate.value,
+            });
+        }
+        Ok(estimate)
+    }
+
+    /// [`lebesgue_constant`](Self::lebesgue_constant) for a finite interval and a number of
+    /// samples that can be held; the value may be infinite (a report, not a result).
+    pub(crate) fn lebesgue_estimate(&self, a: f64, b: f64, samples: usize) -> LebesgueEstimate {
         let samples = samples.max(2);
         let nodes: Vec<f64> = self.nodes.iter().map(|t| t.to_f64()).collect();
         let f64_basis = Lagrange::<f64> {
@@ -252,7 +300,7 @@ impl<T: Scalar> Lagrange<T> {
         };
         for t in crate::linspace(a, b, samples) {
             let value = f64_basis.lebesgue_function(&t);
-            if value > best.value {
+            if value > best.value || value.is_nan() {
                 best.value = value;
                 best.at = t;
             }
@@ -318,6 +366,14 @@ impl<T: Scalar> Curve<T> for LagrangeInterpolant<T> {
 
     fn eval(&self, t: T) -> DVector<T> {
         self.basis.combine(&self.values, &self.basis.basis(&t))
+    }
+
+    fn try_eval(&self, t: T) -> Result<DVector<T>> {
+        crate::checked::try_eval_curve(self, "Lagrange interpolant point", t)
+    }
+
+    fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
+        crate::checked::eval_many_into(self, "Lagrange interpolant points", ts, out)
     }
 
     /// [`Lagrange::interpolation_cost`] on the interpolant's own nodes and values.

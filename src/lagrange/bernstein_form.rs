@@ -2,11 +2,19 @@
 //! blending functions of a Gordon surface of Bézier curves written as one Bézier patch.
 
 use crate::bernstein::{elevate, product};
+use crate::error::Result;
+use crate::limits::Limits;
 use crate::scalar::Scalar;
 
 /// The Bernstein coefficients, at degree `to ≥ m` (`m + 1 = nodes.len()`), of the Lagrange
 /// basis `L_0, …, L_m` of `nodes` (row `i` holds `L_i`, `to + 1` coefficients). Nodes are not
-/// checked.
+/// checked for order (repeated ones give non-finite values, an error).
+///
+/// # Errors
+/// [`Error::NonFinite`](crate::Error::NonFinite) for a NaN or infinite node;
+/// [`Error::TooLarge`](crate::Error::TooLarge) for a degree (`to`, or the number of nodes)
+/// above [`Limits::DEFAULT`]`.max_degree`; [`Error::Overflow`](crate::Error::Overflow) for a
+/// coefficient whose double overflows (nodes close together, or repeated).
 ///
 /// Each `L_i` is the product of the linear factors `(t − t_j)/(t_i − t_j)`, `j ≠ i`, whose
 /// Bernstein coefficients are `[−t_j, 1 − t_j]/(t_i − t_j)`
@@ -16,11 +24,14 @@ use crate::scalar::Scalar;
 /// ```
 /// use cagd::lagrange::bernstein_coefficients;
 /// // The basis of {0, 1} is 1 − t = B_0^1 and t = B_1^1; at degree 2: [1, 1/2, 0], [0, 1/2, 1].
-/// let c = bernstein_coefficients(&[0.0, 1.0], 2);
+/// let c = bernstein_coefficients(&[0.0, 1.0], 2)?;
 /// assert_eq!(c, vec![vec![1.0, 0.5, 0.0], vec![0.0, 0.5, 1.0]]);
+/// # Ok::<(), cagd::Error>(())
 /// ```
-pub fn bernstein_coefficients<T: Scalar>(nodes: &[T], to: usize) -> Vec<Vec<T>> {
-    nodes
+pub fn bernstein_coefficients<T: Scalar>(nodes: &[T], to: usize) -> Result<Vec<Vec<T>>> {
+    crate::error::check_finite("Lagrange nodes", nodes.iter())?;
+    Limits::DEFAULT.check_degree("Lagrange basis in Bernstein form", to.max(nodes.len()))?;
+    let rows = nodes
         .iter()
         .enumerate()
         .map(|(i, ti)| {
@@ -34,7 +45,9 @@ pub fn bernstein_coefficients<T: Scalar>(nodes: &[T], to: usize) -> Vec<Vec<T>> 
             }
             elevate(&poly, to)
         })
-        .collect()
+        .collect::<Result<Vec<Vec<T>>>>()?;
+    crate::error::check_overflow("Lagrange basis in Bernstein form", rows.iter().flatten())?;
+    Ok(rows)
 }
 
 #[cfg(test)]
@@ -49,7 +62,7 @@ mod tests {
         let q = |n: i64, d: i64| <Q as Scalar>::from_ratio(n, d);
         let nodes = [q(-1, 2), q(0, 1), q(2, 3), q(1, 1)];
         let basis = Lagrange::new(nodes.to_vec()).unwrap();
-        let coeffs = bernstein_coefficients(&nodes, 5);
+        let coeffs = bernstein_coefficients(&nodes, 5).unwrap();
         for t in [q(1, 7), q(1, 2), q(9, 10), q(-1, 3)] {
             let want = basis.basis(&t);
             let b = bernstein_all(5, t.clone());

@@ -30,7 +30,7 @@
 //! Chebyshev–Lobatto points, where it grows like `(2/π) log m`. [`Lagrange::lebesgue_constant`]
 //! estimates it.
 
-use crate::error::{check_finite, Error, Result};
+use crate::error::{check_finite, check_spacing, Error, Result};
 use crate::scalar::Scalar;
 
 mod any_order;
@@ -45,6 +45,7 @@ pub use barycentric::{Lagrange, LagrangeInterpolant, LebesgueEstimate};
 pub use bernstein_form::bernstein_coefficients;
 pub use placement::{chebyshev_nodes, try_chebyshev_nodes, NodePlacement};
 pub use power::power_coefficients;
+pub(crate) use power::power_coefficients_unchecked;
 pub use product::basis_product;
 pub(crate) use product::basis_product_unchecked;
 
@@ -53,7 +54,10 @@ pub(crate) use product::basis_product_unchecked;
 ///
 /// # Errors
 /// [`Error::TooFewPoints`], [`Error::NonFinite`], [`Error::DuplicateNodes`] (two equal
-/// neighbours), [`Error::UnsortedNodes`] (a decrease) — whichever comes first, left to right.
+/// neighbours), [`Error::UnsortedNodes`] (a decrease) — whichever comes first, left to right;
+/// then [`Error::Overflow`] for nodes whose range or gaps no double can divide by
+/// ([`check_spacing`]: nodes from −10³⁰⁸ to 10³⁰⁸, or 5·10⁻³²⁴
+/// apart).
 ///
 /// ```
 /// use cagd::lagrange::check_nodes;
@@ -114,14 +118,33 @@ fn check<T: Scalar>(what: &'static str, nodes: &[T], min: usize, increasing: boo
                 });
             }
         }
-        return Ok(());
+        return check_spacing(what, nodes);
     }
-    for (second, x) in nodes.iter().enumerate() {
-        if let Some(first) = nodes[..second].iter().position(|y| y == x) {
-            return Err(duplicate(first, second));
+    // Sorted by value (then index), equal values are neighbours: O(n log n), not the O(n²) of
+    // comparing every pair. The pair reported is the first repeat in the given order.
+    let mut order: Vec<usize> = (0..nodes.len()).collect();
+    order.sort_by(|&a, &b| {
+        nodes[a]
+            .partial_cmp(&nodes[b])
+            .unwrap_or(std::cmp::Ordering::Equal)
+            .then(a.cmp(&b))
+    });
+    let mut found: Option<(usize, usize)> = None;
+    let mut k = 0;
+    while k < order.len() {
+        let mut end = k + 1;
+        while end < order.len() && nodes[order[end]] == nodes[order[k]] {
+            end += 1;
         }
+        if end - k > 1 && found.is_none_or(|(_, second)| order[k + 1] < second) {
+            found = Some((order[k], order[k + 1]));
+        }
+        k = end;
     }
-    Ok(())
+    match found {
+        Some((first, second)) => Err(duplicate(first, second)),
+        None => Ok(()),
+    }
 }
 
 #[cfg(test)]

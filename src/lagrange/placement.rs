@@ -57,24 +57,47 @@ pub enum NodePlacement {
 impl NodePlacement {
     /// `count` nodes on `[0, 1]`, increasing, with both ends included (for `count ≥ 2`).
     ///
+    /// # Panics
+    /// When `count` nodes cannot be allocated; [`try_nodes`](Self::try_nodes) refuses such a
+    /// count instead.
+    ///
     /// ```
     /// use cagd::lagrange::NodePlacement;
     /// assert_eq!(NodePlacement::Uniform.nodes::<f64>(3), vec![0.0, 0.5, 1.0]);
     /// assert_eq!(NodePlacement::Chebyshev.nodes::<f64>(3), vec![0.0, 0.5, 1.0]);
     /// ```
     pub fn nodes<T: Scalar>(self, count: usize) -> Vec<T> {
+        self.try_nodes(count).unwrap_or_else(|e| panic!("{e}"))
+    }
+
+    /// [`nodes`](Self::nodes), with [`Error::TooLarge`](crate::Error::TooLarge) for a count
+    /// whose nodes cannot be allocated instead of a panic.
+    ///
+    /// ```
+    /// use cagd::lagrange::NodePlacement;
+    /// assert!(NodePlacement::Uniform.try_nodes::<f64>(usize::MAX).is_err());
+    /// assert_eq!(NodePlacement::Uniform.try_nodes::<f64>(2)?, vec![0.0, 1.0]);
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn try_nodes<T: Scalar>(self, count: usize) -> crate::Result<Vec<T>> {
+        let mut out = crate::grid::try_filled("interpolation nodes", count, T::zero())?;
         match self {
             NodePlacement::Uniform => match count {
-                0 => Vec::new(),
-                1 => vec![T::from_ratio(1, 2)],
-                _ => (0..count)
-                    .map(|k| T::from_ratio(k as i64, (count - 1) as i64))
-                    .collect(),
+                0 => {}
+                1 => out[0] = T::from_ratio(1, 2),
+                _ => {
+                    let last = i64::try_from(count - 1).unwrap_or(i64::MAX);
+                    for (k, t) in out.iter_mut().enumerate() {
+                        *t = T::from_ratio(k as i64, last);
+                    }
+                }
             },
-            NodePlacement::Chebyshev => chebyshev_nodes(count)
-                .into_iter()
-                .map(|t| T::from_f64(t).unwrap_or_else(T::zero))
-                .collect(),
+            NodePlacement::Chebyshev => {
+                for (t, c) in out.iter_mut().zip(try_chebyshev_nodes(count)?) {
+                    *t = T::from_f64(c).unwrap_or_else(T::zero);
+                }
+            }
         }
+        Ok(out)
     }
 }

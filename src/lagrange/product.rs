@@ -12,8 +12,10 @@ use crate::scalar::Scalar;
 /// with the Octave reference bit for bit. `i` counts from 0 (the Octave code from 1).
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] unless `i < nodes.len()`; [`Error::DuplicateNodes`] when a node
-/// equals `t_i` (the factor would divide by zero).
+/// [`Error::InvalidArgument`] unless `i < nodes.len()`; [`Error::NonFinite`] for a NaN or
+/// infinite node or `t`; [`Error::DuplicateNodes`] when a node equals `t_i` (the factor would
+/// divide by zero); [`Error::Overflow`] for a value whose double overflows (nodes close
+/// together, `t` far away).
 ///
 /// ```
 /// use cagd::lagrange::basis_product;
@@ -30,6 +32,8 @@ pub fn basis_product<T: Scalar>(nodes: &[T], i: usize, t: &T) -> Result<T> {
             message: format!("index {i} is not one of the {} nodes", nodes.len()),
         });
     };
+    crate::error::check_finite("Lagrange nodes", nodes.iter())?;
+    crate::error::check_finite("Lagrange basis parameter", std::iter::once(t))?;
     if let Some(j) = nodes
         .iter()
         .enumerate()
@@ -42,7 +46,11 @@ pub fn basis_product<T: Scalar>(nodes: &[T], i: usize, t: &T) -> Result<T> {
             value: ti.to_f64(),
         });
     }
-    Ok(basis_product_unchecked(nodes, i, t))
+    crate::error::finite(
+        "Lagrange basis value",
+        [basis_product_unchecked(nodes, i, t)],
+    )
+    .map(|[v]| v)
 }
 
 /// [`basis_product`] for nodes already known to be distinct and an index known to be valid

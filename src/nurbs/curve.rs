@@ -69,7 +69,18 @@ impl<T: Scalar> NurbsCurve<T> {
             "NURBS curve weights",
             homogeneous.control().row(rows - 1).iter(),
         )?;
-        Ok(NurbsCurve { homogeneous })
+        let h = super::finish_homogeneous(
+            "NURBS curve weights",
+            rows - 1,
+            homogeneous.control().clone(),
+        )?;
+        let (p, knots) = (
+            homogeneous.degree(),
+            homogeneous.knots().as_slice().to_vec(),
+        );
+        Ok(NurbsCurve {
+            homogeneous: BSplineCurve::new(p, knots, h)?,
+        })
     }
 
     /// A B-spline curve as a NURBS curve with all weights 1.
@@ -131,7 +142,8 @@ impl<T: Scalar> NurbsCurve<T> {
     /// # Errors
     /// [`Error::NonFinite`] for NaN or ±∞, [`Error::ParameterOutOfRange`] outside the domain.
     pub fn try_eval(&self, u: T) -> Result<DVector<T>> {
-        Ok(project(&self.homogeneous.try_eval(u)?))
+        let h = self.homogeneous.try_eval(u)?;
+        crate::checked::point("NURBS curve point", self.dim(), project(&h))
     }
 
     /// The point `C(u)` for any `u`: [`try_eval`](Self::try_eval)'s value in the domain,
@@ -203,6 +215,7 @@ impl<T: Scalar> NurbsCurve<T> {
         let d = self.dim();
         let len = crate::grid::grid_len("NURBS curve points", &[us.len(), d])?;
         crate::grid::check_len("NURBS curve point buffer", len, out)?;
+        crate::error::check_finite("NURBS curve parameters", us.iter())?;
         let h = &self.homogeneous;
         let knots = h.knots().as_slice();
         kernel(
@@ -213,8 +226,7 @@ impl<T: Scalar> NurbsCurve<T> {
             true,
             us,
             out,
-        );
-        Ok(())
+        )
     }
 
     /// [`eval_many_exact_order_into`](Self::eval_many_exact_order_into) for parameters that
@@ -248,7 +260,9 @@ impl<T: Scalar> NurbsCurve<T> {
             .map(|(a, b)| a.clone() * b.clone())
             .collect();
         let sum = wn.iter().fold(T::zero(), |s, x| s + x.clone());
-        Ok(wn.into_iter().map(|x| x / sum.clone()).collect())
+        let r: Vec<T> = wn.into_iter().map(|x| x / sum.clone()).collect();
+        crate::error::check_overflow("NURBS rational basis", r.iter())?;
+        Ok(r)
     }
 
     /// The first derivative `C'(u) = (A'(u) − w'(u) C(u)) / w(u)`.
@@ -261,10 +275,11 @@ impl<T: Scalar> NurbsCurve<T> {
         let da = self.homogeneous.derivative()?.try_eval(u)?;
         let d = self.dim();
         let (w, dw) = (a[d].clone(), da[d].clone());
-        Ok(DVector::from_fn(d, |r, _| {
+        let derivative = DVector::from_fn(d, |r, _| {
             let p = a[r].clone() / w.clone();
             (da[r].clone() - dw.clone() * p) / w.clone()
-        }))
+        });
+        crate::checked::point("NURBS curve derivative", d, derivative)
     }
 
     /// The same curve with the knots `us` inserted (on the homogeneous curve, as
@@ -372,6 +387,7 @@ impl NurbsCurve<f64> {
                 _ => p[2] + cz * p[3],
             }
         });
+        crate::error::check_overflow("circular arc control points", h.iter())?;
         Self::from_homogeneous(BSplineCurve::new(2, knots, h)?)
     }
 
@@ -386,7 +402,7 @@ impl NurbsCurve<f64> {
 
 /// A curve kernel of the B-spline module: degree, knots, control points, numbers per control
 /// point, whether to project, parameters, output.
-type CurveKernel<T> = fn(usize, &[T], &[T], usize, bool, &[T], &mut [T]);
+type CurveKernel<T> = fn(usize, &[T], &[T], usize, bool, &[T], &mut [T]) -> Result<()>;
 
 /// `(x_1, …, x_d, w) ↦ (x_1/w, …, x_d/w)`.
 pub(crate) fn project<T: Scalar>(h: &DVector<T>) -> DVector<T> {

@@ -50,13 +50,67 @@ pub fn homogenize<T: Scalar>(
     }
     check_weights(what, weights.iter())?;
     let d = points.nrows();
-    Ok(DMatrix::from_fn(d + 1, points.ncols(), |r, c| {
+    let h = DMatrix::from_fn(d + 1, points.ncols(), |r, c| {
         if r < d {
             weights[c].clone() * points[(r, c)].clone()
         } else {
             weights[c].clone()
         }
-    }))
+    });
+    finish_homogeneous(what, h.nrows() - 1, h)
+}
+
+/// The homogeneous control points `h` (weights in row `weight_row`) with the weights scaled
+/// into a safe range, then checked: a rational curve does not change when all its weights
+/// (and weighted points) are multiplied by one factor, so weights whose largest lies outside
+/// `[2⁻⁶⁴, 2⁶⁴]` (all 10³⁰⁸, all 5·10⁻³²⁴) are scaled by the power of two that brings it into
+/// `[1, 2)` — exactly, bit for bit — before anything is computed with them; weights inside
+/// that range are left as given.
+///
+/// # Errors
+/// [`Error::Overflow`] when the weights span more than the range of doubles (the smallest
+/// would vanish), or a weighted point `w P` overflows.
+pub(crate) fn finish_homogeneous<T: Scalar>(
+    what: &'static str,
+    weight_row: usize,
+    mut h: DMatrix<T>,
+) -> Result<DMatrix<T>> {
+    if !crate::grid::exact::is_rational::<T>() {
+        let largest = h.row(weight_row).iter().map(T::to_f64).fold(0.0, f64::max);
+        if largest > 0.0 && !(2f64.powi(-64)..=2f64.powi(64)).contains(&largest) {
+            // 2^k with largest · 2^k in [1, 2), applied in two exact halves (2^k alone may
+            // overflow: k reaches 1074).
+            let k = -(largest.log2().floor() as i32);
+            let (a, b) = (k / 2, k - k / 2);
+            let (fa, fb) = (T::from_f64(2f64.powi(a)), T::from_f64(2f64.powi(b)));
+            if let (Some(fa), Some(fb)) = (fa, fb) {
+                h = h.map(|x| x * fa.clone() * fb.clone());
+            }
+            if let Some(index) = h.row(weight_row).iter().position(|w| w.is_zero()) {
+                return Err(Error::Overflow {
+                    what,
+                    index,
+                    value: f64::INFINITY,
+                });
+            }
+        }
+    }
+    crate::error::check_overflow(what, h.iter())?;
+    // The control points themselves, w P / w: a point near 1.8·10³⁰⁸ over a weight below one.
+    for (c, column) in h.column_iter().enumerate() {
+        let w = column[weight_row].clone();
+        for (r, x) in column.iter().enumerate().filter(|(r, _)| *r != weight_row) {
+            let value = x.clone() / w.clone();
+            if !value.is_finite_value() {
+                return Err(Error::Overflow {
+                    what: "NURBS control points (weighted point / weight)",
+                    index: c * h.nrows() + r,
+                    value: value.to_f64(),
+                });
+            }
+        }
+    }
+    Ok(h)
 }
 
 /// Every weight finite and positive.

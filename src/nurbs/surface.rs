@@ -64,6 +64,7 @@ impl<T: Scalar> NurbsSurface<T> {
             .map(|c| c.zip_map(&weights, |x, w| w * x))
             .collect();
         h.push(weights);
+        let h = finish_net(what, h)?;
         Ok(NurbsSurface {
             homogeneous: BSplineSurface::new(p, q, knots_u, knots_v, h)?,
         })
@@ -83,7 +84,18 @@ impl<T: Scalar> NurbsSurface<T> {
             });
         }
         check_weights("NURBS surface weights", c[c.len() - 1].iter())?;
-        Ok(NurbsSurface { homogeneous })
+        let h = finish_net("NURBS surface weights", c.to_vec())?;
+        let (p, q) = homogeneous.degrees();
+        let (ku, kv) = homogeneous.knots();
+        Ok(NurbsSurface {
+            homogeneous: BSplineSurface::new(
+                p,
+                q,
+                ku.as_slice().to_vec(),
+                kv.as_slice().to_vec(),
+                h,
+            )?,
+        })
     }
 
     /// The ruled surface between two NURBS curves in homogeneous space, as octave-nurbs
@@ -171,7 +183,8 @@ impl<T: Scalar> NurbsSurface<T> {
     /// # Errors
     /// [`Error::NonFinite`] for NaN or ±∞, [`Error::ParameterOutOfRange`] outside the domain.
     pub fn try_eval(&self, u: T, v: T) -> Result<DVector<T>> {
-        Ok(project(&self.homogeneous.try_eval(u, v)?))
+        let h = self.homogeneous.try_eval(u, v)?;
+        crate::checked::point("NURBS surface point", self.dim(), project(&h))
     }
 
     /// The point `S(u, v)` for any `(u, v)`: [`try_eval`](Self::try_eval)'s value in the
@@ -219,8 +232,8 @@ impl<T: Scalar> NurbsSurface<T> {
         let d = self.dim();
         let len = crate::grid::grid_len("NURBS surface grid", &[us.len(), vs.len(), d])?;
         crate::grid::check_len("NURBS surface grid buffer", len, out)?;
-        self.homogeneous.fill_grid(us, vs, out, true);
-        Ok(())
+        crate::error::check_finite("NURBS surface grid parameters", us.iter().chain(vs))?;
+        self.homogeneous.fill_grid(us, vs, out, true)
     }
 }
 
@@ -250,4 +263,17 @@ impl<T: Scalar> Surface<T> for NurbsSurface<T> {
     fn eval_grid_into(&self, us: &[T], vs: &[T], out: &mut [T]) -> Result<()> {
         NurbsSurface::eval_grid_into(self, us, vs, out)
     }
+}
+
+/// The homogeneous net (weights last) through [`super::finish_homogeneous`]: weights scaled
+/// into a safe range by a power of two, every number checked.
+fn finish_net<T: Scalar>(what: &'static str, net: Vec<DMatrix<T>>) -> Result<Vec<DMatrix<T>>> {
+    let (rows, cols) = net[0].shape();
+    let dh = net.len();
+    // One column per control point, the coordinates and the weight down it.
+    let flat = DMatrix::from_fn(dh, rows * cols, |k, c| net[k][(c % rows, c / rows)].clone());
+    let flat = super::finish_homogeneous(what, dh - 1, flat)?;
+    Ok((0..dh)
+        .map(|k| DMatrix::from_fn(rows, cols, |i, j| flat[(k, j * rows + i)].clone()))
+        .collect())
 }

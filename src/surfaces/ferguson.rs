@@ -171,6 +171,14 @@ impl<T: Scalar> Surface<T> for FergusonPatch<T> {
     fn eval(&self, u: T, v: T) -> DVector<T> {
         self.patch.eval(u, v)
     }
+
+    fn try_eval(&self, u: T, v: T) -> Result<DVector<T>> {
+        crate::checked::try_eval_surface(self, "Ferguson patch point", u, v)
+    }
+
+    fn eval_grid_into(&self, us: &[T], vs: &[T], out: &mut [T]) -> Result<()> {
+        crate::checked::eval_grid_into(self, "Ferguson patch grid", us, vs, out)
+    }
 }
 
 /// The cost of one point of a Ferguson patch in `d` coordinates, `x(u, v) = f(u)ᵀ G f(v)`:

@@ -88,4 +88,12 @@ impl<T: Scalar> Surface<T> for CubicMatrixPatch<T> {
             })
         })
     }
+
+    fn try_eval(&self, u: T, v: T) -> Result<DVector<T>> {
+        crate::checked::try_eval_surface(self, "matrix patch point", u, v)
+    }
+
+    fn eval_grid_into(&self, us: &[T], vs: &[T], out: &mut [T]) -> Result<()> {
+        crate::checked::eval_grid_into(self, "matrix patch grid", us, vs, out)
+    }
 }

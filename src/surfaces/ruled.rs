@@ -4,7 +4,7 @@ use nalgebra::DVector;
 
 use crate::cost::{blended, Cost};
 use crate::error::{Error, Result};
-use crate::param::{to_domain, usable_domain, Curve, Surface};
+use crate::param::{check_parameter, to_domain, usable_domain, Curve, Surface};
 use crate::scalar::Scalar;
 
 /// The ruled surface `x(u, v) = (1 − v) ¹x(u) + v ²x(u)`, `u, v ∈ ⟨0, 1⟩` (the lecture notes: the
@@ -71,13 +71,45 @@ impl<T: Scalar, C1: Curve<T>, C2: Curve<T>> Surface<T> for RuledSurface<C1, C2> 
 
     fn eval(&self, u: T, v: T) -> DVector<T> {
         let ((a0, a1), (b0, b1)) = (self.first.domain(), self.second.domain());
-        let a = self.first.eval(to_domain(&a0, &a1, u.clone()));
-        let b = self.second.eval(to_domain(&b0, &b1, u));
-        let w = T::one() - v.clone();
-        DVector::from_fn(a.len(), |r, _| {
-            w.clone() * a[r].clone() + v.clone() * b[r].clone()
-        })
+        let dim = self.first.dim();
+        // A curve returning a point of another dimension gives NaNs, never an index past it.
+        let a = crate::checked::of_dim(dim, self.first.eval(to_domain(&a0, &a1, u.clone())));
+        let b = crate::checked::of_dim(dim, self.second.eval(to_domain(&b0, &b1, u)));
+        ruling(a, b, v)
     }
+
+    /// [`eval`](Surface::eval) on `[0, 1]²`, each curve through its own `try_eval` (its
+    /// work bounded, its point checked), the point checked for overflow.
+    fn try_eval(&self, u: T, v: T) -> Result<DVector<T>> {
+        let unit = (T::zero(), T::one());
+        check_parameter("ruled surface parameter u", &u, &unit)?;
+        check_parameter("ruled surface parameter v", &v, &unit)?;
+        let ((a0, a1), (b0, b1)) = (self.first.domain(), self.second.domain());
+        let a = self
+            .first
+            .try_eval(to_domain(&a0, &a1, u.clone()))
+            .map_err(|e| crate::checked::named("ruled surface curve ¹x", e))?;
+        let b = self
+            .second
+            .try_eval(to_domain(&b0, &b1, u))
+            .map_err(|e| crate::checked::named("ruled surface curve ²x", e))?;
+        let dim = self.first.dim();
+        let a = crate::checked::point("ruled surface curve ¹x", dim, a)?;
+        let b = crate::checked::point("ruled surface curve ²x", dim, b)?;
+        crate::checked::point("ruled surface point", dim, ruling(a, b, v))
+    }
+
+    fn eval_grid_into(&self, us: &[T], vs: &[T], out: &mut [T]) -> Result<()> {
+        crate::checked::eval_grid_into(self, "ruled surface grid", us, vs, out)
+    }
+}
+
+/// `(1 − v) a + v b`, coordinate by coordinate.
+fn ruling<T: Scalar>(a: DVector<T>, b: DVector<T>, v: T) -> DVector<T> {
+    let w = T::one() - v.clone();
+    DVector::from_fn(a.len(), |r, _| {
+        w.clone() * a[r].clone() + v.clone() * b[r].clone()
+    })
 }
 
 /// The cost of one point of a ruled surface in `d` coordinates,

@@ -873,7 +873,7 @@ fn masks_with_four_alpha_plus_four_beta_one_reproduce_bilinear_nets() {
         })]
     };
     for alpha in [q(-1, 4), q(0, 1), q(1, 8), q(-1, 10)] {
-        let mask = Mask::from_alpha(alpha.clone());
+        let mask = Mask::from_alpha(alpha.clone()).unwrap();
         assert_eq!(Mask::new(alpha.clone(), mask.beta()).unwrap(), mask);
         for (m, n) in [(3, 3), (5, 2), (2, 6)] {
             let net = bilinear(m, n);
@@ -916,7 +916,7 @@ fn mask_solution_satisfies_the_mask_at_every_interior_point() {
 #[test]
 fn banded_solver_agrees_with_nalgebra_dense_lu() {
     // f64: a mask that needs pivoting (indefinite system) on nets of both orientations.
-    let mask = Mask::from_alpha(0.4);
+    let mask = Mask::from_alpha(0.4).unwrap();
     for (m, n) in [(7usize, 4usize), (4, 9), (12, 12)] {
         let z = DMatrix::from_fn(m + 1, n + 1, |i, j| ((i * 7 + j * 3) as f64).sin());
         let banded = solve_mask(std::slice::from_ref(&z), &mask, &cagd::Limits::default()).unwrap();
@@ -1028,7 +1028,11 @@ fn mask_errors() {
     }
     let netf: Vec<DMatrix<f64>> = net.iter().map(|b| b.map(|x| x.to_f64())).collect();
     assert!(matches!(
-        solve_mask(&netf, &Mask::from_alpha(0.5), &cagd::Limits::default()),
+        solve_mask(
+            &netf,
+            &Mask::from_alpha(0.5).unwrap(),
+            &cagd::Limits::default()
+        ),
         Err(Error::SingularMask { p: 2, q: 2, .. })
     ));
     // The same mask is fine on a net where no mode vanishes.

@@ -285,7 +285,7 @@ fn a_domain_that_cannot_be_mapped_onto_the_unit_interval_is_refused_by_name() {
     assert_eq!(
         err.to_string(),
         "Coons boundary curve d1: its domain [-inf, inf] cannot be mapped onto [0, 1] \
-         (expected finite ends, start below end)"
+         (expected finite ends, start below end, a width within the range of doubles)"
     );
     // Not a corner mismatch, whatever the curve's values.
     assert!(!matches!(err, Error::CornerMismatch { .. }));
@@ -575,7 +575,7 @@ fn every_curve_type_follows_the_one_rule() {
     // Its matrix form, and a monomial form given directly.
     check_curve(
         "matrix form",
-        &wide.matrix_form(),
+        &wide.matrix_form().unwrap(),
         (2.0, 6.0),
         &[(10.0, dvector![2.0, 4.0])],
     );

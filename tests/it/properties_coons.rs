@@ -265,7 +265,7 @@ proptest! {
             }
             out
         };
-        let mask = Mask::from_alpha(alpha);
+        let mask = Mask::from_alpha(alpha).unwrap();
         match solve_mask(&coords, &mask, &cagd::Limits::default()) {
             Ok(solved) => prop_assert_eq!(solve_mask(&map_net(&coords), &mask, &cagd::Limits::default()).unwrap(), map_net(&solved)),
             Err(e) => {

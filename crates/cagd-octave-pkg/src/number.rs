@@ -13,7 +13,7 @@
 //!
 //! `str2num` or `cellfun (@str2num, X)` turns the strings back into doubles.
 
-use cagd::scalar::rational_from_decimal;
+use cagd::exact::rational_from_decimal;
 use cagd_octave::literal::{parse_matrix_with, parse_params_with, LiteralScalar};
 use nalgebra::DMatrix;
 use num_rational::BigRational;
@@ -25,7 +25,7 @@ use cagd::limits::Limits;
 
 /// `f64` or an exact rational, with the package's input and output conventions.
 ///
-/// Whether it is the exact arithmetic is [`LiteralScalar::EXACT`].
+/// Whether it is the exact arithmetic is [`cagd::Scalar::EXACT`].
 pub trait Number: cagd::Scalar + LiteralScalar {
     /// An Octave double as this number: itself, or the shortest decimal that gives it back.
     fn from_input(x: f64) -> Self;
@@ -79,6 +79,7 @@ impl Number for BigRational {
         // `{:e}` prints the shortest digits that read back to `x`; the readers have refused
         // NaN and ±Inf before.
         rational_from_decimal(&format!("{x:e}"))
+            .ok()
             .or_else(|| <BigRational as cagd::Scalar>::from_f64(x))
             .unwrap_or_default()
     }

@@ -255,7 +255,7 @@ impl Nurbs<'_> {
     fn basis(&self, k: usize, t: f64) -> Result<(usize, Vec<f64>)> {
         let (p, n, knots) = (self.degrees[k], self.counts[k], self.knots[k]);
         let s = find_span(p, n, knots, &t)?;
-        Ok((s - p, basis_functions(p, knots, s, &t)))
+        Ok((s - p, basis_functions(p, knots, s, &t)?))
     }
 
     /// The homogeneous point of a volume from the basis of its three directions: the sums
@@ -754,7 +754,7 @@ pub fn basisfun(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     let n = uv.len();
     let out = sink.real(0, &[n, p + 1])?;
     for (row, (&s, u)) in spans.iter().zip(uv).enumerate() {
-        for (j, b) in basis_functions(p, &knots, s, u).into_iter().enumerate() {
+        for (j, b) in basis_functions(p, &knots, s, u)?.into_iter().enumerate() {
             out[row + n * j] = b;
         }
     }

@@ -487,21 +487,44 @@ impl<T: LiteralScalar> Script<T> {
             .unbind(name)
             .unwrap_or_else(|| DMatrix::from_vec(0, 0, Vec::new()));
         if new_shape != (r, c) {
+            let len = new_shape.0 * new_shape.1;
             let vector_growth = (r <= 1 && new_shape.0 == 1) || (c == 1 && new_shape.1 == 1);
+            // What growing costs: a vector grows at the end of its storage (the new elements,
+            // amortized O(1) each); a matrix gaining a row is copied whole. Both are charged
+            // against the script's budget before the copy, so `x(i,i) = i` for i = 1:2000
+            // (Σ i² ≈ 2.7·10⁹ elements copied, 19 s) stops once its copies exceed the budget.
+            let copied = if vector_growth || m.is_empty() {
+                (len - r * c) as u128
+            } else {
+                len as u128
+            };
+            self.charge_work(copied, at)?;
+            let too_large = || LiteralError::TooLarge {
+                at,
+                what: format!("`{name}` (more memory than can be reserved)"),
+                count: len as u128,
+                limit: max,
+            };
             m = if vector_growth || m.is_empty() {
-                // Column-major storage of a vector grows at its end: amortized O(1).
+                // Column-major storage of a vector grows at its end, in place (amortized).
                 let mut data: Vec<T> = m.data.into();
-                data.resize(new_shape.0 * new_shape.1, T::zero());
+                data.try_reserve(len - data.len())
+                    .map_err(|_| too_large())?;
+                data.resize(len, T::zero());
                 DMatrix::from_vec(new_shape.0, new_shape.1, data)
             } else {
-                let old = m;
-                DMatrix::from_fn(new_shape.0, new_shape.1, |i, j| {
-                    if i < r && j < c {
-                        old[(i, j)].clone()
-                    } else {
-                        T::zero()
+                let mut data: Vec<T> = Vec::new();
+                data.try_reserve_exact(len).map_err(|_| too_large())?;
+                for j in 0..new_shape.1 {
+                    for i in 0..new_shape.0 {
+                        data.push(if i < r && j < c {
+                            m[(i, j)].clone()
+                        } else {
+                            T::zero()
+                        });
                     }
-                })
+                }
+                DMatrix::from_vec(new_shape.0, new_shape.1, data)
             };
         }
         m[target] = x;
@@ -751,6 +774,55 @@ impl Reader<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use cagd::limits::Limits;
+
+    #[test]
+    fn growing_a_matrix_is_charged_for_its_copies() {
+        // A budget of 25 × 10 000 element operations. `x(i,i) = i` copies the whole matrix at
+        // every step (Σ i² elements): stopped near i = 90, where it once ran to the end (19 s
+        // at i = 2000 in a release build).
+        let limits = Limits {
+            max_elements: 10_000,
+            ..Limits::default()
+        };
+        let grow = "for i = 1:2000\n  x(i,i) = i;\nend\n";
+        let err = run::<f64>(grow, Env::with_limits(limits)).unwrap_err();
+        assert!(
+            matches!(&err, LiteralError::TooLarge { what, .. } if what.contains("the work of the script")),
+            "{err:?}"
+        );
+        // A vector grows at its end: one element per step, far within the same budget.
+        let s = run::<f64>(
+            "for i = 1:2000\n  x(i) = i;\nend\n",
+            Env::with_limits(limits),
+        )
+        .unwrap();
+        assert_eq!(s.value("x").unwrap().ncols(), 2000);
+    }
+
+    #[test]
+    fn sizes_beyond_the_machine_are_refused_even_with_the_limits_lifted() {
+        // Every limit at its largest: what would need terabytes is refused by the reservation
+        // (try_reserve), never an abort ("memory allocation of 8000000000000 bytes failed").
+        let lifted = Limits {
+            max_elements: usize::MAX,
+            max_iterations: usize::MAX,
+            ..Limits::default()
+        };
+        for script in [
+            "for i = 1:1e12\n  x = i;\nend\n",
+            "x = zeros(1e6);\n",
+            "x = linspace(0, 1, 1e12);\n",
+            "x(1e6, 1e6) = 1;\n",
+            "x = (1:1e6)' .* (1:1e6);\n",
+        ] {
+            let err = run::<f64>(script, Env::with_limits(lifted)).unwrap_err();
+            assert!(
+                matches!(err, LiteralError::TooLarge { .. }),
+                "{script}: {err:?}"
+            );
+        }
+    }
 
     #[test]
     fn chained_assignment_is_rejected() {

@@ -94,6 +94,7 @@ impl Kind {
             | E::TooFewControlPoints { .. }
             | E::TooFewCurves { .. } => Kind::Shape,
             E::NonFinite { .. } => Kind::NonFinite,
+            E::Overflow { .. } => Kind::Overflow,
             E::ParameterOutOfRange { .. } => Kind::Domain,
             E::DecreasingKnots { .. } | E::KnotCount { .. } => Kind::Knots,
             E::NonPositiveWeight { .. } => Kind::Weights,

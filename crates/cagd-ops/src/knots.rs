@@ -279,7 +279,8 @@ fn enough_control_points(p: usize, n: usize, roles: KnotRoles) -> Result<()> {
     ))
 }
 
-/// Finite and non-decreasing.
+/// Finite, non-decreasing, and with differences a double can hold and divide by
+/// ([`cagd::error::check_spacing`]).
 fn in_order<T: Scalar>(knots: &[T], what: &'static str) -> cagd::Result<()> {
     if let Some(index) = knots.iter().position(|k| !k.is_finite_value()) {
         return Err(cagd::Error::NonFinite {
@@ -295,7 +296,8 @@ fn in_order<T: Scalar>(knots: &[T], what: &'static str) -> cagd::Result<()> {
             previous: knots[k].to_f64(),
             next: knots[k + 1].to_f64(),
         }),
-        None => Ok(()),
+        // Knots so close (5·10⁻³²⁴ apart) or so far that their differences overflow.
+        None => cagd::error::check_spacing(what, knots),
     }
 }
 

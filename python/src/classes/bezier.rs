@@ -116,16 +116,16 @@ impl PyBezierCurve {
 
     /// `∫_0^1 b(t) dt = (b_0 + … + b_n)/(n + 1)` (the CAD notes), a point.
     fn integral<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        on!(self.inner, c => point_out(py, &cagd::integral::bezier_integral(c)))
+        on!(self.inner, c => point_out(py, &cagd::integral::bezier_integral(c).py()?))
     }
 
     /// The antiderivative `∫_0^t b`, degree `n + 1`, control points the partial sums
     /// `Σ_{j<i} b_j/(n+1)`.
-    fn antiderivative(&self) -> Self {
-        wrap_curve(match &self.inner {
-            Ex::F(c) => Ex::F(cagd::integral::bezier_antiderivative(c)),
-            Ex::E(c) => Ex::E(cagd::integral::bezier_antiderivative(c)),
-        })
+    fn antiderivative(&self) -> PyResult<Self> {
+        Ok(wrap_curve(match &self.inner {
+            Ex::F(c) => Ex::F(cagd::integral::bezier_antiderivative(c).py()?),
+            Ex::E(c) => Ex::E(cagd::integral::bezier_antiderivative(c).py()?),
+        }))
     }
 
     /// The same curve as a B-spline of one span (knots `0` and `1`, each `n + 1` times).

@@ -105,7 +105,7 @@ fn matrix_form_table(out: &mut String, files: &mut Files) -> Result<(), CliError
     let p = rows_q(&[&[0, 0], &[1, 1], &[2, 0], &[3, 1]]);
     let m = cubic_bezier_matrix::<Q>();
     let curve = BezierCurve::new(p.clone()).map_err(lib("course", INTERNAL))?;
-    let form = curve.matrix_form();
+    let form = curve.matrix_form().map_err(lib("course", INTERNAL))?;
     let ts: Vec<Q> = (0..=5).map(|k| q(k, 5)).collect();
     let table = DMatrix::from_columns(&ts.iter().map(|t| form.eval(t.clone())).collect::<Vec<_>>());
     let mut r = Report::<Q>::new();
@@ -335,7 +335,7 @@ fn lagrange(out: &mut String, files: &mut Files) -> Result<(), CliError> {
     let mut r = Report::<Q>::new();
     r.push(
         "coefficients of x⁴ … 1",
-        Value::Matrix(row(&f.coefficients())),
+        Value::Matrix(row(&f.coefficients().map_err(lib("course", INTERNAL))?)),
     );
     r.push(
         "f(5/2)",

@@ -8,7 +8,7 @@
 
 use std::collections::{BTreeMap, BTreeSet};
 
-use cagd::scalar::rational_from_decimal;
+use cagd::exact::rational_from_decimal;
 
 use super::eval::{is_builtin_name, walk};
 use super::parser::{chain, BinOp, Node, Row};
@@ -692,7 +692,7 @@ fn literal_integer(e: &Expr) -> Option<i64> {
     match &e.node {
         Node::Number { text, value } => {
             let exact = value.fract() == 0.0 && value.abs() < 9.0e15;
-            (exact && rational_from_decimal(text)?.is_integer()).then_some(*value as i64)
+            (exact && rational_from_decimal(text).ok()?.is_integer()).then_some(*value as i64)
         }
         Node::Neg(x) => literal_integer(x).map(|n| -n),
         _ => None,

@@ -143,7 +143,35 @@ fn shape<T: LiteralScalar>(m: &DMatrix<T>) -> String {
     format!("{}×{}", m.nrows(), m.ncols())
 }
 
-fn check_size(at: Position, what: &str, count: u128, env_max: usize) -> Result<(), LiteralError> {
+/// Room for `count` elements, after [`check_size`]: the memory is reserved with
+/// `try_reserve`, so a size that comes from the input and passes a limit raised beyond the
+/// machine (`CAGD_MAX_ELEMENTS=18446744073709551615`, then `1:1e12`) is refused, never an abort.
+pub(crate) fn reserve<T>(
+    at: Position,
+    what: &str,
+    count: u128,
+    env_max: usize,
+) -> Result<Vec<T>, LiteralError> {
+    check_size(at, what, count, env_max)?;
+    let mut v = Vec::new();
+    usize::try_from(count)
+        .ok()
+        .and_then(|n| v.try_reserve_exact(n).ok())
+        .ok_or_else(|| LiteralError::TooLarge {
+            at,
+            what: format!("{what} (more memory than can be reserved)"),
+            count,
+            limit: (isize::MAX as usize) / std::mem::size_of::<T>().max(1),
+        })?;
+    Ok(v)
+}
+
+pub(crate) fn check_size(
+    at: Position,
+    what: &str,
+    count: u128,
+    env_max: usize,
+) -> Result<(), LiteralError> {
     if count > env_max as u128 {
         return Err(LiteralError::TooLarge {
             at,
@@ -450,7 +478,8 @@ fn call<T: LiteralScalar>(
             let a = scalar_argument(name, &args[0], env)?;
             let b = scalar_argument(name, &args[1], env)?;
             let n = count_argument(name, &args[2], env)?;
-            check_size(at, "linspace", n as u128, max)?;
+            // Reserved first: `linspace` itself allocates `n` numbers infallibly.
+            drop(reserve::<T>(at, "linspace", n as u128, max)?);
             let values = T::linspace(&a, &b, n);
             Ok(DMatrix::from_row_slice(1, values.len(), &values))
         }
@@ -470,9 +499,10 @@ fn call<T: LiteralScalar>(
                     )))
                 }
             };
-            check_size(at, name, r as u128 * c as u128, max)?;
+            let mut data = reserve(at, name, r as u128 * c as u128, max)?;
             let fill = if name == "zeros" { T::zero() } else { T::one() };
-            Ok(DMatrix::from_element(r, c, fill))
+            data.resize(r * c, fill);
+            Ok(DMatrix::from_vec(r, c, data))
         }
         "numel" | "length" => {
             let x = one_argument(name, args, at, env)?;
@@ -635,9 +665,8 @@ fn elementwise<T: LiteralScalar>(
             ),
         });
     };
-    check_size(at, "the result", r as u128 * c as u128, max)?;
+    let mut data = reserve(at, "the result", r as u128 * c as u128, max)?;
     let in_array = !(a.len() == 1 && b.len() == 1);
-    let mut data = Vec::with_capacity(r * c);
     for j in 0..c {
         for i in 0..r {
             let x = &a[(if ar == 1 { 0 } else { i }, if ac == 1 { 0 } else { j })];
@@ -780,14 +809,13 @@ fn matrix_product<T: LiteralScalar>(
     max: usize,
 ) -> Result<DMatrix<T>, LiteralError> {
     let (r, k, c) = (a.nrows(), a.ncols(), b.ncols());
-    check_size(at, "the matrix product", r as u128 * c as u128, max)?;
     check_size(
         at,
         "the matrix product's work",
         r as u128 * c as u128 * k as u128,
         max.saturating_mul(64),
     )?;
-    let mut data = Vec::with_capacity(r * c);
+    let mut data = reserve(at, "the matrix product", r as u128 * c as u128, max)?;
     for j in 0..c {
         for i in 0..r {
             let mut sum = T::zero();
@@ -844,8 +872,7 @@ fn concatenate<T: LiteralScalar>(
             }
             width = width.saturating_add(m.ncols());
         }
-        check_size(row.at, "the row", height as u128 * width as u128, max)?;
-        let mut data: Vec<T> = Vec::with_capacity(height * width);
+        let mut data: Vec<T> = reserve(row.at, "the row", height as u128 * width as u128, max)?;
         for (m, _) in &parts {
             data.extend(m.iter().cloned());
         }
@@ -893,8 +920,7 @@ fn concatenate<T: LiteralScalar>(
         .iter()
         .map(|b| b.value.nrows())
         .fold(0, usize::saturating_add);
-    check_size(at, "the matrix", height as u128 * width as u128, max)?;
-    let mut data: Vec<T> = Vec::with_capacity(height * width);
+    let mut data: Vec<T> = reserve(at, "the matrix", height as u128 * width as u128, max)?;
     for j in 0..width {
         for b in &blocks {
             data.extend(b.value.column(j).iter().cloned());

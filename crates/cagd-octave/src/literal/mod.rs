@@ -21,7 +21,7 @@
 //!
 //! Evaluation is generic over [`LiteralScalar`]: in `f64`, or in exact rationals
 //! ([`BigRational`](num_rational::BigRational)), where the decimal `0.2` is exactly 1/5 (via
-//! [`cagd::scalar::rational_from_decimal`]) and anything not rational (`sin`, `sqrt`, `pi`,
+//! [`cagd::exact::rational_from_decimal`]) and anything not rational (`sin`, `sqrt`, `pi`,
 //! non-integer powers) is the error [`LiteralError::NotRational`].
 //!
 //! **Policies.** `Inf` and `NaN` are rejected (every value must be finite; an operation whose

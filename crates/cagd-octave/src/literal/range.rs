@@ -82,7 +82,11 @@ pub(crate) fn octave_range(
     if n == 0 {
         return Ok(Vec::new());
     }
-    let mut out: Vec<f64> = (0..n).map(|i| base + i as f64 * increment).collect();
+    let mut out: Vec<f64> = Vec::new();
+    // `max` may be a limit raised past the machine's memory: reserve, never abort.
+    out.try_reserve_exact(n)
+        .map_err(|_| RangeError::TooLarge(n as u128))?;
+    out.extend((0..n).map(|i| base + i as f64 * increment));
     if n > 1 {
         let mut last = base + (n - 1) as f64 * increment;
         if (increment > 0.0 && last >= limit) || (increment < 0.0 && last <= limit) {
@@ -116,7 +120,9 @@ pub(crate) fn exact_range(
     let Some(n) = count.to_usize().filter(|&n| n <= max) else {
         return Err(RangeError::TooLarge(count.to_u128().unwrap_or(u128::MAX)));
     };
-    let mut out = Vec::with_capacity(n);
+    let mut out = Vec::new();
+    out.try_reserve_exact(n)
+        .map_err(|_| RangeError::TooLarge(n as u128))?;
     let mut x = base.clone();
     for _ in 0..n {
         out.push(x.clone());

@@ -5,7 +5,8 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
-use cagd::scalar::{rational_from_decimal, Scalar};
+use cagd::exact::rational_from_decimal;
+use cagd::scalar::Scalar;
 
 use super::range;
 
@@ -196,7 +197,9 @@ impl LiteralScalar for BigRational {
     }
 
     fn from_literal(text: &str, _nearest: f64) -> Option<Self> {
-        rational_from_decimal(text).filter(|x| !x.is_oversized())
+        rational_from_decimal(text)
+            .ok()
+            .filter(|x| !x.is_oversized())
     }
 
     fn apply(f: Function, x: &Self) -> Option<Self> {

@@ -607,6 +607,7 @@ fn krpa_gordon_separate_nodes_match_octave() {
             cagd::lagrange::Lagrange::new(x.iter().copied().collect())
                 .unwrap()
                 .lebesgue_constant(0.0, 1.0, 4001)
+                .unwrap()
                 .value
         };
         let (lu, lv) = (lebesgue(&xu), lebesgue(&xv));

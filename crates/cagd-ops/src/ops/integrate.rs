@@ -173,7 +173,10 @@ impl<T: Scalar> Integrate<T> {
         let integral = DMatrix::from_element(rows.len(), 1, bernstein_integral::<T>(n));
         report.push("integral", Value::Matrix(integral));
         if self.t.is_some() {
-            let values = bernstein_antiderivative_values(n, &rows, &ts);
+            let values = bernstein_antiderivative_values(n, &rows, &ts).map_err(lib(
+                Role::T,
+                "parameters whose integrals stay within the range of doubles",
+            ))?;
             report.push("t", Value::row(&ts));
             report.push("result", Value::Matrix(values));
         }
@@ -206,16 +209,19 @@ impl<T: Scalar> Integrate<T> {
             .unwrap_or_else(|| (T::zero(), T::one()));
         let curve = BezierCurve::new_on_interval(control.clone(), a.clone(), b.clone())
             .map_err(lib(Role::Control, CONTROL_FORM))?;
-        let anti = bezier_antiderivative(&curve);
+        let sums =
+            "control points and an interval whose integrals stay within the range of doubles";
+        let anti = bezier_antiderivative(&curve).map_err(lib(Role::Control, sums))?;
+        let integral = bezier_integral(&curve).map_err(lib(Role::Control, sums))?;
         let ts = self.params((&a, &b), "the antiderivative is extrapolated there", cx)?;
         self.check_values_cost(cx, &anti, &ts)?;
         let mut report = Report::new();
         if self.steps {
-            let factor = bezier_antiderivative_factor(&curve);
+            let factor = bezier_antiderivative_factor(&curve).map_err(lib(Role::Control, sums))?;
             report.push("factor", Value::scalar(factor));
         }
         report.push("antiderivative", Value::Matrix(anti.control().clone()));
-        report.push("integral", Value::column(&bezier_integral(&curve)));
+        report.push("integral", Value::column(&integral));
         if self.t.is_some() {
             let values = eval_points(&anti, &ts, Role::T, cx)?;
             report.push("t", Value::row(&ts));
@@ -330,7 +336,8 @@ const PICTURE_SAMPLES: usize = 201;
 fn bernstein_picture<T: Scalar>(n: usize, rows: &[usize]) -> Result<Drawing> {
     let dense = cagd::linspace::linspace_in(&T::zero(), &T::one(), PICTURE_SAMPLES)
         .map_err(lib(Role::T, "a picture"))?;
-    let values = bernstein_antiderivative_values(n, rows, &dense);
+    let values =
+        bernstein_antiderivative_values(n, rows, &dense).map_err(lib(Role::Degree, "a picture"))?;
     let title = format!("integrals of the Bernstein polynomials of degree {n}");
     let axes = Drawing::graph(title, "t", &format!("∫₀ᵗ B_i^{n}"));
     Ok(graphs(axes, &dense, &values, rows, |i| {
