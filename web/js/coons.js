@@ -2,7 +2,8 @@
 // points in 3-D and see the bilinearly blended patch x = r_c + r_d − r_cd, or each of its parts,
 // on an N × N grid (coons_view), with the numbers at (u, v) from `cagd coons --steps`.
 
-import { num } from "./plane.js";
+import { explainInto } from "./explain.js";
+import { num } from "./numbers.js";
 import { join, split } from "./shell.js";
 import { View3D } from "./view3d.js";
 
@@ -57,7 +58,12 @@ export default class CoonsView {
       }),
     );
     this.options();
+    this.relabel();
     this.update(true, true);
+  }
+
+  relabel() {
+    explainInto(document.getElementById("coons-explain"), "coons");
   }
 
   reset(data) {
@@ -188,9 +194,9 @@ export default class CoonsView {
   /** The numbers at (u, v), by the command line's own code. */
   numbers(commit) {
     const argv = this.argv();
-    const answer = this.app.runHere(argv);
+    const answer = this.app.runHere(this.app.localized(argv));
     $("coons-steps").textContent = answer.ok ? answer.stdout : answer.error;
-    $("coons-cmd").textContent = join(argv);
+    $("coons-cmd").textContent = join(this.app.localized(argv));
     const json = this.app.runHere(this.argv("json").filter((a) => a !== "--exact"));
     if (json.ok) {
       const r = JSON.parse(json.stdout).result;

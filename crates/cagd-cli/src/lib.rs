@@ -25,6 +25,7 @@ mod error;
 pub mod error_catalogue {}
 pub mod faults;
 mod input;
+pub mod lang;
 pub mod limits;
 pub mod mesh;
 mod output;
@@ -76,5 +77,6 @@ pub use input::{
     PARAMS_FORM,
 };
 pub use output::{
-    number_text, number_text_digits, render, render_with, Format, Item, Report, Value, TEXT_DIGITS,
+    number_text, number_text_digits, render, render_in, render_with, Format, Item, Report, Value,
+    TEXT_DIGITS,
 };

@@ -10,8 +10,8 @@ use nalgebra::{DMatrix, DVector};
 use crate::args::OutputArgs;
 use crate::plot::{Figure, ImageKind};
 use crate::{
-    load_expression, load_matrix, load_params, render_with, samples, CliError, ErrorKind,
-    PendingWrites, Report, CURVE_FORM,
+    load_expression, load_matrix, load_params, samples, CliError, ErrorKind, PendingWrites, Report,
+    CURVE_FORM,
 };
 use cagd::bezier::BezierCurve;
 use cagd::{Curve, SampledCurve};
@@ -375,7 +375,7 @@ pub fn finish<T: LiteralScalar>(
             })),
         ));
     }
-    let text = render_with(report, output.format, output.text_digits())?;
+    let text = crate::render_in(report, output.format, output.text_digits(), output.lang)?;
     let stdout = match &output.output {
         Some(path) => {
             files.add("--output", path, text.into_bytes());

@@ -100,6 +100,10 @@ struct Cli {
     command: Command,
     #[command(flatten)]
     limits: LimitArgs,
+    /// `--lang` before the subcommand; each subcommand reads it as its own (see `LangArgs`).
+    #[command(flatten)]
+    #[allow(dead_code)]
+    lang: crate::args::LangArgs,
 }
 
 /// Declares the subcommands, in the order of `cagd --help`: each a clap struct (its help text
