@@ -64,10 +64,12 @@ done
 mv "$wasm" "$dist/pkg/cagd_web_bg.$build.wasm"
 wasm="$dist/pkg/cagd_web_bg.$build.wasm"
 mv "$dist/style.css" "$dist/style.$build.css"
-# Module specifiers ("./plane.js", "../pkg/cagd_web.js") and the .wasm's name, in every module.
-sed -i -E "s#([\"'])(\.{1,2}/[A-Za-z0-9_/-]+)\.js\1#\1\2.$build.js\1#g; s#cagd_web_bg\.wasm#cagd_web_bg.$build.wasm#g" \
+# Module specifiers ("./plane.js", "../pkg/cagd_web.js") and the .wasm's name, in every module;
+# not the glue's "./cagd_web_bg.js", the name of the .wasm's imports (no file has it).
+sed -i -E "s#([\"'])(\.{1,2}/[A-Za-z0-9_/-]+)\.js\1#\1\2.$build.js\1#g; s#cagd_web_bg\.$build\.js#cagd_web_bg.js#g; s#cagd_web_bg\.wasm#cagd_web_bg.$build.wasm#g" \
     "$dist"/js/*.js "$dist"/pkg/*.js
-sed -i -E "s#js/main\.js#js/main.$build.js#; s#style\.css#style.$build.css#" "$dist/index.html"
+sed -i -E "s#\"(js/[A-Za-z0-9_-]+|pkg/cagd_web)\.js\"#\"\1.$build.js\"#g; s#pkg/cagd_web_bg\.wasm#pkg/cagd_web_bg.$build.wasm#; s#style\.css#style.$build.css#" \
+    "$dist/index.html"
 files=$(cd "$dist" && { echo "./"; echo "index.html"; find js pkg -type f -name "*.$build.*"; echo "style.$build.css"; } |
     sed 's/.*/"&"/' | paste -sd, -)
 sed -i "s#__BUILD__#$build#; s#__FILES__#[$files]#" "$dist/sw.js"

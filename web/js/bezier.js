@@ -209,7 +209,10 @@ export class BezierFamily {
   }
 
   summary(d) {
-    if (this.mode === "elevate") return `${t("elevated")}: ${pointsOf(d.result).length} — ${d.result[0].map((_, j) => printed(d.result, j)).join("  ")}`;
+    if (this.mode === "elevate") {
+      const c = d.control ?? d.result;
+      return `${t("elevated")}: ${c[0].map((_, j) => printed(c, j)).join("  ")}`;
+    }
     if (this.mode === "subdivide") {
       const left = d.left ?? d.result?.left;
       const right = d.right ?? d.result?.right;
@@ -258,7 +261,7 @@ export class BezierFamily {
     this.marker = null;
     const d = this.data;
     if (!d) return [];
-    if (this.mode === "elevate") return [{ layer: "elevated", points: pointsOf(d.result), colour: "#e08a00", dash: "6 3", dots: true, class: "elevated" }];
+    if (this.mode === "elevate") return [{ layer: "elevated", points: pointsOf(d.control ?? d.result), colour: "#e08a00", dash: "6 3", dots: true, class: "elevated" }];
     if (this.mode === "subdivide") {
       const left = d.left ?? d.result?.left;
       const right = d.right ?? d.result?.right;

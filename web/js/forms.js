@@ -19,9 +19,10 @@ const MESHES = ["stl", "obj", "ply"];
 /** The first sentence of a help text (without its final period), and the rest. */
 export function sentences(help) {
   const text = (help ?? "").trim();
-  const m = text.match(/^(.*?[^.\s])\.(\s|$)([\s\S]*)$/);
-  if (!m) return [text.replace(/\.$/, ""), ""];
-  return [m[1], m[3].trim()];
+  // A period ends the sentence when a space (or the end) follows, but not in "e.g." or "i.e.".
+  const end = /(?<!\be\.g|\bi\.e)\.(\s|$)/.exec(text);
+  if (!end) return [text, ""];
+  return [text.slice(0, end.index), text.slice(end.index + 1).trim()];
 }
 
 /** How an argument is filled in: "flag", "choice", "lines", "plot", "mesh", "script" or "text". */
@@ -188,6 +189,9 @@ const SHARED = { exact: "arg.exact", steps: "arg.steps", rows: "arg.rows", forma
 function control(cmd, a, v) {
   const kind = kindOf(cmd, a);
   let [first, rest] = sentences(a.help);
+  // "Control points b_0..b_n: a matrix literal, …": the name is the label, the form a hint.
+  const colon = first.indexOf(": ");
+  if (colon > 0 && colon < 60) [first, rest] = [first.slice(0, colon), `${first.slice(colon + 2)}. ${rest}`.trim()];
   if (SHARED[a.id]) [first, rest] = [t(SHARED[a.id]), a.help ?? ""];
   const flag = a.positional ? a.value_name ?? a.id.toUpperCase() : flagOf(a);
   const id = `f-${a.id}`;

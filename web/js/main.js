@@ -99,7 +99,7 @@ const app = {
   },
   /** The items of a command's answer as data (`--format json`): {ok, data} or {ok: false, error}. */
   data(argv) {
-    const answer = app.runHere([...argv.filter((a) => a !== "--lang" && !LANGS.includes(a)), "--format", "json"]);
+    const answer = app.runHere([...argv, "--format", "json"]);
     if (!answer.ok) return answer;
     return { ok: true, data: JSON.parse(answer.stdout), warnings: answer.warnings };
   },
@@ -171,10 +171,15 @@ async function route() {
   }
 }
 
+/** A tab chosen by the user: a new history entry, then the view's own state in it. */
 async function openTab(name) {
+  if (name !== app.current) {
+    history.pushState(null, "", link({ view: name }));
+    routed = location.hash;
+  }
   const view = await show(name);
-  if (name === "command") app.pushHash({ view: "command", ...app.views.command.linkState() });
-  else app.pushHash(view.state ? view.state() : { view: name });
+  if (name === "command") app.setHash({ view: "command", ...app.views.command.linkState() });
+  else app.setHash(view.state ? view.state() : { view: name });
 }
 
 function tabs() {

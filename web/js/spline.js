@@ -8,7 +8,7 @@ import { dragText, num, pointsLiteral, toNumber } from "./numbers.js";
 import { Plane } from "./plane.js";
 import { PointsTable, typedPoints } from "./points-table.js";
 import { join, split } from "./shell.js";
-import { check, explainInto, frame, h, labelled, showError } from "./ui.js";
+import { check, explainInto, frame, h, labelled, parameter, showError } from "./ui.js";
 import { pointsOf, printed } from "./bspline.js";
 
 const NOTES = [
@@ -24,7 +24,7 @@ export default class SplineView {
     this.points = NOTES.map((p) => [...p]);
     this.parts = frame(document.getElementById("view-spline"), { name: "spline", picture: "svg", label: t("planeHint", { what: t("tab.spline") }) });
     const c = this.parts.controls;
-    this.end = h("select", { onchange: () => this.update(true) }, ...["clamped", "natural", "closed"].map((e) => new Option(e, e)));
+    this.end = h("select", { onchange: () => (this.placeSlider(), this.update(true)) }, ...["clamped", "natural", "closed"].map((e) => new Option(e, e)));
     this.start = h("input", { type: "text", spellcheck: "false", autocomplete: "off", value: "[1;1]", oninput: () => this.update(true) });
     this.finish = h("input", { type: "text", spellcheck: "false", autocomplete: "off", value: "[-1;1]", oninput: () => this.update(true) });
     this.table = new PointsTable(h("div", { class: "table-wrap" }), {
@@ -35,8 +35,20 @@ export default class SplineView {
         this.rebuild(false);
       },
     });
+    const param = parameter("spline-t", t("parameterT"), t("typedT"), "1.5");
+    [this.slider, this.typed] = param.querySelectorAll("input");
+    this.typed.value = "3/2";
+    this.slider.addEventListener("input", () => {
+      this.typed.value = num(Number(this.slider.value));
+      this.update(true);
+    });
+    this.typed.addEventListener("input", () => {
+      this.placeSlider();
+      this.update(true);
+    });
     c.append(
       labelled("spline-end", t("endCondition"), this.end),
+      param,
       labelled("spline-start", t("startTangent"), this.start),
       labelled("spline-finish", t("endTangent"), this.finish),
       h("p", { class: "checks" }, check("spline-exact", t("exact"), true), check("spline-snap", t("snap"), true)),
@@ -67,12 +79,21 @@ export default class SplineView {
     return this.points.map((p) => p.map(toNumber));
   }
 
+  /** The parameter runs over [0, m − 1] (segment k on [k, k + 1]), [0, m] when closed. */
+  placeSlider() {
+    this.slider.min = "0";
+    this.slider.max = String(this.end.value === "closed" ? this.points.length : this.points.length - 1);
+    const x = toNumber(this.typed.value);
+    if (Number.isFinite(x)) this.slider.value = String(x);
+  }
+
   rebuild(fit) {
     this.table.set(this.points);
     const pts = this.doubles();
     if (fit && pts.flat().every(Number.isFinite)) this.plane.setBox(Plane.fit(pts, 2));
     else this.plane.setBox(this.plane.box);
-    for (const layer of ["curve", "polygon", "tangents", "handles"]) this.plane.layer(layer);
+    this.placeSlider();
+    for (const layer of ["curve", "polygon", "tangents", "marker", "handles"]) this.plane.layer(layer);
     this.plane.handles(
       "handles",
       pts,
@@ -91,7 +112,7 @@ export default class SplineView {
     const end = this.end.value;
     const argv = ["cagd", "spline", pointsLiteral(this.points), "--end", end];
     if (end === "clamped") argv.push("--start-tangent", this.start.value.trim(), "--end-tangent", this.finish.value.trim());
-    argv.push("--steps");
+    argv.push("--t", this.typed.value.trim() || "0", "--steps");
     if (document.getElementById("spline-exact").checked) argv.push("--exact");
     return argv;
   }
@@ -108,17 +129,19 @@ export default class SplineView {
     const answer = text.ok ? this.app.data(argv) : null;
     this.data = answer?.ok ? answer.data : null;
     const tangents = this.data?.tangents;
-    this.parts.answer.textContent = tangents ? `x′ = ${tangents[0].map((_, j) => printed(tangents, j)).join("  ")}` : "";
+    const at = this.data?.result ? `;  x(${this.typed.value.trim()}) = ${printed(this.data.result)}` : "";
+    this.parts.answer.textContent = tangents ? `x′ = ${tangents[0].map((_, j) => printed(tangents, j)).join("  ")}${at}` : "";
     this.draw();
     if (full) this.commit();
   }
 
   draw() {
-    for (const layer of ["curve", "polygon", "tangents"]) this.plane.clear(layer);
+    for (const layer of ["curve", "polygon", "tangents", "marker"]) this.plane.clear(layer);
     const pts = this.doubles();
     if (!pts.flat().every(Number.isFinite)) return;
     const m = this.end.value === "closed" ? pts.length : pts.length - 1;
     const argv = this.argv().filter((a) => a !== "--steps" && a !== "--exact");
+    argv.splice(argv.indexOf("--t"), 2);
     const sampled = this.app.data([...argv, "--t", `0:${num(m / 160)}:${m}`]);
     this.plane.polyline("polygon", pts.flat(), 2, { class: "polygon", stroke: "#dc1414", "stroke-width": 1, "stroke-dasharray": "4 3" });
     if (sampled.ok) this.plane.polyline("curve", pointsOf(sampled.data.result).flat(), 2, { class: "curve", stroke: "#0072bd", "stroke-width": 3 });
@@ -128,6 +151,10 @@ export default class SplineView {
       if (!p) return;
       this.plane.polyline("tangents", [p[0], p[1], p[0] + d[0] / 3, p[1] + d[1] / 3], 2, { stroke: "#2a9d3a", "stroke-width": 2, class: "tangent" });
     });
+    if (this.data?.result) {
+      const [x, y] = pointsOf(this.data.result)[0];
+      this.plane.marker("marker", x, y, `${t("pointOnCurve")}: ${printed(this.data.result)}`);
+    }
   }
 
   commit() {
@@ -153,6 +180,7 @@ export default class SplineView {
     if (value("--end-tangent")) this.finish.value = value("--end-tangent");
     const end = value("--end") ?? (value("--start-tangent") && value("--end-tangent") ? "clamped" : "natural");
     if (["clamped", "natural", "closed"].includes(end)) this.end.value = end;
+    if (value("--t") !== undefined) this.typed.value = value("--t");
     document.getElementById("spline-exact").checked = args.includes("--exact");
     this.rebuild(true);
   }
