@@ -619,6 +619,20 @@ impl<T: Scalar> BezierCurve<T> {
         BezierCurve::from_valid(control, self.a.clone(), self.b.clone())
     }
 
+    /// The cost of raising the degree by `r` ([`elevate`](Self::elevate) `r` times): each
+    /// coordinate is [`bernstein::elevate_cost`](crate::bernstein::elevate_cost) of the
+    /// control points' `control_bits`.
+    ///
+    /// ```
+    /// use cagd::bezier::BezierCurve;
+    /// let c = BezierCurve::from_points(&[[0.0, 0.0], [1.0, 2.0], [3.0, 1.0], [4.0, 0.0]])?;
+    /// assert_eq!(c.elevate_cost(2, 0).ops(), 2 * 55);
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn elevate_cost(&self, r: usize, control_bits: u128) -> Cost {
+        crate::bernstein::elevate_cost(self.degree(), r, control_bits).times(self.dim() as u128)
+    }
+
     /// The same point set traversed backwards: control points in reverse order, same interval,
     /// so `reversed().eval(a + b − u) = eval(u)` (thesis §2.3, symmetry).
     ///

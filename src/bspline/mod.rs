@@ -13,6 +13,7 @@
 
 mod basis;
 mod batch;
+mod boehm_scheme;
 mod curve;
 mod de_boor_scheme;
 mod definite_integral;
@@ -26,13 +27,14 @@ mod surface;
 mod triangle;
 
 pub use basis::{basis_all, basis_cost, basis_functions, cox_de_boor, curve_point_cost, find_span};
+pub use boehm_scheme::BoehmStep;
 pub use curve::BSplineCurve;
 pub use de_boor_scheme::DeBoorScheme;
 pub use design_matrix::{design_matrix, DesignMatrix};
 pub use extrapolate::{wrap_periodic, Extrapolation};
 pub use knots::KnotVector;
 pub use surface::BSplineSurface;
-pub use triangle::cox_de_boor_triangle;
+pub use triangle::{cox_de_boor_triangle, triangle_cost};
 
 pub(crate) use basis::check_in_domain;
 pub(crate) use batch::curve_points_fast_into;

@@ -24,12 +24,14 @@
 
 #![warn(missing_docs)]
 
+pub mod bspline_arg;
 pub mod check;
 pub mod context;
 pub mod curves;
 pub mod drawing;
 pub mod error;
 pub mod format;
+pub mod knots;
 pub mod layout;
 pub mod ops;
 pub mod output;

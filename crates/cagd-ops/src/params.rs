@@ -71,6 +71,32 @@ impl<T: Scalar> Params<T> {
     }
 }
 
+impl<T: Scalar> Params<T> {
+    /// The values for a construction defined at every parameter (a user's expression):
+    /// given values as they are, with no warning, or samples of `[a, b]`.
+    ///
+    /// # Errors
+    /// As [`resolve`](Self::resolve).
+    ///
+    /// ```
+    /// use cagd_ops::{Context, Params, Role};
+    /// let mut cx = Context::new(cagd::Limits::default());
+    /// assert_eq!(Params::Given(vec![3.0]).anywhere(Role::T, (&0.0, &1.0), &mut cx)?, vec![3.0]);
+    /// assert!(cx.take_warnings().is_empty());
+    /// # Ok::<(), cagd_ops::OpError>(())
+    /// ```
+    pub fn anywhere(&self, role: Role, (a, b): (&T, &T), cx: &mut Context) -> Result<Vec<T>> {
+        match self {
+            Params::Given(values) => {
+                check_given(role, values, cx)?;
+                Ok(values.clone())
+            }
+            Params::Samples(n) => samples(*n, (a, b), cx),
+            Params::Default => samples(DEFAULT_SAMPLES, (a, b), cx),
+        }
+    }
+}
+
 /// Given parameter values: at least one, finite, within the sample limit.
 pub fn check_given<T: Scalar>(role: Role, values: &[T], cx: &Context) -> Result<()> {
     if values.is_empty() {

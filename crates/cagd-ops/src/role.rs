@@ -19,6 +19,10 @@ pub enum Role {
     Order,
     /// A knot vector.
     Knots,
+    /// The knot vector of a surface along `u`.
+    UKnots,
+    /// The knot vector of a surface along `v`.
+    VKnots,
     /// NURBS weights.
     Weights,
     /// The parameter interval `[a, b]` of a curve.
@@ -77,6 +81,17 @@ pub enum Role {
     UNodes,
     /// The nodes `v_j` of a Gordon network.
     VNodes,
+    /// A Gordon network as a whole (where its curves cross, the work of setting it up).
+    Network,
+    /// The four cross-boundary derivatives of a bicubic Coons patch together (where they meet
+    /// the boundary's tangents).
+    Cross,
+    /// Tangents `∂x/∂u` at the corners of a patch.
+    Du,
+    /// Tangents `∂x/∂v` at the corners of a patch.
+    Dv,
+    /// The steps asked for (the parts of a construction).
+    Steps,
     /// The first curve (or point) of a pair.
     First,
     /// The second curve (or point) of a pair.
@@ -89,6 +104,8 @@ pub enum Role {
     T0,
     /// Hermite data: the end tangent.
     T1,
+    /// Hermite data together (`p0`, `p1`, `t0`, `t1`: where they must agree).
+    Hermite,
     /// A representation converted from.
     From,
     /// A representation converted to.
@@ -105,6 +122,15 @@ pub enum Role {
     Angles,
     /// A tolerance.
     Tolerance,
+    /// An index into a family (`i` of the Bernstein polynomial `B_i^n`).
+    Index,
+    /// A B-spline curve as a whole: its control points, degree and knots together (whose
+    /// counts must fit).
+    Spline,
+    /// A factor (`k` of `x'(1) = k · ¹x'(0)`).
+    Factor,
+    /// The joint of two curves (both together).
+    Joint,
     /// The result (a value that overflows, say).
     Result,
 }
@@ -123,6 +149,8 @@ impl Role {
             Role::Degree => "degree",
             Role::Order => "order",
             Role::Knots => "knots",
+            Role::UKnots => "u_knots",
+            Role::VKnots => "v_knots",
             Role::Weights => "weights",
             Role::Interval => "interval",
             Role::T => "t",
@@ -152,12 +180,18 @@ impl Role {
             Role::VCurves => "v_curves",
             Role::UNodes => "u_nodes",
             Role::VNodes => "v_nodes",
+            Role::Network => "network",
+            Role::Cross => "cross",
+            Role::Du => "tangents_u",
+            Role::Dv => "tangents_v",
+            Role::Steps => "steps",
             Role::First => "first",
             Role::Second => "second",
             Role::P0 => "p0",
             Role::P1 => "p1",
             Role::T0 => "t0",
             Role::T1 => "t1",
+            Role::Hermite => "hermite",
             Role::From => "from",
             Role::To => "to",
             Role::By => "by",
@@ -166,6 +200,10 @@ impl Role {
             Role::Center => "center",
             Role::Angles => "angles",
             Role::Tolerance => "tolerance",
+            Role::Index => "i",
+            Role::Spline => "spline",
+            Role::Factor => "k",
+            Role::Joint => "joint",
             Role::Result => "result",
         }
     }

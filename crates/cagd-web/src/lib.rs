@@ -15,6 +15,7 @@
 //! command line's one-line message `cagd: error: ARG: PROBLEM; expected FORM`.
 
 mod command;
+mod ops;
 mod tables;
 mod views;
 

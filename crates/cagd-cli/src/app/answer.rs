@@ -9,8 +9,8 @@ use cagd_octave::literal::{LiteralScalar, Position, Warning};
 use cagd_ops::{Answer, OpError, Operation, Role};
 
 use super::common::{add_mesh, add_plot, finish};
-use super::run::Names;
 use super::cx::Cx;
+use super::run::Names;
 use crate::args::OutputArgs;
 use crate::plot::Figure;
 use crate::{CliError, ErrorKind, Outcome, PendingWrites};

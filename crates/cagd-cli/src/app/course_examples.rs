@@ -19,7 +19,6 @@ use crate::plot::{Colour, Figure};
 use crate::{CliError, PendingWrites, Report, Value};
 
 use super::common::*;
-use super::spline_steps::system;
 use super::thesis::{heading, q, text, Files, Q};
 use super::Outcome;
 
@@ -252,12 +251,9 @@ fn splines(out: &mut String, files: &mut Files) -> Result<(), CliError> {
     let colours = [Colour::Blue, Colour::Orange, Colour::Purple];
     let mut figure = Figure::new("Lecture notes: clamped, natural and closed cubic splines");
     for (k, (title, end, note)) in cases.into_iter().enumerate() {
-        let clamped = match &end {
-            EndCondition::Clamped { start, end } => Some((start.clone(), end.clone())),
-            _ => None,
-        };
-        let s = CubicSpline::interpolate(pts.clone(), end).map_err(lib("course", INTERNAL))?;
-        let (a, rhs) = system(&s, clamped.as_ref().map(|(a, b)| (a, b)));
+        let s =
+            CubicSpline::interpolate(pts.clone(), end.clone()).map_err(lib("course", INTERNAL))?;
+        let (a, rhs) = s.system(&end);
         let _ = writeln!(out, "{title}:\n");
         let mut r = Report::<Q>::new();
         r.push("system A", Value::Matrix(a.clone()));

@@ -6,9 +6,9 @@ use cagd_octave::literal::LiteralScalar;
 use cagd_ops::ops::DeCasteljau;
 
 use super::answer::{respond, Destinations};
+use super::cx::Cx;
 use super::read::{curve_params, interval, points};
 use super::run::{Names, Run};
-use super::cx::Cx;
 use crate::args::{CurveParamArgs, OutputArgs, PlotArgs, RowsArgs, ScriptArgs, StepsArgs};
 use crate::{CliError, Outcome};
 

@@ -103,3 +103,29 @@ pub(crate) fn env_warnings<T: LiteralScalar>(
         .map(|w| (argument.to_string(), w))
         .collect()
 }
+
+/// The environment curve expressions are evaluated in, shared by a command's curves: the
+/// data script's (its variables), else an empty one within the limits.
+pub(crate) fn expression_env<T: LiteralScalar>(
+    limits: Limits,
+    script: Option<&cagd_octave::script::Script<T>>,
+) -> Rc<RefCell<Env<T>>> {
+    Rc::new(RefCell::new(
+        script.map_or_else(|| Env::with_limits(limits), |s| s.env().clone()),
+    ))
+}
+
+/// `outcome` with the warnings `env` collected (about `expression`) that it does not give
+/// already: an environment copied from a data script repeats the script's warnings, which
+/// are reported once, about the script.
+pub(crate) fn with_env_warnings<T: LiteralScalar>(
+    mut outcome: crate::Outcome,
+    env: &Rc<RefCell<Env<T>>>,
+) -> crate::Outcome {
+    for (argument, w) in env_warnings("expression", env) {
+        if !outcome.warnings.iter().any(|(_, given)| *given == w) {
+            outcome.warnings.push((argument, w));
+        }
+    }
+    outcome
+}

@@ -4,26 +4,37 @@
 use cagd::limits::Limits;
 use std::ffi::OsString;
 
-use cagd::grid::PointGrid;
 use clap::error::{ContextKind, ErrorKind as ClapKind};
-use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
-use nalgebra::DMatrix;
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 
 mod answer;
 
+mod arc;
+
+mod bernstein;
+
 mod bezier;
+
+mod bezier_patch;
+
+mod bspline;
 
 mod boundary;
 
 mod coons;
 
+mod coons_bicubic;
 mod curvature;
 
 mod curve_arg;
 
+mod curve_samples;
+
 mod cx;
 
 mod decasteljau;
+
+mod derivative;
 
 mod expr_curve;
 
@@ -33,11 +44,17 @@ mod read;
 
 mod run;
 
+mod script;
+
+mod surface_samples;
+
 mod bspline_basis;
 
 mod bspline_surface;
 
 mod circle;
+
+mod circle_args;
 
 mod common;
 
@@ -45,21 +62,24 @@ mod continuity;
 
 mod convert;
 
-mod course;
-
 mod course_examples;
 
 mod curve;
 
-mod discrete_parts;
+mod discrete_coons;
 
 mod elevate;
 
 mod ferguson;
 
+mod gordon;
+mod hermite;
+
 mod insert_knot;
 
 mod integrate;
+
+mod nurbs;
 
 mod nurbs_surface;
 
@@ -71,9 +91,11 @@ mod patches;
 
 mod ruled;
 
-mod scheme;
+mod spline;
 
-mod spline_steps;
+mod spline_args;
+
+mod spline_surface_args;
 
 mod subdivide;
 
@@ -81,16 +103,10 @@ mod thesis;
 
 mod work;
 
-use crate::args::{
-    CurveParamArgs, LimitArgs, MeshArgs, OutputArgs, PlotArgs, ScriptArgs, SurfaceParamArgs,
-};
-use crate::plot::{Colour, Figure};
-use crate::{
-    load_expression, load_params, load_script, samples, CliError, ErrorKind, PendingWrites, Report,
-    Value, CURVE_FORM,
-};
-use cagd_octave::literal::{Env, LiteralScalar, Warning};
-use cagd_octave::script::{Binding, Script};
+use crate::args::{LimitArgs, ScriptArgs};
+use crate::{load_script, CliError, ErrorKind, PendingWrites};
+use cagd_octave::literal::{Env, LiteralScalar};
+use cagd_octave::script::Script;
 
 /// Curves and surfaces of computer-aided geometric design, checked against GNU Octave.
 #[derive(Debug, Parser)]
@@ -131,18 +147,18 @@ subcommands! {
     Thesis(thesis::ThesisCommand),
     Course(course_examples::CourseCommand),
     Decasteljau(decasteljau::DecasteljauCommand),
-    BezierPatch(bezier::BezierPatchCommand),
+    BezierPatch(bezier_patch::BezierPatchCommand),
     Coons(coons::CoonsCommand),
-    CoonsBicubic(patches::CoonsBicubicCommand),
-    DiscreteCoons(patches::DiscreteCoonsCommand),
-    Gordon(patches::GordonCommand),
+    CoonsBicubic(coons_bicubic::CoonsBicubicCommand),
+    DiscreteCoons(discrete_coons::DiscreteCoonsCommand),
+    Gordon(gordon::GordonCommand),
     Lagrange(lagrange::LagrangeCommand),
-    Bernstein(bezier::BernsteinCommand),
-    Derivative(bezier::DerivativeCommand),
-    Spline(course::SplineCommand),
-    Hermite(course::HermiteCommand),
-    Bspline(course::BSplineCommand),
-    Nurbs(course::NurbsCommand),
+    Bernstein(bernstein::BernsteinCommand),
+    Derivative(derivative::DerivativeCommand),
+    Spline(spline::SplineCommand),
+    Hermite(hermite::HermiteCommand),
+    Bspline(bspline::BSplineCommand),
+    Nurbs(nurbs::NurbsCommand),
     Convert(convert::ConvertCommand),
     Elevate(elevate::ElevateCommand),
     Subdivide(subdivide::SubdivideCommand),
@@ -156,83 +172,13 @@ subcommands! {
     BsplineSurface(bspline_surface::BSplineSurfaceCommand),
     NurbsSurface(nurbs_surface::NurbsSurfaceCommand),
     Circle(circle::CircleCommand),
-    Arc(circle::ArcCommand),
-    Curve(CurveCommand),
-    Surface(SurfaceCommand),
+    Arc(arc::ArcCommand),
+    Curve(curve_samples::CurveCommand),
+    Surface(surface_samples::SurfaceCommand),
     Serve(crate::serve::ServeCommand),
-    Script(ScriptCommand),
+    Script(script::ScriptCommand),
 }
 
-/// Sample a curve given as an expression in its parameter, as the thesis writes curves.
-#[derive(Debug, Args)]
-#[command(after_help = "\
-Layout: the result is d × k, one point per column (like T in the thesis's deCasteljau).
-
-Examples:
-  cagd curve \"[u; 0; u-u^2]\" --n 5
-  cagd curve \"[u; 0.5; 0.5+u-u^2]\" --t \"[0 0.25 0.5]\" --exact
-  cagd curve \"[cos(2*pi*t); sin(2*pi*t)]\" --n 50 --plot circle.svg")]
-struct CurveCommand {
-    /// The curve: an expression in one parameter t, u or v, e.g. "[u; 0; u-u^2]".
-    #[arg(value_name = "EXPR", allow_hyphen_values = true)]
-    expr: String,
-    #[command(flatten)]
-    params: CurveParamArgs,
-    #[command(flatten)]
-    script: ScriptArgs,
-    #[command(flatten)]
-    output: OutputArgs,
-    #[command(flatten)]
-    plot: PlotArgs,
-}
-
-/// Sample a surface given as an expression in u and v on a grid.
-#[derive(Debug, Args)]
-#[command(after_help = "\
-Layout: the result is a grid of shape (nu, nv, d): result(i,j,:) is the point at (u(i), v(j)),
-like P in the thesis's ploskevB.
-
-Examples:
-  cagd surface \"[u; v; u.*v]\" --n 3
-  cagd surface \"[u; v; u-u^2+v]\" --n 20 --plot patch.png --mesh patch.stl")]
-struct SurfaceCommand {
-    /// The surface: an expression in u and v, e.g. "[u; v; u.*v]".
-    #[arg(value_name = "EXPR", allow_hyphen_values = true)]
-    expr: String,
-    #[command(flatten)]
-    params: SurfaceParamArgs,
-    #[command(flatten)]
-    script: ScriptArgs,
-    #[command(flatten)]
-    output: OutputArgs,
-    #[command(flatten)]
-    plot: PlotArgs,
-    #[command(flatten)]
-    mesh: MeshArgs,
-}
-
-/// Run a thesis-style Octave data script and print the variables it defines.
-#[derive(Debug, Args)]
-#[command(after_help = "\
-Scripts may contain assignments, indexed assignments x(i) = ..., for loops, comments and
-continuations. Right-hand sides that use u, v or t without defining them are kept as curves
-in that parameter (appendix C: c1 = [u;0;u-u^2]).
-
-Examples:
-  cagd script data.m --n 10
-  cagd script data.m --format json")]
-struct ScriptCommand {
-    /// The Octave data script, or - for standard input.
-    #[arg(value_name = "FILE")]
-    file: String,
-    /// Bind N (used by the thesis scripts, e.g. u = linspace(0,1,N)) before running.
-    #[arg(long, value_name = "N", allow_negative_numbers = true)]
-    n: Option<usize>,
-    #[command(flatten)]
-    output: OutputArgs,
-}
-
-use common::DEFAULT_SAMPLES;
 use cx::Cx;
 pub use outcome::Outcome;
 
@@ -356,169 +302,6 @@ pub fn prepare_script<T: LiteralScalar>(
     n: Option<usize>,
 ) -> Result<Option<Script<T>>, CliError> {
     read::run_script(limits, script, n)
-}
-
-fn script_warnings<T: LiteralScalar>(
-    script: &ScriptArgs,
-    loaded: Option<&Script<T>>,
-) -> Vec<(String, Warning)> {
-    match (&script.script, loaded) {
-        (Some(path), Some(s)) => s
-            .warnings()
-            .into_iter()
-            .map(|w| (format!("--script {path}"), w))
-            .collect(),
-        _ => Vec::new(),
-    }
-}
-
-fn to_f64_matrix<T: LiteralScalar>(m: &DMatrix<T>) -> DMatrix<f64> {
-    m.map(|x| x.to_f64())
-}
-
-fn curve<T: LiteralScalar>(limits: &Limits, cmd: &CurveCommand) -> Result<Outcome, CliError> {
-    let loaded = prepare_script::<T>(limits, &cmd.script, cmd.params.n)?;
-    let expr = load_expression(limits, "EXPR", &cmd.expr, loaded.as_ref())?;
-    let mut env = loaded.as_ref().map(|s| s.env().clone()).unwrap_or_default();
-    let params = expr.parameters(&env);
-    let param = match params.as_slice() {
-        [] => "t",
-        [p] => p,
-        _ => {
-            return Err(CliError::new(
-                "EXPR",
-                format!(
-                    "`{}` uses the parameters {}",
-                    cmd.expr.trim(),
-                    params.join(" and ")
-                ),
-                "a curve in one parameter (t, u or v); use `cagd surface` for u and v",
-                ErrorKind::Shape,
-            ))
-        }
-    };
-    let values: Vec<T> = match (&cmd.params.t, cmd.params.n) {
-        (Some(t), _) => load_params(limits, "--t", t)?,
-        (None, n) => samples(limits, n.unwrap_or(DEFAULT_SAMPLES), 2)?,
-    };
-    work::check_expression_work(
-        limits,
-        &[work::Sampling {
-            argument: "EXPR",
-            expr: &expr,
-            params: vec![(param, &values)],
-        }],
-        &env,
-    )?;
-    let points = expr
-        .sample_curve(&mut env, param, &values)
-        .map_err(|e| CliError::literal("EXPR", e, CURVE_FORM))?;
-    let mut report = Report::new();
-    report.push(
-        param,
-        Value::Matrix(DMatrix::from_row_slice(1, values.len(), &values)),
-    );
-    report.push("result", Value::Matrix(points.clone()));
-    let mut files = PendingWrites::new();
-    if let Some(path) = &cmd.plot.plot {
-        let figure = Figure::new(format!("curve {}", cmd.expr.trim())).curve(
-            to_f64_matrix(&points),
-            Colour::Blue,
-            format!("{param} ↦ {}", cmd.expr.trim()),
-        );
-        common::add_plot(&mut files, "--plot", path, &figure)?;
-    }
-    let mut warnings = script_warnings(&cmd.script, loaded.as_ref());
-    warnings.extend(env.take_warnings().into_iter().map(|w| ("EXPR".into(), w)));
-    common::finish(&report, &cmd.output, files, warnings)
-}
-
-fn surface<T: LiteralScalar>(limits: &Limits, cmd: &SurfaceCommand) -> Result<Outcome, CliError> {
-    let loaded = prepare_script::<T>(limits, &cmd.script, cmd.params.n)?;
-    let expr = load_expression(limits, "EXPR", &cmd.expr, loaded.as_ref())?;
-    let mut env = loaded.as_ref().map(|s| s.env().clone()).unwrap_or_default();
-    let grid_samples = |given: &Option<String>, name: &str| -> Result<Vec<T>, CliError> {
-        match given {
-            Some(text) => load_params(limits, name, text),
-            None => samples(limits, cmd.params.n.unwrap_or(DEFAULT_SAMPLES), 2),
-        }
-    };
-    let us = grid_samples(&cmd.params.u, "--u")?;
-    let vs = grid_samples(&cmd.params.v, "--v")?;
-    common::check_grid(limits, us.len(), vs.len())?;
-    work::check_expression_work(
-        limits,
-        &[work::Sampling {
-            argument: "EXPR",
-            expr: &expr,
-            params: vec![("u", &us), ("v", &vs)],
-        }],
-        &env,
-    )?;
-    let grid = expr.sample_surface(&mut env, &us, &vs).map_err(|e| {
-        CliError::literal(
-            "EXPR",
-            e,
-            "an expression in u and v such as \"[u; v; u.*v]\"",
-        )
-    })?;
-    let mut report = Report::new();
-    report.push(
-        "u",
-        Value::Matrix(DMatrix::from_row_slice(1, us.len(), &us)),
-    );
-    report.push(
-        "v",
-        Value::Matrix(DMatrix::from_row_slice(1, vs.len(), &vs)),
-    );
-    let grid_f64: PointGrid<f64> = grid.map(|x| x.to_f64());
-    common::push_surface(&mut report, "result", (&us, &vs), grid, cmd.params.list);
-    let mut files = PendingWrites::new();
-    if let Some(path) = &cmd.plot.plot {
-        let figure = Figure::new(format!("surface {}", cmd.expr.trim()))
-            .surface(grid_f64.clone(), "surface");
-        common::add_plot(&mut files, "--plot", path, &figure)?;
-    }
-    if let Some(path) = &cmd.mesh.mesh {
-        common::add_mesh(&mut files, "--mesh", path, &grid_f64)?;
-    }
-    let mut warnings = script_warnings(&cmd.script, loaded.as_ref());
-    warnings.extend(env.take_warnings().into_iter().map(|w| ("EXPR".into(), w)));
-    common::finish(&report, &cmd.output, files, warnings)
-}
-
-fn script<T: LiteralScalar>(limits: &Limits, cmd: &ScriptCommand) -> Result<Outcome, CliError> {
-    let args = ScriptArgs {
-        script: Some(cmd.file.clone()),
-    };
-    let loaded = prepare_script::<T>(limits, &args, cmd.n)?
-        .ok_or_else(|| CliError::new("FILE", "no script", "a script file", ErrorKind::Internal))?;
-    let mut report = Report::new();
-    for name in loaded.names() {
-        match loaded.get(name) {
-            Some(Binding::Value(m)) => {
-                report.push(name, Value::Matrix(m.clone()));
-            }
-            Some(Binding::Function(f)) => {
-                let params = f.parameters(loaded.env());
-                report.push(
-                    name,
-                    Value::Text(format!(
-                        "{}    (expression in {})",
-                        f.source(),
-                        params.join(", ")
-                    )),
-                );
-            }
-            None => {}
-        }
-    }
-    let warnings = loaded
-        .warnings()
-        .into_iter()
-        .map(|w| (cmd.file.clone(), w))
-        .collect();
-    common::finish(&report, &cmd.output, PendingWrites::new(), warnings)
 }
 
 /// Turns a clap error into the one-line form (help and version are printed as a result).

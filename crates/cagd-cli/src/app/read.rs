@@ -3,6 +3,7 @@
 
 use cagd_octave::literal::{Env, LiteralScalar, Warning};
 use cagd_octave::script::Script;
+use cagd_ops::bspline_arg::{BSplineArg, SplineDegree};
 use cagd_ops::Params;
 use nalgebra::DMatrix;
 
@@ -138,4 +139,40 @@ pub(crate) fn warning(argument: &str, message: String) -> (String, Warning) {
             message,
         },
     )
+}
+
+/// The one number of `argument` (a list of one value, as `--t` and `--k` take), else an error
+/// expecting `form`.
+pub(crate) fn one_value<T: LiteralScalar>(
+    cx: &mut Cx,
+    argument: &str,
+    text: &str,
+    form: &str,
+) -> Result<T, CliError> {
+    let values: Vec<T> = load_params(&cx.limits, argument, text)?;
+    match <[T; 1]>::try_from(values) {
+        Ok([x]) => Ok(x),
+        Err(values) => Err(shape(argument, format!("{} values", values.len()), form)),
+    }
+}
+
+/// The B-spline of `--degree`/`--order` and `--knots` (degree 3 with knots alone), if any of
+/// them is given.
+pub(crate) fn bspline_arg<T: LiteralScalar>(
+    cx: &mut Cx,
+    degree: Option<usize>,
+    order: Option<usize>,
+    knots: &Option<String>,
+) -> Result<Option<BSplineArg<T>>, CliError> {
+    let degree = match (degree, order) {
+        (_, Some(k)) => SplineDegree::Order(k),
+        (Some(p), None) => SplineDegree::Degree(p),
+        (None, None) if knots.is_some() => SplineDegree::Degree(3),
+        (None, None) => return Ok(None),
+    };
+    let knots = match knots {
+        Some(text) => Some(load_params(&cx.limits, "--knots", text)?),
+        None => None,
+    };
+    Ok(Some(BSplineArg { degree, knots }))
 }

@@ -414,7 +414,7 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
         ),
         (
             s(&["bspline", "[0 0; 1 2]'", "--degree", "3"]),
-            "CONTROL/--degree/--knots",
+            "CONTROL",
             "Library::TooFewControlPoints",
         ),
         (
@@ -426,7 +426,7 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
                 "--knots",
                 "[0 1 0.5 1 1]",
             ]),
-            "CONTROL/--degree/--knots",
+            "--knots",
             "Library::DecreasingKnots",
         ),
         (
@@ -438,7 +438,7 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
                 "--knots",
                 "[0 0 1 1]",
             ]),
-            "CONTROL/--degree/--knots",
+            "--knots",
             "Library::KnotCount",
         ),
         (
@@ -450,7 +450,7 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
                 "--degree",
                 "2",
             ]),
-            "CONTROL/--weights/--knots",
+            "--weights",
             "Library::NonPositiveWeight",
         ),
         (
@@ -513,8 +513,10 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
             "--by",
             "Library::TooLarge",
         ),
+        // A Bézier curve of degree 899 raised by 99 is some 10⁶ operations (it runs); the
+        // blossoms of a cubic B-spline of 900 control points raised by 99 are 5.7·10⁹.
         (
-            s(&["elevate", "zeros(3, 900)", "--by", "99"]),
+            s(&["elevate", "zeros(3, 900)", "--by", "99", "--degree", "3"]),
             "--by",
             "Library::TooLarge",
         ),
@@ -615,7 +617,7 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
                 "2",
             ]),
             "--t",
-            "Shape",
+            "Library::ParameterOutOfRange",
         ),
         (
             s(&["bspline-basis", "--knots", "[0 NaN 1]"]),
@@ -647,6 +649,34 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
             ]),
             "--t",
             "Library::TooLarge",
+        ),
+        (
+            s(&["curvature", "[1 1 1; 2 2 2]", "--t", "0.5"]),
+            "--t",
+            "Library::InvalidArgument",
+        ),
+        (
+            s(&["curvature", "bspline([0 1; 0 1], [0 1])"]),
+            "CURVE",
+            "Shape",
+        ),
+        (
+            s(&[
+                "curvature",
+                "[0 1 2 3; 0 1 0 1; 0 0 1 1; 1 1 1 1]",
+                "--t",
+                "0.5",
+            ]),
+            "CURVE",
+            "Library::ShapeMismatch",
+        ),
+        (
+            s(&[
+                "curvature",
+                "nurbs([1 1 0; 0 1 1], [1 -1 2], [0 0 0 1 1 1])",
+            ]),
+            "CURVE",
+            "Library::NonPositiveWeight",
         ),
         (
             s(&["continuity", "[0 1]", "[1 2; 3 4]"]),
@@ -747,8 +777,8 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
                 "--dv",
                 "zeros(2,4)",
             ]),
-            "--points/--du/--dv/--twists",
-            "Library::ShapeMismatch",
+            "--dv",
+            "Shape",
         ),
         (
             s(&[
@@ -785,7 +815,7 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
         (
             s(&["bspline-surface", NET, "--degree", "2", "--u", "2"]),
             "--u",
-            "Shape",
+            "Library::ParameterOutOfRange",
         ),
         (
             s(&["bspline-surface", NET, "--degree", "x"]),
@@ -806,7 +836,7 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
                 "--weights",
                 "[1 1 1; 1 0 1; 1 1 1]",
             ]),
-            "NET/--weights/--uknots/--vknots",
+            "--weights",
             "Library::NonPositiveWeight",
         ),
         (
@@ -818,7 +848,7 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
                 "--weights",
                 "[1 1; 1 1]",
             ]),
-            "NET/--weights/--uknots/--vknots",
+            "--weights",
             "Library::ShapeMismatch",
         ),
         (s(&["nurbs-surface", &nrb_bad]), "NET", "Data"),
@@ -840,7 +870,7 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
         (s(&["circle", "--n", "2000000"]), "--n", "Library::TooLarge"),
         (
             s(&["arc", "--start", "0", "--end", "10"]),
-            "--radius/--center",
+            "--start/--end",
             "Library::InvalidArgument",
         ),
         (
@@ -906,13 +936,13 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
         ),
         (
             s(&["spline", "[0 0; 1 1; 2 0]'", "--params", "[0 2 1]"]),
-            "POINTS",
+            "--params",
             "Library::InvalidArgument",
         ),
         (
             s(&["spline", "[0 0; 0 0; 2 0]'", "--params", "chord"]),
             "POINTS",
-            "Shape",
+            "Library::InvalidArgument",
         ),
         (
             s(&["bspline", "[0 0; 1 2]'", "--order", "0"]),
@@ -1007,17 +1037,17 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
         (
             s(&["derivative", "[zeros(1,171) 1]", "--order", "171"]),
             "CONTROL",
-            "Library::NonFinite",
+            "Operation",
         ),
         (
             s(&["spline", "[1.7e308 -1.7e308 1.7e308]"]),
             "POINTS",
-            "Library::NonFinite",
+            "Operation",
         ),
         (
             s(&["lagrange", "--nodes", "[0 1e-310 1]", "--t", "0.5"]),
             "--nodes/--points",
-            "Library::NonFinite",
+            "Operation",
         ),
         (
             s(&[

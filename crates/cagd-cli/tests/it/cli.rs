@@ -1244,7 +1244,7 @@ fn new_subcommands_reject_bad_input_cleanly() {
         ),
         (
             vec!["bspline", "[0 0; 1 1]'", "--degree", "3", "--plot", &svg],
-            "CONTROL/--degree/--knots",
+            "CONTROL: control points: degree 3 needs at least 4 control point(s), got 2",
         ),
         (
             vec![

@@ -1,6 +1,7 @@
 //! The integration tests of the command line, one module per subject: snapshots of every
 //! subcommand, bad inputs, limits, atomic output, meshes, fuzzing regressions.
 
+mod any_curve;
 mod atomic_output;
 mod bad_inputs;
 mod cli;

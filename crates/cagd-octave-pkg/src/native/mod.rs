@@ -7,8 +7,8 @@
 //! | `[L, R] = cagd_bezier_subdivide (P, t)` | [`BezierCurve::subdivide`](cagd::BezierCurve::subdivide) |
 //! | `Q = cagd_bezier_elevate (P, r)` | [`BezierCurve::elevate`](cagd::BezierCurve::elevate) |
 //! | `X = cagd_bezier_patch (B, u, v)` | [`BezierPatch::eval_grid_into`](cagd::BezierPatch::eval_grid_into) |
-//! | `[X, rc, rd, rcd] = cagd_coons (c1, c2, d1, d2, u, v)` | [`CoonsPatch`](cagd::CoonsPatch) of Bézier curves |
-//! | `[X, g1, g2, g12] = cagd_gordon (cu, cv, un, vn, u, v)` | [`GordonSurface`](cagd::GordonSurface) of Bézier curves |
+//! | `[X, rc, rd, rcd] = cagd_coons (c1, c2, d1, d2, u, v)` | [`cagd_ops::ops::Coons`] of Bézier or NURBS curves |
+//! | `[X, g1, g2, g12] = cagd_gordon (cu, cv, un, vn, u, v)` | [`cagd_ops::ops::Gordon`] of Bézier or NURBS curves |
 //! | `X = cagd_bspline (p, P, U, t)` | [`BSplineCurve`](cagd::BSplineCurve) |
 //! | `X = cagd_nurbs (p, P, w, U, t)` | [`NurbsCurve`](cagd::NurbsCurve) |
 //! | `[X, D] = cagd_spline (Q, t, ends)` | [`CubicSpline`](cagd::CubicSpline) |
@@ -19,6 +19,7 @@
 //! Each takes the option `"exact"` as its last argument (see [`crate::number`]).
 
 mod bezier;
+mod curve_value;
 mod splines;
 mod surfaces;
 

@@ -251,25 +251,47 @@ impl<T: Scalar> Coons<T> {
         })
     }
 
-    /// The picture of appendix C: the surface, `c1`, `c2` in red, `d1`, `d2` in green, each
-    /// boundary drawn as the patch uses it (its domain mapped onto the grid's `[0, 1]`).
+    /// The picture of appendix C ([`boundary_picture`]), each boundary realised where the
+    /// picture samples it.
     fn picture(
         &self,
         title: &str,
         grid: cagd::grid::PointGrid<f64>,
         (us, vs): (&[T], &[T]),
     ) -> Result<Drawing> {
-        let mut drawing = Drawing::new(title).surface(grid, "x(u,v)");
-        let labels = ["c1, c2", "", "d1, d2", ""];
-        let colours = [Colour::Red, Colour::Red, Colour::Green, Colour::Green];
+        let mut curves = Vec::with_capacity(4);
         for (k, c) in self.boundary.iter().enumerate() {
             let ts = if k < 2 { us } else { vs };
-            let curve = c.realise(BOUNDARY_ROLES[k], ts, false)?;
-            let line = boundary_line(&curve, ts)?;
-            drawing = drawing.boundary(line, colours[k], labels[k]);
+            curves.push(c.realise(BOUNDARY_ROLES[k], ts, false)?);
         }
-        Ok(drawing)
+        let [c1, c2, d1, d2] = &curves[..] else {
+            return Err(OpError::new(
+                Role::C1,
+                Kind::Internal,
+                "not four curves",
+                BOUNDARY_FORM,
+            ));
+        };
+        boundary_picture(title, grid, [c1, c2, d1, d2], (us, vs))
     }
+}
+
+/// The picture of appendix C: the surface, `c1`, `c2` in red, `d1`, `d2` in green, each
+/// boundary drawn as the patch uses it (its domain mapped onto the grid's `[0, 1]`).
+pub fn boundary_picture<T: Scalar, C: Curve<T>>(
+    title: &str,
+    grid: cagd::grid::PointGrid<f64>,
+    curves: [&C; 4],
+    (us, vs): (&[T], &[T]),
+) -> Result<Drawing> {
+    let mut drawing = Drawing::new(title).surface(grid, "x(u,v)");
+    let labels = ["c1, c2", "", "d1, d2", ""];
+    let colours = [Colour::Red, Colour::Red, Colour::Green, Colour::Green];
+    for (k, curve) in curves.into_iter().enumerate() {
+        let ts = if k < 2 { us } else { vs };
+        drawing = drawing.boundary(boundary_line(curve, ts)?, colours[k], labels[k]);
+    }
+    Ok(drawing)
 }
 
 /// The curve sampled along the unit parameters `ts` of a construction: its domain `[a, b]`
