@@ -917,7 +917,11 @@ mod tests {
         let run = |dims: &[usize], nargout: usize, limits: &mut Limits| {
             let args = [cubic(&coefs, &knots), Value::Real(Real { dims, data: &t })];
             let mut out = VecSink::default();
-            crate::call("cagd_nrbeval", &args, nargout, limits, &mut out).unwrap();
+            nrbeval(
+                &crate::args::Call::new("cagd_nrbeval", &args, nargout, *limits),
+                &mut out,
+            )
+            .unwrap();
             out
         };
         // A row: 3 × n; a column: [3, n, 1]; two outputs: homogeneous points and weights.

@@ -28,7 +28,6 @@ pub use splines::{bernstein, bspline, convert, hermite, nurbs_curve, spline};
 pub use surfaces::{coons, gordon};
 
 use cagd::bezier::BezierCurve;
-use cagd::limits::exact_op_cost;
 
 use crate::args::Call;
 use crate::error::Result;
@@ -58,17 +57,6 @@ macro_rules! native {
     };
 }
 pub(crate) use native;
-
-/// The operations of `ops` double operations in `T`: in exact arithmetic each weighs
-/// [`exact_op_cost`] of numbers of about `words` 64-bit words (they grow with the degree).
-fn cost<T: Number>(ops: usize, words: usize) -> usize {
-    if <T as cagd::Scalar>::EXACT {
-        let per = exact_op_cost(64 * words.max(1) as u128);
-        ops.saturating_mul(usize::try_from(per).unwrap_or(usize::MAX))
-    } else {
-        ops
-    }
-}
 
 /// Output `index`: the report's `result` (a matrix, or a grid as `d × nu × nv`).
 ///

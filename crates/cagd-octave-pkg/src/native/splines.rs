@@ -1,24 +1,16 @@
 //! B-spline and NURBS curves, interpolating cubic splines, Hermite cubics, the conversions of
 //! cubic forms, Bernstein values.
 
-use cagd::conversion::{self, CubicForm};
 use cagd_ops::knots::Degree;
 use cagd_ops::ops::spline::{Ends, Knots, Spline};
 use cagd_ops::ops::{BSpline, Hermite, Nurbs};
 use cagd_ops::{Params, Role};
 use nalgebra::DMatrix;
 
-use super::{cost, emit_item, emit_result, native, CONTROL_FORM};
-use cagd::bspline::{BSplineCurve, KnotVector};
 use cagd::conversion::GeometryForm;
-use cagd::hermite::HermiteCubic;
-use cagd::nurbs::NurbsCurve;
-use cagd::spline::{CubicSpline, EndCondition};
-use nalgebra::DVector;
-
 use cagd_ops::ops::{Bernstein, Convert};
 
-use super::{cost, emit_result, native, CONTROL_FORM};
+use super::{emit_item, emit_result, native, CONTROL_FORM};
 use crate::args::Call;
 use crate::error::{Kind, PkgError, Result};
 use crate::number::{emit_matrix, matrix, params, Number};
