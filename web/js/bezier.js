@@ -150,7 +150,7 @@ export class BezierFamily {
   rebuild(fit) {
     const three = this.dim === 3;
     this.dimSelect.value = String(this.dim);
-    this.parts.svg.hidden = three;
+    this.parts.svg.toggleAttribute("hidden", three); // an SVG element has no `hidden` property
     this.parts.canvas.hidden = !three;
     this.table.set(this.points, AXES.slice(0, this.dim));
     if (!three) {

@@ -132,6 +132,11 @@ export class CommandView {
     return this.execute(push);
   }
 
+  /** Opened from another view before anything ran here: the form's example runs (no blank view). */
+  activate() {
+    if (this.args === undefined) this.runForm(false);
+  }
+
   /** The state a link keeps. */
   linkState() {
     const line = join(this.app.localized(["cagd", ...(this.args ?? [])]));
@@ -217,8 +222,6 @@ export class CommandView {
     li.append(a);
     $("files").append(li);
   }
-
-  activate() {}
 
   relabel() {
     if (this.c) {

@@ -3,7 +3,7 @@
 // on an N × N grid (coons_view), with the numbers at (u, v) from `cagd coons --steps`.
 
 import { explainInto } from "./explain.js";
-import { num } from "./numbers.js";
+import { num, toNumber } from "./numbers.js";
 import { join, split } from "./shell.js";
 import { View3D } from "./view3d.js";
 
@@ -197,10 +197,12 @@ export default class CoonsView {
     const answer = this.app.runHere(this.app.localized(argv));
     $("coons-steps").textContent = answer.ok ? answer.stdout : answer.error;
     $("coons-cmd").textContent = join(this.app.localized(argv));
-    const json = this.app.runHere(this.argv("json").filter((a) => a !== "--exact"));
-    if (json.ok) {
-      const r = JSON.parse(json.stdout).result;
-      this.marker = r.map((row) => (Array.isArray(row) ? row[0] : row));
+    // The point x(u, v) as exact fractions (the answer line) and in doubles (the marker).
+    const json = this.app.runHere(this.argv("json"));
+    const point = json.ok ? JSON.parse(json.stdout).result.map((row) => String(Array.isArray(row) ? row[0] : row)) : null;
+    $("coons-answer").textContent = point ? `x(${$("coons-u").value}, ${$("coons-v").value}) = (${point.join(", ")})` : "";
+    if (point) {
+      this.marker = point.map(toNumber);
       this.draw();
     }
     if (commit) this.app.setHash(this.state());

@@ -210,7 +210,7 @@ function control(cmd, a, v) {
     return labelled(id, name, s);
   }
   if (kind === "script") {
-    const area = el("textarea", { rows: 5, spellcheck: "false", dataset: { arg: "script" } });
+    const area = el("textarea", { rows: 5, spellcheck: "false", dataset: { arg: "script", of: a.id } });
     area.value = v.script ?? "";
     return labelled(id, t("script"), area, t("scriptHint"));
   }

@@ -7,8 +7,8 @@ import { num } from "./numbers.js";
 export { num };
 
 const NS = "http://www.w3.org/2000/svg";
-/** The radius of a handle's hit area on the screen, in CSS pixels (a 44 px target). */
-const HIT_PX = 22;
+/** The radius of a handle's hit area on the screen, in CSS pixels (a 46 px target: at least 44 after rounding). */
+const HIT_PX = 23;
 
 export function el(name, attrs = {}, parent = null) {
   const e = document.createElementNS(NS, name);

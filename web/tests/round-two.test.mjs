@@ -41,7 +41,10 @@ async function runForm(page, name, values, switches = {}) {
     await page.selectOption("#construction", name);
     // Start from an empty form (not the example's values).
     await page.evaluate(() => {
-      for (const e of document.querySelectorAll("#fields [data-arg]")) if (e.type !== "checkbox") e.value = "";
+      for (const e of document.querySelectorAll("#command-form [data-arg]")) {
+        if (e.type === "checkbox") e.checked = false;
+        else e.value = "";
+      }
     });
   }
   for (const [id, value] of Object.entries(values)) await page.fill(`#f-${id}`, value);
@@ -120,7 +123,7 @@ test("D3: every subcommand has a form from the command line's definitions; a typ
     for (const { name, args } of all) {
       sel.value = name;
       sel.dispatchEvent(new Event("change"));
-      const shown = new Set([...document.querySelectorAll("#command-form [data-arg]")].map((e) => e.dataset.arg));
+      const shown = new Set([...document.querySelectorAll("#command-form [data-arg]")].flatMap((e) => [e.dataset.arg, e.dataset.of]));
       for (const id of args) if (!shown.has(id)) out.push(`${name}: ${id}`);
       for (const el of document.querySelectorAll("#view-command input, #view-command select, #view-command textarea"))
         if (!(el.labels?.length || el.getAttribute("aria-label"))) out.push(`${name}: unnamed ${el.id}`);
@@ -277,7 +280,7 @@ test("the seven homework tasks, each in a view and by a form: exact, with steps 
   // 1. Primer 2.4 with its scheme.
   await form("decasteljau", { control: "[0 0 0; 0 2 2; 8 2 0; 4 0 0]'", t: "1/2" }, [/\(7\/2, 3\/2, 3\/4\)/, /de Casteljau scheme/]);
   // 2. The elevation of Primer 2.4.
-  await form("elevate", { control: "[0 0 0; 0 2 2; 8 2 0; 4 0 0]'", by: "1" }, [/control =\n\n\s+0\s+0\s+4\s+6\s+4\n\s+0\s+3\/2\s+2\s+3\/2\s+0\n\s+0\s+3\/2\s+1\s+0\s+0\n/]);
+  await form("elevate", { control: "[0 0 0; 0 2 2; 8 2 0; 4 0 0]'", by: "1" }, [/control =\n\n\s+0\s+0\s+4\s+7\s+4\n\s+0\s+3\/2\s+2\s+3\/2\s+0\n\s+0\s+3\/2\s+1\s+0\s+0\n/]);
   // 3. Primer 4.3.
   await form("coons", { c1: "[u;0;u-u^2]", c2: "[u;1;u]", d1: "[0;v^2;v-v^2]", d2: "[1;v;v]", u: "0.2", v: "0.5" }, [/result =\n\n\s+1\/5\n\s+3\/10\n\s+19\/50\n/]);
   // 4. Knot insertion u = 3/2.
@@ -303,7 +306,7 @@ test("the seven homework tasks, each in a view and by a form: exact, with steps 
     await p.close();
   };
   await view("bezier", `cagd decasteljau "[0 0 0; 0 2 2; 8 2 0; 4 0 0]'" --t 1/2 --steps --exact`, [/\(7\/2, 3\/2, 3\/4\)/, /de Casteljau scheme, degree 3, t = 1\/2/], "#bezier-canvas");
-  await view("elevate", `cagd elevate "[0 0 0; 0 2 2; 8 2 0; 4 0 0]'" --by 1 --steps --exact`, [/\(0, 3\/2, 3\/2\)/, /\(4, 2, 1\)/, /\(6, 3\/2, 0\)/], "#elevate-canvas");
+  await view("elevate", `cagd elevate "[0 0 0; 0 2 2; 8 2 0; 4 0 0]'" --by 1 --steps --exact`, [/\(0, 3\/2, 3\/2\)/, /\(4, 2, 1\)/, /\(7, 3\/2, 0\)/], "#elevate-canvas");
   await view("coons", null, [/19\/50/, /rcd =/], "#coons-canvas");
   await view("insert", null, [/\(7\/4, 11\/4\)/, /\(5\/2, 2\)/, /alpha/], "#insert-plane polyline.inserted");
   await view("spline", null, [/\(1, 1\)\s+\(31\/15, 16\/5\)\s+\(41\/15, -9\/5\)\s+\(-1, 1\)/], "#spline-plane polyline.curve");
@@ -344,28 +347,32 @@ test("languages: Slovenian and Czech pages from the browser's language, the swit
 
 test("phone (390 × 844): one row of tabs, 44 px targets, the answer above the fold", async () => {
   const phone = await browser({ viewport: { width: 390, height: 844 }, isMobile: true, hasTouch: true, deviceScaleFactor: 2 });
-  const page = await openPage(phone.context, server.url, "#view=bezier");
-  await page.locator("#bezier-steps").filter({ hasText: "result" }).waitFor();
-  const tabs = await page.locator('[role="tab"]').evaluateAll((list) => list.map((t) => t.getBoundingClientRect()).map((r) => ({ top: r.top, h: r.height })));
-  assert.equal(new Set(tabs.map((r) => Math.round(r.top))).size, 1, "the tabs are one row");
-  assert.ok(tabs.every((r) => r.h >= 44), JSON.stringify(tabs));
-  const hits = await page.locator("#bezier-plane circle.hit").evaluateAll((list) => list.map((c) => c.getBoundingClientRect().width));
-  assert.ok(hits.length >= 4 && hits.every((w) => w >= 44), JSON.stringify(hits));
-  for (const sel of ["#bezier-add", "#bezier-exact", "#bezier-t-text", '#view-bezier table.points input[data-row="0"][data-col="0"]']) {
-    const box = await page.locator(sel).evaluate((e) => (e.closest("label") ?? e).getBoundingClientRect().height);
-    assert.ok(box >= 44, `${sel}: ${box}`);
+  // Closed even when an assertion fails (an open browser would keep the test runner waiting).
+  try {
+    const page = await openPage(phone.context, server.url, "#view=bezier");
+    await page.locator("#bezier-steps").filter({ hasText: "result" }).waitFor();
+    const tabs = await page.locator('[role="tab"]').evaluateAll((list) => list.map((t) => t.getBoundingClientRect()).map((r) => ({ top: r.top, h: r.height })));
+    assert.equal(new Set(tabs.map((r) => Math.round(r.top))).size, 1, "the tabs are one row");
+    assert.ok(tabs.every((r) => r.h >= 44), JSON.stringify(tabs));
+    const hits = await page.locator("#bezier-plane circle.hit").evaluateAll((list) => list.map((c) => c.getBoundingClientRect().width));
+    assert.ok(hits.length >= 4 && hits.every((w) => w >= 44), JSON.stringify(hits));
+    for (const sel of ["#bezier-add", "#bezier-exact", "#bezier-t-text", '#view-bezier table.points input[data-row="0"][data-col="0"]']) {
+      const box = await page.locator(sel).evaluate((e) => (e.closest("label") ?? e).getBoundingClientRect().height);
+      assert.ok(box >= 44, `${sel}: ${box}`);
+    }
+    const answer = await page.locator("#bezier-answer").boundingBox();
+    assert.ok(answer.y + answer.height <= 844, `the answer ends at ${answer.y + answer.height}`);
+    assert.match(await text(page, "#bezier-answer"), /7\/2/);
+    await shot(page, "phone-bezier", false);
+    await page.click("#tab-command");
+    await page.locator("#stdout").filter({ hasText: "result" }).waitFor();
+    const out = await page.locator("#stdout").boundingBox();
+    assert.ok(out.y < 844, `the command's output starts at ${out.y}`);
+    await shot(page, "phone-command", false);
+    await page.close();
+  } finally {
+    await phone.close();
   }
-  const answer = await page.locator("#bezier-answer").boundingBox();
-  assert.ok(answer.y + answer.height <= 844, `the answer ends at ${answer.y + answer.height}`);
-  assert.match(await text(page, "#bezier-answer"), /7\/2/);
-  await shot(page, "phone-bezier", false);
-  await page.click("#tab-command");
-  await page.locator("#stdout").filter({ hasText: "result" }).waitFor();
-  const out = await page.locator("#stdout").boundingBox();
-  assert.ok(out.y < 844, `the command's output starts at ${out.y}`);
-  await shot(page, "phone-command", false);
-  await page.close();
-  await phone.close();
 });
 
 test("history: views and commands are entries, Back returns to them", async () => {

@@ -13,7 +13,6 @@ use cagd_cli::{CliError, ErrorKind};
 use cagd_ops::knots::Degree;
 use cagd_ops::ops::{BSpline, Nurbs};
 use cagd_ops::ops::{DeCasteljau, Elevate, Subdivide};
-use cagd_ops::Params;
 use cagd_ops::{execute, Context, OpError, Operation, Params, Role};
 use nalgebra::DMatrix;
 use serde_json::{json, Value};
