@@ -37,7 +37,6 @@
 //! size or modification time changes); larger ones are streamed from disk uncompressed.
 
 use std::path::{Path, PathBuf};
-use std::time::Duration;
 
 use clap::Args;
 
