@@ -44,7 +44,7 @@ export async function serve() {
     url,
     stop: () =>
       new Promise((ok) => {
-        if (child.exitCode !== null) return ok();
+        if (child.exitCode !== null || child.signalCode !== null) return ok(); // stopped already
         child.once("exit", ok);
         child.kill();
       }),

@@ -14,43 +14,49 @@ const link = (cmd) => `#cmd=${encodeURIComponent(cmd)}`;
 test("offline: load, stop the server, reload, open a view never visited, run a command; Stop starts no request loop", async () => {
   const server = await serve();
   const chrome = await browser();
-  const page = await openPage(chrome.context, server.url, link(PRIMER_2_4));
-  await page.waitForFunction(() => !!navigator.serviceWorker?.controller, null, { timeout: 30000 });
-  await page.evaluate(() => navigator.serviceWorker.ready);
-  await server.stop();
-  const requests = [];
-  chrome.context.on("request", (r) => requests.push(r.url()));
-  await page.reload();
-  await page.waitForFunction(() => document.documentElement.dataset.firstAnswerMs !== undefined, null, { timeout: 30000 });
-  assert.match(await page.locator("#stdout").textContent(), /7\/2/);
-  // Views never opened before: their modules come from the service worker's cache.
-  for (const view of ["basis", "spline", "insert"]) {
-    await page.click(`#tab-${view}`);
-    await page.locator(`#${view}-steps`).filter({ hasText: "result" }).waitFor({ timeout: 30000 });
+  // Closed even when an assertion fails (an open browser would keep the test runner waiting).
+  try {
+    const page = await openPage(chrome.context, server.url, link(PRIMER_2_4));
+    await page.waitForFunction(() => !!navigator.serviceWorker?.controller, null, { timeout: 30000 });
+    await page.evaluate(() => navigator.serviceWorker.ready);
+    await server.stop();
+    const requests = [];
+    chrome.context.on("request", (r) => requests.push(r.url()));
+    await page.reload();
+    await page.waitForFunction(() => document.documentElement.dataset.firstAnswerMs !== undefined, null, { timeout: 30000 });
+    assert.match(await page.locator("#stdout").textContent(), /7\/2/);
+    // Views never opened before: their modules come from the service worker's cache.
+    for (const view of ["basis", "spline", "insert"]) {
+      await page.click(`#tab-${view}`);
+      // Knot insertion answers the new control points; the others a result.
+      await page.locator(`#${view}-steps`).filter({ hasText: view === "insert" ? "control" : "result" }).waitFor({ timeout: 30000 });
+    }
+    await page.click("#tab-command");
+    const answer = await runOnPage(page, "cagd bernstein --degree 3 --t 0.5 --exact");
+    assert.ok(answer.ok, answer.error);
+    assert.match(answer.stdout, /1\/8\s+3\/8\s+3\/8\s+1\/8/);
+    // Stop a running command with no server: the worker is not restarted in a loop.
+    await page.fill("#cmdline", "cagd surface '[u; v; u.*v + sin(u.*v)]' --n 1500 --format csv -o grid.csv");
+    await page.press("#cmdline", "Enter");
+    await page.locator("#stop:not([disabled])").waitFor();
+    await page.waitForTimeout(300);
+    await page.click("#stop");
+    const before = requests.length;
+    await page.waitForTimeout(3000);
+    const during = requests.length - before;
+    assert.ok(during <= 2, `${during} requests in the 3 s after Stop`);
+    const again = await runOnPage(page, "cagd bernstein --degree 2 --t 0.5 --exact");
+    assert.ok(again.ok, again.error);
+    assert.deepEqual(
+      page.errors.filter((e) => !/Failed to load resource|ERR_CONNECTION_REFUSED/.test(e)),
+      [],
+    );
+    writeFileSync(join(resultsDir, "offline.json"), JSON.stringify({ requestsAfterStop: during, requestsOffline: requests.length }, null, 2));
+    await page.close();
+  } finally {
+    await chrome.close();
+    await server.stop();
   }
-  await page.click("#tab-command");
-  const answer = await runOnPage(page, "cagd bernstein --degree 3 --t 0.5 --exact");
-  assert.ok(answer.ok, answer.error);
-  assert.match(answer.stdout, /1\/8\s+3\/8\s+3\/8\s+1\/8/);
-  // Stop a running command with no server: the worker is not restarted in a loop.
-  await page.fill("#cmdline", "cagd surface '[u; v; u.*v + sin(u.*v)]' --n 1500 --format csv -o grid.csv");
-  await page.press("#cmdline", "Enter");
-  await page.locator("#stop:not([disabled])").waitFor();
-  await page.waitForTimeout(300);
-  await page.click("#stop");
-  const before = requests.length;
-  await page.waitForTimeout(3000);
-  const during = requests.length - before;
-  assert.ok(during <= 2, `${during} requests in the 3 s after Stop`);
-  const again = await runOnPage(page, "cagd bernstein --degree 2 --t 0.5 --exact");
-  assert.ok(again.ok, again.error);
-  assert.deepEqual(
-    page.errors.filter((e) => !/Failed to load resource|ERR_CONNECTION_REFUSED/.test(e)),
-    [],
-  );
-  writeFileSync(join(resultsDir, "offline.json"), JSON.stringify({ requestsAfterStop: during, requestsOffline: requests.length }, null, 2));
-  await page.close();
-  await chrome.close();
 });
 
 test("figures: bytes and .wasm downloads of a cold load, first answer over 5 cold loads, 3-D drag frames", async () => {
