@@ -173,7 +173,7 @@ export class BezierFamily {
     const snap = document.getElementById(`${this.name}-snap`).checked ? 0.1 : 0;
     this.points[i] = p.map((x) => dragText(x, snap, 10));
     if (this.dim === 2) this.plane.moveHandle("handles", i, this.points[i].map(toNumber), `b${i}`);
-    this.table.set(this.points);
+    this.table.set(this.points, AXES.slice(0, this.dim));
     this.update(false);
     this.frameTimes.push(performance.now() - t0);
   }

@@ -264,7 +264,7 @@ export class SplineFamily {
     const snap = this.snap ? 0.1 : 0;
     this.points[i] = q.map((x) => dragText(x, snap, 10));
     this.plane.moveHandle("handles", i, this.points[i].map(toNumber), `P${i}`);
-    this.table.set(this.rows());
+    this.table.set(this.rows(), this.columns);
     this.update(false);
     this.frameTimes.push(performance.now() - t0);
   }

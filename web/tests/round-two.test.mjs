@@ -232,6 +232,8 @@ test("D8: a #view=bezier link with 3-D points opens the 3-D view (rotate, drag a
   assert.notDeepEqual(moved, ["8", "2", "0"], "the point moved");
   assert.equal(moved.length, 3);
   assert.match(await page.inputValue('#view-bezier table.points input[data-row="2"][data-col="0"]'), /^-?\d+(\.\d+)?$/);
+  // The table keeps its z column after a drag (four points, three coordinates each).
+  assert.equal(await page.locator('#view-bezier table.points input[data-col="2"]').count(), 4);
   await shot(page, "view-bezier-3d");
   assert.deepEqual(page.errors, []);
   await page.close();
