@@ -61,7 +61,7 @@ fn steps_are_labelled_in_slovenian_and_czech_and_keep_their_names() {
     ]);
     assert!(
         coons.contains(
-            "% r_cd: bilinearna interpolacija štirih oglišč\nrcd =\n\n    1/5\n    1/2\n    1/10\n"
+            "% r_cd: bilinearna interpolacija štirih oglišč\nrcd =\n\n     1/5\n     1/2\n    1/10\n"
         ),
         "{coons}"
     );
