@@ -52,9 +52,44 @@ if command -v wasm-opt >/dev/null 2>&1; then
         rm -f "$wasm.opt"
     fi
 fi
-cp web/index.html web/style.css "$dist/"
+cp web/index.html web/style.css web/sw.js "$dist/"
 cp -r web/js "$dist/js"
+
+echo "== hashed file names"
+build=$(cat "$dist"/js/*.js "$dist"/pkg/*.js "$wasm" "$dist/style.css" "$dist/index.html" "$dist/sw.js" |
+    sha256sum | cut -c1-16)
+for f in "$dist"/js/*.js "$dist/pkg/cagd_web.js"; do
+    mv "$f" "${f%.js}.$build.js"
+done
+mv "$wasm" "$dist/pkg/cagd_web_bg.$build.wasm"
+wasm="$dist/pkg/cagd_web_bg.$build.wasm"
+mv "$dist/style.css" "$dist/style.$build.css"
+# Module specifiers ("./plane.js", "../pkg/cagd_web.js") and the .wasm's name, in every module;
+# not the glue's "./cagd_web_bg.js", the name of the .wasm's imports (no file has it).
+sed -i -E "s#([\"'])(\.{1,2}/[A-Za-z0-9_/-]+)\.js\1#\1\2.$build.js\1#g; s#cagd_web_bg\.$build\.js#cagd_web_bg.js#g; s#cagd_web_bg\.wasm#cagd_web_bg.$build.wasm#g" \
+    "$dist"/js/*.js "$dist"/pkg/*.js
+sed -i -E "s#\"(js/[A-Za-z0-9_-]+|pkg/cagd_web)\.js\"#\"\1.$build.js\"#g; s#pkg/cagd_web_bg\.wasm#pkg/cagd_web_bg.$build.wasm#; s#style\.css#style.$build.css#" \
+    "$dist/index.html"
+files=$(cd "$dist" && { echo "./"; echo "index.html"; find js pkg -type f -name "*.$build.*"; echo "style.$build.css"; } |
+    sed 's/.*/"&"/' | paste -sd, -)
+sed -i "s#__BUILD__#$build#; s#__FILES__#[$files]#" "$dist/sw.js"
+
+if command -v node >/dev/null 2>&1; then
+    echo "== brotli (node's zlib, quality 11)"
+    (cd "$dist" && find . -type f \( -name "*.js" -o -name "*.css" -o -name "*.html" -o -name "*.wasm" \) -print0 |
+        xargs -0 node -e '
+            const fs = require("fs"), zlib = require("zlib");
+            for (const f of process.argv.slice(1)) {
+                const bytes = fs.readFileSync(f);
+                const br = zlib.brotliCompressSync(bytes, { params: {
+                    [zlib.constants.BROTLI_PARAM_QUALITY]: 11,
+                    [zlib.constants.BROTLI_PARAM_LGWIN]: 24,
+                    [zlib.constants.BROTLI_PARAM_SIZE_HINT]: bytes.length } });
+                if (br.length < bytes.length) fs.writeFileSync(f + ".br", br);
+            }')
+fi
 
 bytes=$(wc -c <"$wasm")
 gz=$(gzip -9 -c "$wasm" | wc -c)
-echo "== built $dist: $(basename "$wasm") $bytes bytes ($gz gzipped)"
+br=$([ -f "$wasm.br" ] && wc -c <"$wasm.br" || echo "-")
+echo "== built $dist (build $build): $(basename "$wasm") $bytes bytes ($gz gzipped, $br brotli)"

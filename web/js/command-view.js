@@ -1,52 +1,15 @@
-// The command view: every construction of the command line, as a form and as the command line
-// itself. Both run the same arguments through cagd_cli::run in the worker.
+// The command view: every subcommand of the command line, as a form generated from the
+// program's own argument definitions (forms.js) and as the command line itself. Both run the
+// same arguments through cagd_cli::run in the command view's worker. A typed command always
+// shows its own form and Octave code; the form's Run runs what the form shows.
 
-import { argvOf, byName, constructions, SCRIPT_FILE, valuesOf } from "./constructions.js";
+import { explainInto } from "./explain.js";
+import { argvOf, buildForm, examples, readForm, SCRIPT_FILE, valuesOf } from "./forms.js";
+import { t } from "./i18n.js";
+import { octaveCode } from "./octave.js";
 import { join, split } from "./shell.js";
 
 const $ = (id) => document.getElementById(id);
-
-function field(id, labelText, control, hint) {
-  const p = document.createElement("p");
-  const label = document.createElement("label");
-  label.htmlFor = id;
-  label.textContent = labelText;
-  control.id = id;
-  p.append(label, control);
-  if (hint) {
-    const small = document.createElement("small");
-    small.id = `${id}-hint`;
-    small.textContent = hint;
-    control.setAttribute("aria-describedby", small.id);
-    p.append(small);
-  }
-  return p;
-}
-
-function input(value = "") {
-  const i = document.createElement("input");
-  i.type = "text";
-  i.spellcheck = false;
-  i.autocomplete = "off";
-  i.value = value;
-  return i;
-}
-
-function checkbox(id, text, checked) {
-  const label = document.createElement("label");
-  const box = document.createElement("input");
-  box.type = "checkbox";
-  box.id = id;
-  box.checked = !!checked;
-  label.append(box, ` ${text}`);
-  return label;
-}
-
-function select(choices, value) {
-  const s = document.createElement("select");
-  for (const [v, text] of choices) s.add(new Option(text, v, false, v === value));
-  return s;
-}
 
 export class CommandView {
   constructor(app) {
@@ -54,10 +17,12 @@ export class CommandView {
     this.urls = [];
     this.timer = null;
     this.runs = 0;
+    this.byName = Object.fromEntries(app.schema.map((c) => [c.name, c]));
+    this.plotFile = null;
     const sel = $("construction");
-    for (const c of constructions) sel.add(new Option(`${c.name} — ${c.title}`, c.name));
-    sel.addEventListener("change", () => this.choose(sel.value, byName[sel.value].example, true));
-    $("example").addEventListener("click", () => this.choose(this.c.name, this.c.example, true));
+    for (const c of app.schema) sel.add(new Option(c.about ? `${c.name} — ${c.about.replace(/\.$/, "")}` : c.name, c.name));
+    sel.addEventListener("change", () => this.choose(sel.value, this.example(sel.value), true));
+    $("example").addEventListener("click", () => this.choose(this.c.name, this.example(this.c.name), true));
     $("command-form").addEventListener("submit", (e) => {
       e.preventDefault();
       this.runForm();
@@ -68,111 +33,50 @@ export class CommandView {
       e.preventDefault();
       this.runTyped($("cmdline").value);
     });
-    $("stop").addEventListener("click", () => app.cli.stop());
-    this.choose("decasteljau", byName.decasteljau.example, false);
+    $("stop").addEventListener("click", () => app.cli.stop("command"));
+    this.show({ name: "decasteljau", values: this.example("decasteljau") });
   }
 
-  /** Shows the form of construction `name` filled with `values`; runs it if `run`. */
-  choose(name, values, run) {
-    this.c = byName[name];
+  /** The form values of the first example of subcommand `name` (from its help). */
+  example(name) {
+    const c = this.byName[name];
+    const line = examples(c)[0];
+    let v = { extra: [] };
+    if (line) {
+      try {
+        v = valuesOf(c, split(line).slice(2));
+      } catch {
+        /* an example the page cannot read: an empty form */
+      }
+    }
+    if (v.plot === undefined && c.args.some((a) => a.id === "plot")) v.plot = true;
+    return v;
+  }
+
+  /** Shows the form of subcommand `name` filled with `values` (nothing runs). */
+  show({ name, values }) {
+    this.c = this.byName[name];
     $("construction").value = name;
-    $("construction-about").textContent = this.c.about;
-    this.fill({ plot: true, ...values });
+    $("construction-about").textContent = this.c.about ?? "";
+    explainInto($("command-explain"), name);
+    this.plotFile = values.plotFile ?? null;
+    buildForm(this.c, values, $("fields"), $("switches"));
+  }
+
+  /** Shows subcommand `name`'s form with `values` and runs it if `run`. */
+  choose(name, values, run) {
+    this.show({ name, values });
     this.formChanged(run ? 0 : null);
   }
 
-  fill(v) {
-    const c = this.c;
-    const box = $("fields");
-    box.replaceChildren();
-    for (const f of c.fields) {
-      let control;
-      if (f.type === "lines") {
-        control = document.createElement("textarea");
-        control.rows = 3;
-        control.spellcheck = false;
-        control.value = v[f.key] ?? "";
-      } else if (f.type === "select") {
-        control = select([["", "(default)"], ...f.choices.map((x) => [x, x])], v[f.key] ?? "");
-      } else {
-        control = input(v[f.key] ?? "");
-        if (f.type === "number") control.inputMode = "numeric";
-      }
-      control.dataset.key = f.key;
-      const flag = f.positional ? "" : ` (${f.flag})`;
-      box.append(field(`f-${f.key}`, `${f.label}${flag}`, control, f.hint));
-    }
-    if (c.options.script || c.options.scriptFile) {
-      const area = document.createElement("textarea");
-      area.rows = 5;
-      area.spellcheck = false;
-      area.value = v.script ?? "";
-      area.dataset.key = "script";
-      const what = c.options.scriptFile ? "The data script" : "Data script run first (--script), optional";
-      box.append(field("f-script", `${what} — file ${SCRIPT_FILE}`, area, "assignments and for loops, as in the thesis's appendices"));
-    }
-    const extra = input(v.extra?.length ? join(v.extra) : "");
-    extra.dataset.key = "extra";
-    box.append(field("f-extra", "Other arguments", extra, "anything else the command line takes, e.g. --max-work 1000000 or -o result.txt"));
-
-    const sw = $("switches");
-    sw.replaceChildren();
-    const legend = document.createElement("legend");
-    legend.textContent = "Output";
-    sw.append(legend);
-    if (c.options.exact !== false) sw.append(checkbox("s-exact", "Exact fractions (--exact)", v.exact));
-    if (c.options.steps) sw.append(checkbox("s-steps", "Steps (--steps)", v.steps));
-    if (c.options.rows) sw.append(checkbox("s-rows", "Points are rows (--rows)", v.rows));
-    if (c.options.plot) sw.append(checkbox("s-plot", "Picture (--plot, SVG)", v.plot));
-    if (c.options.mesh) {
-      const m = select(
-        [
-          ["", "none"],
-          ["stl", "STL"],
-          ["obj", "OBJ"],
-          ["ply", "PLY"],
-        ],
-        v.mesh ?? "",
-      );
-      m.dataset.key = "mesh";
-      sw.append(field("s-mesh", "Mesh file (--mesh)", m));
-    }
-    if (c.options.format !== false) {
-      const f = select(
-        [
-          ["text", "text"],
-          ["json", "JSON"],
-          ["csv", "CSV"],
-          ["octave", "Octave save -text"],
-        ],
-        v.format ?? "text",
-      );
-      f.dataset.key = "format";
-      sw.append(field("s-format", "Format (--format)", f));
-    }
-  }
-
   values() {
-    const v = {};
-    for (const control of $("fields").querySelectorAll("[data-key]")) v[control.dataset.key] = control.value.trim() === "" ? "" : control.value.replace(/\s+$/, "");
-    for (const [id, key] of [
-      ["s-exact", "exact"],
-      ["s-steps", "steps"],
-      ["s-rows", "rows"],
-      ["s-plot", "plot"],
-    ])
-      if ($(id)) v[key] = $(id).checked;
-    for (const control of $("switches").querySelectorAll("select[data-key]")) v[control.dataset.key] = control.value;
-    try {
-      v.extra = v.extra ? split(v.extra) : [];
-    } catch {
-      v.extra = [];
-    }
+    const v = readForm($("fields"), $("switches"));
+    if (this.plotFile) v.plotFile = this.plotFile;
     return v;
   }
 
   files(v) {
-    return v.script && v.script.trim() ? [{ name: SCRIPT_FILE, text: v.script }] : [];
+    return typeof v.script === "string" && v.script.trim() ? [{ name: SCRIPT_FILE, text: v.script }] : [];
   }
 
   /** The form changed: new command line and Octave code; run after `delay` ms (null: not). */
@@ -181,71 +85,100 @@ export class CommandView {
     this.args = argvOf(this.c, v);
     this.scriptFiles = this.files(v);
     $("cmdline").value = join(["cagd", ...this.args]);
-    this.showOctave(v);
+    this.showOctave(this.c.name, v);
     clearTimeout(this.timer);
-    if (delay !== null) this.timer = setTimeout(() => this.execute(), delay);
+    if (delay !== null) this.timer = setTimeout(() => this.execute(false), delay);
   }
 
-  showOctave(v) {
-    let code;
-    try {
-      code = this.c.octave(v);
-    } catch {
-      code = "% No Octave code for these inputs.";
-    }
-    $("octave").textContent = code;
+  showOctave(name, v) {
+    $("octave").textContent = octaveCode(name, v) ?? t("noOctave", { name });
   }
 
-  runForm() {
+  runForm(push = true) {
     clearTimeout(this.timer);
     this.formChanged(null);
-    return this.execute();
+    return this.execute(push);
   }
 
-  /** Runs a command line typed (or linked) as text; fills the form from it. */
-  runTyped(text, files = null) {
+  /** Runs a command line typed (or linked) as text; shows its subcommand's form filled from it. */
+  runTyped(text, files = null, push = true) {
     clearTimeout(this.timer);
     let args;
     try {
       args = split(text.trim());
     } catch (e) {
-      return this.show({ ok: false, error: `cagd: error: cagd: ${e.message}; expected a command line as a shell reads it` }, text);
+      return this.answer({ ok: false, error: `cagd: error: cagd: ${e.message}; expected a command line as a shell reads it` }, text);
     }
     if (args[0] === "cagd") args.shift();
-    const c = byName[args[0]];
+    const c = this.byName[args[0]];
     if (c) {
       const v = valuesOf(c, args.slice(1));
       if (files?.length) v.script = files[0].text;
-      this.c = c;
-      $("construction").value = c.name;
-      $("construction-about").textContent = c.about;
-      this.fill(v);
-      this.showOctave(this.values());
+      this.show({ name: c.name, values: v });
+      this.showOctave(c.name, this.values());
+    } else {
+      // Not a subcommand: no form belongs to it, so none is shown as if it did.
+      $("fields").replaceChildren();
+      $("switches").hidden = true;
+      $("construction").value = "";
+      $("construction-about").textContent = "";
+      $("command-explain").hidden = true;
+      $("octave").textContent = "";
+      this.c = null;
     }
     this.args = args;
     this.scriptFiles = files ?? (c ? this.files(this.values()) : []);
     $("cmdline").value = join(["cagd", ...args]);
-    return this.execute();
+    return this.execute(push);
   }
 
-  async execute() {
-    const argv = ["cagd", ...this.args];
+  /** Opened from another view before anything ran here: the form's example runs (no blank view). */
+  activate() {
+    if (this.args === undefined) this.runForm(false);
+  }
+
+  /** The state a link keeps. */
+  linkState() {
+    const line = join(this.app.localized(["cagd", ...(this.args ?? [])]));
+    return { cmd: line, file: this.scriptFiles?.[0]?.text };
+  }
+
+  async execute(push) {
+    // The page's language is part of the command (--lang): a copied line prints the same steps.
+    const argv = this.app.localized(["cagd", ...this.args]);
     const line = join(argv);
+    $("cmdline").value = line;
     const files = this.scriptFiles ?? [];
-    this.app.setHash({ cmd: line, file: files[0]?.text });
-    $("permalink").href = this.app.link({ cmd: line, file: files[0]?.text });
-    $("busy").textContent = "Running…";
+    const state = { view: "command", cmd: line, file: files[0]?.text };
+    if (this.app.current === "command") {
+      if (push) this.app.pushHash(state);
+      else this.app.setHash(state);
+    }
+    $("permalink").href = this.app.link(state);
+    // A new command: the old answer goes at once, so nothing stale stays beside "Running…".
+    this.clear();
+    $("busy").textContent = t("running");
     $("stop").disabled = false;
-    const answer = await this.app.cli.run(argv, files);
-    if (answer.stopped && this.app.cli.busy) return; // superseded by a newer run
+    const answer = await this.app.cli.run(argv, files, "command");
+    if (answer.superseded) return; // a newer command of this view took over
     $("stop").disabled = true;
-    this.show(answer, line);
+    this.answer(answer, line);
   }
 
-  show(answer, line) {
+  clear() {
     for (const url of this.urls) URL.revokeObjectURL(url);
     this.urls = [];
-    $("busy").textContent = answer.ok ? "Done." : "";
+    $("error").hidden = true;
+    $("error").textContent = "";
+    $("stdout").textContent = "";
+    $("warnings").replaceChildren();
+    $("pictures").replaceChildren();
+    $("files").replaceChildren();
+  }
+
+  answer(answer, line) {
+    this.clear();
+    $("busy").textContent = answer.ok ? t("done") : "";
     const error = $("error");
     error.hidden = answer.ok;
     error.textContent = answer.ok ? "" : answer.error;
@@ -257,38 +190,45 @@ export class CommandView {
         return li;
       }),
     );
-    const pictures = $("pictures");
-    const list = $("files");
-    pictures.replaceChildren();
-    list.replaceChildren();
-    for (const f of answer.files ?? []) {
-      const svg = f.path.toLowerCase().endsWith(".svg");
-      const blob = new Blob([f.bytes], { type: svg ? "image/svg+xml" : "application/octet-stream" });
-      const url = URL.createObjectURL(blob);
-      this.urls.push(url);
-      const name = f.path.split("/").pop();
-      if (svg) {
-        const fig = document.createElement("figure");
-        const img = document.createElement("img");
-        img.src = url;
-        img.alt = `Picture ${name} drawn by the command (the same plotting code as the cagd program)`;
-        const cap = document.createElement("figcaption");
-        cap.textContent = name;
-        fig.append(img, cap);
-        pictures.append(fig);
-      }
-      const li = document.createElement("li");
-      const a = document.createElement("a");
-      a.href = url;
-      a.download = name;
-      a.textContent = `Download ${f.path} (${f.size} bytes)`;
-      li.append(a);
-      list.append(li);
-    }
+    for (const f of answer.files ?? []) this.file(f);
     const result = $("result");
     result.dataset.run = String(++this.runs);
     result.dataset.ok = String(!!answer.ok);
     result.dataset.line = line;
     this.app.answered();
+  }
+
+  file(f) {
+    const svg = f.path.toLowerCase().endsWith(".svg");
+    const blob = new Blob([f.bytes], { type: svg ? "image/svg+xml" : "application/octet-stream" });
+    const url = URL.createObjectURL(blob);
+    this.urls.push(url);
+    const name = f.path.split("/").pop();
+    if (svg) {
+      const fig = document.createElement("figure");
+      const img = document.createElement("img");
+      img.src = url;
+      img.alt = t("picture", { name });
+      const cap = document.createElement("figcaption");
+      cap.textContent = name;
+      fig.append(img, cap);
+      $("pictures").append(fig);
+    }
+    const li = document.createElement("li");
+    const a = document.createElement("a");
+    a.href = url;
+    a.download = name;
+    a.textContent = t("download", { path: f.path, size: f.size });
+    li.append(a);
+    $("files").append(li);
+  }
+
+  relabel() {
+    if (this.c) {
+      explainInto($("command-explain"), this.c.name);
+      const v = this.values();
+      buildForm(this.c, v, $("fields"), $("switches"));
+      this.showOctave(this.c.name, v);
+    }
   }
 }

@@ -2,7 +2,8 @@
 // points in 3-D and see the bilinearly blended patch x = r_c + r_d − r_cd, or each of its parts,
 // on an N × N grid (coons_view), with the numbers at (u, v) from `cagd coons --steps`.
 
-import { num } from "./plane.js";
+import { explainInto } from "./explain.js";
+import { num, toNumber } from "./numbers.js";
 import { join, split } from "./shell.js";
 import { View3D } from "./view3d.js";
 
@@ -57,7 +58,12 @@ export default class CoonsView {
       }),
     );
     this.options();
+    this.relabel();
     this.update(true, true);
+  }
+
+  relabel() {
+    explainInto(document.getElementById("coons-explain"), "coons");
   }
 
   reset(data) {
@@ -188,13 +194,15 @@ export default class CoonsView {
   /** The numbers at (u, v), by the command line's own code. */
   numbers(commit) {
     const argv = this.argv();
-    const answer = this.app.runHere(argv);
+    const answer = this.app.runHere(this.app.localized(argv));
     $("coons-steps").textContent = answer.ok ? answer.stdout : answer.error;
-    $("coons-cmd").textContent = join(argv);
-    const json = this.app.runHere(this.argv("json").filter((a) => a !== "--exact"));
-    if (json.ok) {
-      const r = JSON.parse(json.stdout).result;
-      this.marker = r.map((row) => (Array.isArray(row) ? row[0] : row));
+    $("coons-cmd").textContent = join(this.app.localized(argv));
+    // The point x(u, v) as exact fractions (the answer line) and in doubles (the marker).
+    const json = this.app.runHere(this.argv("json"));
+    const point = json.ok ? JSON.parse(json.stdout).result.map((row) => String(Array.isArray(row) ? row[0] : row)) : null;
+    $("coons-answer").textContent = point ? `x(${$("coons-u").value}, ${$("coons-v").value}) = (${point.join(", ")})` : "";
+    if (point) {
+      this.marker = point.map(toNumber);
       this.draw();
     }
     if (commit) this.app.setHash(this.state());

@@ -3,6 +3,8 @@
 // numbers come from `cagd gordon --steps --format json` and `cagd curve --format json`, run in
 // the worker (a network may be large).
 
+import { explainInto } from "./explain.js";
+import { t } from "./i18n.js";
 import { join, split } from "./shell.js";
 import { View3D } from "./view3d.js";
 
@@ -32,7 +34,28 @@ export default class GordonView {
     $("gordon-n").addEventListener("change", () => this.update(false));
     $("gordon-n").addEventListener("input", () => ($("gordon-n-value").textContent = $("gordon-n").value));
     for (const id of ["gordon-g", "gordon-g1", "gordon-g2", "gordon-g12"]) $(id).addEventListener("input", () => this.draw());
+    this.relabel();
     this.update(true);
+  }
+
+  relabel() {
+    explainInto(document.getElementById("gordon-explain"), "gordon");
+  }
+
+  /** Runs a command in this view's own worker lane (never the command view's). */
+  run(argv) {
+    return this.app.cli.run(this.app.localized(argv), [], "gordon");
+  }
+
+  /** An error or a failed run: no stale numbers or picture stay beside the message. */
+  fail(answer) {
+    const err = $("gordon-error");
+    err.hidden = false;
+    err.textContent = answer.error;
+    this.grids = null;
+    this.network = [];
+    $("gordon-steps").textContent = "";
+    this.view.setScene({ surfaces: [], curves: [], points: [] }, true);
   }
 
   argv(extra = []) {
@@ -48,12 +71,11 @@ export default class GordonView {
     const shown = this.argv(["--n", n, "--steps"]);
     $("gordon-cmd").textContent = join(shown);
     this.app.setHash(this.state());
-    const answer = await this.app.cli.run(this.argv(["--n", n, "--steps", "--format", "json"]));
-    if (!answer.ok) {
-      err.hidden = answer.stopped;
-      err.textContent = answer.error;
-      return;
-    }
+    $("gordon-busy").textContent = t("running");
+    const answer = await this.app.cli.run(this.argv(["--n", n, "--steps", "--format", "json"]), [], "gordon");
+    if (answer.superseded) return;
+    $("gordon-busy").textContent = "";
+    if (!answer.ok) return this.fail(answer);
     err.hidden = true;
     const data = JSON.parse(answer.stdout);
     const flat = (g) => Float64Array.from(g.flat(2));
@@ -61,15 +83,18 @@ export default class GordonView {
     // The network curves, sampled by the command line.
     this.network = [];
     for (const c of [...lines("gordon-ucurves"), ...lines("gordon-vcurves")]) {
-      const r = await this.app.cli.run(["cagd", "curve", c, "--n", "41", "--format", "json"]);
+      const r = await this.app.cli.run(["cagd", "curve", c, "--n", "41", "--format", "json"], [], "gordon");
+      if (r.superseded) return;
       if (r.ok) {
         const m = JSON.parse(r.stdout).result;
         this.network.push(m[0].map((_, j) => m.map((row) => row[j])));
       }
     }
     // The readable steps at the network's first interior node, as text.
-    const text = await this.app.cli.run(this.argv(["--u", "0.25", "--v", "0.75", "--steps"]));
-    $("gordon-steps").textContent = text.ok ? text.stdout : text.error;
+    const text = await this.run(this.argv(["--u", "0.25", "--v", "0.75", "--steps", "--exact"]));
+    if (text.superseded) return;
+    if (!text.ok) return this.fail(text);
+    $("gordon-steps").textContent = text.stdout;
     this.draw(fit);
   }
 

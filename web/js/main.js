@@ -1,25 +1,34 @@
-// The page: views in tabs, links that keep the state (#cmd=<a cagd command line>), the
-// command-line worker and the WebAssembly on the main thread for the interactive views.
+// The page: views in tabs, links that keep the state (#view=…&cmd=<a cagd command line>) with
+// history entries (Back works), the page's language, the WebAssembly compiled once and shared
+// by the main thread (the interactive views) and the command-line workers, and the service
+// worker that keeps everything for offline use.
 
 import init, * as wasm from "../pkg/cagd_web.js";
 import { CommandLine } from "./cli.js";
 import { CommandView } from "./command-view.js";
+import { applyStatic, chooseLang, lang, LANG_NAMES, LANGS, setLang, t } from "./i18n.js";
 
 const $ = (id) => document.getElementById(id);
 const started = performance.now();
+const WASM_URL = new URL("../pkg/cagd_web_bg.wasm", import.meta.url);
 
 const viewModules = {
   bezier: () => import("./bezier.js"),
+  subdivide: () => import("./subdivide.js"),
+  elevate: () => import("./elevate.js"),
   coons: () => import("./coons.js"),
   gordon: () => import("./gordon.js"),
   bspline: () => import("./bspline.js"),
+  insert: () => import("./insert.js"),
+  basis: () => import("./basis.js"),
   nurbs: () => import("./nurbs.js"),
+  spline: () => import("./spline.js"),
 };
 
 /** Reads `#key=value&…` (values URL-encoded; `+` is a plus, not a space). */
-function readHash() {
+function readHash(hash = location.hash) {
   const out = {};
-  for (const part of location.hash.replace(/^#/, "").split("&")) {
+  for (const part of hash.replace(/^#/, "").split("&")) {
     if (!part) continue;
     const eq = part.indexOf("=");
     const key = eq < 0 ? part : part.slice(0, eq);
@@ -45,17 +54,33 @@ globalThis.cagdPanic = (message) => {
   panicMessage = message;
 };
 
+let routed = null;
+
 const app = {
   wasm,
-  cli: new CommandLine(),
+  cli: null,
+  schema: [],
+  steps: { labels: {}, phrases: [] },
   views: {},
   current: null,
   firstAnswer: null,
   link,
-  /** Keeps the page's state in its address (no new history entry). */
+  t,
+  /** Keeps the page's state in its address without a new history entry (drags, edits). */
   setHash(state) {
-    const view = state.view ?? app.current;
-    history.replaceState(null, "", link({ ...state, view }));
+    const h = link({ ...state, view: state.view ?? app.current });
+    if (h !== location.hash) history.replaceState(null, "", h);
+    routed = location.hash;
+  },
+  /** A new history entry for the state (a view opened, a command run): Back returns. */
+  pushHash(state) {
+    const h = link({ ...state, view: state.view ?? app.current });
+    if (h !== location.hash) history.pushState(null, "", h);
+    routed = location.hash;
+  },
+  /** `argv` with the page's language for the readable steps (`--lang`), unless English. */
+  localized(argv) {
+    return lang() === "en" || argv.includes("--lang") ? argv : [...argv, "--lang", lang()];
   },
   /** A command line on the main thread, for the interactive views' small inputs. */
   runHere(argv, files = []) {
@@ -72,11 +97,18 @@ const app = {
       return { ok: false, code: 1, error: panicMessage ?? `cagd: internal error: ${e}; this is a bug in cagd` };
     }
   },
+  /** The items of a command's answer as data (`--format json`): {ok, data} or {ok: false, error}. */
+  data(argv) {
+    const answer = app.runHere([...argv, "--format", "json"]);
+    if (!answer.ok) return answer;
+    return { ok: true, data: JSON.parse(answer.stdout), warnings: answer.warnings };
+  },
   /** Called when a result is shown: the first one gives the page's answer time. */
   answered() {
     if (app.firstAnswer === null) {
       app.firstAnswer = performance.now() - started;
       document.documentElement.dataset.firstAnswerMs = app.firstAnswer.toFixed(1);
+      registerServiceWorker();
     }
   },
   /** The value of an Octave matrix literal, read by the library: rows of numbers, or null. */
@@ -96,6 +128,7 @@ const app = {
     show("command");
     app.views.command.runTyped(cmd);
   },
+  show: (name, state) => show(name, state),
 };
 globalThis.cagdApp = app;
 
@@ -115,31 +148,44 @@ async function show(name, state = {}) {
     tab.setAttribute("aria-selected", String(on));
     tab.tabIndex = on ? 0 : -1;
     $(tab.getAttribute("aria-controls")).hidden = !on;
+    if (on) tab.scrollIntoView?.({ block: "nearest", inline: "nearest" });
   }
   const view = name === "command" ? app.views.command : await viewOf(name);
   if (state.cmd && view.load) view.load(state.cmd);
   else if (view.activate) view.activate();
-  if (name !== "command" && view.state) app.setHash(view.state());
-  else if (name !== "command") app.setHash({ view: name });
   return view;
 }
 
 async function route() {
+  if (location.hash === routed) return;
+  routed = location.hash;
   const h = readHash();
   const name = h.view ?? "command";
   if (name === "command") {
     await show("command");
-    if (h.cmd) app.views.command.runTyped(h.cmd, h.file ? [{ name: "data.m", text: h.file }] : null);
-    else app.views.command.runForm();
+    if (h.cmd) app.views.command.runTyped(h.cmd, h.file ? [{ name: "data.m", text: h.file }] : null, false);
+    else app.views.command.runForm(false);
   } else {
-    await show(name, { cmd: h.cmd });
+    const view = await show(name, { cmd: h.cmd });
+    if (!h.cmd && view.state) app.setHash(view.state());
   }
+}
+
+/** A tab chosen by the user: a new history entry, then the view's own state in it. */
+async function openTab(name) {
+  if (name !== app.current) {
+    history.pushState(null, "", link({ view: name }));
+    routed = location.hash;
+  }
+  const view = await show(name);
+  if (name === "command") app.setHash({ view: "command", ...app.views.command.linkState() });
+  else app.setHash(view.state ? view.state() : { view: name });
 }
 
 function tabs() {
   const list = [...document.querySelectorAll('[role="tab"]')];
   for (const tab of list) {
-    tab.addEventListener("click", () => show(tab.dataset.view));
+    tab.addEventListener("click", () => openTab(tab.dataset.view));
     tab.addEventListener("keydown", (e) => {
       const i = list.indexOf(tab);
       const j = { ArrowRight: i + 1, ArrowLeft: i - 1, Home: 0, End: list.length - 1 }[e.key];
@@ -147,7 +193,7 @@ function tabs() {
       e.preventDefault();
       const next = list[(j + list.length) % list.length];
       next.focus();
-      show(next.dataset.view);
+      openTab(next.dataset.view);
     });
   }
 }
@@ -159,30 +205,68 @@ function copyButtons() {
     if (b.dataset.copy || b.dataset.copyLink) {
       const target = $(b.dataset.copy || b.dataset.copyLink);
       const text = b.dataset.copyLink ? new URL(target.getAttribute("href"), location.href).href : (target.value ?? target.textContent);
+      const label = b.textContent;
       try {
         await navigator.clipboard.writeText(text);
-        b.textContent = "Copied";
+        b.textContent = t("copied");
       } catch {
-        b.textContent = "Select and copy";
+        b.textContent = t("selectCopy");
       }
-      setTimeout(() => (b.textContent = b.dataset.copyLink ? "Copy link" : b.dataset.copy === "octave" ? "Copy Octave code" : "Copy"), 1500);
+      setTimeout(() => (b.textContent = label), 1500);
     } else if (b.classList.contains("open-command")) {
       app.openCommand($(b.dataset.from).textContent);
     }
   });
 }
 
+function languageSwitch() {
+  const sel = $("lang");
+  sel.replaceChildren(...LANGS.map((l) => new Option(LANG_NAMES[l], l)));
+  sel.value = lang();
+  sel.addEventListener("change", () => {
+    setLang(sel.value, true);
+    applyStatic();
+    for (const view of Object.values(app.views)) view.relabel?.();
+  });
+}
+
+/** The page's WebAssembly, downloaded and compiled once for the main thread and the workers. */
+async function compile() {
+  const response = await fetch(WASM_URL);
+  if (!response.ok) throw new Error(`${WASM_URL.pathname}: HTTP ${response.status}`);
+  if (WebAssembly.compileStreaming && response.headers.get("content-type")?.startsWith("application/wasm"))
+    return WebAssembly.compileStreaming(response);
+  return WebAssembly.compile(await response.arrayBuffer());
+}
+
+function registerServiceWorker() {
+  if (!("serviceWorker" in navigator) || !/^https?:$/.test(location.protocol)) return;
+  navigator.serviceWorker.register("sw.js").catch(() => {
+    /* the page works without it, online */
+  });
+}
+
 async function main() {
+  setLang(chooseLang());
+  applyStatic();
+  languageSwitch();
   tabs();
   copyButtons();
+  let module;
   try {
-    await init();
+    module = await compile();
+    await init({ module_or_path: module });
   } catch (e) {
-    $("loading").textContent = `cagd: internal error: the WebAssembly did not load (${e}); serve the page over http (cagd serve) and reload`;
+    $("loading").textContent = t("wasmFailed", { reason: e.message ?? e });
     return;
   }
+  app.schema = JSON.parse(wasm.schema());
+  app.steps = JSON.parse(wasm.step_tables());
+  app.cli = new CommandLine(module);
+  app.cli.warm();
   $("loading").hidden = true;
   app.views.command = new CommandView(app);
+  window.addEventListener("popstate", route);
   window.addEventListener("hashchange", route);
   await route();
 }

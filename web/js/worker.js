@@ -1,7 +1,8 @@
-// The command line in a Web Worker, so that a long computation never freezes the page: the
-// page posts {id, argv, files}; the worker answers {id, ok, stdout, warnings, files, error}.
-// A fault in the WebAssembly (a bug) is answered with the program's internal-error line and
-// `fatal: true`, after which the page starts a fresh worker.
+// The command line in a Web Worker, so that a long computation never freezes the page. The page
+// first posts {init: module} (the WebAssembly module it compiled: the worker downloads
+// nothing), then {id, argv, files}; the worker answers {ready} once, then {id, ok, stdout,
+// warnings, files, error} per command. A fault in the WebAssembly (a bug) is answered with the
+// program's internal-error line and `fatal: true`, after which the page ends this worker.
 
 import "./text-shim.js";
 import init, { file_bytes, run } from "../pkg/cagd_web.js";
@@ -11,12 +12,16 @@ globalThis.cagdPanic = (message) => {
   panicMessage = message;
 };
 
-const ready = init().then(
-  () => self.postMessage({ ready: true }),
-  (e) => self.postMessage({ ready: false, error: `cagd: internal error: the WebAssembly did not load (${e}); reload the page` }),
-);
+let ready = null;
 
 self.onmessage = async ({ data }) => {
+  if (data.init) {
+    ready = init({ module_or_path: data.init }).then(
+      () => self.postMessage({ ready: true }),
+      (e) => self.postMessage({ ready: false, error: String(e) }),
+    );
+    return;
+  }
   await ready;
   const { id, argv, files = [] } = data;
   panicMessage = null;

@@ -2,6 +2,7 @@
 // driven by playwright-core with a fresh profile, and the page's command line.
 
 import { spawn, spawnSync } from "node:child_process";
+import http from "node:http";
 import { mkdirSync, mkdtempSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { dirname, join, resolve } from "node:path";
@@ -39,11 +40,61 @@ export async function serve() {
     });
     child.on("exit", (code) => fail(new Error(`cagd serve exited with ${code}`)));
   });
-  return { url, stop: () => child.kill() };
+  return {
+    url,
+    stop: () =>
+      new Promise((ok) => {
+        if (child.exitCode !== null || child.signalCode !== null) return ok(); // stopped already
+        child.once("exit", ok);
+        child.kill();
+      }),
+  };
+}
+
+/**
+ * A proxy in front of `target` that counts what the browser receives: every response's bytes
+ * as sent (compressed body and headers) and the requests by path. Chromium talks to it as to
+ * the server; `stop()` ends it (the server behind stays).
+ */
+export async function countingProxy(target) {
+  const upstream = new URL(target);
+  const stats = { bytes: 0, requests: [] };
+  const server = http.createServer((req, res) => {
+    const forward = http.request({ host: upstream.hostname, port: upstream.port, path: req.url, method: req.method, headers: req.headers }, (up) => {
+      let bytes = 0;
+      for (const [k, v] of Object.entries(up.headers)) bytes += k.length + String(v).length + 4;
+      up.on("data", (chunk) => (bytes += chunk.length));
+      up.on("end", () => {
+        stats.bytes += bytes;
+        stats.requests.push({ path: req.url, status: up.statusCode, bytes, encoding: up.headers["content-encoding"] ?? null, cache: up.headers["cache-control"] ?? null });
+      });
+      res.writeHead(up.statusCode, up.headers);
+      up.pipe(res);
+    });
+    forward.on("error", () => {
+      res.writeHead(502);
+      res.end();
+    });
+    req.pipe(forward);
+  });
+  await new Promise((ok) => server.listen(0, "127.0.0.1", ok));
+  return {
+    url: `http://127.0.0.1:${server.address().port}/`,
+    stats,
+    reset() {
+      stats.bytes = 0;
+      stats.requests = [];
+    },
+    stop: () =>
+      new Promise((ok) => {
+        server.close(ok);
+        server.closeAllConnections?.();
+      }),
+  };
 }
 
 /** Headless Debian Chromium with a fresh profile, offline but for localhost. */
-export async function browser() {
+export async function browser(options = {}) {
   const profile = mkdtempSync(join(tmpdir(), "cagd-chromium-"));
   const context = await chromium.launchPersistentContext(profile, {
     executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
@@ -59,6 +110,7 @@ export async function browser() {
       "--disable-sync",
     ],
     viewport: { width: 1400, height: 1000 },
+    ...options,
   });
   return {
     context,

@@ -8,6 +8,7 @@ use cagd::limits::{Limit, Limits};
 use clap::Args;
 
 use super::Format;
+use crate::lang::Lang;
 
 /// A path argument (`-o`, `--plot`, `--mesh`, `--dir`): any non-empty text (an empty one
 /// names no file).
@@ -40,6 +41,12 @@ pub struct OutputArgs {
     /// round-off such as 0.30000000000000004). The octave, csv and json formats keep every bit.
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u8).range(1..=17))]
     pub digits: Option<u8>,
+    /// The language of the labels of the readable steps: en, sl (Slovenian, the thesis and
+    /// the CAD notes) or cs (Czech, the lecture notes). Each item of the text format gets a
+    /// line `% label` above it; the items keep their names (the other formats are the same in
+    /// every language). Also accepted before the subcommand.
+    #[arg(long, value_enum, value_name = "LANG")]
+    pub lang: Option<Lang>,
 }
 
 impl OutputArgs {
@@ -47,6 +54,16 @@ impl OutputArgs {
     pub fn text_digits(&self) -> usize {
         self.digits.map_or(crate::TEXT_DIGITS, usize::from)
     }
+}
+
+/// `--lang` before the subcommand (`cagd --lang sl decasteljau …`): clap hands the value down
+/// to the subcommand's own `--lang` of [`OutputArgs`] (the same id), so the command line has
+/// one option that may stand anywhere.
+#[derive(Debug, Clone, Args)]
+pub struct LangArgs {
+    /// The language of the labels of the readable steps (en, sl, cs).
+    #[arg(long, value_enum, value_name = "LANG", global = true)]
+    pub lang: Option<Lang>,
 }
 
 /// A picture of the result.

@@ -26,6 +26,7 @@ mod error;
 pub mod error_catalogue {}
 pub mod faults;
 mod input;
+pub mod lang;
 pub mod limits;
 pub mod mesh;
 mod noticed;
@@ -78,5 +79,6 @@ pub use input::{
     scalar_from_double, unpack_net, CURVE_FORM, MATRIX_FORM, MAX_INPUT_BYTES, PARAMS_FORM,
 };
 pub use output::{
-    number_text, number_text_digits, render, render_with, Format, Item, Report, Value, TEXT_DIGITS,
+    number_text, number_text_digits, render, render_in, render_with, Format, Item, Report, Value,
+    TEXT_DIGITS,
 };

@@ -21,6 +21,7 @@ use std::fmt::Write as _;
 use nalgebra::DMatrix;
 
 use super::{CliError, ErrorKind};
+use crate::lang::Lang;
 use cagd_octave::literal::LiteralScalar;
 
 /// How results are printed.
@@ -80,8 +81,30 @@ pub fn render_with<T: LiteralScalar>(
     format: Format,
     digits: usize,
 ) -> Result<String, CliError> {
+    render_in(report, format, digits, None)
+}
+
+/// [`render_with`] with the readable text labelled in a language (`--lang`): each item whose
+/// name has a label in [`crate::lang::STEP_LABELS`] is preceded by `% label`, and the fixed
+/// English phrases of the step layouts are translated. The other formats are the same in
+/// every language (their names are the items' own).
+///
+/// ```
+/// use cagd_cli::{lang::Lang, render_in, Format, Report, Value};
+/// use nalgebra::DMatrix;
+/// let mut r = Report::<f64>::new();
+/// r.push("result", Value::Matrix(DMatrix::from_element(1, 1, 0.5)));
+/// assert_eq!(render_in(&r, Format::Text, 15, Some(Lang::Sl)).unwrap(), "% rezultat\nresult = 0.5\n\n");
+/// assert_eq!(render_in(&r, Format::Text, 15, None).unwrap(), "result = 0.5\n\n");
+/// ```
+pub fn render_in<T: LiteralScalar>(
+    report: &Report<T>,
+    format: Format,
+    digits: usize,
+    lang: Option<Lang>,
+) -> Result<String, CliError> {
     match format {
-        Format::Text => Ok(render_text(report, digits)),
+        Format::Text => Ok(render_text(report, digits, lang)),
         Format::Csv => Ok(render_csv(report)),
         Format::Json => render_json(report),
         Format::Octave => render_octave(report),
@@ -267,10 +290,19 @@ fn text_item<T: LiteralScalar>(name: &str, value: &Value<T>, digits: usize, out:
     }
 }
 
-fn render_text<T: LiteralScalar>(report: &Report<T>, digits: usize) -> String {
+fn render_text<T: LiteralScalar>(report: &Report<T>, digits: usize, lang: Option<Lang>) -> String {
     let mut out = String::new();
     for item in &report.items {
-        text_item(&item.name, &item.value, digits, &mut out);
+        let Some(lang) = lang else {
+            text_item(&item.name, &item.value, digits, &mut out);
+            continue;
+        };
+        if let Some(label) = crate::lang::label(&item.name, lang) {
+            let _ = writeln!(out, "% {label}");
+        }
+        let mut text = String::new();
+        text_item(&item.name, &item.value, digits, &mut text);
+        out.push_str(&crate::lang::phrases(&text, lang));
     }
     out
 }

@@ -5,7 +5,9 @@
 //!   would print and the files it would write (pictures as SVG), staged in memory;
 //! - the interactive views' constructions ([`bezier_view`], [`coons_view`], [`bspline_view`],
 //!   [`nurbs_view`]): small typed calls into the core, cheap enough to repeat on every frame of
-//!   a drag.
+//!   a drag;
+//! - what the page builds itself from ([`schema`]: every subcommand's arguments, for the forms;
+//!   [`step_tables`]: the labels of the steps in English, Slovenian and Czech).
 //!
 //! Everything is plain Rust that also builds natively (`cargo test -p cagd-web` checks the
 //! answers); `#[wasm_bindgen]` turns the functions into JavaScript exports when the target is
@@ -14,9 +16,11 @@
 
 mod command;
 mod ops;
+mod tables;
 mod views;
 
 pub use command::{file_bytes, run};
+pub use tables::{schema, step_tables};
 pub use views::{bezier_view, bspline_view, coons_view, nurbs_view};
 
 /// Installs the panic hook: a fault is reported to the page (`globalThis.cagdPanic`) as the

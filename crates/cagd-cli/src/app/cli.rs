@@ -18,6 +18,10 @@ pub(super) struct Cli {
     pub(super) command: Command,
     #[command(flatten)]
     pub(super) limits: LimitArgs,
+    /// `--lang` before the subcommand; each subcommand reads it as its own (see `LangArgs`).
+    #[command(flatten)]
+    #[allow(dead_code)]
+    lang: crate::args::LangArgs,
 }
 
 /// Declares the subcommands, in the order of `cagd --help`: each a clap struct (its help text

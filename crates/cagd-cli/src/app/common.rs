@@ -9,7 +9,7 @@ use nalgebra::{DMatrix, DVector};
 
 use crate::args::OutputArgs;
 use crate::plot::{Figure, ImageKind};
-use crate::{load_matrix, render_with, CliError, ErrorKind, PendingWrites, Report, CURVE_FORM};
+use crate::{load_matrix, CliError, ErrorKind, PendingWrites, Report, CURVE_FORM};
 use cagd::{Curve, SampledCurve};
 use cagd_octave::literal::{Env, LiteralScalar, ParamExpr, Warning};
 use cagd_octave::script::{Binding, Script};
@@ -188,7 +188,7 @@ pub fn finish<T: LiteralScalar>(
             })),
         ));
     }
-    let text = render_with(report, output.format, output.text_digits())?;
+    let text = crate::render_in(report, output.format, output.text_digits(), output.lang)?;
     let stdout = match &output.output {
         Some(path) => {
             files.add("--output", path, text.into_bytes());

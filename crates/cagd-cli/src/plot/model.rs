@@ -69,6 +69,41 @@ pub(super) fn validate(layer: &Layer) -> Result<(), PlotError> {
     Ok(())
 }
 
+/// `layer` without the marked points it cannot draw (a coordinate beyond [`MAX_COORDINATE`]):
+/// the answer at a parameter far outside the curve's domain (`--t 1e308`) is a number the
+/// command prints, not a reason to draw no picture. The legend says how many were left out;
+/// a layer with none left is dropped. Curves, polygons and surfaces are unchanged (they are
+/// checked by [`validate`]).
+pub(super) fn drawable(layer: &Layer) -> Option<Layer> {
+    let Layer::Points {
+        points,
+        labels,
+        label,
+    } = layer
+    else {
+        return Some(layer.clone());
+    };
+    let keep: Vec<usize> = (0..points.ncols())
+        .filter(|&j| points.column(j).iter().all(|x| x.abs() <= MAX_COORDINATE))
+        .collect();
+    if keep.len() == points.ncols() {
+        return Some(layer.clone());
+    }
+    if keep.is_empty() {
+        return None;
+    }
+    let left_out = points.ncols() - keep.len();
+    Some(Layer::Points {
+        points: points.select_columns(&keep),
+        labels: if labels.len() == points.ncols() {
+            keep.iter().map(|&j| labels[j].clone()).collect()
+        } else {
+            labels.clone()
+        },
+        label: format!("{label} ({left_out} beyond ±{MAX_COORDINATE:e}, not drawn)"),
+    })
+}
+
 /// A picture: a [`Drawing`] (title and layers) and its size.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Figure {

@@ -7,7 +7,7 @@ use std::sync::Once;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::model::{validate, Colour, Figure, ImageKind};
+use super::model::{drawable, validate, Colour, Figure, ImageKind};
 use super::PlotError;
 
 /// The font embedded for text in pictures.
@@ -42,6 +42,19 @@ impl Figure {
     pub fn render(&self, kind: ImageKind) -> Result<Vec<u8>, PlotError> {
         if self.layers().is_empty() {
             return Err(PlotError::Empty);
+        }
+        // Marked points too far to draw are left out (and the legend says so).
+        if self
+            .layers()
+            .iter()
+            .any(|l| drawable(l).as_ref() != Some(l))
+        {
+            let mut shown = self.clone();
+            shown.drawing.layers = self.layers().iter().filter_map(drawable).collect();
+            if shown.drawing.layers.is_empty() {
+                return Err(PlotError::Empty);
+            }
+            return shown.render(kind);
         }
         for l in self.layers() {
             validate(l)?;

@@ -136,3 +136,30 @@ fn bad_figures_are_errors() {
     ));
     assert_eq!(ImageKind::from_path(Path::new("A.PNG")), Ok(ImageKind::Png));
 }
+
+#[test]
+fn marked_points_too_far_to_draw_are_left_out_and_the_legend_says_so() {
+    // decasteljau --t "[0.5 1e308]" --plot: the point at 1e308 is printed, not drawn.
+    let line = DMatrix::from_column_slice(2, 2, &[0., 0., 1., 1.]);
+    let at = DMatrix::from_column_slice(2, 2, &[0.5, 0.5, 1e308, 1e308]);
+    let svg = Figure::new("Bézier curve")
+        .curve(line.clone(), Colour::Blue, "curve")
+        .points(
+            at,
+            vec!["t = 1/2".into(), "t = 1e308".into()],
+            "points at t",
+        )
+        .render(ImageKind::Svg)
+        .unwrap();
+    let text = String::from_utf8(svg).unwrap();
+    assert!(text.contains("t = 1/2"), "{text}");
+    assert!(!text.contains("t = 1e308"));
+    assert!(text.contains("points at t (1 beyond ±1e100, not drawn)"));
+    // The curve itself out of range is still refused.
+    let far = DMatrix::from_column_slice(2, 2, &[0., 0., 1e308, 1.]);
+    let e = Figure::new("far")
+        .curve(far, Colour::Blue, "curve")
+        .render(ImageKind::Svg)
+        .unwrap_err();
+    assert!(matches!(e, PlotError::OutOfRange { .. }), "{e}");
+}

@@ -10,6 +10,7 @@ mod curvature;
 mod error_catalogue;
 mod file_rules;
 mod hostile;
+mod lang;
 mod limits;
 mod mesh;
 mod non_finite;

@@ -1,0 +1,145 @@
+// Offline for real, and the loading figures: a cold load's bytes and .wasm downloads (counted by
+// a proxy between Chromium and `cagd serve`), the time to the first answer over cold loads, the
+// service worker keeping the page, and the drag frame times of the 3-D Bézier view.
+
+import assert from "node:assert/strict";
+import { readdirSync, writeFileSync } from "node:fs";
+import { join } from "node:path";
+import { test } from "node:test";
+import { browser, countingProxy, openPage, resultsDir, runOnPage, serve, webDir } from "./helpers.mjs";
+
+const PRIMER_2_4 = `cagd decasteljau "[0 0 0; 0 2 2; 8 2 0; 4 0 0]'" --t 0.5 --steps --exact --plot decasteljau.svg`;
+const link = (cmd) => `#cmd=${encodeURIComponent(cmd)}`;
+
+test("offline: load, stop the server, reload, open a view never visited, run a command; Stop starts no request loop", async () => {
+  const server = await serve();
+  const chrome = await browser();
+  // Closed even when an assertion fails (an open browser would keep the test runner waiting).
+  try {
+    const page = await openPage(chrome.context, server.url, link(PRIMER_2_4));
+    await page.waitForFunction(() => !!navigator.serviceWorker?.controller, null, { timeout: 30000 });
+    await page.evaluate(() => navigator.serviceWorker.ready);
+    await server.stop();
+    const requests = [];
+    chrome.context.on("request", (r) => requests.push(r.url()));
+    await page.reload();
+    await page.waitForFunction(() => document.documentElement.dataset.firstAnswerMs !== undefined, null, { timeout: 30000 });
+    assert.match(await page.locator("#stdout").textContent(), /7\/2/);
+    // Views never opened before: their modules come from the service worker's cache.
+    for (const view of ["basis", "spline", "insert"]) {
+      await page.click(`#tab-${view}`);
+      // Knot insertion answers the new control points; the others a result.
+      await page.locator(`#${view}-steps`).filter({ hasText: view === "insert" ? "control" : "result" }).waitFor({ timeout: 30000 });
+    }
+    await page.click("#tab-command");
+    const answer = await runOnPage(page, "cagd bernstein --degree 3 --t 0.5 --exact");
+    assert.ok(answer.ok, answer.error);
+    assert.match(answer.stdout, /1\/8\s+3\/8\s+3\/8\s+1\/8/);
+    // Stop a running command with no server: the worker is not restarted in a loop.
+    await page.fill("#cmdline", "cagd surface '[u; v; u.*v + sin(u.*v)]' --n 1500 --format csv -o grid.csv");
+    await page.press("#cmdline", "Enter");
+    await page.locator("#stop:not([disabled])").waitFor();
+    await page.waitForTimeout(300);
+    await page.click("#stop");
+    const before = requests.length;
+    await page.waitForTimeout(3000);
+    const during = requests.length - before;
+    assert.ok(during <= 2, `${during} requests in the 3 s after Stop`);
+    const again = await runOnPage(page, "cagd bernstein --degree 2 --t 0.5 --exact");
+    assert.ok(again.ok, again.error);
+    assert.deepEqual(
+      page.errors.filter((e) => !/Failed to load resource|ERR_CONNECTION_REFUSED/.test(e)),
+      [],
+    );
+    writeFileSync(join(resultsDir, "offline.json"), JSON.stringify({ requestsAfterStop: during, requestsOffline: requests.length }, null, 2));
+    await page.close();
+  } finally {
+    await chrome.close();
+    await server.stop();
+  }
+});
+
+test("figures: bytes and .wasm downloads of a cold load, first answer over 5 cold loads, 3-D drag frames", async () => {
+  const server = await serve();
+  const proxy = await countingProxy(server.url);
+  const figures = {};
+  const wasm = readdirSync(join(webDir, "dist", "pkg")).find((f) => /^cagd_web_bg\.[0-9a-f]+\.wasm$/.test(f));
+  assert.ok(wasm, "a hashed .wasm name");
+  figures.wasmName = wasm;
+  const loads = [];
+  for (let k = 0; k < 5; k++) {
+    proxy.reset();
+    const chrome = await browser();
+    const page = await openPage(chrome.context, proxy.url, link(PRIMER_2_4));
+    const first = Number(await page.evaluate(() => document.documentElement.dataset.firstAnswerMs));
+    // The service worker keeps the page after the first answer: its fetches count too.
+    await page.waitForFunction(() => !!navigator.serviceWorker?.controller, null, { timeout: 30000 });
+    await page.waitForTimeout(300);
+    const wasmRequests = proxy.stats.requests.filter((r) => r.path.endsWith(".wasm"));
+    loads.push({ firstAnswerMs: first, bytes: proxy.stats.bytes, requests: proxy.stats.requests.length, wasmFetches: wasmRequests.length, wasm: wasmRequests });
+    await page.close();
+    await chrome.close();
+  }
+  const sorted = loads.map((l) => l.firstAnswerMs).sort((a, b) => a - b);
+  figures.coldLoads = loads.map(({ wasm: _, ...l }) => l);
+  figures.firstAnswerMs = { median: sorted[2], all: loads.map((l) => l.firstAnswerMs) };
+  figures.coldLoadBytes = { median: loads.map((l) => l.bytes).sort((a, b) => a - b)[2], all: loads.map((l) => l.bytes) };
+  figures.wasmFetchesPerLoad = loads.map((l) => l.wasmFetches);
+  figures.wasmResponse = loads[0].wasm;
+  // A reload with a warm browser: the hashed files are not asked for again.
+  {
+    proxy.reset();
+    const chrome = await browser();
+    const page = await openPage(chrome.context, proxy.url, link(PRIMER_2_4));
+    await page.waitForFunction(() => !!navigator.serviceWorker?.controller, null, { timeout: 30000 });
+    proxy.reset();
+    await page.reload();
+    await page.waitForFunction(() => document.documentElement.dataset.firstAnswerMs !== undefined);
+    figures.warmReload = { bytes: proxy.stats.bytes, requests: proxy.stats.requests.map((r) => `${r.path} ${r.status}`) };
+    // Dragging a point of the 3-D Bézier view (Primer 2.4 in space).
+    await page.evaluate((h) => (location.hash = h), `#view=bezier&cmd=${encodeURIComponent(`cagd decasteljau "[0 0 0; 0 2 2; 8 2 0; 4 0 0]'" --t 0.5 --steps --exact`)}`);
+    await page.locator("#bezier-canvas").waitFor({ state: "visible" });
+    await page.locator("#bezier-steps").filter({ hasText: "7/2" }).waitFor();
+    await page.evaluate(() => (window.cagdApp.views.bezier.frameTimes = []));
+    const at = await page.evaluate(() => {
+      const v = window.cagdApp.views.bezier;
+      const q = v.space.projector().project(...v.doubles()[2]);
+      const r = v.space.canvas.getBoundingClientRect();
+      return [r.left + (q[0] * r.width) / v.space.canvas.width, r.top + (q[1] * r.height) / v.space.canvas.height];
+    });
+    await page.mouse.move(at[0], at[1]);
+    await page.mouse.down();
+    await page.mouse.move(at[0] - 150, at[1] + 90, { steps: 60 });
+    await page.mouse.up();
+    const stats = (xs) => {
+      const s = [...xs].sort((a, b) => a - b);
+      return { frames: s.length, median: s[Math.floor(s.length / 2)], p95: s[Math.floor(s.length * 0.95)], max: s[s.length - 1] };
+    };
+    figures.bezier3dDragWork = stats(await page.evaluate(() => window.cagdApp.views.bezier.frameTimes));
+    figures.bezier3dDragFrames = stats(
+      await page.evaluate(async () => {
+        const v = window.cagdApp.views.bezier;
+        const out = [];
+        let last = await new Promise(requestAnimationFrame);
+        for (let k = 0; k < 60; k++) {
+          v.dragTo(2, [8 - k / 30, 2 + (k % 10) / 10, k / 60]);
+          const now = await new Promise(requestAnimationFrame);
+          out.push(now - last);
+          last = now;
+        }
+        return out;
+      }),
+    );
+    await page.close();
+    await chrome.close();
+  }
+  figures.machine = { loadAverage: (await import("node:os")).loadavg(), cpus: (await import("node:os")).cpus().length };
+  writeFileSync(join(resultsDir, "figures-round-two.json"), JSON.stringify(figures, null, 2));
+  console.log(JSON.stringify(figures, null, 2));
+  await proxy.stop();
+  await server.stop();
+  assert.deepEqual(figures.wasmFetchesPerLoad, [1, 1, 1, 1, 1], "one .wasm download per load (page and workers share it)");
+  assert.ok(figures.wasmResponse[0].cache.includes("immutable"), JSON.stringify(figures.wasmResponse[0]));
+  assert.ok(figures.wasmResponse[0].encoding === "br" || figures.wasmResponse[0].encoding === "gzip");
+  assert.ok(!figures.warmReload.requests.some((r) => r.includes(".wasm")), "a reload does not download the .wasm again");
+});
