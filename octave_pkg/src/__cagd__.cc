@@ -7,13 +7,20 @@
 // cagd_value that borrows Octave's own arrays (no copy); the results are Octave arrays created
 // here, zero-filled, and filled by the Rust side through the sink callbacks (no copy either).
 //
+// The octave-nurbs twins of octave-nurbs' own oct-files and evaluators (cagd_bspeval,
+// cagd_basisfun, cagd_basisfunder, cagd_bspderiv, cagd_findspan, cagd_nrbeval) are builtins
+// of this oct-file as well (autoloaded by the PKG_ADD lines below, which take precedence over
+// their .m files): one call for one point then costs one builtin call, as the octave-nurbs
+// oct-files do. Their .m files in inst/ keep the documentation (the docstrings here are
+// generated from them by build.sh into cagd_twin_docs.h) and the test blocks.
+//
 // Errors: the Rust side returns an identifier ("cagd:shape") and a message; this gateway raises
 // the Octave error with error_with_id only after cagd_call has returned, so no C++ exception
 // ever unwinds through Rust frames, and the callbacks below are noexcept. A Rust panic is caught
 // on the Rust side and comes back as the error cagd:internal.
 
 #include <cstring>
-#include <deque>
+#include <list>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,21 +30,23 @@
 #include <octave/oct-map.h>
 
 #include "cagd_octave_ffi.h"
+#include "cagd_twin_docs.h"
 
 namespace
 {
   // Deepest nesting of cells and structs described (as MAX_DEPTH on the Rust side).
   const std::size_t max_depth = 64;
 
-  // Everything the argument tree points into, alive until the call returns.
+  // Everything the argument tree points into, alive until the call returns (lists: stable
+  // addresses, and nothing allocated for what a call does not use).
   struct arena
   {
-    std::deque<NDArray> arrays;
-    std::deque<charNDArray> chars;
-    std::deque<std::string> texts;
-    std::deque<std::vector<std::size_t>> dims;
-    std::deque<std::vector<cagd_value>> children;
-    std::deque<std::vector<const char *>> names;
+    std::list<NDArray> arrays;
+    std::list<charNDArray> chars;
+    std::list<std::string> texts;
+    std::list<std::vector<std::size_t>> dims;
+    std::list<std::vector<cagd_value>> children;
+    std::list<std::vector<const char *>> names;
   };
 
   const std::size_t *
@@ -99,6 +108,20 @@ namespace
         out.dims = keep_dims (a, dv);
         out.real = arr.data ();
       }
+    else if ((v.isnumeric () || v.islogical ()) && v.isreal ())
+      {
+        // single, integer, logical, sparse: converted to double, the class kept for the
+        // octave-nurbs twins (every other function refuses it by its class).
+        a.arrays.push_back (v.array_value ());
+        const NDArray& arr = a.arrays.back ();
+        a.texts.push_back (class_of (v));
+        out.kind = CAGD_NUMERIC;
+        out.ndims = dv.ndims ();
+        out.dims = keep_dims (a, dv);
+        out.real = arr.data ();
+        out.text = a.texts.back ().data ();
+        out.text_len = a.texts.back ().size ();
+      }
     else if (v.is_char_matrix () || v.is_string ())
       {
         a.chars.push_back (v.char_array_value ());
@@ -148,8 +171,8 @@ namespace
   // The outputs, created by the callbacks and returned once the Rust call is done.
   struct outputs
   {
-    std::deque<std::pair<std::size_t, NDArray>> reals;
-    std::deque<std::pair<std::size_t, octave_value>> others;
+    std::list<std::pair<std::size_t, NDArray>> reals;
+    std::list<std::pair<std::size_t, octave_value>> others;
   };
 
   dim_vector
@@ -197,21 +220,16 @@ namespace
   }
 }
 
-DEFUN_DLD (__cagd__, args, nargout,
-           "-*- texinfo -*-\n\
-@deftypefn {} {[@dots{}] =} __cagd__ (@var{name}, @dots{})\n\
-Internal gateway of the cagd package: calls the package function @var{name}.\n\
-Use the package's functions (@code{help cagd_bezier}, @code{help deCasteljau}, @dots{}).\n\
-@end deftypefn")
+// The package function NAME called with args(first:end): the arguments described, the Rust
+// call, its error raised or its outputs returned.
+static octave_value_list
+call_package (const std::string& name, const octave_value_list& args, octave_idx_type first,
+              int nargout)
 {
-  if (args.length () < 1 || ! args(0).is_string ())
-    error_with_id ("cagd:nargin", "__cagd__: the first argument must be a function name");
-  const std::string name = args(0).string_value ();
-
   arena a;
-  std::vector<cagd_value> values (args.length () - 1);
-  for (octave_idx_type i = 1; i < args.length (); i++)
-    describe (args(i), values[i - 1], a, 0);
+  std::vector<cagd_value> values (args.length () - first);
+  for (octave_idx_type i = first; i < args.length (); i++)
+    describe (args(i), values[i - first], a, 0);
 
   outputs out;
   const cagd_sink sink = { &out, sink_real, sink_strings };
@@ -241,4 +259,52 @@ Use the package's functions (@code{help cagd_bezier}, @code{help deCasteljau}, @
       retval(o.first) = o.second;
     }
   return retval;
+}
+
+DEFUN_DLD (__cagd__, args, nargout,
+           "-*- texinfo -*-\n\
+@deftypefn {} {[@dots{}] =} __cagd__ (@var{name}, @dots{})\n\
+Internal gateway of the cagd package: calls the package function @var{name}.\n\
+Use the package's functions (@code{help cagd_bezier}, @code{help deCasteljau}, @dots{}).\n\
+@end deftypefn")
+{
+  if (args.length () < 1 || ! args(0).is_string ())
+    error_with_id ("cagd:nargin", "__cagd__: the first argument must be a function name");
+  return call_package (args(0).string_value (), args, 1, nargout);
+}
+
+// PKG_ADD: autoload ("cagd_bspeval", "__cagd__.oct");
+DEFUN_DLD (cagd_bspeval, args, nargout, CAGD_DOC_cagd_bspeval)
+{
+  return call_package ("cagd_bspeval", args, 0, nargout);
+}
+
+// PKG_ADD: autoload ("cagd_basisfun", "__cagd__.oct");
+DEFUN_DLD (cagd_basisfun, args, nargout, CAGD_DOC_cagd_basisfun)
+{
+  return call_package ("cagd_basisfun", args, 0, nargout);
+}
+
+// PKG_ADD: autoload ("cagd_basisfunder", "__cagd__.oct");
+DEFUN_DLD (cagd_basisfunder, args, nargout, CAGD_DOC_cagd_basisfunder)
+{
+  return call_package ("cagd_basisfunder", args, 0, nargout);
+}
+
+// PKG_ADD: autoload ("cagd_bspderiv", "__cagd__.oct");
+DEFUN_DLD (cagd_bspderiv, args, nargout, CAGD_DOC_cagd_bspderiv)
+{
+  return call_package ("cagd_bspderiv", args, 0, nargout);
+}
+
+// PKG_ADD: autoload ("cagd_findspan", "__cagd__.oct");
+DEFUN_DLD (cagd_findspan, args, nargout, CAGD_DOC_cagd_findspan)
+{
+  return call_package ("cagd_findspan", args, 0, nargout);
+}
+
+// PKG_ADD: autoload ("cagd_nrbeval", "__cagd__.oct");
+DEFUN_DLD (cagd_nrbeval, args, nargout, CAGD_DOC_cagd_nrbeval)
+{
+  return call_package ("cagd_nrbeval", args, 0, nargout);
 }

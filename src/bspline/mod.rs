@@ -19,7 +19,10 @@ mod knots;
 mod surface;
 mod triangle;
 
-pub use basis::{basis_all, basis_cost, basis_functions, cox_de_boor, curve_point_cost, find_span};
+pub use basis::{
+    basis_all, basis_cost, basis_functions, basis_functions_into, cox_de_boor, curve_point_cost,
+    find_span,
+};
 pub use curve::BSplineCurve;
 pub use de_boor_scheme::DeBoorScheme;
 pub use knots::KnotVector;

@@ -57,6 +57,10 @@ pub const CAGD_CELL: i32 = 2;
 pub const CAGD_STRUCT: i32 = 3;
 /// `CAGD_OTHER`: any other class (its name in `text`).
 pub const CAGD_OTHER: i32 = 4;
+/// `CAGD_NUMERIC`: a real numeric or logical array of another class than full double
+/// (`single`, integers, `logical`, sparse): its class name in `text`, its values converted to
+/// double in `real`.
+pub const CAGD_NUMERIC: i32 = 5;
 
 /// Deepest nesting of cells and structs read (the gateway stops at the same depth).
 pub const MAX_DEPTH: usize = 64;
@@ -199,6 +203,13 @@ unsafe fn value<'a>(v: &'a CagdValue, depth: usize) -> Result<Value<'a>, PkgErro
         }
         CAGD_OTHER => Ok(Value::Other {
             class: std::str::from_utf8(text()?).unwrap_or("?"),
+        }),
+        CAGD_NUMERIC if dims.len() >= 2 => Ok(Value::Numeric {
+            class: std::str::from_utf8(text()?).unwrap_or("?"),
+            real: Real {
+                dims,
+                data: unsafe { slice(v.real, numel) }?,
+            },
         }),
         kind => Err(PkgError::new(
             Kind::Internal,

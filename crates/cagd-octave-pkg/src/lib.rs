@@ -69,6 +69,8 @@ pub const FUNCTIONS: &[(&str, Function)] = &[
     ("cagd_bspeval", nurbs::bspeval),
     ("cagd_basisfun", nurbs::basisfun),
     ("cagd_findspan", nurbs::findspan),
+    ("cagd_basisfunder", nurbs::basisfunder),
+    ("cagd_bspderiv", nurbs::bspderiv),
     ("cagd_bezier", native::bezier),
     ("cagd_bezier_derivative", native::bezier_derivative),
     ("cagd_bezier_subdivide", native::bezier_subdivide),
