@@ -11,18 +11,21 @@
 
 mod basis;
 mod batch;
+pub(crate) mod compatible;
 mod curve;
 mod de_boor_scheme;
 mod elevate;
 mod grid;
 mod knots;
 mod surface;
+mod surface_refine;
 mod triangle;
 
 pub use basis::{
     basis_all, basis_cost, basis_functions, basis_functions_into, cox_de_boor, curve_point_cost,
     find_span,
 };
+pub use compatible::make_compatible;
 pub use curve::BSplineCurve;
 pub use de_boor_scheme::DeBoorScheme;
 pub use knots::KnotVector;

@@ -9,16 +9,20 @@
 //!   arrays arrive as [`Value::Numeric`](crate::Value::Numeric));
 //! - [`eval`]: `cagd_nrbeval`, `cagd_bspeval`;
 //! - [`basis`]: `cagd_findspan`, `cagd_basisfun`, `cagd_basisfunder`;
-//! - [`deriv`]: `cagd_bspderiv`.
+//! - [`deriv`]: `cagd_bspderiv`, `cagd_nrbderiv`, `cagd_nrbdeval`;
+//! - [`refine`]: `cagd_bspkntins`, `cagd_bspdegelev`, `cagd_nrbkntins`, `cagd_nrbdegelev`,
+//!   `cagd_nrbcoons`.
 
 pub mod basis;
 pub mod deriv;
 pub mod eval;
 pub mod read;
+pub mod refine;
 
 pub use basis::{basisfun, basisfunder, findspan};
-pub use deriv::bspderiv;
+pub use deriv::{bspderiv, nrbderiv, nrbdeval};
 pub use eval::{bspeval, nrbeval};
+pub use refine::{bspdegelev, bspkntins, nrbcoons, nrbdegelev, nrbkntins};
 
 use cagd_octave::octave_nurbs::NurbsError;
 

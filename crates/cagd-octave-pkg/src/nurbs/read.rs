@@ -7,7 +7,7 @@
 
 use std::borrow::Cow;
 
-use cagd_octave::octave_nurbs::{Knots, NrbParts, Params, Tt};
+use cagd_octave::octave_nurbs::{Ders, Knots, NrbParts, Params, Tt};
 
 use crate::error::{Kind, PkgError, Result};
 use crate::value::{Real, Value};
@@ -189,4 +189,19 @@ pub fn nrb_parts<'a>(v: &Value<'a>) -> Result<NrbParts<'a>> {
         order: Cow::Borrowed(order),
         number: Cow::Borrowed(number),
     })
+}
+
+/// A derivative argument of `nrbdeval`: a structure, or a cell of structures (an item that
+/// is not one fails only when `nrbdeval` uses it, as in octave-nurbs).
+///
+/// # Errors
+/// As [`nrb_parts`] for a structure.
+pub fn ders<'a>(v: &Value<'a>) -> Result<Ders<'a>> {
+    match v {
+        Value::Cell { dims, items } => Ok(Ders::Cell {
+            dims: dims.to_vec(),
+            items: items.iter().map(|i| nrb_parts(i).ok()).collect(),
+        }),
+        other => Ok(Ders::One(nrb_parts(other)?)),
+    }
 }

@@ -33,19 +33,36 @@
 //! octave-nurbs 1.4.3 itself; `octave_pkg/tests` compares them with octave-nurbs in live
 //! Octave over random inputs of every argument form.
 
+mod along;
 mod basis;
+mod bspdegelev;
 mod bspderiv;
 mod bspeval;
+mod bspkntins;
 mod error;
 mod fast;
+mod nd;
 mod nrb;
+mod nrbcoons;
+mod nrbderiv;
+mod nrbdeval;
 mod nrbeval;
+mod oct;
+mod refine;
 mod span;
 
+pub use along::Net;
 pub use basis::{basisfun_into, basisfunder_into, existing_basis, span_has_knots, truncate};
+pub use bspdegelev::bspdegelev;
 pub use bspderiv::bspderiv;
 pub use bspeval::{along_axis, bspeval_into, combine, BasisWork, Bsp};
+pub use bspkntins::bspkntins;
 pub use error::{NurbsError, Result};
+pub use nd::Nd;
 pub use nrb::{nrbmak, Kind, Knots, Nrb, NrbParts};
+pub use nrbcoons::nrbcoons;
+pub use nrbderiv::{nrbderiv, NrbDerivs};
+pub use nrbdeval::{nrbdeval, Ders, NrbDeval, Slot};
 pub use nrbeval::{NrbEval, Params, Tt};
+pub use refine::{nrbdegelev, nrbkntins};
 pub use span::{check_in_knots, eval_span, findspan, is_sorted};
