@@ -20,7 +20,11 @@
 // on the Rust side and comes back as the error cagd:internal.
 
 #include <cstring>
+#include <algorithm>
 #include <list>
+#include <tuple>
+#include <typeinfo>
+#include <vector>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,6 +32,7 @@
 #include <octave/oct.h>
 #include <octave/Cell.h>
 #include <octave/oct-map.h>
+#include <octave/ov-re-mat.h>
 
 #include "cagd_octave_ffi.h"
 #include "cagd_twin_docs.h"
@@ -37,26 +42,68 @@ namespace
   // Deepest nesting of cells and structs described (as MAX_DEPTH on the Rust side).
   const std::size_t max_depth = 64;
 
-  // Everything the argument tree points into, alive until the call returns (lists: stable
-  // addresses, and nothing allocated for what a call does not use).
+  // Everything the argument tree points into, alive until the call returns, at stable
+  // addresses. A call of a few scalars and arrays (the usual one) allocates nothing here:
+  // scalars and sizes go to fixed buffers, and the lists, used only for what those do not
+  // hold (converted arrays, texts, cells, structs), allocate nothing until used.
   struct arena
   {
+    double scalars[16];
+    std::size_t n_scalars = 0;
+    std::size_t dims[48];
+    std::size_t n_dims = 0;
+    std::list<double> more_scalars;
+    std::list<std::vector<std::size_t>> more_dims;
     std::list<NDArray> arrays;
     std::list<charNDArray> chars;
     std::list<std::string> texts;
-    std::list<std::vector<std::size_t>> dims;
     std::list<std::vector<cagd_value>> children;
     std::list<std::vector<const char *>> names;
+
+    const double *
+    keep_scalar (double x)
+    {
+      if (n_scalars < sizeof scalars / sizeof scalars[0])
+        {
+          scalars[n_scalars] = x;
+          return &scalars[n_scalars++];
+        }
+      more_scalars.push_back (x);
+      return &more_scalars.back ();
+    }
+
+    // The sizes of one value, contiguous.
+    std::size_t *
+    keep_dims (std::size_t n)
+    {
+      if (n_dims + n <= sizeof dims / sizeof dims[0])
+        {
+          n_dims += n;
+          return &dims[n_dims - n];
+        }
+      more_dims.emplace_back (n);
+      return more_dims.back ().data ();
+    }
   };
+
+  // The array of a full real double matrix, borrowed (no copy, no allocation); nullptr for
+  // any other value (scalars, ranges, diagonal matrices, other classes).
+  const NDArray *
+  full_array (const octave_value& v)
+  {
+    const octave_base_value *rep = v.internal_rep ();
+    if (typeid (*rep) != typeid (octave_matrix))     // cheaper than a dynamic_cast
+      return nullptr;
+    return &static_cast<const octave_matrix *> (rep)->matrix_ref ();
+  }
 
   const std::size_t *
   keep_dims (arena& a, const dim_vector& dv)
   {
-    std::vector<std::size_t> d (dv.ndims ());
+    std::size_t *d = a.keep_dims (dv.ndims ());
     for (int i = 0; i < dv.ndims (); i++)
       d[i] = static_cast<std::size_t> (dv(i));
-    a.dims.push_back (std::move (d));
-    return a.dims.back ().data ();
+    return d;
   }
 
   // The class of a refused value, as the messages name it.
@@ -98,17 +145,36 @@ namespace
         other (out, a, "undefined");
         return;
       }
-    const dim_vector dv = v.dims ();
+    if (v.is_real_scalar () && v.is_double_type ())
+      {
+        // A double scalar: its value, without an NDArray or a dim_vector (each of which
+        // allocates).
+        out.real = a.keep_scalar (v.double_value ());
+        std::size_t *d = a.keep_dims (2);
+        d[0] = d[1] = 1;
+        out.dims = d;
+        out.kind = CAGD_REAL;
+        out.ndims = 2;
+        return;
+      }
     if (v.is_double_type () && v.isreal () && ! v.issparse () && ! v.iscomplex ())
       {
-        a.arrays.push_back (v.array_value ());
-        const NDArray& arr = a.arrays.back ();
+        // A full double matrix lends its own array (no copy); ranges and diagonal matrices
+        // have none and are converted.
+        const NDArray *arr = full_array (v);
+        if (! arr)
+          {
+            a.arrays.push_back (v.array_value ());
+            arr = &a.arrays.back ();
+          }
         out.kind = CAGD_REAL;
-        out.ndims = dv.ndims ();
-        out.dims = keep_dims (a, dv);
-        out.real = arr.data ();
+        out.ndims = arr->ndims ();
+        out.dims = keep_dims (a, arr->dims ());
+        out.real = arr->data ();
+        return;
       }
-    else if ((v.isnumeric () || v.islogical ()) && v.isreal ())
+    const dim_vector dv = v.dims ();
+    if ((v.isnumeric () || v.islogical ()) && v.isreal ())
       {
         // single, integer, logical, sparse: converted to double, the class kept for the
         // octave-nurbs twins (every other function refuses it by its class).
@@ -169,15 +235,45 @@ namespace
   }
 
   // The outputs, created by the callbacks and returned once the Rust call is done.
+  // The outputs, created as Octave values at once (their data does not move with them): the
+  // first few in place, the others in a list (nothing allocated for the usual call).
   struct outputs
   {
-    std::list<std::pair<std::size_t, NDArray>> reals;
-    std::list<std::pair<std::size_t, octave_value>> others;
+    static const std::size_t few = 6;
+    alignas (octave_value) unsigned char slots[few][sizeof (octave_value)];
+    std::size_t index[few];
+    std::size_t n = 0;
+    std::list<std::pair<std::size_t, octave_value>> more;
+
+    void add (std::size_t i, const octave_value& v)
+    {
+      if (n < few)
+        {
+          new (slots[n]) octave_value (v);
+          index[n++] = i;
+        }
+      else
+        more.emplace_back (i, v);
+    }
+
+    octave_value& at (std::size_t k)
+    {
+      return *reinterpret_cast<octave_value *> (slots[k]);
+    }
+
+    ~outputs ()
+    {
+      for (std::size_t k = 0; k < n; k++)
+        at (k).~octave_value ();
+    }
   };
 
   dim_vector
   size_of (std::size_t ndims, const std::size_t *dims)
   {
+    if (ndims == 2)                    // one allocation instead of two
+      return dim_vector (static_cast<octave_idx_type> (dims[0]),
+                         static_cast<octave_idx_type> (dims[1]));
     dim_vector dv;
     dv.resize (ndims < 2 ? 2 : static_cast<int> (ndims), 1);
     for (std::size_t i = 0; i < ndims; i++)
@@ -191,8 +287,20 @@ namespace
     try
       {
         outputs& out = *static_cast<outputs *> (ctx);
-        out.reals.emplace_back (index, NDArray (size_of (ndims, dims)));
-        return out.reals.back ().second.fortran_vec ();
+        // The Octave value shares the array's data, which stays where it is: writing through
+        // it is writing the result. A matrix is the cheaper object for 2 dimensions.
+        if (ndims == 2)
+          {
+            Matrix m (static_cast<octave_idx_type> (dims[0]),
+                      static_cast<octave_idx_type> (dims[1]), 0.0);
+            double *data = m.fortran_vec ();
+            out.add (index, octave_value (m));
+            return data;
+          }
+        NDArray arr (size_of (ndims, dims), 0.0);
+        double *data = arr.fortran_vec ();
+        out.add (index, octave_value (arr));
+        return data;
       }
     catch (...)
       {
@@ -210,7 +318,7 @@ namespace
         Cell c (size_of (ndims, dims));
         for (octave_idx_type i = 0; i < c.numel (); i++)
           c(i) = octave_value (std::string (texts[i], lens[i]));
-        out.others.emplace_back (index, octave_value (c));
+        out.add (index, octave_value (c));
         return 0;
       }
     catch (...)
@@ -227,14 +335,20 @@ call_package (const std::string& name, const octave_value_list& args, octave_idx
               int nargout)
 {
   arena a;
-  std::vector<cagd_value> values (args.length () - first);
+  // The top-level values: inline for up to 8 arguments.
+  cagd_value few[8];
+  std::vector<cagd_value> many;
+  const std::size_t nvals = static_cast<std::size_t> (args.length () - first);
+  if (nvals > 8)
+    many.resize (nvals);
+  cagd_value *values = nvals > 8 ? many.data () : few;
   for (octave_idx_type i = first; i < args.length (); i++)
     describe (args(i), values[i - first], a, 0);
 
   outputs out;
   const cagd_sink sink = { &out, sink_real, sink_strings };
   cagd_error err = { nullptr, nullptr };
-  const int status = cagd_call (name.data (), name.size (), values.data (), values.size (),
+  const int status = cagd_call (name.data (), name.size (), values, nvals,
                                 nargout, &sink, &err);
   if (status != 0)
     {
@@ -245,19 +359,19 @@ call_package (const std::string& name, const octave_value_list& args, octave_idx
       error_with_id (id.c_str (), "%s", message.c_str ());
     }
 
-  octave_value_list retval;
-  for (auto& r : out.reals)
-    {
-      if (retval.length () <= static_cast<octave_idx_type> (r.first))
-        retval.resize (r.first + 1);
-      retval(r.first) = octave_value (r.second);
-    }
-  for (auto& o : out.others)
-    {
-      if (retval.length () <= static_cast<octave_idx_type> (o.first))
-        retval.resize (o.first + 1);
-      retval(o.first) = o.second;
-    }
+  // The list of outputs at its size at once.
+  std::size_t n_out = 0;
+  for (std::size_t k = 0; k < out.n; k++)
+    n_out = std::max (n_out, out.index[k] + 1);
+  for (const auto& v : out.more)
+    n_out = std::max (n_out, v.first + 1);
+  if (n_out == 1 && out.n == 1)
+    return octave_value_list (out.at (0));
+  octave_value_list retval (static_cast<octave_idx_type> (n_out), octave_value ());
+  for (std::size_t k = 0; k < out.n; k++)
+    retval(out.index[k]) = out.at (k);
+  for (const auto& v : out.more)
+    retval(v.first) = v.second;
   return retval;
 }
 

@@ -1,6 +1,6 @@
 //! `cagd_bspderiv`, `cagd_nrbderiv`, `cagd_nrbdeval`.
 
-use cagd_octave::octave_nurbs::bspderiv as derivative;
+use cagd_octave::octave_nurbs::{bspderiv_into, check_bspderiv};
 
 use super::eval::degree;
 use super::read::{self, Classes};
@@ -18,11 +18,20 @@ pub fn bspderiv(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     let c = read::real(call.arg(1), "c", Classes::Numeric)?;
     let k = read::real(call.arg(2), "k", Classes::Numeric)?;
     let (rows, cols) = (c.rows(), c.cols());
-    let (dc, dk) = derivative(d, rows, cols, c.data, k.data)?;
-    sink.real(0, &[rows, cols - 1])?.copy_from_slice(&dc);
+    check_bspderiv(d, cols, k.len())?;
     if call.nargout >= 2 {
-        sink.real(1, &[1, dk.len()])?.copy_from_slice(&dk);
+        // dk is k(2:end-1).
+        sink.real(1, &[1, k.len() - 2])?
+            .copy_from_slice(&k.data[1..k.len() - 1]);
     }
+    bspderiv_into(
+        d,
+        rows,
+        cols,
+        c.data,
+        k.data,
+        sink.real(0, &[rows, cols - 1])?,
+    )?;
     Ok(())
 }
 

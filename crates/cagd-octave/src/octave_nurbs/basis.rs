@@ -60,7 +60,6 @@ pub fn basisfun_into(
             format!("{} spans for {} parameters", iv.len(), n),
         ));
     }
-    let mut spans = Vec::with_capacity(if iv.len() == 1 { 1 } else { n });
     for &x in iv.iter().take(n.max(1)) {
         let s = truncate(x);
         if x.is_nan() && p > 0 || !span_has_knots(s, p, knots.len()) {
@@ -74,13 +73,20 @@ pub fn basisfun_into(
                 ),
             ));
         }
-        spans.push(s);
     }
-    let mut nb = vec![0.0; 3 * (p + 1)];
+    // Scratch on the stack for the usual degrees (a call for one point allocates nothing).
+    let mut small = [0.0; 3 * SMALL];
+    let mut large = Vec::new();
+    let nb: &mut [f64] = if p < SMALL {
+        &mut small[..3 * (p + 1)]
+    } else {
+        large.resize(3 * (p + 1), 0.0);
+        &mut large
+    };
     let (nv, rest) = nb.split_at_mut(p + 1);
     let (left, right) = rest.split_at_mut(p + 1);
     for (k, &u) in uv.iter().enumerate() {
-        let s = if spans.len() == 1 { spans[0] } else { spans[k] };
+        let s = truncate(if iv.len() == 1 { iv[0] } else { iv[k] });
         if p == 0 {
             nv[0] = 1.0;
         } else {
@@ -92,6 +98,9 @@ pub fn basisfun_into(
     }
     Ok(())
 }
+
+/// Degrees below this use scratch on the stack.
+const SMALL: usize = 16;
 
 /// octave-nurbs' `ders = basisfunder (ii, pl, uu, U, nd)`: for each span `ii(k)` and
 /// parameter `uu(k)`, the basis functions of degree `pl` and their derivatives up to order
@@ -141,7 +150,7 @@ pub fn basisfunder_into(
 }
 
 /// The work arrays of A2.3 (row-major `(pl+1) × (pl+1)` `ndu`, `2 × (pl+1)` `a`,
-/// `(nd+1) × (pl+1)` `ders`).
+/// `(nd+1) × (pl+1)` `ders`), in one allocation.
 struct DersWork {
     pl: usize,
     nd: usize,
@@ -154,14 +163,15 @@ struct DersWork {
 
 impl DersWork {
     fn new(pl: usize, nd: usize) -> Self {
+        let w = pl + 1;
         DersWork {
             pl,
             nd,
-            ndu: vec![0.0; (pl + 1) * (pl + 1)],
-            left: vec![0.0; pl + 1],
-            right: vec![0.0; pl + 1],
-            a: vec![0.0; 2 * (pl + 1)],
-            ders: vec![0.0; (nd + 1) * (pl + 1)],
+            ndu: vec![0.0; w * w],
+            left: vec![0.0; w],
+            right: vec![0.0; w],
+            a: vec![0.0; 2 * w],
+            ders: vec![0.0; (nd + 1) * w],
         }
     }
 

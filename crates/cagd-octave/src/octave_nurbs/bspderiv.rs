@@ -33,8 +33,20 @@ pub fn bspderiv(
     c: &[f64],
     k: &[f64],
 ) -> Result<(Vec<f64>, Vec<f64>)> {
+    check_bspderiv(d, cols, k.len())?;
+    let mut dc = vec![0.0; rows * (cols - 1)];
+    bspderiv_into(d, rows, cols, c, k, &mut dc)?;
+    Ok((dc, k[1..k.len() - 1].to_vec()))
+}
+
+/// `Ok` when octave-nurbs' `bspderiv` reads only inside its arrays for degree `d` (truncated),
+/// `cols` control points and `nk` knots: at least one control point and two knots, a degree
+/// of at least 0, and the knots `k(i+d+1)` it reads (`nk ≥ cols + d` for two or more points).
+///
+/// # Errors
+/// [`NurbsError::Undefined`].
+pub fn check_bspderiv(d: f64, cols: usize, nk: usize) -> Result<()> {
     let dt = truncate(d);
-    let nk = k.len();
     if dt < 0 || cols == 0 || nk < 2 {
         return Err(NurbsError::undefined(
             "c",
@@ -50,15 +62,35 @@ pub fn bspderiv(
             ),
         ));
     }
-    let d = dt as usize;
-    let mut dc = vec![0.0; rows * (cols - 1)];
-    for i in 0..cols.saturating_sub(1) {
+    Ok(())
+}
+
+/// The control points `dc` of [`bspderiv`] into `dc` (`rows × (cols − 1)`, Octave's array for
+/// them), without allocating; its knots are `k(2:end-1)`.
+///
+/// # Errors
+/// As [`check_bspderiv`].
+pub fn bspderiv_into(
+    d: f64,
+    rows: usize,
+    cols: usize,
+    c: &[f64],
+    k: &[f64],
+    dc: &mut [f64],
+) -> Result<()> {
+    check_bspderiv(d, cols, k.len())?;
+    let d = truncate(d) as usize;
+    for i in 0..cols - 1 {
         let tmp = d as f64 / (k[i + d + 1] - k[i + 1]);
-        for j in 0..rows {
-            dc[j + rows * i] = tmp * (c[j + rows * (i + 1)] - c[j + rows * i]);
+        let (a, b) = (
+            &c[rows * i..rows * (i + 1)],
+            &c[rows * (i + 1)..rows * (i + 2)],
+        );
+        for (o, (x, y)) in dc[rows * i..rows * (i + 1)].iter_mut().zip(a.iter().zip(b)) {
+            *o = tmp * (y - x);
         }
     }
-    Ok((dc, k[1..nk - 1].to_vec()))
+    Ok(())
 }
 
 #[cfg(test)]

@@ -98,22 +98,51 @@ impl<'a> Bsp<'a> {
     }
 }
 
-/// Scratch buffers for [`Bsp::basis`].
+/// Scratch buffers for [`Bsp::basis`], on the stack for degrees below 16 (a call for one point
+/// allocates nothing).
 #[derive(Debug, Clone)]
 pub struct BasisWork {
-    /// The basis values.
-    pub n: Vec<f64>,
-    left: Vec<f64>,
-    right: Vec<f64>,
+    d: usize,
+    small: [f64; 3 * SMALL],
+    large: Vec<f64>,
 }
+
+/// Degrees below this use the buffer on the stack.
+const SMALL: usize = 16;
 
 impl BasisWork {
     /// Buffers for degree `d`.
     pub fn new(d: usize) -> Self {
         BasisWork {
-            n: vec![0.0; d + 1],
-            left: vec![0.0; d + 1],
-            right: vec![0.0; d + 1],
+            d,
+            small: [0.0; 3 * SMALL],
+            large: if d < SMALL {
+                Vec::new()
+            } else {
+                vec![0.0; 3 * (d + 1)]
+            },
+        }
+    }
+
+    fn buffers(&mut self) -> (&mut [f64], &mut [f64], &mut [f64]) {
+        let w = self.d + 1;
+        let all: &mut [f64] = if self.d < SMALL {
+            &mut self.small[..3 * w]
+        } else {
+            &mut self.large
+        };
+        let (n, rest) = all.split_at_mut(w);
+        let (l, r) = rest.split_at_mut(w);
+        (n, l, r)
+    }
+
+    /// The basis values of the last [`at`](Self::at).
+    pub fn values(&self) -> &[f64] {
+        let w = self.d + 1;
+        if self.d < SMALL {
+            &self.small[..w]
+        } else {
+            &self.large[..w]
         }
     }
 
@@ -122,7 +151,8 @@ impl BasisWork {
     /// # Errors
     /// As [`Bsp::basis`].
     pub fn at(&mut self, b: &Bsp<'_>, u: f64) -> Result<usize> {
-        b.basis(u, &mut self.n, &mut self.left, &mut self.right)
+        let (n, l, r) = self.buffers();
+        b.basis(u, n, l, r)
     }
 }
 
@@ -155,7 +185,7 @@ pub fn bspeval_into(b: &Bsp<'_>, u: &[f64], out: &mut [f64]) -> Result<()> {
         combine(
             b,
             first,
-            &work.n,
+            work.values(),
             &mut out[col * b.rows..(col + 1) * b.rows],
         );
     }
@@ -196,13 +226,14 @@ pub fn along_axis(
     let mut work = BasisWork::new(b.degree);
     for (j, &x) in u.iter().enumerate() {
         let first = work.at(b, x)?;
-        let terms = work.n.len().min(cols.saturating_sub(first));
+        let n = work.values();
+        let terms = n.len().min(cols.saturating_sub(first));
         for t in 0..trail {
             let src = &a[t * lead * cols..(t + 1) * lead * cols];
             let dst = &mut out[(t * nt + j) * lead..(t * nt + j + 1) * lead];
             for (r, o) in dst.iter_mut().enumerate() {
                 let mut acc = 0.0;
-                for (i, w) in work.n[..terms].iter().enumerate() {
+                for (i, w) in n[..terms].iter().enumerate() {
                     acc += w * src[r + lead * (first + i)];
                 }
                 *o = acc;

@@ -54,7 +54,7 @@ mod span;
 pub use along::Net;
 pub use basis::{basisfun_into, basisfunder_into, existing_basis, span_has_knots, truncate};
 pub use bspdegelev::bspdegelev;
-pub use bspderiv::bspderiv;
+pub use bspderiv::{bspderiv, bspderiv_into, check_bspderiv};
 pub use bspeval::{along_axis, bspeval_into, combine, BasisWork, Bsp};
 pub use bspkntins::bspkntins;
 pub use error::{NurbsError, Result};

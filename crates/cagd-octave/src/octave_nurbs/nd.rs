@@ -56,6 +56,17 @@ impl Nd {
     /// # Errors
     /// [`NurbsError::Refused`] for sizes Octave cannot broadcast ("nonconformant arguments").
     pub fn zip(&self, other: &Nd, op: impl Fn(f64, f64) -> f64) -> Result<Nd> {
+        if self.dims == other.dims {
+            return Ok(Nd {
+                dims: self.dims.clone(),
+                data: self
+                    .data
+                    .iter()
+                    .zip(&other.data)
+                    .map(|(&x, &y)| op(x, y))
+                    .collect(),
+            });
+        }
         let n = self.dims.len().max(other.dims.len());
         let a: Vec<usize> = (0..n)
             .map(|k| self.dims.get(k).copied().unwrap_or(1))

@@ -481,7 +481,12 @@ fn point(
 ) {
     let dim = numbers.len();
     let terms: Vec<usize> = (0..dim)
-        .map(|k| works[k].n.len().min(numbers[k].saturating_sub(firsts[k])))
+        .map(|k| {
+            works[k]
+                .values()
+                .len()
+                .min(numbers[k].saturating_sub(firsts[k]))
+        })
         .collect();
     // Collapse the last direction over the box of the other directions' terms.
     let lead_terms: usize = terms[..dim - 1].iter().product();
@@ -501,7 +506,7 @@ fn point(
         let last = dim - 1;
         for (c, o) in cell.iter_mut().enumerate() {
             let mut acc = 0.0;
-            for (i, nw) in works[last].n[..terms[last]].iter().enumerate() {
+            for (i, nw) in works[last].values()[..terms[last]].iter().enumerate() {
                 acc += nw * coefs[c + offset + stride * (firsts[last] + i)];
             }
             *o = acc;
@@ -515,7 +520,7 @@ fn point(
         for a in 0..inner {
             for c in 0..4 {
                 let mut acc = 0.0;
-                for (i, nw) in works[k].n[..terms[k]].iter().enumerate() {
+                for (i, nw) in works[k].values()[..terms[k]].iter().enumerate() {
                     acc += nw * scratch[c + 4 * (a + inner * i)];
                 }
                 next[c + 4 * a] = acc;
