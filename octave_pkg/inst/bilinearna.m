@@ -40,3 +40,9 @@ endfunction
 %! assert (squeeze (bilinearna (B, 0.5, 0.5, 10))', [0.5 0.5 0.5]);
 %!error <u: value at index 0 is not finite> bilinearna ([0 0 0], NaN, 0, 1)
 %!error <B: logical is not accepted> bilinearna (true (1, 3), 0, 0, 1)
+
+%!demo
+%! ## The bilinear patch z = uv (thesis: bilinearna) on a 15 x 15 grid.
+%! B = [0 0 0  0 1 0; 1 0 0  1 1 1];
+%! L = bilinearna (B, 0, 0, 15);
+%! surf (L(:,:,1), L(:,:,2), L(:,:,3)); title ("bilinearna: the hyperbolic paraboloid z = uv");

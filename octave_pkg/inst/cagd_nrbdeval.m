@@ -34,6 +34,12 @@
 function varargout = cagd_nrbdeval (varargin)
   nout = max (nargout, 1);
   nurbs = varargin{1};
+  if (nout <= 2 && nargin >= 1 && isstruct (nurbs) && ! iscell (nurbs.knots) && ! iscell (varargin{end}))
+    ## A curve at an array of parameters: the points and first derivatives, no cells.
+    [~, p, d] = __cagd__ ("cagd_nrbdeval", varargin{:}, 2);
+    varargout = {p, d};
+    return;
+  endif
   dirs = 1;
   if (isstruct (nurbs) && isfield (nurbs, "knots") && iscell (nurbs.knots))
     dirs = columns (nurbs.knots);

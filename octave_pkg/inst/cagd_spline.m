@@ -41,3 +41,9 @@ endfunction
 %! assert (X(:, 1), X(:, end), 1e-15);
 %!error <ends: 'periodic'> cagd_spline ([0 1 0], 0.5, "periodic")
 %!error <outside the domain> cagd_spline ([0 1 0], 2.5)
+
+%!demo
+%! ## The natural cubic spline through five points.
+%! Q = [0 1 2 3 4; 0 1 0 1 0]; t = linspace (0, 4, 201);
+%! X = cagd_spline (Q, t, "natural");
+%! plot (X(1,:), X(2,:), "b", Q(1,:), Q(2,:), "ro"); title ("cagd\_spline: a natural spline");

@@ -235,39 +235,6 @@ namespace
   }
 
   // The outputs, created by the callbacks and returned once the Rust call is done.
-  // The outputs, created as Octave values at once (their data does not move with them): the
-  // first few in place, the others in a list (nothing allocated for the usual call).
-  struct outputs
-  {
-    static const std::size_t few = 6;
-    alignas (octave_value) unsigned char slots[few][sizeof (octave_value)];
-    std::size_t index[few];
-    std::size_t n = 0;
-    std::list<std::pair<std::size_t, octave_value>> more;
-
-    void add (std::size_t i, const octave_value& v)
-    {
-      if (n < few)
-        {
-          new (slots[n]) octave_value (v);
-          index[n++] = i;
-        }
-      else
-        more.emplace_back (i, v);
-    }
-
-    octave_value& at (std::size_t k)
-    {
-      return *reinterpret_cast<octave_value *> (slots[k]);
-    }
-
-    ~outputs ()
-    {
-      for (std::size_t k = 0; k < n; k++)
-        at (k).~octave_value ();
-    }
-  };
-
   dim_vector
   size_of (std::size_t ndims, const std::size_t *dims)
   {
@@ -281,26 +248,70 @@ namespace
     return dv;
   }
 
+  // The outputs: real arrays (a Matrix for 2 dimensions, the cheaper object, else an
+  // NDArray) that own their data while Rust fills them — an Octave value made at once would
+  // copy a 1 x 1 array into a scalar — and cells of strings as Octave values. The first few
+  // in place, the others in lists (nothing allocated for the usual call).
+  struct outputs
+  {
+    static const std::size_t few = 6;
+    alignas (Matrix) unsigned char slots[few][sizeof (Matrix) > sizeof (NDArray)
+                                               ? sizeof (Matrix) : sizeof (NDArray)];
+    bool is_matrix[few];
+    std::size_t index[few];
+    std::size_t n = 0;
+    std::list<std::pair<std::size_t, NDArray>> more;
+    std::list<std::pair<std::size_t, octave_value>> others;
+
+    double *
+    add_real (std::size_t i, std::size_t ndims, const std::size_t *dims)
+    {
+      if (n < few && ndims == 2)
+        {
+          Matrix *m = new (slots[n]) Matrix (static_cast<octave_idx_type> (dims[0]),
+                                             static_cast<octave_idx_type> (dims[1]), 0.0);
+          is_matrix[n] = true;
+          index[n++] = i;
+          return m->fortran_vec ();
+        }
+      if (n < few)
+        {
+          NDArray *a = new (slots[n]) NDArray (size_of (ndims, dims), 0.0);
+          is_matrix[n] = false;
+          index[n++] = i;
+          return a->fortran_vec ();
+        }
+      more.emplace_back (std::piecewise_construct, std::forward_as_tuple (i),
+                         std::forward_as_tuple (size_of (ndims, dims), 0.0));
+      return more.back ().second.fortran_vec ();
+    }
+
+    octave_value
+    value (std::size_t k) const
+    {
+      if (is_matrix[k])
+        return octave_value (*reinterpret_cast<const Matrix *> (slots[k]));
+      return octave_value (*reinterpret_cast<const NDArray *> (slots[k]));
+    }
+
+    ~outputs ()
+    {
+      for (std::size_t k = 0; k < n; k++)
+        if (is_matrix[k])
+          reinterpret_cast<Matrix *> (slots[k])->~Matrix ();
+        else
+          reinterpret_cast<NDArray *> (slots[k])->~NDArray ();
+    }
+  };
+
+
   extern "C" double *
   sink_real (void *ctx, std::size_t index, std::size_t ndims, const std::size_t *dims) noexcept
   {
     try
       {
         outputs& out = *static_cast<outputs *> (ctx);
-        // The Octave value shares the array's data, which stays where it is: writing through
-        // it is writing the result. A matrix is the cheaper object for 2 dimensions.
-        if (ndims == 2)
-          {
-            Matrix m (static_cast<octave_idx_type> (dims[0]),
-                      static_cast<octave_idx_type> (dims[1]), 0.0);
-            double *data = m.fortran_vec ();
-            out.add (index, octave_value (m));
-            return data;
-          }
-        NDArray arr (size_of (ndims, dims), 0.0);
-        double *data = arr.fortran_vec ();
-        out.add (index, octave_value (arr));
-        return data;
+        return out.add_real (index, ndims, dims);
       }
     catch (...)
       {
@@ -318,7 +329,7 @@ namespace
         Cell c (size_of (ndims, dims));
         for (octave_idx_type i = 0; i < c.numel (); i++)
           c(i) = octave_value (std::string (texts[i], lens[i]));
-        out.add (index, octave_value (c));
+        out.others.emplace_back (index, octave_value (c));
         return 0;
       }
     catch (...)
@@ -365,12 +376,16 @@ call_package (const std::string& name, const octave_value_list& args, octave_idx
     n_out = std::max (n_out, out.index[k] + 1);
   for (const auto& v : out.more)
     n_out = std::max (n_out, v.first + 1);
+  for (const auto& v : out.others)
+    n_out = std::max (n_out, v.first + 1);
   if (n_out == 1 && out.n == 1)
-    return octave_value_list (out.at (0));
+    return octave_value_list (out.value (0));
   octave_value_list retval (static_cast<octave_idx_type> (n_out), octave_value ());
   for (std::size_t k = 0; k < out.n; k++)
-    retval(out.index[k]) = out.at (k);
+    retval(out.index[k]) = out.value (k);
   for (const auto& v : out.more)
+    retval(v.first) = octave_value (v.second);
+  for (const auto& v : out.others)
     retval(v.first) = v.second;
   return retval;
 }
