@@ -39,7 +39,7 @@ impl<T: Scalar> BSplineSurface<T> {
     }
 
     /// The surface with the `u` direction replaced by `curve` (from [`along_u`](Self::along_u)).
-    fn from_u(&self, curve: &BSplineCurve<T>) -> Result<Self> {
+    fn with_u(&self, curve: &BSplineCurve<T>) -> Result<Self> {
         let d = self.coordinates().len();
         let nv = self.coordinates()[0].ncols();
         let c = curve.control();
@@ -56,7 +56,7 @@ impl<T: Scalar> BSplineSurface<T> {
     }
 
     /// The surface with the `v` direction replaced by `curve` (from [`along_v`](Self::along_v)).
-    fn from_v(&self, curve: &BSplineCurve<T>) -> Result<Self> {
+    fn with_v(&self, curve: &BSplineCurve<T>) -> Result<Self> {
         let d = self.coordinates().len();
         let nu = self.coordinates()[0].nrows();
         let c = curve.control();
@@ -91,10 +91,10 @@ impl<T: Scalar> BSplineSurface<T> {
     pub fn elevate(&self, ru: usize, rv: usize) -> Result<Self> {
         let mut s = self.clone();
         if ru > 0 {
-            s = s.from_u(&s.along_u()?.elevate(ru)?)?;
+            s = s.with_u(&s.along_u()?.elevate(ru)?)?;
         }
         if rv > 0 {
-            s = s.from_v(&s.along_v()?.elevate(rv)?)?;
+            s = s.with_v(&s.along_v()?.elevate(rv)?)?;
         }
         Ok(s)
     }
@@ -108,10 +108,10 @@ impl<T: Scalar> BSplineSurface<T> {
     pub fn insert_knots(&self, us: &[T], vs: &[T]) -> Result<Self> {
         let mut s = self.clone();
         if !us.is_empty() {
-            s = s.from_u(&s.along_u()?.insert_knots(us)?)?;
+            s = s.with_u(&s.along_u()?.insert_knots(us)?)?;
         }
         if !vs.is_empty() {
-            s = s.from_v(&s.along_v()?.insert_knots(vs)?)?;
+            s = s.with_v(&s.along_v()?.insert_knots(vs)?)?;
         }
         Ok(s)
     }

@@ -248,12 +248,11 @@ impl Elevation {
         ub: f64,
     ) -> Result<()> {
         let (ph, mc) = (self.ph, self.mc);
-        let mut first = kind - 2;
-        let mut last = kind;
         let den = ub - ua;
         let bet = ((ub - self.ik.get(kind)?) / den).floor();
         for tr in 1..oldr {
-            let (mut i, mut j) = (first, last);
+            // octave-nurbs' first and last: kind − 2 and kind, moving apart by one per step.
+            let (mut i, mut j) = (kind - 1 - tr, kind + tr - 1);
             let mut kj = j - kind + 1;
             while j - i > tr {
                 if i < cind {
@@ -280,8 +279,6 @@ impl Elevation {
                 j -= 1;
                 kj -= 1;
             }
-            first -= 1;
-            last += 1;
         }
         Ok(())
     }

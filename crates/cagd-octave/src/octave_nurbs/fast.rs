@@ -187,3 +187,73 @@ pub fn swapped_surface(
         coords,
     )?)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cagd::nurbs::NurbsCurve;
+
+    /// A small deterministic generator (SplitMix64) for the tests.
+    struct Rng(u64);
+
+    impl Rng {
+        fn unit(&mut self) -> f64 {
+            self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+            let mut z = self.0;
+            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+            ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+        }
+    }
+
+    /// Clamped knots of degree `p` for `n` points, interior knots repeated up to `p` times.
+    fn knots(rng: &mut Rng, p: usize, n: usize) -> Vec<f64> {
+        let mut interior = Vec::new();
+        while interior.len() < n - p - 1 {
+            let x = 0.05 + 0.9 * rng.unit();
+            let m = (1 + (rng.unit() * p as f64) as usize).min(n - p - 1 - interior.len());
+            interior.extend(std::iter::repeat_n(x, m));
+        }
+        interior.sort_by(f64::total_cmp);
+        let mut k = vec![0.0; p + 1];
+        k.extend(interior);
+        k.extend(std::iter::repeat_n(1.0, p + 1));
+        k
+    }
+
+    #[test]
+    fn bezier_pieces_give_the_curve() {
+        let mut rng = Rng(7);
+        for case in 0..60 {
+            let p = 1 + case % 5;
+            let n = p + 1 + (rng.unit() * 7.0) as usize;
+            let unit = case % 3 == 0;
+            let h = DMatrix::from_fn(4, n, |r, _| match r {
+                3 if unit => 1.0,
+                3 => 0.3 + 2.7 * rng.unit(),
+                _ => 2.0 * rng.unit() - 1.0,
+            });
+            let b = BSplineCurve::new(p, knots(&mut rng, p, n), h).unwrap();
+            let curve = NurbsCurve::from_homogeneous(b).unwrap();
+            let pieces = bezier_pieces(curve.homogeneous(), unit).unwrap().unwrap();
+            let t = cagd::linspace(0.0, 1.0, 301);
+            let (mut fast, mut slow) = (vec![0.0; 3 * t.len()], vec![0.0; 3 * t.len()]);
+            eval_pieces(&pieces, &t, &mut fast).unwrap();
+            curve.try_eval_many_into(&t, &mut slow).unwrap();
+            let scale = slow.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+            for (a, b) in fast.iter().zip(&slow) {
+                assert!(
+                    (a - b).abs() <= 1e-13 * scale,
+                    "case {case} (degree {p}): {a} vs {b}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn unclamped_knots_have_no_pieces() {
+        let h = DMatrix::from_element(4, 4, 1.0);
+        let b = BSplineCurve::new(2, vec![0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0], h).unwrap();
+        assert!(bezier_pieces(&b, false).unwrap().is_none());
+    }
+}
