@@ -30,8 +30,10 @@ mkdir -p "$pkg/inst" "$pkg/src/rust/crates"
 cp -p "$here/DESCRIPTION" "$here/COPYING" "$here/INDEX" "$pkg/"
 cp -p "$here"/inst/*.m "$pkg/inst/"
 cp -p "$here/src/__cagd__.cc" "$here/src/Makefile" "$pkg/src/"
-# The docstrings of the builtin twins, from their .m files (see __cagd__.cc).
+# The builtin twins (see __cagd__.cc): their docstrings from their .m files, and their test
+# blocks as NAME.cc-tst in place of the .m files (no .m file of a builtin's name on the path).
 python3 "$here/src/twin_docs.py" "$here/inst" "$pkg/src/cagd_twin_docs.h"
+python3 "$here/src/twin_docs.py" --tests "$pkg/inst"
 
 rust="$pkg/src/rust"
 cp -p "$root/Cargo.toml" "$root/Cargo.lock" "$root/rustfmt.toml" "$rust/"

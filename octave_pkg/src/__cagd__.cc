@@ -9,10 +9,11 @@
 //
 // The octave-nurbs twins of octave-nurbs' own oct-files and evaluators (cagd_bspeval,
 // cagd_basisfun, cagd_basisfunder, cagd_bspderiv, cagd_findspan, cagd_nrbeval) are builtins
-// of this oct-file as well (autoloaded by the PKG_ADD lines below, which take precedence over
-// their .m files): one call for one point then costs one builtin call, as the octave-nurbs
-// oct-files do. Their .m files in inst/ keep the documentation (the docstrings here are
-// generated from them by build.sh into cagd_twin_docs.h) and the test blocks.
+// of this oct-file as well (autoloaded by the PKG_ADD lines below): one call for one point
+// then costs one builtin call, as the octave-nurbs oct-files do. Their .m files in inst/ hold
+// the documentation and the test blocks; build.sh generates the docstrings here from them
+// (cagd_twin_docs.h) and ships their test blocks as NAME.cc-tst instead of the .m files (a .m
+// file of a builtin's name on the path misleads Octave 7's lookup of function handles).
 //
 // Errors: the Rust side returns an identifier ("cagd:shape") and a message; this gateway raises
 // the Octave error with error_with_id only after cagd_call has returned, so no C++ exception

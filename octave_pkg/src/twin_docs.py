@@ -1,8 +1,14 @@
 #!/usr/bin/env python3
-"""Writes cagd_twin_docs.h: the docstrings of the twins that __cagd__.cc defines as builtins,
-taken from the texinfo comment blocks of their .m files in inst/ (one source for the help text).
+"""The builtin twins of __cagd__.cc and their .m files in inst/ (one source for their help and
+tests):
 
-Usage: python3 octave_pkg/src/twin_docs.py INST_DIR OUTPUT_HEADER
+  python3 octave_pkg/src/twin_docs.py INST_DIR OUTPUT_HEADER
+      writes cagd_twin_docs.h, the docstrings (the texinfo comment blocks of the .m files);
+  python3 octave_pkg/src/twin_docs.py --tests PACKAGE_INST_DIR
+      replaces each twin's .m file in a package being built by NAME.cc-tst holding its test
+      blocks: Octave 7 must not find a .m file of a builtin's name on the path (a function
+      handle to the builtin, looked up again after the path changed, would reach the oct-file's
+      main function instead), and `test NAME` reads NAME.cc-tst.
 """
 import pathlib
 import re
@@ -40,5 +46,17 @@ def main(inst, out):
     pathlib.Path(out).write_text("\n".join(parts) + "\n", encoding="utf-8")
 
 
+def tests(inst):
+    """Each twin's NAME.m in `inst` replaced by NAME.cc-tst with its %! lines."""
+    for name in TWINS:
+        m = pathlib.Path(inst) / (name + ".m")
+        blocks = [line for line in m.read_text(encoding="utf-8").splitlines() if line.startswith("%!")]
+        (pathlib.Path(inst) / (name + ".cc-tst")).write_text("\n".join(blocks) + "\n", encoding="utf-8")
+        m.unlink()
+
+
 if __name__ == "__main__":
-    main(sys.argv[1], sys.argv[2])
+    if sys.argv[1] == "--tests":
+        tests(sys.argv[2])
+    else:
+        main(sys.argv[1], sys.argv[2])

@@ -8,7 +8,7 @@ use crate::error::{Kind, PkgError, Result};
 use crate::value::{Sink, Value};
 
 /// `[p, w] = cagd_nrbeval (nurbs, tt)`: octave-nurbs' `nrbeval` (see
-/// [`NrbEval`](cagd_octave::octave_nurbs::NrbEval)): curves at parameters of any size,
+/// [`NrbEval`]): curves at parameters of any size,
 /// surfaces and volumes on grids `{u, v (, w)}` and at scattered points, one output
 /// cartesian, two homogeneous.
 pub fn nrbeval(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {

@@ -158,7 +158,7 @@ impl<'a> NrbParts<'a> {
     /// A curve as the core's B-spline curve of its homogeneous coefficients (`4 × n`,
     /// `(w·x, w·y, w·z, w)`): any weights, including zero and negative ones (the reusable
     /// reading for Rust callers; octave-nurbs' own evaluation rules are in
-    /// [`nrbeval`](super::nrbeval)).
+    /// [`NrbEval`](super::NrbEval)).
     ///
     /// # Errors
     /// [`NurbsError::Refused`] unless this is a curve with 4 coefficient rows and an integer

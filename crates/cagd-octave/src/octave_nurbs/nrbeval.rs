@@ -69,7 +69,7 @@ enum Plan<'a> {
 ///
 /// Where every parameter lies in the domain of a well-formed direction (the usual case), the
 /// values come from the core's batch kernels instead: curves at many sorted parameters by
-/// their Bézier pieces, surface grids as one tensor-product sweep ([`super::fast`]); they
+/// their Bézier pieces, surface grids as one tensor-product sweep; they
 /// agree with `bspeval`'s to rounding.
 #[derive(Debug, Clone)]
 pub struct NrbEval<'a> {
