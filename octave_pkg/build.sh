@@ -7,7 +7,7 @@
 # The tarball holds the package (DESCRIPTION, COPYING, INDEX, inst/*.m) and the sources of its
 # oct-file: src/__cagd__.cc, src/Makefile, src/cagd_twin_docs.h (generated here from the .m
 # files by src/twin_docs.py), and in src/rust/ the Rust crates it links -- the core
-# cagd (src/), cagd-octave, cagd-octave-pkg, cagd-octave-ffi -- as a workspace of their own with
+# cagd (src/), cagd-ops, cagd-octave, cagd-octave-pkg, cagd-octave-ffi -- as a workspace of their own with
 # the checkout's Cargo.lock. `pkg install` runs src/Makefile: cargo builds the static library
 # (release profile; crates.io must be reachable, or the crates vendored/cached), then mkoctfile
 # compiles and links __cagd__.oct. The workspace manifest is the checkout's, reduced to those
@@ -38,7 +38,7 @@ python3 "$here/src/twin_docs.py" --tests "$pkg/inst"
 rust="$pkg/src/rust"
 cp -p "$root/Cargo.toml" "$root/Cargo.lock" "$root/rustfmt.toml" "$rust/"
 cp -rp "$root/src" "$rust/src"
-for crate in cagd-octave cagd-octave-pkg cagd-octave-ffi; do
+for crate in cagd-ops cagd-octave cagd-octave-pkg cagd-octave-ffi; do
     mkdir -p "$rust/crates/$crate"
     cp -p "$root/crates/$crate/Cargo.toml" "$rust/crates/$crate/"
     cp -rp "$root/crates/$crate/src" "$rust/crates/$crate/src"
@@ -47,12 +47,12 @@ for crate in cagd-octave cagd-octave-pkg cagd-octave-ffi; do
     fi
 done
 
-# The workspace of the tarball: the four crates only, no dev-dependencies (their test-only
+# The workspace of the tarball: the five crates only, no dev-dependencies (their test-only
 # crates are not shipped), no workspace entries for crates that are not there.
 python3 - "$rust" <<'PY'
 import re, sys, pathlib
 rust = pathlib.Path(sys.argv[1])
-shipped = ["crates/cagd-octave", "crates/cagd-octave-pkg", "crates/cagd-octave-ffi"]
+shipped = ["crates/cagd-ops", "crates/cagd-octave", "crates/cagd-octave-pkg", "crates/cagd-octave-ffi"]
 
 def drop_sections(text, names):
     out, skip = [], False
@@ -69,7 +69,7 @@ text = root.read_text()
 text = re.sub(r"(?ms)^members = \[.*?\]\n", "members = [\".\", " + ", ".join(f'"{c}"' for c in shipped) + "]\n", text, count=1)
 text = re.sub(r"(?ms)^(# [^\n]*\n)*default-members = \[.*?\]\n", "", text)
 text = "# The Rust workspace of the Octave package cagd, written by octave_pkg/build.sh from the\n" \
-       "# checkout's Cargo.toml: the core and the three crates the oct-file links.\n" + text
+       "# checkout's Cargo.toml: the core and the four crates the oct-file links.\n" + text
 text = re.sub(r'(?m)^cagd-(cli|test-support) = \{ path = .*\n', "", text)
 text = drop_sections(text, {"dev-dependencies"})
 root.write_text(text)

@@ -18,12 +18,20 @@
 //! | a sampled curve looked up | [`SampledCurve::eval_cost`](crate::SampledCurve::eval_cost) |
 //! | Hermite basis, Ferguson cubic | [`hermite::basis_cost`](crate::hermite::basis_cost), [`HermiteCubic::eval_cost`](crate::HermiteCubic::eval_cost) |
 //! | B-spline (and NURBS) basis and curve | [`bspline::basis_cost`](crate::bspline::basis_cost), [`bspline::curve_point_cost`](crate::bspline::curve_point_cost) |
+//! | the Cox–de Boor triangle of a knot vector | [`bspline::triangle_cost`](crate::bspline::triangle_cost) |
+//! | knot insertion (Boehm) | [`BSplineCurve::insertion_cost`](crate::BSplineCurve::insertion_cost) |
+//! | B-spline and NURBS surfaces at a point | [`BSplineSurface::point_cost`](crate::bspline::BSplineSurface::point_cost), [`NurbsSurface::point_cost`](crate::nurbs::NurbsSurface::point_cost) |
 //! | interpolating cubic spline | [`spline::interpolation_cost`](crate::spline::interpolation_cost), [`spline::sample_cost`](crate::spline::sample_cost) |
 //! | Lagrange basis (barycentric) | [`Lagrange::weights_cost`](crate::lagrange::Lagrange::weights_cost), [`Lagrange::basis_cost`](crate::lagrange::Lagrange::basis_cost), [`Lagrange::interpolation_cost`](crate::lagrange::Lagrange::interpolation_cost) |
 //! | Coons patches, Gordon surfaces (blends of curves) | [`coons::coons_point_cost`](crate::coons::coons_point_cost), [`coons::bicubic_point_cost`](crate::coons::bicubic_point_cost), [`gordon::gordon_point_cost`](crate::gordon::gordon_point_cost), all through [`blended`] |
 //! | the set-up of a Gordon surface (crossings checked, Lagrange weights) | [`gordon::gordon_setup_cost`](crate::gordon::gordon_setup_cost) |
-//! | the discrete Coons formula | [`coons::discrete_coons_cost`](crate::coons::discrete_coons_cost) |
+//! | the discrete Coons formula, its three parts | [`coons::discrete_coons_cost`](crate::coons::discrete_coons_cost), [`coons::discrete_coons_parts_cost`](crate::coons::discrete_coons_parts_cost) |
+//! | ruled surfaces, Ferguson patches | [`surfaces::ruled_point_cost`](crate::surfaces::ruled_point_cost), [`surfaces::ferguson_point_cost`](crate::surfaces::ferguson_point_cost) |
 //! | the band solve of a discrete Coons mask | [`Mask::solve_cost`](crate::coons::Mask::solve_cost) |
+//! | degree elevation of a Bézier or B-spline curve | [`bernstein::elevate_cost`](crate::bernstein::elevate_cost), [`BezierCurve::elevate_cost`](crate::BezierCurve::elevate_cost), [`BSplineCurve::elevate_cost`](crate::BSplineCurve::elevate_cost) |
+//! | conversion between geometry forms | [`conversion::form_conversion_cost`](crate::conversion::form_conversion_cost) |
+//! | the joint of two Bézier curves | [`continuity::bezier_joint_cost`](crate::continuity::bezier_joint_cost) |
+//! | antiderivatives, integrals of Bernstein polynomials | [`integral::antiderivative_cost`](crate::integral::antiderivative_cost), [`integral::bernstein_antiderivative_cost`](crate::integral::bernstein_antiderivative_cost) |
 //!
 //! The sizes grow with the construction ([`polynomial_bits`]): a de Casteljau scheme of degree
 //! `n` at `t = p/q` multiplies denominators by `q` at each of its `n` levels; an interpolating
@@ -37,6 +45,25 @@
 //! ```
 
 use crate::limits::exact_op_cost;
+use crate::scalar::Scalar;
+
+/// The most bits of any of `values` ([`Scalar::bits`]; 0 for none, and for `f64` without
+/// looking at them): the size a caller measures before asking for an estimate.
+///
+/// ```
+/// use cagd::Scalar;
+/// use num_rational::BigRational;
+/// let xs = [BigRational::from_ratio(1, 3), BigRational::from_ratio(255, 7)];
+/// assert_eq!(cagd::cost::max_bits(&xs), 11);
+/// assert_eq!(cagd::cost::max_bits(&[0.5f64]), 0);
+/// ```
+pub fn max_bits<'a, T: Scalar>(values: impl IntoIterator<Item = &'a T>) -> u128 {
+    if T::EXACT {
+        values.into_iter().map(Scalar::bits).max().unwrap_or(0)
+    } else {
+        0
+    }
+}
 
 /// `ops` arithmetic operations on numbers of about `bits` bits (see the
 /// [module documentation](self)).

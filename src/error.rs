@@ -250,13 +250,6 @@ pub enum Error {
         /// The tolerance used.
         tolerance: f64,
     },
-    /// A construction needs the derivative of a curve that does not provide one
-    /// ([`crate::Curve::eval_derivative`] returned `None`).
-    #[error("{what}: the curve provides no derivative, which this construction needs")]
-    MissingDerivative {
-        /// Which curve.
-        what: &'static str,
-    },
     /// A discrete Coons mask `(α, β)` that is not affinely invariant: the weights of the eight
     /// neighbours must sum to one, `4α + 4β = 1`.
     #[error("mask (alpha = {alpha}, beta = {beta}): 4*alpha + 4*beta = {sum}, expected 1")]

@@ -274,8 +274,19 @@ impl<T: Scalar> Curve<T> for HermiteCubic<T> {
     fn eval(&self, t: T) -> DVector<T> {
         HermiteCubic::eval(self, t)
     }
-    fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
-        Some(HermiteCubic::eval_derivative(self, t))
+    /// [`HermiteCubic::eval_cost`] on the cubic's own data.
+    fn point_cost(&self, param_bits: u128) -> crate::cost::Cost {
+        HermiteCubic::eval_cost(
+            self,
+            param_bits,
+            crate::cost::max_bits(self.geometry.iter()),
+        )
+    }
+}
+
+impl<T: Scalar> crate::param::CurveDeriv<T> for HermiteCubic<T> {
+    fn eval_derivative(&self, t: T) -> DVector<T> {
+        HermiteCubic::eval_derivative(self, t)
     }
 }
 

@@ -21,6 +21,7 @@ use nalgebra::{DMatrix, DVector};
 
 use crate::bezier::BezierCurve;
 use crate::bspline::BSplineCurve;
+use crate::cost::Cost;
 use crate::error::Result;
 use crate::scalar::Scalar;
 
@@ -137,6 +138,150 @@ pub fn bspline_integral<T: Scalar>(curve: &BSplineCurve<T>) -> Result<DVector<T>
     Ok(DVector::from_fn(fb.len(), |r, _| {
         fb[r].clone() - fa[r].clone()
     }))
+}
+
+/// `∫₀¹ B_i^n = 1/(n+1)`, the same for every `i`.
+///
+/// ```
+/// assert_eq!(cagd::integral::bernstein_integral::<f64>(3), 0.25);
+/// ```
+pub fn bernstein_integral<T: Scalar>(n: usize) -> T {
+    T::from_ratio(1, n as i64 + 1)
+}
+
+/// The values `∫₀ᵗ B_i^n` at each of `ts` for each `i` of `rows` (`k × rows.len()`, row = parameter):
+/// the Bernstein polynomials of degree `n + 1` at `t` times the coefficients of
+/// [`bernstein_antiderivative`], `1/(n+1) Σ_{j>i} B_j^{n+1}(t)`. Indices `i ≤ n` are assumed.
+///
+/// ```
+/// // ∫₀^½ B_0^1 = ∫₀^½ (1 − t) dt = 3/8.
+/// let v = cagd::integral::bernstein_antiderivative_values::<f64>(1, &[0, 1], &[0.5]);
+/// assert_eq!(v.as_slice(), &[0.375, 0.125]);
+/// ```
+pub fn bernstein_antiderivative_values<T: Scalar>(
+    n: usize,
+    rows: &[usize],
+    ts: &[T],
+) -> DMatrix<T> {
+    let coefficients: Vec<Vec<T>> = rows
+        .iter()
+        .map(|&i| bernstein_antiderivative::<T>(n, i))
+        .collect();
+    let basis = crate::bernstein::basis_matrix(n + 1, ts);
+    DMatrix::from_fn(ts.len(), rows.len(), |k, r| {
+        (0..n + 2).fold(T::zero(), |s, j| {
+            s + basis[(k, j)].clone() * coefficients[r][j].clone()
+        })
+    })
+}
+
+/// The cost of the coefficients of `rows` antiderivatives of degree-`n` Bernstein polynomials
+/// and of [`bernstein_antiderivative_values`] at `params` parameters of `param_bits` bits: the
+/// basis of degree `n + 1` at each ([`basis_cost`](crate::bernstein::basis_cost)) and a dot
+/// product of `n + 2` terms per row, on numbers grown by the coefficients' `1/(n+1)`.
+///
+/// ```
+/// use cagd::cost::Cost;
+/// // Degree 1, two rows, one parameter: 3 · 3 for the basis, 2 · 3 · 2 for the products, 2 · 3 coefficients.
+/// assert_eq!(cagd::integral::bernstein_antiderivative_cost(1, 2, 1, 0), Cost::new(9 + 12 + 6, 2 + 6));
+/// ```
+pub fn bernstein_antiderivative_cost(
+    n: usize,
+    rows: usize,
+    params: usize,
+    param_bits: u128,
+) -> Cost {
+    let n2 = n as u128 + 2;
+    let rows = rows as u128;
+    let per_param = crate::bernstein::basis_cost(n + 1, param_bits);
+    Cost::new(
+        per_param
+            .ops()
+            .saturating_add(2 * rows * n2)
+            .saturating_mul(params as u128)
+            .saturating_add(rows * n2),
+        per_param.bits().saturating_add(2 * n2),
+    )
+}
+
+/// The factor `(b − a)/(n + 1)` of the partial sums of [`bezier_antiderivative`].
+///
+/// ```
+/// use cagd::bezier::BezierCurve;
+/// let c = BezierCurve::new_on_interval(nalgebra::dmatrix![0.0, 1.0, 2.0], 1.0, 4.0)?;
+/// assert_eq!(cagd::integral::bezier_antiderivative_factor(&c), 1.0);
+/// # Ok::<(), cagd::Error>(())
+/// ```
+pub fn bezier_antiderivative_factor<T: Scalar>(curve: &BezierCurve<T>) -> T {
+    let (a, b) = curve.interval();
+    (b.clone() - a.clone()) / T::from_usize(curve.degree() + 1)
+}
+
+/// `∫ N_{i,p} = (u_{i+p+1} − u_i)/(p + 1)` for each basis function of the curve (over all the
+/// knots): the factors of [`bspline_antiderivative`]'s partial sums.
+///
+/// ```
+/// use cagd::bspline::BSplineCurve;
+/// use nalgebra::DMatrix;
+/// let c = BSplineCurve::new(2, vec![0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0], DMatrix::zeros(1, 4))?;
+/// assert_eq!(cagd::integral::bspline_basis_integrals(&c), vec![1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0]);
+/// # Ok::<(), cagd::Error>(())
+/// ```
+pub fn bspline_basis_integrals<T: Scalar>(curve: &BSplineCurve<T>) -> Vec<T> {
+    let p = curve.degree();
+    let u = curve.knots().as_slice();
+    (0..curve.control().ncols())
+        .map(|i| (u[i + p + 1].clone() - u[i].clone()) / T::from_usize(p + 1))
+        .collect()
+}
+
+/// `∫_{u_p}^t C` at each of `ts` (`d × k`), from the antiderivative `f` of `C`
+/// ([`bspline_antiderivative`]): `f(t) − f(u_p)`, the domain of `f` being `C`'s with a knot
+/// more at each end.
+///
+/// # Errors
+/// [`Error::ParameterOutOfRange`](crate::Error::ParameterOutOfRange) for a parameter outside
+/// the domain, [`Error::NonFinite`](crate::Error::NonFinite).
+///
+/// ```
+/// use cagd::bspline::BSplineCurve;
+/// use cagd::integral::{bspline_antiderivative, bspline_integral_to};
+/// use nalgebra::DMatrix;
+/// let c = BSplineCurve::new(1, vec![0.0, 0.0, 1.0, 2.0, 2.0], DMatrix::from_row_slice(1, 3, &[0.0, 1.0, 0.0]))?;
+/// let f = bspline_antiderivative(&c)?;
+/// assert_eq!(bspline_integral_to(&f, c.domain().0, &[1.0, 2.0])?.as_slice(), &[0.5, 1.0]);
+/// # Ok::<(), cagd::Error>(())
+/// ```
+pub fn bspline_integral_to<T: Scalar>(
+    f: &BSplineCurve<T>,
+    start: T,
+    ts: &[T],
+) -> Result<DMatrix<T>> {
+    let at_start = f.try_eval(start)?;
+    let mut out = DMatrix::from_element(f.dim(), ts.len(), T::zero());
+    for (k, t) in ts.iter().enumerate() {
+        let v = f.try_eval(t.clone())?;
+        for r in 0..v.len() {
+            out[(r, k)] = v[r].clone() - at_start[r].clone();
+        }
+    }
+    Ok(out)
+}
+
+/// The cost of an antiderivative's control points ([`bezier_antiderivative`],
+/// [`bspline_antiderivative`]) of a curve of degree `degree` with `points` `d`-dimensional
+/// control points: partial sums with one factor each, `4d(points + 1)` operations on numbers
+/// of `control_bits` grown by the factors (about `2(degree + 2)` bits).
+///
+/// ```
+/// use cagd::cost::Cost;
+/// assert_eq!(cagd::integral::antiderivative_cost(3, 2, 2, 5), Cost::new(32, 13));
+/// ```
+pub fn antiderivative_cost(points: usize, d: usize, degree: usize, control_bits: u128) -> Cost {
+    Cost::new(
+        4 * d as u128 * (points as u128 + 1),
+        control_bits.saturating_add(2 * (degree as u128 + 2)),
+    )
 }
 
 #[cfg(test)]

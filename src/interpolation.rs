@@ -275,4 +275,18 @@ impl<T: Scalar> Curve<T> for ParametricInterpolant<T> {
     fn eval(&self, t: T) -> DVector<T> {
         ParametricInterpolant::eval(self, t)
     }
+
+    /// Horner's rule on the algebraic coefficients: `2kd` operations on numbers of degree
+    /// `k − 1` in the parameter.
+    fn point_cost(&self, param_bits: u128) -> crate::cost::Cost {
+        let (d, k) = self.algebraic.shape();
+        crate::cost::Cost::new(
+            2 * (k as u128) * (d as u128),
+            crate::cost::polynomial_bits(
+                k.saturating_sub(1),
+                param_bits,
+                crate::cost::max_bits(self.algebraic.iter()),
+            ),
+        )
+    }
 }

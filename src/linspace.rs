@@ -8,6 +8,8 @@
 //! exactly `0` when `a == -b`). `linspace(a, b, 1)` is `[b]`, and `n < 1` gives an empty vector.
 //! The test `tests/it/octave_reference.rs` checks this against Octave's own output for n = 1…200.
 
+use crate::scalar::Scalar;
+
 /// `n` points from `a` to `b`, bit for bit as Octave 7's `linspace(a, b, n)`.
 ///
 /// ```
@@ -68,6 +70,53 @@ pub fn try_linspace(a: f64, b: f64, n: usize) -> crate::Result<Vec<f64>> {
         } else {
             a + half as f64 * delta
         };
+    }
+    Ok(out)
+}
+
+/// [`try_linspace`] in any scalar: Octave's doubles for `f64` (bit for bit), exact steps
+/// `a + i (b − a)/(n − 1)` in rationals (the ends exactly `a` and `b`).
+///
+/// # Errors
+/// As [`try_linspace`]: [`Error::TooLarge`](crate::Error::TooLarge) for a count that cannot
+/// be allocated; [`Error::NonFinite`](crate::Error::NonFinite) for a non-finite end.
+///
+/// ```
+/// use cagd::Scalar;
+/// use num_rational::BigRational;
+/// let third = |k| <BigRational as Scalar>::from_ratio(k, 3);
+/// assert_eq!(cagd::linspace::linspace_in(&third(0), &third(3), 4)?, vec![third(0), third(1), third(2), third(3)]);
+/// assert_eq!(cagd::linspace::linspace_in(&0.0, &1.0, 3)?, vec![0.0, 0.5, 1.0]);
+/// # Ok::<(), cagd::Error>(())
+/// ```
+pub fn linspace_in<T: Scalar>(a: &T, b: &T, n: usize) -> crate::Result<Vec<T>> {
+    for (index, x) in [a, b].into_iter().enumerate() {
+        if !x.is_finite_value() {
+            return Err(crate::Error::NonFinite {
+                what: "linspace ends",
+                index,
+                value: x.to_f64(),
+            });
+        }
+    }
+    if !T::EXACT {
+        return try_linspace(a.to_f64(), b.to_f64(), n)?
+            .into_iter()
+            .map(|x| {
+                T::from_f64(x).ok_or(crate::Error::NonFinite {
+                    what: "linspace samples",
+                    index: 0,
+                    value: x,
+                })
+            })
+            .collect();
+    }
+    let mut out = crate::grid::try_filled("linspace samples", n, b.clone())?;
+    if n > 1 {
+        let step = (b.clone() - a.clone()) / T::from_usize(n - 1);
+        for (i, x) in out.iter_mut().enumerate().take(n - 1) {
+            *x = a.clone() + step.clone() * T::from_usize(i);
+        }
     }
     Ok(out)
 }

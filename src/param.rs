@@ -65,6 +65,7 @@
 
 use nalgebra::DVector;
 
+use crate::cost::Cost;
 use crate::error::{Error, Result};
 use crate::scalar::Scalar;
 
@@ -104,12 +105,19 @@ pub trait Curve<T: Scalar = f64> {
         Ok(self.eval(t))
     }
 
-    /// The first derivative `c'(t)`, where the curve knows it (`None` otherwise); outside the
-    /// domain the derivative of the continued curve.
-    fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
-        let _ = t;
-        None
-    }
+    /// What one evaluation costs ([`eval`](Self::eval) at a parameter of `param_bits` bits):
+    /// the curve prices itself from its own data with the estimates of [`crate::cost`], so
+    /// that a construction taking any curve (a Coons patch, a Gordon surface) can refuse its
+    /// work before it starts.
+    ///
+    /// ```
+    /// use cagd::{BezierCurve, Curve};
+    /// use nalgebra::dmatrix;
+    /// let c = BezierCurve::new(dmatrix![0.0, 1.0, 2.0; 0.0, 2.0, 0.0])?;
+    /// assert_eq!(Curve::point_cost(&c, 0).ops(), 18); // d (n+1)²
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    fn point_cost(&self, param_bits: u128) -> Cost;
 
     /// The points at all parameters `ts`, written into `out` one after the other:
     /// `out[p·d + c]` is coordinate `c` of `c(ts[p])` (`ts.len() × d`, row-major; see
@@ -149,6 +157,32 @@ pub trait Curve<T: Scalar = f64> {
             p.clone_from_slice(x.as_slice());
         }
         Ok(())
+    }
+}
+
+/// A curve that knows its first derivative (as kurbo's `ParamCurveDeriv`): a construction
+/// that needs tangents (the bicubically blended Coons patch, a continuity check) says so in
+/// its bounds, so a curve without a derivative is refused by the compiler, never skipped at
+/// run time.
+///
+/// ```
+/// use cagd::{BezierCurve, CurveDeriv};
+/// use nalgebra::dmatrix;
+/// let c = BezierCurve::new(dmatrix![0.0, 1.0, 2.0; 0.0, 2.0, 0.0])?;
+/// assert_eq!(CurveDeriv::eval_derivative(&c, 0.0).as_slice(), &[2.0, 4.0]); // n (b1 − b0)
+/// # Ok::<(), cagd::Error>(())
+/// ```
+pub trait CurveDeriv<T: Scalar = f64>: Curve<T> {
+    /// The first derivative `c'(t)`; outside the domain the derivative of the continued curve.
+    fn eval_derivative(&self, t: T) -> DVector<T>;
+
+    /// `c'(t)` for `t` in the domain.
+    ///
+    /// # Errors
+    /// As [`Curve::try_eval`]: [`Error::NonFinite`], [`Error::ParameterOutOfRange`].
+    fn try_eval_derivative(&self, t: T) -> Result<DVector<T>> {
+        check_parameter("curve parameter", &t, &self.domain())?;
+        Ok(self.eval_derivative(t))
     }
 }
 
@@ -243,11 +277,17 @@ impl<T: Scalar, C: Curve<T> + ?Sized> Curve<T> for &C {
     fn try_eval(&self, t: T) -> Result<DVector<T>> {
         (**self).try_eval(t)
     }
-    fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
-        (**self).eval_derivative(t)
+    fn point_cost(&self, param_bits: u128) -> Cost {
+        (**self).point_cost(param_bits)
     }
     fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
         (**self).eval_many_into(ts, out)
+    }
+}
+
+impl<T: Scalar, C: CurveDeriv<T> + ?Sized> CurveDeriv<T> for &C {
+    fn eval_derivative(&self, t: T) -> DVector<T> {
+        (**self).eval_derivative(t)
     }
 }
 
@@ -264,11 +304,17 @@ impl<T: Scalar, C: Curve<T> + ?Sized> Curve<T> for Box<C> {
     fn try_eval(&self, t: T) -> Result<DVector<T>> {
         (**self).try_eval(t)
     }
-    fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
-        (**self).eval_derivative(t)
+    fn point_cost(&self, param_bits: u128) -> Cost {
+        (**self).point_cost(param_bits)
     }
     fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
         (**self).eval_many_into(ts, out)
+    }
+}
+
+impl<T: Scalar, C: CurveDeriv<T> + ?Sized> CurveDeriv<T> for Box<C> {
+    fn eval_derivative(&self, t: T) -> DVector<T> {
+        (**self).eval_derivative(t)
     }
 }
 
@@ -277,22 +323,33 @@ impl<T: Scalar, C: Curve<T> + ?Sized> Curve<T> for Box<C> {
 /// [`with_domain`](FnCurve::with_domain) says otherwise. Outside its domain `eval` calls the
 /// closure all the same (the closure is the curve's formula).
 ///
+/// [`FnCurve::new`] makes a [`Curve`]; [`FnCurve::with_derivative`] also a [`CurveDeriv`].
+/// A closure's work is unknown to the crate: [`Curve::point_cost`] counts `dim` operations
+/// unless [`with_cost`](FnCurve::with_cost) says more (a closure is the Rust caller's own code,
+/// not untrusted input).
+///
 /// The scalar `T` of the domain is the closures' parameter type; a type written
-/// `FnCurve<F, D>` with `D` a function pointer `fn(T) -> DVector<T>` takes it from `D`.
+/// `FnCurve<F, D>` with `D` a function pointer `fn(T) -> DVector<T>` takes it from `D`
+/// (`f64` for [`NoDerivative`]).
 #[derive(Clone)]
-pub struct FnCurve<F, D = fn(f64) -> DVector<f64>, T = <D as FnParameter>::Parameter> {
+pub struct FnCurve<F, D = NoDerivative, T = <D as FnParameter>::Parameter> {
     dim: usize,
     f: F,
-    df: Option<D>,
+    df: D,
     domain: (T, T),
+    cost: Option<Cost>,
 }
+
+/// The derivative of an [`FnCurve`] made by [`FnCurve::new`]: none (such a curve is not a
+/// [`CurveDeriv`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct NoDerivative;
 
 impl<F, D, T: std::fmt::Debug> std::fmt::Debug for FnCurve<F, D, T> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("FnCurve")
             .field("dim", &self.dim)
             .field("domain", &self.domain)
-            .field("derivative", &self.df.is_some())
             .finish_non_exhaustive()
     }
 }
@@ -308,26 +365,43 @@ impl<T, R> FnParameter for fn(T) -> R {
     type Parameter = T;
 }
 
-impl<T: Scalar, F: Fn(T) -> DVector<T>> FnCurve<F, fn(T) -> DVector<T>, T> {
+impl FnParameter for NoDerivative {
+    type Parameter = f64;
+}
+
+impl<T: Scalar, F: Fn(T) -> DVector<T>> FnCurve<F, NoDerivative, T> {
     /// A curve of dimension `dim` whose value at `t` is `f(t)` (no derivative), on `[0, 1]`.
     pub fn new(dim: usize, f: F) -> Self {
         FnCurve {
             dim,
             f,
-            df: None,
+            df: NoDerivative,
             domain: (T::zero(), T::one()),
+            cost: None,
         }
     }
 }
 
 impl<T: Scalar, F: Fn(T) -> DVector<T>, D> FnCurve<F, D, T> {
     /// A curve with value `f(t)` and derivative `df(t)`, on `[0, 1]`.
-    pub fn with_derivative(dim: usize, f: F, df: D) -> Self {
+    pub fn with_derivative(dim: usize, f: F, df: D) -> Self
+    where
+        D: Fn(T) -> DVector<T>,
+    {
         FnCurve {
             dim,
             f,
-            df: Some(df),
+            df,
             domain: (T::zero(), T::one()),
+            cost: None,
+        }
+    }
+
+    /// The same curve, one evaluation of which costs `cost` ([`Curve::point_cost`]).
+    pub fn with_cost(self, cost: Cost) -> Self {
+        FnCurve {
+            cost: Some(cost),
+            ..self
         }
     }
 
@@ -374,7 +448,6 @@ impl<T, F, D> Curve<T> for FnCurve<F, D, T>
 where
     T: Scalar,
     F: Fn(T) -> DVector<T>,
-    D: Fn(T) -> DVector<T>,
 {
     fn dim(&self) -> usize {
         self.dim
@@ -385,8 +458,20 @@ where
     fn eval(&self, t: T) -> DVector<T> {
         (self.f)(t)
     }
-    fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
-        self.df.as_ref().map(|df| df(t))
+    fn point_cost(&self, param_bits: u128) -> Cost {
+        self.cost
+            .unwrap_or_else(|| Cost::new(self.dim as u128, param_bits))
+    }
+}
+
+impl<T, F, D> CurveDeriv<T> for FnCurve<F, D, T>
+where
+    T: Scalar,
+    F: Fn(T) -> DVector<T>,
+    D: Fn(T) -> DVector<T>,
+{
+    fn eval_derivative(&self, t: T) -> DVector<T> {
+        (self.df)(t)
     }
 }
 
@@ -548,17 +633,26 @@ impl<T: Scalar> Curve<T> for SampledCurve<T> {
         )
     }
 
-    fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
+    fn point_cost(&self, param_bits: u128) -> Cost {
+        let sample_bits = self.samples.iter().map(Scalar::bits).max().unwrap_or(0);
+        self.eval_cost(param_bits, sample_bits)
+    }
+}
+
+/// The derivative of the polyline: on each segment the slope of its chord (at a sample
+/// parameter, the segment that starts there; the last one at the end).
+impl<T: Scalar> CurveDeriv<T> for SampledCurve<T> {
+    fn eval_derivative(&self, t: T) -> DVector<T> {
         let k = self.segment(&t);
         let h = self.params[k + 1].clone() - self.params[k].clone();
         let p = self.samples.column(k);
         let q = self.samples.column(k + 1);
-        Some(DVector::from_iterator(
+        DVector::from_iterator(
             p.len(),
             p.iter()
                 .zip(q.iter())
                 .map(|(x, y)| (y.clone() - x.clone()) / h.clone()),
-        ))
+        )
     }
 }
 
@@ -582,7 +676,8 @@ impl<T: Scalar> Curve<T> for SampledCurve<T> {
 /// assert_eq!(unit.domain(), (0.0, 1.0));
 /// assert_eq!(unit.eval(1.0), c.eval(4.0));
 /// assert_eq!(unit.eval(0.5), c.eval(2.0));
-/// assert_eq!(unit.eval_derivative(0.5).unwrap(), 4.0 * c.eval_derivative(2.0).unwrap());
+/// use cagd::CurveDeriv;
+/// assert_eq!(unit.eval_derivative(0.5), 4.0 * c.eval_derivative(2.0));
 /// # Ok::<(), cagd::Error>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
@@ -659,13 +754,17 @@ impl<T: Scalar, C: Curve<T>> Curve<T> for OnUnitInterval<C, T> {
         self.curve.eval(self.parameter(s))
     }
 
-    fn eval_derivative(&self, s: T) -> Option<DVector<T>> {
-        let d = self.curve.eval_derivative(self.parameter(s))?;
+    /// The curve's own cost at a parameter `a + (b − a)s`: the mapping's three operations
+    /// (none on `[0, 1]`) on numbers of the parameter, the ends and `s` together.
+    fn point_cost(&self, param_bits: u128) -> Cost {
         if self.is_identity() {
-            return Some(d);
+            return self.curve.point_cost(param_bits);
         }
-        let scale = self.end.clone() - self.start.clone();
-        Some(d.map(|x| scale.clone() * x))
+        let mapped = param_bits
+            .saturating_add(self.start.bits())
+            .saturating_add(self.end.bits())
+            .saturating_add(2);
+        self.curve.point_cost(mapped).and(Cost::new(3, mapped))
     }
 
     fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
@@ -674,6 +773,18 @@ impl<T: Scalar, C: Curve<T>> Curve<T> for OnUnitInterval<C, T> {
         }
         let mapped: Vec<T> = ts.iter().map(|s| self.parameter(s.clone())).collect();
         self.curve.eval_many_into(&mapped, out)
+    }
+}
+
+/// `(b − a) c'(a + (b − a)s)`.
+impl<T: Scalar, C: CurveDeriv<T>> CurveDeriv<T> for OnUnitInterval<C, T> {
+    fn eval_derivative(&self, s: T) -> DVector<T> {
+        let d = self.curve.eval_derivative(self.parameter(s));
+        if self.is_identity() {
+            return d;
+        }
+        let scale = self.end.clone() - self.start.clone();
+        d.map(|x| scale.clone() * x)
     }
 }
 

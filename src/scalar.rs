@@ -33,6 +33,8 @@ pub trait Scalar:
     + Sync
     + 'static
 {
+    /// Whether arithmetic is exact (no rounding): `false` for `f64`, `true` for rationals.
+    const EXACT: bool;
     /// The exact value of a finite double; `None` for NaN and ±∞.
     fn from_f64(x: f64) -> Option<Self>;
     /// The value `num / den` (rounded to nearest for `f64`). `den` must not be zero.
@@ -41,6 +43,19 @@ pub trait Scalar:
     fn to_f64(&self) -> f64;
     /// Whether the value is a finite number (always true for rationals).
     fn is_finite_value(&self) -> bool;
+    /// The length of the number in bits, numerator and denominator together (0 for `f64`,
+    /// whose cost does not depend on the value). Estimates of exact work weigh each operation
+    /// by the size its numbers reach ([`crate::limits::exact_op_cost`], [`crate::cost`]).
+    ///
+    /// ```
+    /// use cagd::Scalar;
+    /// use num_rational::BigRational;
+    /// assert_eq!(<BigRational as Scalar>::from_ratio(7, 2).bits(), 5);
+    /// assert_eq!(0.1f64.bits(), 0);
+    /// ```
+    fn bits(&self) -> u128 {
+        0
+    }
     /// `n` as a scalar.
     fn from_usize(n: usize) -> Self {
         Self::from_ratio(n as i64, 1)
@@ -114,6 +129,7 @@ pub trait Scalar:
 }
 
 impl Scalar for f64 {
+    const EXACT: bool = false;
     #[inline]
     fn from_f64(x: f64) -> Option<Self> {
         x.is_finite().then_some(x)
@@ -152,6 +168,10 @@ impl Scalar for f64 {
 }
 
 impl Scalar for BigRational {
+    const EXACT: bool = true;
+    fn bits(&self) -> u128 {
+        u128::from(self.numer().bits() + self.denom().bits())
+    }
     fn from_f64(x: f64) -> Option<Self> {
         <BigRational as FromPrimitive>::from_f64(x)
     }

@@ -51,6 +51,69 @@ pub enum EndCondition<T: Scalar = f64> {
     Closed,
 }
 
+/// How the parameters `t_k` of the points of an interpolating spline are chosen.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Parametrization {
+    /// `t_k = k`: every segment over `[0, 1]` of its own, as the lecture notes.
+    Uniform,
+    /// Steps `t_{k+1} − t_k = |x_{k+1} − x_k|` (chord length).
+    Chord,
+    /// Steps `t_{k+1} − t_k = √|x_{k+1} − x_k|` (centripetal).
+    Centripetal,
+}
+
+impl Parametrization {
+    /// The parameters of the columns of `points` from `t_0 = 0`: one per point, and for a
+    /// `closed` spline one more, the parameter of the return to `x_0`. Chord-length and
+    /// centripetal steps are square roots: computed in doubles (so not exact in rationals).
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] for two consecutive points that coincide (a zero step).
+    ///
+    /// ```
+    /// use cagd::spline::Parametrization;
+    /// use nalgebra::DMatrix;
+    /// let x = DMatrix::from_column_slice(2, 3, &[0.0, 0.0, 3.0, 4.0, 3.0, 0.0]);
+    /// assert_eq!(Parametrization::Chord.params(&x, false)?, vec![0.0, 5.0, 9.0]);
+    /// assert_eq!(Parametrization::Uniform.params(&x, true)?, vec![0.0, 1.0, 2.0, 3.0]);
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn params<T: Scalar>(self, points: &DMatrix<T>, closed: bool) -> Result<Vec<T>> {
+        let m = points.ncols();
+        let count = m + usize::from(closed);
+        if self == Parametrization::Uniform || m == 0 {
+            return Ok((0..count).map(T::from_usize).collect());
+        }
+        let mut t = vec![T::zero()];
+        for k in 1..count {
+            let (a, b) = (points.column(k - 1), points.column(k % m));
+            let dist = a
+                .iter()
+                .zip(b.iter())
+                .map(|(x, y)| (x.to_f64() - y.to_f64()).powi(2))
+                .sum::<f64>()
+                .sqrt();
+            let step = match self {
+                Parametrization::Centripetal => dist.sqrt(),
+                _ => dist,
+            };
+            if step == 0.0 {
+                return Err(Error::InvalidArgument {
+                    what: "spline parameters",
+                    message: format!(
+                        "points {} and {} coincide, a step of zero; consecutive points must differ",
+                        k,
+                        k % m + 1
+                    ),
+                });
+            }
+            let next = t[k - 1].to_f64() + step;
+            t.push(T::from_f64(next).unwrap_or_else(T::zero));
+        }
+        Ok(t)
+    }
+}
+
 /// The cost of [`CubicSpline::interpolate`] through `points` points in `d` coordinates: the
 /// (cyclic, when [`EndCondition::Closed`]) tridiagonal solve, about 10 operations per point and
 /// coordinate, twice when closed. In exact arithmetic the solve's pivots are continuants growing
@@ -424,6 +487,97 @@ impl<T: Scalar> CubicSpline<T> {
         self.points.nrows()
     }
 
+    /// `t` moved into `[t_0, t_last)` by whole periods `t_last − t_0` for a closed spline,
+    /// which is periodic; `t` itself for an open one.
+    ///
+    /// ```
+    /// use cagd::spline::{CubicSpline, EndCondition};
+    /// use nalgebra::DMatrix;
+    /// let x = DMatrix::from_column_slice(1, 3, &[0.0, 1.0, 0.0]);
+    /// let s = CubicSpline::interpolate(x, EndCondition::Closed)?;
+    /// assert_eq!((s.wrap(&7.5), s.wrap(&-0.5)), (1.5, 2.5));
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn wrap(&self, t: &T) -> T {
+        if !self.closed {
+            return t.clone();
+        }
+        let (a, b) = (&self.params[0], &self.params[self.params.len() - 1]);
+        let period = b.clone() - a.clone();
+        let x = (t.clone() - a.clone()) / period.clone();
+        if !x.to_f64().is_finite() {
+            return t.clone();
+        }
+        // floor(x), exactly: from the double's floor, corrected by at most a step each way.
+        let mut k = T::from_f64(x.to_f64().floor()).unwrap_or_else(T::zero);
+        while k > x {
+            k = k - T::one();
+        }
+        while k.clone() + T::one() <= x {
+            k = k + T::one();
+        }
+        t.clone() - k * period
+    }
+
+    /// The linear system for the tangents, as the lecture notes write it: the matrix `A`
+    /// (`m × m`) and the right-hand sides `R` (`d × m`, column `k` the right side of equation
+    /// `k`), with `A · tangentsᵀ = Rᵀ`. Interior equation `k`:
+    /// `h_k x'_{k−1} + 2(h_{k−1} + h_k) x'_k + h_{k−1} x'_{k+1} = 3(h_k δ_{k−1} + h_{k−1} δ_k)`
+    /// (unit steps: `x'_{k−1} + 4x'_k + x'_{k+1} = 3(x_{k+1} − x_{k−1})`); clamped ends
+    /// `x'_0 = s`, natural ends `2x'_0 + x'_1 = 3δ_0` and `x'_{m−2} + 2x'_{m−1} = 3δ_{m−2}`;
+    /// closed: the interior equation at every point, cyclically. `end` is the condition the
+    /// spline was made with.
+    ///
+    /// ```
+    /// use cagd::spline::{CubicSpline, EndCondition};
+    /// use nalgebra::DMatrix;
+    /// let x = DMatrix::from_column_slice(1, 3, &[0.0, 1.0, 0.0]);
+    /// let s = CubicSpline::interpolate(x, EndCondition::Natural)?;
+    /// let (a, r) = s.system(&EndCondition::Natural);
+    /// assert_eq!(a, DMatrix::from_row_slice(3, 3, &[2.0, 1.0, 0.0, 1.0, 4.0, 1.0, 0.0, 1.0, 2.0]));
+    /// assert_eq!(r.as_slice(), &[3.0, 0.0, -3.0]);
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn system(&self, end: &EndCondition<T>) -> (DMatrix<T>, DMatrix<T>) {
+        let (pts, t) = (&self.points, &self.params);
+        let (d, m) = (pts.nrows(), pts.ncols());
+        let segs = self.segment_count();
+        let h: Vec<T> = (0..segs).map(|k| t[k + 1].clone() - t[k].clone()).collect();
+        let delta = |k: usize, r: usize| {
+            (pts[(r, (k + 1) % m)].clone() - pts[(r, k)].clone()) / h[k].clone()
+        };
+        let (two, three) = (T::from_usize(2), T::from_usize(3));
+        let mut a = DMatrix::from_element(m, m, T::zero());
+        let mut rhs = DMatrix::from_element(d, m, T::zero());
+        for k in 0..m {
+            if self.closed || (k > 0 && k + 1 < m) {
+                let p = (k + m - 1) % m;
+                let (hp, hn) = (h[p].clone(), h[k].clone());
+                a[(k, p)] = a[(k, p)].clone() + hn.clone();
+                a[(k, k)] = two.clone() * (hp.clone() + hn.clone());
+                a[(k, (k + 1) % m)] = a[(k, (k + 1) % m)].clone() + hp.clone();
+                for r in 0..d {
+                    rhs[(r, k)] =
+                        three.clone() * (hn.clone() * delta(p, r) + hp.clone() * delta(k, r));
+                }
+            } else if let EndCondition::Clamped { start, end } = end {
+                a[(k, k)] = T::one();
+                let v = if k == 0 { start } else { end };
+                for r in 0..d {
+                    rhs[(r, k)] = v[r].clone();
+                }
+            } else {
+                let (j, seg) = if k == 0 { (1, 0) } else { (m - 2, m - 2) };
+                a[(k, k)] = two.clone();
+                a[(k, j)] = T::one();
+                for r in 0..d {
+                    rhs[(r, k)] = three.clone() * delta(seg, r);
+                }
+            }
+        }
+        (a, rhs)
+    }
+
     /// Number of segments (`m − 1`, or `m` when closed).
     pub fn segment_count(&self) -> usize {
         self.params.len() - 1
@@ -626,13 +780,24 @@ impl<T: Scalar> Curve<T> for CubicSpline<T> {
     fn eval(&self, t: T) -> DVector<T> {
         CubicSpline::eval(self, t)
     }
-    fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
-        let [_, d, _] = self.eval_with_derivatives(t);
-        Some(d)
+    /// [`sample_cost`] on the spline's own points and tangents.
+    fn point_cost(&self, param_bits: u128) -> crate::cost::Cost {
+        let data = crate::cost::max_bits(self.points.iter().chain(self.tangents.iter()));
+        crate::cost::Cost::new(
+            12 * self.dim() as u128,
+            data.saturating_add(param_bits.saturating_mul(3)),
+        )
     }
     /// [`CubicSpline::eval_many_into`]: segment coefficients once, no allocation per point.
     fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
         CubicSpline::eval_many_into(self, ts, out)
+    }
+}
+
+impl<T: Scalar> crate::param::CurveDeriv<T> for CubicSpline<T> {
+    fn eval_derivative(&self, t: T) -> DVector<T> {
+        let [_, d, _] = self.eval_with_derivatives(t);
+        d
     }
 }
 

@@ -30,7 +30,7 @@ endfunction
 %! G = [0 1 3 4; 0 2 -1 1];
 %! assert (cagd_convert (cagd_convert (G, "bezier", "bspline"), "bspline", "bezier"), G, 1e-13);
 %!error <to: 'monomial'> cagd_convert ([0 1 2 4], "bezier", "monomial")
-%!error <G: 1×3; expected a d × 4 geometry matrix> cagd_convert ([0 1 2], "bezier", "hermite")
+%!error <G: 3 column\(s\) for the hermite form; expected 4 columns> cagd_convert ([0 1 2], "bezier", "hermite")
 
 %!demo
 %! ## One cubic in three forms: Bezier control points, Hermite data, B-spline points.

@@ -1,7 +1,7 @@
 ## -*- texinfo -*-
 ## @deftypefn  {} {[@var{X}, @var{rc}, @var{rd}, @var{rcd}] =} cagd_coons (@var{c1}, @var{c2}, @var{d1}, @var{d2}, @var{u}, @var{v})
 ## @deftypefnx {} {[@dots{}] =} cagd_coons (@dots{}, "exact")
-## The bilinearly blended Coons patch of four Bézier boundary curves on the grid
+## The bilinearly blended Coons patch of four boundary curves (Bézier or NURBS) on the grid
 ## @var{u} × @var{v}, with its three parts (thesis §4.2, Izrek 4.2):
 ##
 ## @example
@@ -11,10 +11,12 @@
 ##
 ## @table @var
 ## @item c1, c2
-## control points (@math{d × (k+1)}, columns, any degrees) of the curves @math{x(u,0)},
-## @math{x(u,1)};
+## the curves @math{x(u,0)}, @math{x(u,1)}: Bézier control points (@math{d × (k+1)},
+## columns, any degrees), or NURBS curves as structures from @code{nrbmak} (fields
+## @code{coefs}, @math{4 × n} homogeneous, @code{knots}, @code{order}), whose domain
+## @math{[U(p+1), U(n+1)]} is mapped onto @math{[0, 1]};
 ## @item d1, d2
-## control points of @math{x(0,v)}, @math{x(1,v)};
+## the curves @math{x(0,v)}, @math{x(1,v)}, likewise;
 ## @item u, v
 ## parameter arrays (any size);
 ## @item X, rc, rd, rcd
@@ -66,7 +68,22 @@ endfunction
 %! [~, P] = krpaCoons (cagd_bezier (c1, t), cagd_bezier (c2, t), cagd_bezier (d1, t), ...
 %!                     cagd_bezier (d2, t), [0;0;0], [1;0;0], [0;1;0], [1;1;1]);
 %! assert (permute (cagd_coons (c1, c2, d1, d2, t, t), [2 3 1]), P, 1e-15);
+%!test
+%! ## NURBS boundaries (nrbmak's fields): quarter circles (weights 1, 1, 2) at z = 0 and 1 and
+%! ## the lines between their ends: the cylinder, exactly (cos, sin) = (3/5, 4/5) at u = 1/2.
+%! arc = @(z) struct ("form", "B-NURBS", "dim", 4, "number", 3, ...
+%!                    "coefs", [1 1 0; 0 1 2; z z 2*z; 1 1 2], "order", 3, ...
+%!                    "knots", [0 0 0 1 1 1]);
+%! X = cagd_coons (arc (0), arc (1), [1 1; 0 0; 0 1], [0 0; 1 1; 0 1], 0.5, 0.25);
+%! assert (X, [3/5; 4/5; 1/4], 1e-15);
+%! assert (cagd_coons (arc (0), arc (1), [1 1; 0 0; 0 1], [0 0; 1 1; 0 1], 0.5, 0.25, "exact"), ...
+%!         {"3/5"; "4/5"; "1/4"});
+%! if (exist ("nrbmak"))
+%!   c = nrbmak ([1 1 0; 0 1 2; 0 0 0; 1 1 2], [0 0 0 1 1 1]);
+%!   assert (cagd_coons (c, arc (1), [1 1; 0 0; 0 1], [0 0; 1 1; 0 1], 0.5, 0.25), X, 1e-15);
+%! endif
 %!error <do not meet at the corners> cagd_coons (c1, c2, d1, d2 + 1, 0.5, 0.5)
+%!error <c1: .*has no field 'order'> cagd_coons (struct ("coefs", [1 0; 0 1; 0 0; 1 1], "knots", [0 0 1 1]), c2, d1, d2, 0.5, 0.5)
 %!error <c2: .*not accepted> cagd_coons (c1, {c2}, d1, d2, 0.5, 0.5)
 
 %!demo

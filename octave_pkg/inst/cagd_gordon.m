@@ -1,8 +1,8 @@
 ## -*- texinfo -*-
 ## @deftypefn  {} {[@var{X}, @var{g1}, @var{g2}, @var{g12}] =} cagd_gordon (@var{cu}, @var{cv}, @var{un}, @var{vn}, @var{u}, @var{v})
 ## @deftypefnx {} {[@dots{}] =} cagd_gordon (@dots{}, "exact")
-## The Gordon surface of a network of Bézier curves on the grid @var{u} × @var{v}, with its
-## three parts (thesis §4.4, Izrek 4.4):
+## The Gordon surface of a network of curves (Bézier or NURBS) on the grid @var{u} × @var{v},
+## with its three parts (thesis §4.4, Izrek 4.4):
 ##
 ## @example
 ## g = g1 + g2 - g12,   g1 = sum_i g(u_i, v) L_i(u),   g2 = sum_j g(u, v_j) L_j(v),
@@ -13,11 +13,12 @@
 ## @item un, vn
 ## the nodes @math{u_0 < … < u_m} and @math{v_0 < … < v_n};
 ## @item cu
-## a cell of @math{m+1} control point matrices (@math{d × (k+1)}, columns): the curves
-## @math{g(u_i, ·)}, functions of @math{v};
+## a cell of @math{m+1} curves @math{g(u_i, ·)}, functions of @math{v}: Bézier control
+## points (@math{d × (k+1)}, columns), or NURBS curves as structures from @code{nrbmak}
+## (fields @code{coefs}, @math{4 × n} homogeneous, @code{knots}, @code{order}), whose domain
+## @math{[U(p+1), U(n+1)]} is mapped onto @math{[0, 1]};
 ## @item cv
-## a cell of @math{n+1} control point matrices: the curves @math{g(·, v_j)}, functions of
-## @math{u};
+## a cell of @math{n+1} curves @math{g(·, v_j)}, functions of @math{u}, likewise;
 ## @item X, g1, g2, g12
 ## @math{d × numel (u) × numel (v)}, as @code{cagd_coons}.
 ## @end table
@@ -57,9 +58,25 @@ endfunction
 %! X = cagd_gordon (d, c, x, x, t, t);
 %! [V, U] = meshgrid (t, t);
 %! assert (squeeze (X(3,:,:)), V + U - U.^2, 1e-15);
+%!test
+%! ## NURBS curves (nrbmak's fields): the quarter circles (weights 1, 1, 2) at z = 0 and 1,
+%! ## and three lines of the cylinder between them; at u = 1/4 (cos, sin) = (15/17, 8/17).
+%! arc = @(z) struct ("form", "B-NURBS", "dim", 4, "number", 3, ...
+%!                    "coefs", [1 1 0; 0 1 2; z z 2*z; 1 1 2], "order", 3, ...
+%!                    "knots", [0 0 0 1 1 1]);
+%! lines = {[1 1; 0 0; 0 1], [3/5 3/5; 4/5 4/5; 0 1], [0 0; 1 1; 0 1]};
+%! X = cagd_gordon (lines, {arc(0), arc(1)}, [0 0.5 1], [0 1], 0.25, 0.75);
+%! assert (X, [15/17; 8/17; 3/4], 1e-15);
+%! assert (cagd_gordon (lines, {arc(0), arc(1)}, [0 0.5 1], [0 1], 0.25, 0.75, "exact"), ...
+%!         {"15/17"; "8/17"; "3/4"});
+%! if (exist ("nrbmak"))
+%!   c = nrbmak ([1 1 0; 0 1 2; 0 0 0; 1 1 2], [0 0 0 1 1 1]);
+%!   assert (cagd_gordon (lines, {c, arc(1)}, [0 0.5 1], [0 1], 0.25, 0.75), X, 1e-15);
+%! endif
 %!error <network is not compatible> cagd_gordon (d, {c{1}, c{2} + 1, c{3}}, x, x, 0.5, 0.5)
 %!error <cu: double is not accepted> cagd_gordon ([0 1], c, x, x, 0.5, 0.5)
 %!error <nodes must increase> cagd_gordon (d, c, [0 1 0.5], x, 0.5, 0.5)
+%!error <cv: .*not a recognised NURBS> cagd_gordon (d, {c{1}, struct("form", "L-NURBS"), c{3}}, x, x, 0.5, 0.5)
 
 %!demo
 %! ## Appendix D's network: the Gordon surface (u, v, v + u - u^2) through six curves.

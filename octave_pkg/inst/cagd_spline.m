@@ -4,7 +4,8 @@
 ## @deftypefnx {} {[@var{X}, @var{D}] =} cagd_spline (@dots{}, "exact")
 ## The interpolating cubic spline (C², Hermite cubics between the points) through the columns
 ## of @var{Q} (@math{d × m}) at the parameters @math{0, 1, …, m-1}, evaluated at @var{t}
-## (in @math{[0, m-1]}, or @math{[0, m]} when closed).
+## (in @math{[0, m-1]}; beyond it the end segments continue, as @code{cagd spline} on the
+## command line; a closed spline is periodic with period @math{m}).
 ##
 ## @var{ends} is @code{"natural"} (default: zero second derivative at both ends),
 ## @code{"closed"} (one more segment back to the first point, C² there too) or the end tangents
@@ -40,7 +41,8 @@ endfunction
 %! X = cagd_spline ([1 0 -1 0; 0 1 0 -1], linspace (0, 4, 9), "closed");
 %! assert (X(:, 1), X(:, end), 1e-15);
 %!error <ends: 'periodic'> cagd_spline ([0 1 0], 0.5, "periodic")
-%!error <outside the domain> cagd_spline ([0 1 0], 2.5)
+%!assert (cagd_spline ([0 1 0], 2.5, "natural", "exact"), {"-11/16"})
+%!assert (cagd_spline ([1 0 -1 0; 0 1 0 -1], 5, "closed"), cagd_spline ([1 0 -1 0; 0 1 0 -1], 1, "closed"), 1e-15)
 
 %!demo
 %! ## The natural cubic spline through five points.

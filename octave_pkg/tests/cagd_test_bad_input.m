@@ -86,7 +86,7 @@ function cagd_test_bad_input ()
     % constructions
     "corners do not meet",      @() krpaCoons (c1, c2, d1, d2, P1, P2, [1;1;1], P4), "cagd:corners", "do not meet at the corners"
     "Coons corner (as the CLI)", @() cagd_coons ([0 0 0; 1 0 0]', [0 1 0; 1 1 1]', [0 0 0; 0 1 0]', [1 0 0; 1 1 2]', 0.5, 0.5), ...
-                                "cagd:corners", "cagd_coons: boundary curves do not meet at the corners (relative tolerance 1e-10): at x(1,1) (P4) c2(1) and d2(1) differ by 1e0 (allowed 2e-10)"
+                                "cagd:corners", "cagd_coons: c1/c2/d1/d2: boundary curves do not meet at the corners (relative tolerance 1e-10): at x(1,1) (P4) c2(1) and d2(1) differ by 1e0 (allowed 2e-10)"
     "network does not cross",   @() krpaGordon (g_u, g_v, g_uv + 0.25, x, x, N), "cagd:network", "curve network is not compatible"
     "Bezier network",           @() cagd_gordon (cu, {cv{1}, cv{2} + 1, cv{3}}, x, x, 0.5, 0.5), "cagd:network", "not compatible"
     % huge inputs: refused before anything is allocated

@@ -4,6 +4,7 @@
 //! A polynomial of degree `n` is `p(t) = Σ_i a_i B_i^n(t)`; the coefficients `a_i` are numbers
 //! (one coordinate of a Bézier curve's control points) or anything else a [`Scalar`] holds.
 
+use crate::cost::Cost;
 use crate::scalar::Scalar;
 
 use super::binomial::binomial_scalar;
@@ -65,6 +66,31 @@ pub fn elevate<T: Scalar>(a: &[T], to: usize) -> Vec<T> {
         c = elevate_once(&c);
     }
     c
+}
+
+/// The cost of raising `n + 1` coefficients (degree `n`) by `r` degrees with [`elevate`]:
+/// `r` steps of [`elevate_once`], the step from degree `m` making `m + 2` coefficients of about
+/// 5 operations each (the ratio `i/(m+1)`, two products, a sum), `5 Σ_{m=n}^{n+r−1} (m + 2)`
+/// operations in all, on numbers that grow by the bits of a denominator `m + 1` (and as much
+/// of numerator) at each step: `coefficient_bits + 2r · bits(n + r)`.
+///
+/// ```
+/// use cagd::cost::Cost;
+/// // Degree 3 by 2: steps of 5 and 6 coefficients; bits(5) = 3.
+/// assert_eq!(cagd::bernstein::elevate_cost(3, 2, 10), Cost::new(55, 10 + 2 * 2 * 3));
+/// ```
+pub fn elevate_cost(n: usize, r: usize, coefficient_bits: u128) -> Cost {
+    let (n, r) = (n as u128, r as u128);
+    // Σ_{m=n}^{n+r−1} (m + 2) = r (n + 2) + r (r − 1) / 2.
+    let coefficients = r
+        .saturating_mul(n + 2)
+        .saturating_add(r.saturating_mul(r.saturating_sub(1)) / 2);
+    let top = n.saturating_add(r);
+    let bits = u128::from(u128::BITS - top.leading_zeros());
+    Cost::new(
+        coefficients.saturating_mul(5),
+        coefficient_bits.saturating_add(r.saturating_mul(2 * bits)),
+    )
 }
 
 /// The Bernstein coefficients of the product of two polynomials given by their Bernstein

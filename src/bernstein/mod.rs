@@ -35,7 +35,7 @@ mod binomial;
 mod elevation;
 
 pub use binomial::{binomial, binomial_f64, binomial_scalar, falling_factorial, power};
-pub use elevation::{elevate, elevate_once, product};
+pub use elevation::{elevate, elevate_cost, elevate_once, product};
 
 /// One Bernstein polynomial `B_i^n(t) = C(n, i) t^i (1 − t)^(n − i)`; `0` for `i > n`.
 ///

@@ -619,6 +619,20 @@ impl<T: Scalar> BezierCurve<T> {
         BezierCurve::from_valid(control, self.a.clone(), self.b.clone())
     }
 
+    /// The cost of raising the degree by `r` ([`elevate`](Self::elevate) `r` times): each
+    /// coordinate is [`bernstein::elevate_cost`](crate::bernstein::elevate_cost) of the
+    /// control points' `control_bits`.
+    ///
+    /// ```
+    /// use cagd::bezier::BezierCurve;
+    /// let c = BezierCurve::from_points(&[[0.0, 0.0], [1.0, 2.0], [3.0, 1.0], [4.0, 0.0]])?;
+    /// assert_eq!(c.elevate_cost(2, 0).ops(), 2 * 55);
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn elevate_cost(&self, r: usize, control_bits: u128) -> Cost {
+        crate::bernstein::elevate_cost(self.degree(), r, control_bits).times(self.dim() as u128)
+    }
+
     /// The same point set traversed backwards: control points in reverse order, same interval,
     /// so `reversed().eval(a + b − u) = eval(u)` (thesis §2.3, symmetry).
     ///
@@ -652,12 +666,23 @@ impl<T: Scalar> Curve<T> for BezierCurve<T> {
         BezierCurve::try_eval(self, t)
     }
 
-    fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
-        Some(BezierCurve::eval_derivative(self, t))
+    /// [`BezierCurve::eval_cost`] on the curve's own control points.
+    fn point_cost(&self, param_bits: u128) -> crate::cost::Cost {
+        BezierCurve::eval_cost(
+            self,
+            param_bits,
+            crate::cost::max_bits(self.control().iter()),
+        )
     }
 
     fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
         BezierCurve::eval_many_into(self, ts, out)
+    }
+}
+
+impl<T: Scalar> crate::param::CurveDeriv<T> for BezierCurve<T> {
+    fn eval_derivative(&self, t: T) -> DVector<T> {
+        BezierCurve::eval_derivative(self, t)
     }
 }
 

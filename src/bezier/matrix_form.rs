@@ -190,6 +190,23 @@ impl<T: Scalar> crate::param::Curve<T> for MatrixForm<T> {
     fn eval(&self, t: T) -> DVector<T> {
         MatrixForm::eval(self, t)
     }
+
+    /// Horner's rule per coordinate after mapping `t` onto `[0, 1]`: `2(n+1)d + 3`
+    /// operations on numbers of degree `n` in the parameter.
+    fn point_cost(&self, param_bits: u128) -> crate::cost::Cost {
+        let (d, n1) = self.coefficients.shape();
+        let bits = param_bits
+            .saturating_add(self.a.bits())
+            .saturating_add(self.b.bits());
+        crate::cost::Cost::new(
+            2 * (n1 as u128) * (d as u128) + 3,
+            crate::cost::polynomial_bits(
+                n1.saturating_sub(1),
+                bits,
+                crate::cost::max_bits(self.coefficients.iter()),
+            ),
+        )
+    }
 }
 
 #[cfg(test)]

@@ -522,16 +522,33 @@ impl<T: Scalar> Curve<T> for BSplineCurve<T> {
         BSplineCurve::try_eval(self, t)
     }
 
-    /// The derivative curve's [`eval`](BSplineCurve::eval) (the derivative of the continued
-    /// piece outside the domain); `None` for degree 0.
-    fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
-        self.derivative().ok().map(|d| d.eval(t))
+    /// [`curve_point_cost`](crate::bspline::curve_point_cost) on the curve's own knots and
+    /// control points.
+    fn point_cost(&self, param_bits: u128) -> crate::cost::Cost {
+        crate::bspline::curve_point_cost(
+            self.degree(),
+            self.dim(),
+            param_bits,
+            crate::cost::max_bits(self.knots().as_slice()),
+            crate::cost::max_bits(self.control().iter()),
+        )
     }
 
     /// [`BSplineCurve::eval_many_into`]: the fast batch (reciprocals per span, no division
     /// and no allocation per point).
     fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
         BSplineCurve::eval_many_into(self, ts, out)
+    }
+}
+
+impl<T: Scalar> crate::param::CurveDeriv<T> for BSplineCurve<T> {
+    /// The derivative curve's [`eval`](BSplineCurve::eval) (the derivative of the continued
+    /// piece outside the domain); zero for degree 0 (a piecewise constant curve).
+    fn eval_derivative(&self, t: T) -> DVector<T> {
+        match self.derivative() {
+            Ok(d) => d.eval(t),
+            Err(_) => DVector::from_element(self.dim(), T::zero()),
+        }
     }
 }
 

@@ -22,6 +22,7 @@ use nalgebra::{DMatrix, DVector};
 
 use super::curve::BSplineCurve;
 use crate::bezier::BezierCurve;
+use crate::cost::{polynomial_bits, Cost};
 use crate::error::{Error, Result};
 use crate::scalar::Scalar;
 
@@ -122,6 +123,48 @@ impl<T: Scalar> BSplineCurve<T> {
             control.set_column(i, &point);
         }
         BSplineCurve::new(q, new_knots, control)
+    }
+
+    /// The cost of [`elevate`](Self::elevate) by `r`, on control points of `control_bits` and
+    /// knots of `knot_bits` bits: for each of the `s ≤ n − p` spans the `p + 1` blossoms of its
+    /// Bézier form (`p (p+1)/2` combinations each) and their elevation to degree `q = p + r`
+    /// ([`bernstein::elevate_cost`](crate::bernstein::elevate_cost) per coordinate), then for
+    /// each of the `n + s r` new control points a polar form of degree `q` (`q (q+1)/2`
+    /// combinations); a combination of `d`-dimensional points is `3d + 3` operations. The
+    /// numbers grow as a polynomial of degree `p + q` in ratios of two knots.
+    ///
+    /// ```
+    /// use cagd::bspline::BSplineCurve;
+    /// use nalgebra::DMatrix;
+    /// let c = BSplineCurve::clamped(3, DMatrix::<f64>::zeros(2, 6))?;
+    /// // 3 spans, 6 + 3 = 9 new control points of degree 4.
+    /// assert_eq!(c.elevate_cost(1, 0, 0).ops(), 3 * (24 * 9 + 2 * 25) + 9 * 10 * 9);
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn elevate_cost(&self, r: usize, control_bits: u128, knot_bits: u128) -> Cost {
+        let (p, q) = (self.degree() as u128, (self.degree() + r) as u128);
+        let n = self.control().ncols() as u128;
+        let spans = n.saturating_sub(p);
+        let combination = 3 * self.dim() as u128 + 3;
+        let per_span = ((p + 1) * p * (p + 1) / 2)
+            .saturating_mul(combination)
+            .saturating_add(
+                crate::bernstein::elevate_cost(self.degree(), r, 0)
+                    .ops()
+                    .saturating_mul(self.dim() as u128),
+            );
+        let new_points = n.saturating_add(spans.saturating_mul(r as u128));
+        let per_point = (q * (q + 1) / 2).saturating_mul(combination);
+        Cost::new(
+            spans
+                .saturating_mul(per_span)
+                .saturating_add(new_points.saturating_mul(per_point)),
+            polynomial_bits(
+                self.degree() + self.degree() + r,
+                2 * knot_bits,
+                control_bits,
+            ),
+        )
     }
 
     /// The blossom of the piece on span `k` (`u_k < u_{k+1}`) at `args` (`p` values): de

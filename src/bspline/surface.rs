@@ -119,6 +119,41 @@ impl<T: Scalar> BSplineSurface<T> {
         )
     }
 
+    /// The cost of one point `S(u, v)` at parameters of `u_bits` and `v_bits` bits: the two
+    /// bases ([`basis_cost`](super::basis_cost)) and the `(p + 1)(q + 1)` products and sums
+    /// of every coordinate, on numbers of both bases' sizes and the net's.
+    ///
+    /// ```
+    /// use cagd::bspline::BSplineSurface;
+    /// use cagd::cost::Cost;
+    /// use nalgebra::DMatrix;
+    /// let z = DMatrix::from_row_slice(2, 2, &[0.0, 1.0, 1.0, 3.0]);
+    /// let s = BSplineSurface::clamped(1, 1, vec![z])?;
+    /// // 4 + 4 for the bases, 2 · 2 · 2 · 1 for the sum.
+    /// assert_eq!(s.point_cost(0, 0), Cost::new(16, 2));
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn point_cost(&self, u_bits: u128, v_bits: u128) -> crate::cost::Cost {
+        let (p, q) = self.degrees;
+        let knot_bits = crate::cost::max_bits(self.knots.0.as_slice())
+            .max(crate::cost::max_bits(self.knots.1.as_slice()));
+        let net_bits = self
+            .coords
+            .iter()
+            .map(|c| crate::cost::max_bits(c.iter()))
+            .max()
+            .unwrap_or(0);
+        let (bu, bv) = (
+            super::basis_cost(p, u_bits, knot_bits),
+            super::basis_cost(q, v_bits, knot_bits),
+        );
+        let sum = 2 * (p as u128 + 1) * (q as u128 + 1) * self.coords.len() as u128;
+        crate::cost::Cost::new(
+            bu.ops().saturating_add(bv.ops()).saturating_add(sum),
+            bu.bits().saturating_add(bv.bits()).saturating_add(net_bits),
+        )
+    }
+
     /// The point `S(u, v)` for `(u, v)` in the domain: [`Surface::eval`]'s value, bit for bit.
     ///
     /// # Errors

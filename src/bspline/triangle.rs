@@ -14,6 +14,7 @@
 //! function.
 
 use super::basis::cox_de_boor_unchecked;
+use crate::cost::{polynomial_bits, Cost};
 use crate::scalar::Scalar;
 
 /// The triangle at `u`: `triangle[j][i] = N_{i,j}(u)` for `j = 0..=p`, `i = 0..m−j` (`m + 1`
@@ -55,6 +56,22 @@ pub fn cox_de_boor_triangle<T: Scalar>(p: usize, knots: &[T], u: &T) -> Vec<Vec<
         levels.push(level);
     }
     levels
+}
+
+/// The cost of [`cox_de_boor_triangle`] of degree `p` on `knot_count = m + 1` knots at one
+/// parameter of `param_bits` bits: at most `4m` operations per level, `p + 1` levels, on
+/// numbers of `p` levels of `(u − u_i)/(u_{i+j} − u_i)`
+/// ([`polynomial_bits`]`(p, param_bits + 3 knot_bits, 0)`, as [`basis_cost`](super::basis_cost)).
+///
+/// ```
+/// assert_eq!(cagd::bspline::triangle_cost(2, 6, 0, 0), cagd::cost::Cost::new(60, 2));
+/// ```
+pub fn triangle_cost(p: usize, knot_count: usize, param_bits: u128, knot_bits: u128) -> Cost {
+    let m = knot_count.saturating_sub(1) as u128;
+    Cost::new(
+        (p as u128 + 1).saturating_mul(m).saturating_mul(4),
+        polynomial_bits(p, param_bits.saturating_add(knot_bits.saturating_mul(3)), 0),
+    )
 }
 
 #[cfg(test)]

@@ -6,6 +6,8 @@
 //! - `monomial.rs`: Bézier ↔ monomial matrices of any degree ([`bezier_to_monomial_matrix`],
 //!   [`monomial_to_bezier_matrix`]), the matrix form of
 //!   [`MatrixForm`](crate::bezier::MatrixForm);
+//! - `forms.rs`: the five geometry forms the course converts between ([`GeometryForm`],
+//!   [`form_conversion`]), through the Bézier form;
 //! - `invert.rs`: [`invert`], exact in rationals.
 //!
 //! **One power order.** Every matrix here multiplies **ascending** powers: row `i` of a basis
@@ -38,10 +40,12 @@ use nalgebra::DMatrix;
 use crate::scalar::Scalar;
 
 mod cubic;
+mod forms;
 mod invert;
 mod monomial;
 
 pub use cubic::{bezier_matrix, bspline_matrix, hermite_matrix, hermite_matrix_inverse, CubicForm};
+pub use forms::{form_conversion, form_conversion_cost, GeometryForm};
 pub use invert::invert;
 pub use monomial::{bezier_to_monomial_matrix, cubic_bezier_matrix, monomial_to_bezier_matrix};
 

@@ -7,7 +7,7 @@ use super::{push_gap, CoonsBoundary, Corner};
 use crate::cost::{blended, polynomial_bits, Cost};
 use crate::error::{Error, Result};
 use crate::hermite::{hermite_basis, hermite_basis_derivative};
-use crate::param::{usable_domain, Curve, OnUnitInterval, Surface};
+use crate::param::{usable_domain, Curve, CurveDeriv, OnUnitInterval, Surface};
 use crate::scalar::Scalar;
 
 /// The cubic Hermite basis in the thesis's order `[H0, H1, H2, H3](t)` (§4.2–4.3), the order of
@@ -107,8 +107,8 @@ pub struct SurfacePartials<T: Scalar = f64> {
 /// and `x_v(i, j)` from `x_v(·, j)` at `u = i`. With that choice the patch interpolates the four
 /// boundary curves whatever the derivative data. It also interpolates the four cross-boundary
 /// derivatives when the data are compatible: the boundary tangents at the corners agree with
-/// the cross-boundary curves (`c1'(0) = x_u(0, 0)`, … — checked by [`BicubicCoonsPatch::new`]
-/// where the boundary curves provide derivatives), and the twist used at each corner is the one
+/// the cross-boundary curves (`c1'(0) = x_u(0, 0)`, … — checked by [`BicubicCoonsPatch::new`];
+/// every curve here knows its derivative, [`CurveDeriv`]), and the twist used at each corner is the one
 /// the data imply along the edge in question. Constant twists ([`Twist::Zero`],
 /// [`Twist::Given`]) can satisfy both edges through a corner only when
 /// `∂/∂v x_u = ∂/∂u x_v` there; [`Twist::Gregory`] satisfies each edge separately.
@@ -118,11 +118,21 @@ pub struct SurfacePartials<T: Scalar = f64> {
 /// use cagd::{FnCurve, Surface};
 /// use nalgebra::{dvector, DVector};
 /// type F = fn(f64) -> DVector<f64>;
-/// // The boundary data of the surface z = x·y on the unit square.
-/// let c: [F; 4] = [|u| dvector![u, 0.0, 0.0], |u| dvector![u, 1.0, u], |v| dvector![0.0, v, 0.0], |v| dvector![1.0, v, v]];
-/// let d: [F; 4] = [|v| dvector![1.0, 0.0, v], |v| dvector![1.0, 0.0, v], |u| dvector![0.0, 1.0, u], |u| dvector![0.0, 1.0, u]];
-/// let [c1, c2, d1, d2] = c.map(|f| FnCurve::new(3, f));
-/// let [du0, du1, dv0, dv1] = d.map(|f| FnCurve::new(3, f));
+/// // The boundary data of the surface z = x·y on the unit square, with their derivatives.
+/// let c: [(F, F); 4] = [
+///     (|u| dvector![u, 0.0, 0.0], |_| dvector![1.0, 0.0, 0.0]),
+///     (|u| dvector![u, 1.0, u], |_| dvector![1.0, 0.0, 1.0]),
+///     (|v| dvector![0.0, v, 0.0], |_| dvector![0.0, 1.0, 0.0]),
+///     (|v| dvector![1.0, v, v], |_| dvector![0.0, 1.0, 1.0]),
+/// ];
+/// let d: [(F, F); 4] = [
+///     (|v| dvector![1.0, 0.0, v], |_| dvector![0.0, 0.0, 1.0]),
+///     (|v| dvector![1.0, 0.0, v], |_| dvector![0.0, 0.0, 1.0]),
+///     (|u| dvector![0.0, 1.0, u], |_| dvector![0.0, 0.0, 1.0]),
+///     (|u| dvector![0.0, 1.0, u], |_| dvector![0.0, 0.0, 1.0]),
+/// ];
+/// let [c1, c2, d1, d2] = c.map(|(f, df)| FnCurve::with_derivative(3, f, df));
+/// let [du0, du1, dv0, dv1] = d.map(|(f, df)| FnCurve::with_derivative(3, f, df));
 /// let boundary = CoonsBoundary::new(c1, c2, d1, d2, Tolerance::default()).unwrap();
 /// let one = dvector![0.0, 0.0, 1.0];
 /// let twist = Twist::Given([one.clone(), one.clone(), one.clone(), one]);
@@ -142,7 +152,7 @@ pub struct BicubicCoonsPatch<C, D, T: Scalar = f64> {
     twist: TwistData<T>,
 }
 
-impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
+impl<T: Scalar, C: CurveDeriv<T>, D: CurveDeriv<T>> BicubicCoonsPatch<C, D, T> {
     /// The bicubically blended patch of a checked boundary, its cross-boundary derivatives
     /// and a twist choice.
     ///
@@ -151,11 +161,10 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
     /// - [`Error::UnusableDomain`]: a cross-boundary curve whose domain is not a finite
     ///   interval `a < b` (it is reparametrised onto `[0, 1]` as the boundary curves are);
     /// - [`Error::NonFinite`]: non-finite derivative data at a corner;
-    /// - [`Error::CornerMismatch`]: where a boundary curve provides its derivative, its tangent
-    ///   at a corner disagrees with the cross-boundary curve there (e.g. `c1'(0)` against
-    ///   `x_u(0,v)` at `v = 0`), beyond the boundary's tolerance;
-    /// - [`Error::MissingDerivative`]: [`Twist::Gregory`] with a cross-boundary curve that
-    ///   provides no derivative.
+    /// - [`Error::CornerMismatch`]: a boundary curve's tangent at a corner disagrees with the
+    ///   cross-boundary curve there (e.g. `c1'(0)` against `x_u(0,v)` at `v = 0`), beyond the
+    ///   boundary's tolerance. Every curve knows its derivative ([`CurveDeriv`]), so every
+    ///   corner is checked.
     pub fn new(
         boundary: CoonsBoundary<C, T>,
         cross: CrossDerivatives<D>,
@@ -210,13 +219,13 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
             check("cross-boundary derivative at a corner", p)?;
         }
 
-        // Boundary tangents against the cross-boundary curves, where the tangents are known.
+        // Boundary tangents against the cross-boundary curves, at all four corners.
         let [c1, c2, d1, d2] = boundary.unit_curves();
         let tolerance = boundary.tolerance();
         type Pair<'a, T> = (
             Corner,
             &'static str,
-            Option<DVector<T>>,
+            DVector<T>,
             &'static str,
             &'a DVector<T>,
         );
@@ -280,18 +289,16 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
         ];
         let mut gaps = Vec::new();
         for (corner, first, tangent, second, cross_value) in tangents {
-            if let Some(t) = tangent {
-                check("boundary tangent at a corner", &t)?;
-                push_gap(
-                    &mut gaps,
-                    &tolerance,
-                    corner,
-                    first,
-                    second,
-                    &t,
-                    cross_value,
-                );
-            }
+            check("boundary tangent at a corner", &tangent)?;
+            push_gap(
+                &mut gaps,
+                &tolerance,
+                corner,
+                first,
+                second,
+                &tangent,
+                cross_value,
+            );
         }
         if !gaps.is_empty() {
             return Err(Error::CornerMismatch { gaps, tolerance });
@@ -310,9 +317,7 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
             Twist::Gregory => {
                 let deriv =
                     |c: &OnUnitInterval<&D, T>, what: &'static str, t: T| -> Result<DVector<T>> {
-                        let d = c
-                            .eval_derivative(t)
-                            .ok_or(Error::MissingDerivative { what })?;
+                        let d = c.eval_derivative(t);
                         check(what, &d)?;
                         Ok(d)
                     };
@@ -437,14 +442,15 @@ impl<T: Scalar, C: Curve<T>, D: Curve<T>> BicubicCoonsPatch<C, D, T> {
     /// twist differentiated as a rational function).
     ///
     /// # Errors
-    /// [`Error::MissingDerivative`] if a boundary or cross-boundary curve provides no
-    /// derivative.
+    /// None today (the curves' derivatives are known by their type); the `Result` is kept
+    /// for the checks a later patch may need.
     pub fn eval_partials(&self, u: T, v: T) -> Result<SurfacePartials<T>> {
         let [c1, c2, d1, d2] = self.boundary.unit_curves();
         let [du0, du1, dv0, dv1] = self.unit_cross();
-        let deriv = |c: &dyn Fn(T) -> Option<DVector<T>>, what: &'static str, t: &T| {
-            c(t.clone()).ok_or(Error::MissingDerivative { what })
-        };
+        let deriv = |c: &dyn Fn(T) -> DVector<T>,
+                     _what: &'static str,
+                     t: &T|
+         -> Result<DVector<T>> { Ok(c(t.clone())) };
         let at_u = self.values_at_u(&u);
         let at_v = self.values_at_v(&v);
         let at_u_d = [
@@ -544,7 +550,7 @@ fn dot<T: Scalar>(h: &[T; 4], values: &[DVector<T>; 4], k: usize) -> T {
         .fold(T::zero(), |acc, (h, p)| acc + h.clone() * p[k].clone())
 }
 
-impl<T: Scalar, C: Curve<T>, D: Curve<T>> Surface<T> for BicubicCoonsPatch<C, D, T> {
+impl<T: Scalar, C: CurveDeriv<T>, D: CurveDeriv<T>> Surface<T> for BicubicCoonsPatch<C, D, T> {
     fn dim(&self) -> usize {
         self.boundary.dim()
     }

@@ -125,8 +125,84 @@ pub fn discrete_coons<T: Scalar>(net: &[DMatrix<T>]) -> Result<Vec<DMatrix<T>>> 
 /// ```
 pub fn discrete_coons_cost(m: usize, n: usize, d: usize) -> Cost {
     let interior = (m.saturating_sub(1) as u128).saturating_mul(n.saturating_sub(1) as u128);
+    formula_cost(interior, (m, n), d)
+}
+
+/// 17 operations per coordinate at each of `points` points of a net of degree `(m, n)`, on
+/// numbers grown by the weights `i/m`, `j/n` (see [`discrete_coons_cost`]).
+fn formula_cost(points: u128, (m, n): (usize, usize), d: usize) -> Cost {
     let log2 = |k: usize| u128::from(usize::BITS - k.saturating_sub(1).leading_zeros());
-    Cost::new(interior.saturating_mul(17 * d as u128), 0)
+    Cost::new(points.saturating_mul(17 * d as u128), 0)
         .grown(2 * (log2(m) + log2(n)) + 2)
         .cheaper_when_exact(4)
+}
+
+/// The three parts of the discrete Coons formula at every point of a net (notes (6)):
+///
+/// ```text
+/// b^u_ij  = (1 − i/m) b_0j + (i/m) b_mj,
+/// b^v_ij  = (1 − j/n) b_i0 + (j/n) b_in,
+/// b^uv_ij = [1 − i/m, i/m] [b_00 b_0n; b_m0 b_mn] [1 − j/n; j/n],
+/// ```
+///
+/// so that [`discrete_coons`] is `b^u + b^v − b^uv` at the interior points (and at the boundary
+/// points too, where the parts reproduce the boundary). `net` is laid out as for
+/// [`discrete_coons`]; the result is `[b^u, b^v, b^uv]`, each one matrix per coordinate. A net
+/// of one row (`m = 0`) or one column (`n = 0`) has no opposite side: its weight `i/m` (or
+/// `j/n`) is taken as 0.
+///
+/// # Errors
+/// As [`discrete_coons`].
+///
+/// ```
+/// use cagd::coons::discrete_coons_parts;
+/// use nalgebra::dmatrix;
+/// let z = dmatrix![0.0, 1.0, 0.0;
+///                  1.0, 9.0, 3.0;
+///                  0.0, 1.0, 2.0];
+/// let [bu, bv, buv] = discrete_coons_parts(&[z])?;
+/// // At the centre: (1 + 1)/2, (1 + 3)/2, (0 + 0 + 0 + 2)/4; the net's 2.5 = 1 + 2 − 0.5.
+/// assert_eq!((bu[0][(1, 1)], bv[0][(1, 1)], buv[0][(1, 1)]), (1.0, 2.0, 0.5));
+/// # Ok::<(), cagd::Error>(())
+/// ```
+pub fn discrete_coons_parts<T: Scalar>(net: &[DMatrix<T>]) -> Result<[Vec<DMatrix<T>>; 3]> {
+    let (m, n) = net_degree("discrete Coons net", net)?;
+    let weight = |i: usize, m: usize| {
+        if m == 0 {
+            T::zero()
+        } else {
+            T::from_ratio(i as i64, m as i64)
+        }
+    };
+    let mut parts: [Vec<DMatrix<T>>; 3] = std::array::from_fn(|_| Vec::with_capacity(net.len()));
+    for b in net {
+        let (s, t) = (|i| weight(i, m), |j| weight(j, n));
+        let bu = DMatrix::from_fn(m + 1, n + 1, |i, j| {
+            (T::one() - s(i)) * b[(0, j)].clone() + s(i) * b[(m, j)].clone()
+        });
+        let bv = DMatrix::from_fn(m + 1, n + 1, |i, j| {
+            (T::one() - t(j)) * b[(i, 0)].clone() + t(j) * b[(i, n)].clone()
+        });
+        let buv = DMatrix::from_fn(m + 1, n + 1, |i, j| {
+            let (s1, t1) = (T::one() - s(i), T::one() - t(j));
+            s1 * (t1.clone() * b[(0, 0)].clone() + t(j) * b[(0, n)].clone())
+                + s(i) * (t1 * b[(m, 0)].clone() + t(j) * b[(m, n)].clone())
+        });
+        for (part, value) in parts.iter_mut().zip([bu, bv, buv]) {
+            part.push(value);
+        }
+    }
+    Ok(parts)
+}
+
+/// The cost of [`discrete_coons_parts`] on a net of degree `(m, n)` in `d` coordinates: the
+/// formula's operations (see [`discrete_coons_cost`]) at every one of the `(m+1)(n+1)` points.
+///
+/// ```
+/// use cagd::coons::discrete_coons_parts_cost;
+/// assert_eq!(discrete_coons_parts_cost(4, 3, 3).ops(), 5 * 4 * 3 * 17);
+/// ```
+pub fn discrete_coons_parts_cost(m: usize, n: usize, d: usize) -> Cost {
+    let points = (m as u128 + 1).saturating_mul(n as u128 + 1);
+    formula_cost(points, (m, n), d)
 }

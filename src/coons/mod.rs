@@ -59,7 +59,9 @@ pub use bicubic::{
 };
 pub use bilinear::{coons_point_cost, CoonsPatch};
 pub use bspline_form::coons_bspline_net;
-pub use discrete::{discrete_coons, discrete_coons_cost};
+pub use discrete::{
+    discrete_coons, discrete_coons_cost, discrete_coons_parts, discrete_coons_parts_cost,
+};
 pub use generalized::{BlendingPair, GeneralizedCoonsPatch, BLEND_TOLERANCE};
 pub use gregory::GregoryTwist;
 pub use mask::{solve_mask, Mask};

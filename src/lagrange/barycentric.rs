@@ -270,12 +270,12 @@ impl<T: Scalar> Lagrange<T> {
 ///
 /// ```
 /// use cagd::lagrange::{Lagrange, LagrangeInterpolant};
-/// use cagd::Curve;
+/// use cagd::{Curve, CurveDeriv};
 /// use nalgebra::{dmatrix, dvector};
 /// // p(t) = t² through (0, 0), (1/2, 1/4), (1, 1).
 /// let p = LagrangeInterpolant::new(Lagrange::new(vec![0.0, 0.5, 1.0]).unwrap(), dmatrix![0.0, 0.25, 1.0]).unwrap();
 /// assert_eq!(p.eval(0.25), dvector![0.0625]);
-/// assert_eq!(p.eval_derivative(0.5), Some(dvector![1.0]));
+/// assert_eq!(p.eval_derivative(0.5), dvector![1.0]);
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct LagrangeInterpolant<T: Scalar = f64> {
@@ -320,7 +320,20 @@ impl<T: Scalar> Curve<T> for LagrangeInterpolant<T> {
         self.basis.combine(&self.values, &self.basis.basis(&t))
     }
 
-    fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
+    /// [`Lagrange::interpolation_cost`] on the interpolant's own nodes and values.
+    fn point_cost(&self, param_bits: u128) -> crate::cost::Cost {
+        Lagrange::<T>::interpolation_cost(
+            self.basis.nodes.len(),
+            self.values.nrows(),
+            param_bits,
+            crate::cost::max_bits(&self.basis.nodes),
+            crate::cost::max_bits(self.values.iter()),
+        )
+    }
+}
+
+impl<T: Scalar> crate::param::CurveDeriv<T> for LagrangeInterpolant<T> {
+    fn eval_derivative(&self, t: T) -> DVector<T> {
         let (x, w, y) = (&self.basis.nodes, &self.basis.weights, &self.values);
         let d = y.nrows();
         if let Some(k) = x.iter().position(|xk| *xk == t) {
@@ -331,7 +344,7 @@ impl<T: Scalar> Curve<T> for LagrangeInterpolant<T> {
                     out[r] = out[r].clone() + dkj.clone() * (y[(r, j)].clone() - y[(r, k)].clone());
                 }
             }
-            return Some(out);
+            return out;
         }
         let p = self.eval(t.clone());
         let mut num = DVector::from_element(d, T::zero());
@@ -345,7 +358,7 @@ impl<T: Scalar> Curve<T> for LagrangeInterpolant<T> {
                     num[r].clone() + q.clone() * (p[r].clone() - y[(r, j)].clone()) / h.clone();
             }
         }
-        Some(num.map(|v| v / den.clone()))
+        num.map(|v| v / den.clone())
     }
 }
 

@@ -10,7 +10,8 @@
 //! | form | items | used by |
 //! |---|---|---|
 //! | product, in the thesis's order of operations (`product.rs`) | [`basis_product`] | the Octave twin `compat::lagrange`, [`LagrangePolynomial`](crate::interpolation::LagrangePolynomial) |
-//! | barycentric (`barycentric.rs`) | [`Lagrange`], [`LagrangeInterpolant`] | [`GordonSurface`](crate::GordonSurface), the `lagrange` command |
+//! | barycentric (`barycentric.rs`) | [`Lagrange`], [`LagrangeInterpolant`] | [`GordonSurface`](crate::GordonSurface) |
+//! | barycentric, nodes in any order (`any_order.rs`) | [`NodesInAnyOrder`] | the `lagrange` command |
 //! | power, ascending (`power.rs`) | [`power_coefficients`] | the lecture notes' blending matrix |
 //! | Bernstein (`bernstein_form.rs`) | [`bernstein_coefficients`] | [`GordonSurface::to_bezier`](crate::GordonSurface::to_bezier) |
 //!
@@ -32,12 +33,14 @@
 use crate::error::{check_finite, Error, Result};
 use crate::scalar::Scalar;
 
+mod any_order;
 mod barycentric;
 mod bernstein_form;
 mod placement;
 mod power;
 mod product;
 
+pub use any_order::NodesInAnyOrder;
 pub use barycentric::{Lagrange, LagrangeInterpolant, LebesgueEstimate};
 pub use bernstein_form::bernstein_coefficients;
 pub use placement::{chebyshev_nodes, try_chebyshev_nodes, NodePlacement};

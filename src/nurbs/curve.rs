@@ -412,21 +412,36 @@ impl<T: Scalar> Curve<T> for NurbsCurve<T> {
         NurbsCurve::try_eval(self, t)
     }
 
-    /// The quotient rule `C' = (A' − w' C)/w` on the continued pieces (`None` for degree 0).
-    fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
-        let da = self.homogeneous.derivative().ok()?.eval(t.clone());
-        let a = self.homogeneous.eval(t);
-        let d = self.dim();
-        let (w, dw) = (a[d].clone(), da[d].clone());
-        Some(DVector::from_fn(d, |r, _| {
-            let p = a[r].clone() / w.clone();
-            (da[r].clone() - dw.clone() * p) / w.clone()
-        }))
+    /// The homogeneous B-spline's cost ([`Curve::point_cost`] of
+    /// [`homogeneous`](NurbsCurve::homogeneous)) and `d` divisions by the weight.
+    fn point_cost(&self, param_bits: u128) -> crate::cost::Cost {
+        let h = Curve::point_cost(&self.homogeneous, param_bits);
+        h.and(crate::cost::Cost::new(
+            self.dim() as u128,
+            h.bits().saturating_mul(2),
+        ))
     }
 
     /// [`NurbsCurve::eval_many_into`]: the fast batch (reciprocals per span, one division and no
     /// allocation per point).
     fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
         NurbsCurve::eval_many_into(self, ts, out)
+    }
+}
+
+impl<T: Scalar> crate::param::CurveDeriv<T> for NurbsCurve<T> {
+    /// The quotient rule `C' = (A' − w' C)/w` on the continued pieces (zero for degree 0).
+    fn eval_derivative(&self, t: T) -> DVector<T> {
+        let d = self.dim();
+        let Ok(derivative) = self.homogeneous.derivative() else {
+            return DVector::from_element(d, T::zero());
+        };
+        let da = derivative.eval(t.clone());
+        let a = self.homogeneous.eval(t);
+        let (w, dw) = (a[d].clone(), da[d].clone());
+        DVector::from_fn(d, |r, _| {
+            let p = a[r].clone() / w.clone();
+            (da[r].clone() - dw.clone() * p) / w.clone()
+        })
     }
 }

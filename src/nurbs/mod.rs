@@ -22,8 +22,21 @@ use crate::error::{Error, Result};
 use crate::scalar::Scalar;
 
 /// The homogeneous control points `(w_k P_k, w_k)` of `points` (`d × n`) and `weights`
-/// (length `n`, all positive): a `(d + 1) × n` matrix.
-pub(crate) fn homogenize<T: Scalar>(
+/// (length `n`, all positive): a `(d + 1) × n` matrix, octave-nurbs' `coefs`.
+///
+/// # Errors
+/// [`Error::ShapeMismatch`] unless there is one weight per point; [`Error::NonFinite`] and
+/// [`Error::NonPositiveWeight`] for the first weight that is not finite and positive.
+///
+/// ```
+/// use nalgebra::DMatrix;
+/// let p = DMatrix::from_row_slice(1, 2, &[1.0, 3.0]);
+/// let h = cagd::nurbs::homogenize("weights", &p, &[2.0, 0.5])?;
+/// assert_eq!(h, DMatrix::from_row_slice(2, 2, &[2.0, 1.5, 2.0, 0.5]));
+/// assert!(cagd::nurbs::homogenize("weights", &p, &[1.0, 0.0]).is_err());
+/// # Ok::<(), cagd::Error>(())
+/// ```
+pub fn homogenize<T: Scalar>(
     what: &'static str,
     points: &DMatrix<T>,
     weights: &[T],

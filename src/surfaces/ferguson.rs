@@ -4,8 +4,10 @@ use nalgebra::{DMatrix, DVector};
 
 use super::matrix_patch::CubicMatrixPatch;
 use crate::conversion::CubicForm;
+use crate::coons::CoonsBoundary;
+use crate::cost::{polynomial_bits, Cost};
 use crate::error::{Error, Result};
-use crate::param::Surface;
+use crate::param::{Curve, CurveDeriv, Surface};
 use crate::scalar::Scalar;
 
 /// Corner data indexed `[i][j]` for the corner `(u, v) = (i, j)`.
@@ -91,6 +93,62 @@ impl<T: Scalar> FergusonPatch<T> {
         })
     }
 
+    /// The patch whose corner data are those of four boundary curves (checked to meet at the
+    /// corners, [`CoonsBoundary`]): the corner points `x_ij`, the `u`-tangents from the curves
+    /// in `u`, `x_u(i, 0) = c1'(i)`, `x_u(i, 1) = c2'(i)`, the `v`-tangents from the curves in
+    /// `v`, `x_v(0, j) = d1'(j)`, `x_v(1, j) = d2'(j)` — each curve reparametrised onto
+    /// `[0, 1]` as the boundary uses it —, and the given `twist` vectors. Its edges are the
+    /// Hermite cubics of those end data: the curves themselves when they are cubics (of degree
+    /// at most 3, in a parameter affine in `u` or `v`).
+    ///
+    /// # Errors
+    /// As [`FergusonPatch::new`]: twists of another dimension, non-finite tangents.
+    ///
+    /// ```
+    /// use cagd::coons::{CoonsBoundary, Tolerance};
+    /// use cagd::surfaces::FergusonPatch;
+    /// use cagd::{BezierCurve, Surface};
+    /// use nalgebra::{dvector, DVector};
+    /// // The edges of z = u·v on the unit square, as Bézier lines.
+    /// let line = |p: [f64; 3], q: [f64; 3]| BezierCurve::from_points(&[p, q]).unwrap();
+    /// let boundary = CoonsBoundary::new(
+    ///     line([0., 0., 0.], [1., 0., 0.]), line([0., 1., 0.], [1., 1., 1.]),
+    ///     line([0., 0., 0.], [0., 1., 0.]), line([1., 0., 0.], [1., 1., 1.]),
+    ///     Tolerance::default(),
+    /// )?;
+    /// let one = || dvector![0.0, 0.0, 1.0];
+    /// let p = FergusonPatch::from_boundary(&boundary, &[[one(), one()], [one(), one()]])?;
+    /// assert_eq!(p.eval(0.5, 0.25).as_slice(), &[0.5, 0.25, 0.125]);
+    /// # Ok::<(), cagd::Error>(())
+    /// ```
+    pub fn from_boundary<C: CurveDeriv<T>>(
+        boundary: &CoonsBoundary<C, T>,
+        twist: &Corners<T>,
+    ) -> Result<Self> {
+        let [c1, c2, d1, d2] = boundary.unit_curves();
+        let p = boundary.corners();
+        let at = |i: usize| if i == 0 { T::zero() } else { T::one() };
+        let points: Corners<T> =
+            std::array::from_fn(|i| std::array::from_fn(|j| p[i + 2 * j].clone()));
+        let du: Corners<T> =
+            std::array::from_fn(|i| [c1.eval_derivative(at(i)), c2.eval_derivative(at(i))]);
+        let dv: Corners<T> = [
+            [d1.eval_derivative(at(0)), d1.eval_derivative(at(1))],
+            [d2.eval_derivative(at(0)), d2.eval_derivative(at(1))],
+        ];
+        for tangent in du.iter().chain(dv.iter()).flatten() {
+            crate::error::check_finite("boundary tangent at a corner", tangent.iter())?;
+            if tangent.len() != c1.dim() {
+                return Err(Error::ShapeMismatch {
+                    what: "boundary tangent at a corner",
+                    expected: format!("vectors of dimension {}", c1.dim()),
+                    found: format!("dimension {}", tangent.len()),
+                });
+            }
+        }
+        Self::new(&points, &du, &dv, twist)
+    }
+
     /// The geometry matrices `G` (one `4 × 4` per coordinate, layout in the type's docs).
     pub fn geometry(&self) -> &[DMatrix<T>] {
         self.patch.coordinates()
@@ -113,4 +171,21 @@ impl<T: Scalar> Surface<T> for FergusonPatch<T> {
     fn eval(&self, u: T, v: T) -> DVector<T> {
         self.patch.eval(u, v)
     }
+}
+
+/// The cost of one point of a Ferguson patch in `d` coordinates, `x(u, v) = f(u)ᵀ G f(v)`:
+/// the two cubic Hermite bases (about 40 operations) and the `4 × 4` products of each
+/// coordinate (32), on numbers as large as the geometry data (`data_bits`) grown by the
+/// cubics in `u` and `v` ([`polynomial_bits`]).
+///
+/// ```
+/// use cagd::surfaces::ferguson_point_cost;
+/// let c = ferguson_point_cost(3, 2, 4, 10);
+/// assert_eq!((c.ops(), c.bits()), (40 + 96, 3 * 3 + 3 * 5 + 10));
+/// ```
+pub fn ferguson_point_cost(d: usize, u_bits: u128, v_bits: u128, data_bits: u128) -> Cost {
+    Cost::new(
+        40 + 32 * d as u128,
+        polynomial_bits(3, u_bits, 0).saturating_add(polynomial_bits(3, v_bits, data_bits)),
+    )
 }

@@ -7,6 +7,6 @@ mod ferguson;
 mod matrix_patch;
 mod ruled;
 
-pub use ferguson::FergusonPatch;
+pub use ferguson::{ferguson_point_cost, FergusonPatch};
 pub use matrix_patch::CubicMatrixPatch;
-pub use ruled::RuledSurface;
+pub use ruled::{ruled_point_cost, RuledSurface};

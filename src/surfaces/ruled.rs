@@ -2,6 +2,7 @@
 
 use nalgebra::DVector;
 
+use crate::cost::{blended, Cost};
 use crate::error::{Error, Result};
 use crate::param::{to_domain, usable_domain, Curve, Surface};
 use crate::scalar::Scalar;
@@ -77,4 +78,27 @@ impl<T: Scalar, C1: Curve<T>, C2: Curve<T>> Surface<T> for RuledSurface<C1, C2> 
             w.clone() * a[r].clone() + v.clone() * b[r].clone()
         })
     }
+}
+
+/// The cost of one point of a ruled surface in `d` coordinates,
+/// `x(u, v) = (1 − v) ¹x(u) + v ²x(u)`: the two curves at `u` (`curves`, the cost of each) and
+/// about 4 operations per coordinate for the blend, on numbers as large as the curves' values
+/// grown by the bits of `u` and `v` (and 2 for `1 − v` and the sum; [`blended`]).
+///
+/// ```
+/// use cagd::cost::Cost;
+/// use cagd::surfaces::ruled_point_cost;
+/// assert_eq!(ruled_point_cost([Cost::new(5, 10); 2], 3, 4, 6), Cost::new(10 + 12, 10 + 12));
+/// ```
+pub fn ruled_point_cost(
+    curves: impl IntoIterator<Item = Cost>,
+    d: usize,
+    u_bits: u128,
+    v_bits: u128,
+) -> Cost {
+    blended(
+        curves,
+        4 * d as u128,
+        u_bits.saturating_add(v_bits).saturating_add(2),
+    )
 }

@@ -23,6 +23,7 @@ use cagd::lagrange::{Lagrange, LagrangeInterpolant};
 use cagd::nurbs::{NurbsCurve, NurbsSurface};
 use cagd::spline::{CubicSpline, EndCondition};
 use cagd::surfaces::{CubicMatrixPatch, FergusonPatch, RuledSurface};
+use cagd::CurveDeriv;
 use cagd::{Curve, Error, FnCurve, OnUnitInterval, SampledCurve, Scalar, Surface};
 use nalgebra::{dmatrix, dvector, DMatrix, DVector};
 use proptest::prelude::*;
@@ -329,16 +330,21 @@ fn a_domain_that_cannot_be_mapped_onto_the_unit_interval_is_refused_by_name() {
             end: 0.5,
         }
     );
-    // Cross-boundary curves of the bicubic patch.
+    // Cross-boundary curves of the bicubic patch (whose boundary curves need their
+    // derivatives: each edge is a line, its derivative the chord).
+    let [c1, c2, d1, d2] = unit_square_edges().map(|f| {
+        let chord = f(1.0) - f(0.0);
+        FnCurve::with_derivative(2, f, move |_: f64| chord.clone())
+    });
     let boundary = CoonsBoundary::new(c1, c2, d1, d2, Tolerance::default()).unwrap();
     let zero: F = |_| dvector![0.0, 0.0];
     let cross = CrossDerivatives {
-        du0: FnCurve::new(2, zero)
+        du0: FnCurve::with_derivative(2, zero, zero)
             .with_domain(0.0, f64::INFINITY)
             .unwrap(),
-        du1: FnCurve::new(2, zero),
-        dv0: FnCurve::new(2, zero),
-        dv1: FnCurve::new(2, zero),
+        du1: FnCurve::with_derivative(2, zero, zero),
+        dv0: FnCurve::with_derivative(2, zero, zero),
+        dv1: FnCurve::with_derivative(2, zero, zero),
     };
     assert!(matches!(
         BicubicCoonsPatch::new(boundary, cross, Twist::Zero),
@@ -594,7 +600,7 @@ fn every_curve_type_follows_the_one_rule() {
         &[(2.0, dvector![2.0, 4.0]), (-1.5, dvector![-1.5, 2.25])],
     );
     // Its derivative continues too: (1, 2u).
-    assert!((bs.eval_derivative(2.0).unwrap() - dvector![1.0, 4.0]).amax() < 1e-12);
+    assert!((CurveDeriv::eval_derivative(&bs, 2.0) - dvector![1.0, 4.0]).amax() < 1e-12);
     let uniform = BSplineCurve::uniform_cubic(&dmatrix![0.0, 1.0, 2.0], true).unwrap();
     check_curve("uniform cubic B-spline", &uniform, (0.0, 4.0), &[]);
     // NURBS with unit weights: the same parabola; the rational quarter circle (weights 1, √½,

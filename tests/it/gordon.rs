@@ -13,7 +13,7 @@ use nalgebra::{dvector, DMatrix, DVector};
 use support::{q, qv, random_surface, Poly, Q};
 
 type QF = fn(Q) -> DVector<Q>;
-type QCurves = Vec<FnCurve<QF, QF>>;
+type QCurves = Vec<FnCurve<QF, cagd::NoDerivative, Q>>;
 
 /// Appendix D: `d_i = g(u_i, v)` (functions of v) and `c_j = g(u, v_j)` (functions of u).
 fn appendix_d() -> (QCurves, QCurves) {
@@ -220,7 +220,7 @@ fn coons_is_gordon_with_two_curves_each_way() {
 }
 
 type F = fn(f64) -> DVector<f64>;
-type FCurves = Vec<FnCurve<F, F>>;
+type FCurves = Vec<FnCurve<F>>;
 
 fn f64_network() -> (FCurves, FCurves) {
     let d: [F; 3] = [
@@ -474,8 +474,8 @@ fn lagrange_interpolant_reproduces_polynomials_and_their_derivatives() {
     for t in (0..=10).map(|k| q(k, 10)).chain(nodes.iter().cloned()) {
         assert_eq!(interp.eval(t.clone()), p.eval(t.clone()));
         assert_eq!(
-            interp.eval_derivative(t.clone()),
-            p.eval_derivative(t.clone())
+            cagd::CurveDeriv::eval_derivative(&interp, t.clone()),
+            cagd::CurveDeriv::eval_derivative(&p, t.clone())
         );
     }
     assert!(matches!(

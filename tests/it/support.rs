@@ -61,8 +61,16 @@ impl<T: Scalar> Curve<T> for Poly<T> {
         }
         acc
     }
-    fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
-        Some(self.derivative().eval(t))
+    /// Horner's rule: `2 · degree` operations per coordinate.
+    fn point_cost(&self, param_bits: u128) -> cagd::cost::Cost {
+        let n = self.coeffs.len() as u128;
+        cagd::cost::Cost::new(2 * n * self.dim() as u128, n * (param_bits + 1))
+    }
+}
+
+impl<T: Scalar> cagd::CurveDeriv<T> for Poly<T> {
+    fn eval_derivative(&self, t: T) -> DVector<T> {
+        self.derivative().eval(t)
     }
 }
 

@@ -111,7 +111,7 @@ export default class BezierView {
       });
       plane.dot("construction", v.point[0], v.point[1], 0.9, { class: "point-at-t", fill: "#000" });
     }
-    if ($("bezier-subdivide").checked) {
+    if ($("bezier-subdivide").checked && v.left) {
       plane.polyline("halves", v.left, 2, { stroke: "#2a9d3a", "stroke-width": 3, opacity: 0.7 });
       plane.polyline("halves", v.right, 2, { stroke: "#7b3fa0", "stroke-width": 3, opacity: 0.7 });
     }
@@ -124,9 +124,12 @@ export default class BezierView {
     const answer = this.app.runHere(argv);
     $("bezier-scheme").textContent = answer.ok ? answer.stdout : answer.error;
     const pts = (flatPts) => pointsOf(flatPts, 2).map((p) => `(${p.map(num).join(", ")})`).join("  ");
+    // At the ends of [0, 1] one half would be empty: the subdivision says so instead.
+    const halves = v.left
+      ? [`left half [0, t]:  ${pts(v.left)}`, `right half [t, 1]: ${pts(v.right)}`]
+      : [`no halves: ${v.halves_error}`];
     $("bezier-parts").textContent = [
-      `left half [0, t]:  ${pts(v.left)}`,
-      `right half [t, 1]: ${pts(v.right)}`,
+      ...halves,
       `elevated to degree ${this.points.length}: ${pts(v.elevated)}`,
     ].join("\n");
     $("bezier-cmd").textContent = join(argv);

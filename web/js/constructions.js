@@ -202,7 +202,7 @@ export const constructions = [
     octave: (v) =>
       exact(v) +
       LAGR +
-      `x = ${v.nodes};\nt = ${tOf(v)};\nL = lagr(x, t)  % row = parameter, column = L_0..L_m` +
+      `x = ${v.nodes};\nt = ${tOf(v, "linspace(min(x), max(x), 11)").replace("linspace(0, 1,", "linspace(min(x), max(x),")};\nL = lagr(x, t)  % row = parameter, column = L_0..L_m` +
       (v.points ? `\nP = ${mat(v.points, v.rows)};\nresult = P * L'` : ""),
   },
   {
@@ -287,7 +287,7 @@ export const constructions = [
     fields: [
       { key: "control", positional: true, label: "Control points (one per column)" },
       { key: "degree", flag: "--degree", label: "Degree p", type: "number" },
-      { key: "knots", flag: "--knots", label: "Knots (n+p+2; default clamped uniform)" },
+      { key: "knots", flag: "--knots", label: "Knots (n+p+1 for n points; default clamped uniform)" },
       ...curveParams,
     ],
     options: { rows: true, steps: true, plot: true },
@@ -295,7 +295,7 @@ export const constructions = [
     octave: (v) => {
       const p = or(v.degree, 3);
       const knots = v.knots || `[zeros(1, ${p}) linspace(0, 1, columns(C) - ${p} + 1) ones(1, ${p})]`;
-      return exact(v) + `pkg load nurbs\nC = ${mat(v.control, v.rows)};\np = ${p};\nknots = ${knots};\nt = ${tOf(v)};\nresult = bspeval(p, C, knots, t)`;
+      return exact(v) + `pkg load nurbs\nC = ${mat(v.control, v.rows)};\np = ${p};\nknots = ${knots};\nt = ${tOf(v, "linspace(knots(p+1), knots(end-p), 11)").replace("linspace(0, 1,", "linspace(knots(p+1), knots(end-p),")};\nresult = bspeval(p, C, knots, t)`;
     },
   },
   {
@@ -306,17 +306,17 @@ export const constructions = [
       { key: "control", positional: true, label: "Control points (one per column)" },
       { key: "weights", flag: "--weights", label: "Weights (one per point, positive)" },
       { key: "degree", flag: "--degree", label: "Degree p", type: "number" },
-      { key: "knots", flag: "--knots", label: "Knots (default clamped uniform)" },
+      { key: "knots", flag: "--knots", label: "Knots (n+p+1 for n points; default clamped uniform)" },
       ...curveParams,
     ],
     options: { rows: true, steps: true, plot: true },
     example: { control: "[1 0; 1 1; 0 1]'", weights: "[1 0.7071067811865476 1]", degree: "2", n: "5" },
     octave: (v) => {
-      const p = or(v.degree, 2);
+      const p = or(v.degree, 3);
       const knots = v.knots || `[zeros(1, ${p}) linspace(0, 1, columns(P) - ${p} + 1) ones(1, ${p})]`;
       return (
         exact(v) +
-        `pkg load nurbs\nP = ${mat(v.control, v.rows)};\nw = ${v.weights};\np = ${p};\nknots = ${knots};\ncoefs = [P .* w; zeros(3 - rows(P), columns(P)); w];  % weighted, homogeneous\nt = ${tOf(v)};\nresult = nrbeval(nrbmak(coefs, knots), t);\nresult = result(1:rows(P), :)`
+        `pkg load nurbs\nP = ${mat(v.control, v.rows)};\nw = ${v.weights};\np = ${p};\nknots = ${knots};\ncoefs = [P .* w; zeros(3 - rows(P), columns(P)); w];  % weighted, homogeneous\nt = ${tOf(v, "linspace(knots(p+1), knots(end-p), 11)").replace("linspace(0, 1,", "linspace(knots(p+1), knots(end-p),")};\nresult = nrbeval(nrbmak(coefs, knots), t);\nresult = result(1:rows(P), :)`
       );
     },
   },

@@ -9,6 +9,18 @@ use clap::Args;
 
 use super::Format;
 
+/// A path argument (`-o`, `--plot`, `--mesh`, `--dir`): any non-empty text (an empty one
+/// names no file).
+///
+/// # Errors
+/// The reason, for clap to report, when the text is empty.
+pub fn path_value(text: &str) -> Result<PathBuf, String> {
+    if text.is_empty() {
+        return Err("an empty path names no file".into());
+    }
+    Ok(PathBuf::from(text))
+}
+
 /// How and where the numeric result is printed.
 #[derive(Debug, Clone, Args)]
 pub struct OutputArgs {
@@ -22,7 +34,7 @@ pub struct OutputArgs {
     /// Write the result to FILE (atomically) instead of standard output (`-` is standard
     /// output). An existing FILE must be a regular file: a FIFO, a device or a folder is
     /// refused, never replaced.
-    #[arg(short = 'o', long, value_name = "FILE")]
+    #[arg(short = 'o', long, value_name = "FILE", value_parser = path_value)]
     pub output: Option<PathBuf>,
     /// Significant digits of the numbers in the text format (1 to 17; default 15, which hides
     /// round-off such as 0.30000000000000004). The octave, csv and json formats keep every bit.
@@ -42,7 +54,7 @@ impl OutputArgs {
 pub struct PlotArgs {
     /// Draw the result into FILE.svg or FILE.png (format chosen by the extension; `-` writes
     /// SVG to standard output, with the result sent elsewhere by -o).
-    #[arg(long, value_name = "FILE")]
+    #[arg(long, value_name = "FILE", value_parser = path_value)]
     pub plot: Option<PathBuf>,
 }
 
@@ -52,7 +64,7 @@ pub struct MeshArgs {
     /// Write the surface as a triangle mesh to FILE.stl (binary), FILE.obj or FILE.ply
     /// (ASCII), chosen by the extension (`-` writes OBJ to standard output, with the result
     /// sent elsewhere by -o).
-    #[arg(long, value_name = "FILE")]
+    #[arg(long, value_name = "FILE", value_parser = path_value)]
     pub mesh: Option<PathBuf>,
 }
 

@@ -16,6 +16,8 @@ pub enum ErrorKind {
     Shape,
     /// A construction of the library refused its input.
     Library(Box<cagd::Error>),
+    /// A construction refused its input (a check of the operation layer, [`cagd_ops`]).
+    Operation(cagd_ops::Kind),
     /// Command-line usage: an unknown option, a missing or conflicting argument.
     Usage,
     /// A valid request this build cannot serve yet.
@@ -38,8 +40,16 @@ pub enum ErrorKind {
 /// assert_eq!(e.to_string(), "--n: N = 1 is too small; expected an integer N ≥ 2");
 /// assert_eq!(e.exit_code(), 2);
 /// ```
+///
+/// Whatever its fields hold, it prints with every control character escaped
+/// ([`escape_text`]), so a message is always one line that cannot drive the terminal.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{argument}: {problem}; expected {expected}")]
+#[error(
+    "{}: {}; expected {}",
+    escape_text(argument),
+    escape_text(problem),
+    escape_text(expected)
+)]
 pub struct CliError {
     /// The argument (option name, positional name, or file) the error is about.
     pub argument: String,
@@ -78,13 +88,35 @@ impl CliError {
     }
 
     /// An I/O error about `argument` (usually a file name).
+    ///
+    /// A file argument is named `NAME PATH` (`CONTROL data.txt`); when such a path is missing
+    /// because it is a folder, the error says so (kind [`std::io::ErrorKind::IsADirectory`]).
     pub fn io(argument: impl Into<String>, error: &std::io::Error, expected: &str) -> Self {
-        let problem = match error.kind() {
-            std::io::ErrorKind::NotFound => "no such file or directory".to_string(),
-            std::io::ErrorKind::PermissionDenied => "permission denied".to_string(),
-            _ => error.to_string(),
+        use std::io::ErrorKind as K;
+        let argument = argument.into();
+        let (problem, kind) = if error.kind() == K::NotFound && names_a_folder(&argument) {
+            (FOLDER.to_string(), K::IsADirectory)
+        } else {
+            io_problem(error)
         };
-        Self::new(argument, problem, expected, ErrorKind::Io(error.kind()))
+        Self::new(argument, problem, expected, ErrorKind::Io(kind))
+    }
+
+    /// An error about the file `path` given to `argument` (`-o`, `--plot`, …): named
+    /// `ARGUMENT PATH`, the path escaped ([`escape_path`]).
+    pub fn file(
+        argument: &str,
+        path: &std::path::Path,
+        problem: impl Into<String>,
+        expected: impl Into<String>,
+        kind: ErrorKind,
+    ) -> Self {
+        Self::new(
+            format!("{argument} {}", escape_path(path)),
+            problem,
+            expected,
+            kind,
+        )
     }
 
     /// A library error about `argument`. A limit the library names ([`cagd::Error::TooLarge`])
@@ -120,27 +152,97 @@ impl CliError {
     }
 }
 
-/// Collapses line breaks so that every message stays on one line.
-///
-/// Input quoted in a message is made safe to print: control characters (terminal escape
-/// sequences among them) are shown escaped (`\u{1b}`), and a quotation longer than
-/// [`MAX_QUOTE_CHARS`] characters is shortened to its start and end around `…`, so that an
-/// error line stays one readable line whatever the input.
+/// How an I/O error reads in a message, and its kind.
+pub(crate) fn io_problem(error: &std::io::Error) -> (String, std::io::ErrorKind) {
+    use std::io::ErrorKind as K;
+    let problem = match error.kind() {
+        K::NotFound => "no such file or directory",
+        K::IsADirectory => FOLDER,
+        K::PermissionDenied => "permission denied",
+        K::StorageFull => "no space left on the device",
+        K::ReadOnlyFilesystem => "the file system is read-only",
+        K::NotADirectory => "a part of the path is not a folder",
+        _ => return (error.to_string(), error.kind()),
+    };
+    (problem.to_string(), error.kind())
+}
+
+/// The problem of an input path that is a folder.
+const FOLDER: &str = "is a folder, not a file";
+
+/// Whether `argument`, of the form `NAME PATH` or `NAME PATH:VARIABLE`, names a folder.
+fn names_a_folder(argument: &str) -> bool {
+    let Some((_, path)) = argument.split_once(' ') else {
+        return false;
+    };
+    let is_dir = |p: &str| std::fs::metadata(p).is_ok_and(|m| m.is_dir());
+    is_dir(path) || path.rsplit_once(':').is_some_and(|(p, _)| is_dir(p))
+}
+
+/// Makes a message one line that is safe to print: the text escaped ([`escape_text`]), white
+/// space at its ends trimmed, and a quotation longer than [`MAX_QUOTE_CHARS`] characters
+/// shortened to its start and end around `…`, so that an error line stays one readable line
+/// whatever the input.
 fn one_line(s: &str) -> String {
-    let escaped: String = s
-        .split_whitespace()
-        .collect::<Vec<_>>()
-        .join(" ")
-        .chars()
-        .flat_map(|c| {
-            if c.is_control() {
-                c.escape_unicode().collect::<Vec<_>>()
-            } else {
-                vec![c]
+    shorten_quotes(&escape_text(s.trim()))
+}
+
+/// The one way user-supplied text — a path, a value, a quotation of an input — appears in a
+/// message or a warning: line breaks and tabs as `\n`, `\r`, `\t`, every other control
+/// character (a terminal's escape sequences start with one) and the invisible Unicode format
+/// characters that reorder or hide text (bidirectional overrides, zero-width spaces) as
+/// `\u{…}`. Everything else, spaces and non-ASCII letters included, is kept. Escaping twice
+/// changes nothing.
+///
+/// ```
+/// use cagd_cli::escape_text;
+/// assert_eq!(escape_text("no\x1b]0;T\x07dir/x"), "no\\u{1b}]0;T\\u{7}dir/x");
+/// assert_eq!(escape_text("a\nb\tč"), "a\\nb\\tč");
+/// assert_eq!(escape_text("x\u{202e}y"), "x\\u{202e}y");
+/// assert_eq!(escape_text(&escape_text("a\nb")), escape_text("a\nb"));
+/// ```
+pub fn escape_text(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            '\n' => out.push_str("\\n"),
+            '\r' => out.push_str("\\r"),
+            '\t' => out.push_str("\\t"),
+            c if c.is_control() || is_invisible_format(c) => {
+                out.extend(c.escape_unicode());
             }
-        })
-        .collect();
-    shorten_quotes(&escaped)
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+/// Unicode format characters that change how the text around them shows: bidirectional
+/// marks, embeddings, overrides and isolates, zero-width characters, the byte-order mark and
+/// the interlinear annotation marks.
+fn is_invisible_format(c: char) -> bool {
+    matches!(c,
+        '\u{061c}' | '\u{180e}' | '\u{200b}'..='\u{200f}' | '\u{2028}'..='\u{202e}'
+        | '\u{2060}'..='\u{206f}' | '\u{feff}' | '\u{fff9}'..='\u{fffb}')
+}
+
+/// A path as it appears in a message: its text escaped as [`escape_text`] does, and each
+/// byte that is not UTF-8 shown as `\x{ff}`.
+///
+/// ```
+/// use std::path::Path;
+/// assert_eq!(cagd_cli::escape_path(Path::new("out\n.txt")), "out\\n.txt");
+/// ```
+pub fn escape_path(path: &std::path::Path) -> String {
+    let bytes = path.as_os_str().as_encoded_bytes();
+    let mut out = String::new();
+    for chunk in bytes.utf8_chunks() {
+        out.push_str(&escape_text(chunk.valid()));
+        for b in chunk.invalid() {
+            out.push_str(&format!("\\x{{{b:02x}}}"));
+        }
+    }
+    out
 }
 
 /// Longest input quotation (between backquotes) kept whole in a message.

@@ -23,17 +23,22 @@ mod atomic;
 mod error;
 #[doc = include_str!("../../../docs/ERRORS.md")]
 pub mod error_catalogue {}
+pub mod faults;
 mod input;
 pub mod limits;
 pub mod mesh;
 mod output;
 pub mod outputs;
 pub mod plot;
-#[cfg(not(target_arch = "wasm32"))]
+pub mod schema;
+#[cfg(all(feature = "serve", not(target_arch = "wasm32")))]
 pub mod serve;
-#[cfg(target_arch = "wasm32")]
-mod serve {
-    //! `cagd serve` exists only in the program; in the browser its arguments still parse.
+#[cfg(not(all(feature = "serve", not(target_arch = "wasm32"))))]
+pub mod serve {
+    //! `cagd serve` exists only in the program built with the feature `serve`; elsewhere (the
+    //! browser, the fuzz targets) its arguments still parse and serving is refused.
+    use crate::{CliError, ErrorKind};
+
     /// Serve the web page on localhost.
     #[derive(Debug, Clone, clap::Args)]
     pub struct ServeCommand {
@@ -41,15 +46,29 @@ mod serve {
         #[arg(long, value_name = "P", default_value_t = 8000)]
         pub port: u16,
         /// The folder of the built page.
-        #[arg(long, value_name = "DIR")]
+        #[arg(long, value_name = "DIR", value_parser = crate::args::path_value)]
         pub dir: Option<std::path::PathBuf>,
+    }
+
+    /// Refuses: this build has no server.
+    ///
+    /// # Errors
+    /// Always, [`ErrorKind::Unsupported`].
+    pub fn serve(_: &ServeCommand) -> Result<(), CliError> {
+        Err(CliError::new(
+            "serve",
+            "this build of cagd has no page server (built without the feature `serve`)",
+            "a cagd built with its default features",
+            ErrorKind::Unsupported,
+        ))
     }
 }
 pub mod slips;
+pub mod temporaries;
 
 pub use app::{run, serve_request, subcommands, Outcome};
 pub use atomic::{write_atomic, PendingWrites};
-pub use error::{CliError, ErrorKind};
+pub use error::{escape_path, escape_text, CliError, ErrorKind};
 pub use input::{
     load_expression, load_matrix, load_net, load_params, load_script, parse_data_text,
     parse_data_text_variable, parse_numeric_text, read_octave_array, read_text, samples,

@@ -18,7 +18,6 @@
 
 use std::fmt::Write as _;
 
-use cagd::grid::PointGrid;
 use nalgebra::DMatrix;
 
 use super::{CliError, ErrorKind};
@@ -47,174 +46,7 @@ pub enum Format {
     Json,
 }
 
-/// Significant digits of a double in the readable text format (at most 15: every decimal of
-/// 15 digits survives the round trip through a double, so no digit shown is round-off).
-pub const TEXT_DIGITS: usize = 15;
-
-/// The value of a report item.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Value<T: LiteralScalar> {
-    /// A matrix (a scalar is 1×1).
-    Matrix(DMatrix<T>),
-    /// A grid of points, shape (nu, nv, d).
-    Grid(PointGrid<T>),
-    /// A line of text.
-    Text(String),
-    /// Named parts (the levels of a scheme, the pieces of a step): an object in JSON, a
-    /// struct in Octave's format, `name.part` items in text and CSV.
-    Record(Vec<Item<T>>),
-    /// Data with a readable form: the text in the text format, the data in the others (a de
-    /// Casteljau triangle for people, its levels for programs).
-    Shown {
-        /// What the text format prints.
-        text: String,
-        /// What the other formats write.
-        data: Box<Value<T>>,
-    },
-}
-
-/// One named item of a report.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Item<T: LiteralScalar> {
-    /// The name (`result`, `t`, a step's name).
-    pub name: String,
-    /// The value.
-    pub value: Value<T>,
-}
-
-/// What a command prints: named items in order.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Report<T: LiteralScalar> {
-    /// The items, in the order printed.
-    pub items: Vec<Item<T>>,
-}
-
-impl<T: LiteralScalar> Default for Report<T> {
-    fn default() -> Self {
-        Report { items: Vec::new() }
-    }
-}
-
-impl<T: LiteralScalar> Report<T> {
-    /// An empty report.
-    pub fn new() -> Self {
-        Self::default()
-    }
-
-    /// Appends an item.
-    pub fn push(&mut self, name: impl Into<String>, value: Value<T>) -> &mut Self {
-        self.items.push(Item {
-            name: name.into(),
-            value,
-        });
-        self
-    }
-
-    /// The first number of the report that is not finite: the item's name, the flat index
-    /// (column-major for matrices, row-major `(i, j, k)` for grids) and the value. Text items
-    /// (steps) are searched for the words `inf` and `NaN` in any case.
-    ///
-    /// ```
-    /// use cagd_cli::{Report, Value};
-    /// use nalgebra::dmatrix;
-    /// let mut r = Report::<f64>::new();
-    /// r.push("result", Value::Matrix(dmatrix![1.0, f64::INFINITY]));
-    /// assert_eq!(r.first_non_finite(), Some(("result".to_string(), 1, f64::INFINITY)));
-    /// ```
-    pub fn first_non_finite(&self) -> Option<(String, usize, f64)> {
-        self.items
-            .iter()
-            .find_map(|item| first_non_finite_in(&item.name, &item.value))
-    }
-}
-
-/// [`Report::first_non_finite`] in one value: named parts are searched as `name.part`.
-fn first_non_finite_in<T: LiteralScalar>(
-    name: &str,
-    value: &Value<T>,
-) -> Option<(String, usize, f64)> {
-    let found = match value {
-        Value::Matrix(m) => m
-            .iter()
-            .position(|x| !x.is_finite_value())
-            .map(|k| (k, m[k].to_f64())),
-        Value::Grid(g) => g
-            .iter()
-            .position(|x| !x.is_finite_value())
-            .map(|k| (k, g.as_slice()[k].to_f64())),
-        Value::Text(t) => t
-            .split(|c: char| !c.is_ascii_alphanumeric())
-            .position(|w| w.eq_ignore_ascii_case("inf") || w.eq_ignore_ascii_case("nan"))
-            .map(|k| (k, f64::NAN)),
-        Value::Record(items) => {
-            return items
-                .iter()
-                .find_map(|i| first_non_finite_in(&format!("{name}.{}", i.name), &i.value));
-        }
-        Value::Shown { text, data } => {
-            return first_non_finite_in(name, data)
-                .or_else(|| first_non_finite_in(name, &Value::<T>::Text(text.clone())));
-        }
-    };
-    found.map(|(k, x)| (name.to_string(), k, x))
-}
-
-/// The printed form of one number: shortest round-trip decimal for doubles (exponent form
-/// below 1e-5 and from 1e15 on), reduced fraction in exact arithmetic.
-///
-/// ```
-/// use num_rational::BigRational;
-/// use cagd_cli::number_text;
-/// assert_eq!(number_text(&0.1f64), "0.1");
-/// assert_eq!(number_text(&3.0f64), "3");
-/// assert_eq!(number_text(&1e-20f64), "1e-20");
-/// assert_eq!(number_text(&BigRational::new(31.into(), 15.into())), "31/15");
-/// assert_eq!(number_text(&BigRational::new(14.into(), 4.into())), "7/2");
-/// assert_eq!(number_text(&BigRational::new(6.into(), 3.into())), "2");
-/// ```
-pub fn number_text<T: LiteralScalar>(x: &T) -> String {
-    if T::EXACT {
-        return x.to_string();
-    }
-    double_text(x.to_f64())
-}
-
-/// [`number_text`] of a value rounded to `digits` significant digits first (1 ≤ `digits`
-/// ≤ 17; doubles only, fractions are exact and print in full): what the readable text format
-/// prints.
-///
-/// ```
-/// use cagd_cli::number_text_digits;
-/// assert_eq!(number_text_digits(&(0.1f64 + 0.2), 15), "0.3");
-/// assert_eq!(number_text_digits(&0.6000000000000001f64, 15), "0.6");
-/// assert_eq!(number_text_digits(&(2.0f64 / 3.0), 4), "0.6667");
-/// assert_eq!(number_text_digits(&-1e-300f64, 15), "-1e-300");
-/// ```
-pub fn number_text_digits<T: LiteralScalar>(x: &T, digits: usize) -> String {
-    if T::EXACT {
-        return x.to_string();
-    }
-    let v = x.to_f64();
-    if !v.is_finite() || v == 0.0 {
-        return double_text(v);
-    }
-    let digits = digits.clamp(1, 17);
-    let rounded: f64 = format!("{:.*e}", digits - 1, v).parse().unwrap_or(v);
-    double_text(rounded)
-}
-
-/// The shortest round-trip decimal of a double, in exponent form below 1e-5 and from 1e15 on.
-fn double_text(v: f64) -> String {
-    if v == 0.0 {
-        return "0".into();
-    }
-    let a = v.abs();
-    if (1e-5..1e15).contains(&a) {
-        format!("{v}")
-    } else {
-        format!("{v:e}")
-    }
-}
+pub use cagd_ops::{number_text, number_text_digits, Item, Report, Value, TEXT_DIGITS};
 
 /// Renders a report in the given format (the output ends with a newline).
 ///
@@ -272,7 +104,10 @@ fn render_octave<T: LiteralScalar>(report: &Report<T>) -> Result<String, CliErro
     use cagd_octave::text_format::{self, Workspace};
     let mut ws = Workspace::new();
     for item in &report.items {
-        ws.insert(octave_name(&item.name), octave_value(&item.value));
+        ws.insert(
+            octave_name(&item.name),
+            octave_value(&item.name, &item.value)?,
+        );
     }
     text_format::write_text(&ws).map_err(|e| {
         CliError::new(
@@ -285,16 +120,32 @@ fn render_octave<T: LiteralScalar>(report: &Report<T>) -> Result<String, CliErro
 }
 
 /// A value as Octave stores it: matrices and grids as doubles, text as a char matrix, a
-/// record as a struct.
-fn octave_value<T: LiteralScalar>(value: &Value<T>) -> cagd_octave::text_format::Value {
+/// record as a struct (`name` names it in errors).
+fn octave_value<T: LiteralScalar>(
+    name: &str,
+    value: &Value<T>,
+) -> Result<cagd_octave::text_format::Value, CliError> {
     use cagd_octave::text_format::{CharMatrix, Value as OValue};
-    match value {
+    Ok(match value {
         Value::Matrix(m) => {
-            let a = ndarray::Array2::from_shape_fn(m.shape(), |(i, j)| m[(i, j)].to_f64());
+            let mut a = ndarray::Array2::zeros(m.shape());
+            for ((i, j), x) in a.indexed_iter_mut() {
+                let at = || (format!("{name}({},{})", i + 1, j + 1), j * m.nrows() + i);
+                *x = octave_double(&m[(i, j)], at)?;
+            }
             OValue::from(a)
         }
         Value::Grid(g) => {
-            OValue::Matrix(cagd_octave::arrays::to_array3(g.map(|x| x.to_f64())).into_dyn())
+            let (nu, nv, d) = g.dim();
+            let mut a = ndarray::Array3::zeros((nu, nv, d));
+            for ((i, j, k), x) in a.indexed_iter_mut() {
+                let at = || {
+                    let place = format!("{name}({},{},{})", i + 1, j + 1, k + 1);
+                    (place, (i * nv + j) * d + k)
+                };
+                *x = octave_double(&g[[i, j, k]], at)?;
+            }
+            OValue::Matrix(a.into_dyn())
         }
         Value::Text(t) => {
             // A char matrix needs rows of one length: pad with spaces, as Octave's char().
@@ -307,11 +158,44 @@ fn octave_value<T: LiteralScalar>(value: &Value<T>) -> cagd_octave::text_format:
         Value::Record(items) => OValue::Struct(
             items
                 .iter()
-                .map(|i| (octave_name(&i.name), octave_value(&i.value)))
-                .collect(),
+                .map(|i| {
+                    let inner = format!("{name}.{}", i.name);
+                    Ok((octave_name(&i.name), octave_value(&inner, &i.value)?))
+                })
+                .collect::<Result<_, CliError>>()?,
         ),
-        Value::Shown { data, .. } => octave_value(data),
+        Value::Shown { data, .. } => octave_value(name, data)?,
+    })
+}
+
+/// The double Octave's format stores for `x`. An exact value is finite, but its double may
+/// not be (beyond ±1.8e308): that is refused, naming the entry (`at`: its name and flat
+/// index) and the value,
+/// rather than written as `Inf`. (Doubles that are not finite are refused before rendering,
+/// with the input they came from.)
+fn octave_double<T: LiteralScalar>(
+    x: &T,
+    at: impl Fn() -> (String, usize),
+) -> Result<f64, CliError> {
+    let v = x.to_f64();
+    if v.is_finite() || !T::EXACT {
+        return Ok(v);
     }
+    let sign = if v > 0.0 { "Inf" } else { "-Inf" };
+    let (place, index) = at();
+    Err(CliError::new(
+        "--format octave",
+        format!(
+            "{place} is the exact value `{}`, beyond the range of doubles (it would be written as {sign})",
+            number_text(x)
+        ),
+        "results within ±1.8e308 for Octave's doubles (--format text, csv or json write the exact fractions)",
+        ErrorKind::Library(Box::new(cagd::Error::NonFinite {
+            what: "exact result as a double",
+            index,
+            value: v,
+        })),
+    ))
 }
 
 /// Right-aligned columns with two spaces before each, indented by two more.

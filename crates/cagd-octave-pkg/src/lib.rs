@@ -44,6 +44,7 @@ pub mod limits;
 pub mod native;
 pub mod number;
 pub mod nurbs;
+pub mod ops;
 pub mod thesis;
 pub mod value;
 

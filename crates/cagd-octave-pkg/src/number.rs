@@ -113,7 +113,7 @@ pub fn matrix_value<T: Number>(
     form: &str,
     limits: &Limits,
 ) -> Result<DMatrix<T>> {
-    if <T as LiteralScalar>::EXACT {
+    if <T as cagd::Scalar>::EXACT {
         if let Some(text) = v.text() {
             let m: DMatrix<T> = parse_matrix_with(&text, limits)
                 .map_err(|e| PkgError::arg(Kind::Value, what, e.to_string(), form))?;
@@ -137,7 +137,7 @@ pub fn matrix_value<T: Number>(
 /// # Errors
 /// As [`Call::params`]; a text that does not parse is a [`Kind::Value`].
 pub fn params<T: Number>(call: &Call<'_, '_>, i: usize, what: &'static str) -> Result<Vec<T>> {
-    if <T as LiteralScalar>::EXACT {
+    if <T as cagd::Scalar>::EXACT {
         if let Some(text) = call.arg(i).text() {
             return parse_params_with(&text, &call.limits)
                 .map_err(|e| PkgError::arg(Kind::Value, what, e.to_string(), "parameter values"));
@@ -155,7 +155,7 @@ pub fn params<T: Number>(call: &Call<'_, '_>, i: usize, what: &'static str) -> R
 /// # Errors
 /// As [`Call::scalar`].
 pub fn scalar<T: Number>(call: &Call<'_, '_>, i: usize, what: &'static str) -> Result<T> {
-    if <T as LiteralScalar>::EXACT && matches!(call.arg(i), Value::Char { .. }) {
+    if <T as cagd::Scalar>::EXACT && matches!(call.arg(i), Value::Char { .. }) {
         let v = params::<T>(call, i, what)?;
         if v.len() != 1 {
             return Err(PkgError::arg(

@@ -13,6 +13,7 @@
 //! command line's one-line message `cagd: error: ARG: PROBLEM; expected FORM`.
 
 mod command;
+mod ops;
 mod views;
 
 pub use command::{file_bytes, run};
@@ -33,19 +34,6 @@ pub fn start() {
     }
 
     std::panic::set_hook(Box::new(|info| {
-        let payload = info
-            .payload()
-            .downcast_ref::<&str>()
-            .map(|s| s.to_string())
-            .or_else(|| info.payload().downcast_ref::<String>().cloned())
-            .unwrap_or_else(|| "unexpected fault".to_string());
-        let place = info
-            .location()
-            .map(|l| format!(" ({}:{})", l.file(), l.line()))
-            .unwrap_or_default();
-        let message = payload.split_whitespace().collect::<Vec<_>>().join(" ");
-        report_panic(&format!(
-            "cagd: internal error: {message}{place}; this is a bug in cagd"
-        ));
+        report_panic(&cagd_cli::faults::fault_line(info));
     }));
 }

@@ -19,11 +19,22 @@ use crate::plot::{Colour, Figure};
 use crate::{CliError, PendingWrites, Report, Value};
 
 use super::common::*;
-use super::spline_steps::system;
 use super::thesis::{heading, q, text, Files, Q};
 use super::Outcome;
 
+/// Reproduce the worked examples of the course notes (matrix-form, lecture and CAD notes).
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Needs no input. Prints, exactly where the maths is rational, the matrix-form notes' table
+(P·M = [0 3 0 0; 0 3 -6 4] and the points at t = 0, 0.2, …, 1), the lecture notes' conversion
+table on their Bézier example (Bézier → Hermite → B-spline and back), the three splines of
+the lecture notes (clamped, natural, closed; the printed sign error of the clamped example
+named), the Lagrange example and Příklad 1, the C1 joint with its free point, the NURBS
+circle of the CAD notes and the discrete Coons patch with its 3×3 masks. Pictures (SVG and
+PNG) go to --out, written atomically.
+
+Example:
+  cagd course --out cagd-course")]
 pub struct CourseCommand {
     /// The folder for the pictures (created if missing).
     #[arg(long, value_name = "DIR", default_value = "cagd-course")]
@@ -240,12 +251,9 @@ fn splines(out: &mut String, files: &mut Files) -> Result<(), CliError> {
     let colours = [Colour::Blue, Colour::Orange, Colour::Purple];
     let mut figure = Figure::new("Lecture notes: clamped, natural and closed cubic splines");
     for (k, (title, end, note)) in cases.into_iter().enumerate() {
-        let clamped = match &end {
-            EndCondition::Clamped { start, end } => Some((start.clone(), end.clone())),
-            _ => None,
-        };
-        let s = CubicSpline::interpolate(pts.clone(), end).map_err(lib("course", INTERNAL))?;
-        let (a, rhs) = system(&s, clamped.as_ref().map(|(a, b)| (a, b)));
+        let s =
+            CubicSpline::interpolate(pts.clone(), end.clone()).map_err(lib("course", INTERNAL))?;
+        let (a, rhs) = s.system(&end);
         let _ = writeln!(out, "{title}:\n");
         let mut r = Report::<Q>::new();
         r.push("system A", Value::Matrix(a.clone()));

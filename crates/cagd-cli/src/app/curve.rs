@@ -44,10 +44,19 @@ impl<T: LiteralScalar> Curve<T> for CliCurve<T> {
         }
     }
 
-    fn eval_derivative(&self, t: T) -> Option<DVector<T>> {
+    fn point_cost(&self, param_bits: u128) -> Cost {
         match self {
-            CliCurve::Bezier(b) => Some(b.eval_derivative(t)),
-            CliCurve::Sampled(_) => None,
+            CliCurve::Bezier(b) => Curve::point_cost(b, param_bits),
+            CliCurve::Sampled(s) => Curve::point_cost(s, param_bits),
+        }
+    }
+}
+
+impl<T: LiteralScalar> cagd::CurveDeriv<T> for CliCurve<T> {
+    fn eval_derivative(&self, t: T) -> DVector<T> {
+        match self {
+            CliCurve::Bezier(b) => b.eval_derivative(t),
+            CliCurve::Sampled(s) => s.eval_derivative(t),
         }
     }
 }

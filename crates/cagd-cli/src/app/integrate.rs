@@ -1,29 +1,32 @@
-//! `integrate`: antiderivatives and definite integrals of Bernstein polynomials, Bézier curves
-//! and B-spline curves (the CAD notes §1.1–1.2; formulas in `cagd::integral`).
+//! `cagd integrate`: antiderivatives and definite integrals of Bernstein polynomials, Bézier
+//! curves and B-spline curves (the CAD notes §1.1–1.2; formulas in `cagd::integral`).
 
-use cagd::bezier::BezierCurve;
-use cagd::integral::{
-    bernstein_antiderivative, bezier_antiderivative, bezier_integral, bspline_antiderivative,
-    bspline_integral,
-};
-use cagd::limits::Limits;
-use cagd::BSplineCurve;
 use cagd_octave::literal::LiteralScalar;
+use cagd_ops::ops::Integrate;
+use cagd_ops::Role;
 use clap::Args;
-use nalgebra::DMatrix;
 
+use super::answer::{respond, Destinations};
+use super::cx::Cx;
+use super::read::{bspline_arg, given_or_samples, interval, points};
+use super::run::{Names, Run};
 use crate::args::{OutputArgs, PlotArgs, RowsArgs, StepsArgs};
-use crate::plot::{Colour, Figure};
-use crate::{load_params, CliError, PendingWrites, Report, Value};
+use crate::{CliError, Outcome};
 
-use super::bezier::interval;
-use super::common::*;
-use super::work::{bits, check_work, weigh};
-use super::Outcome;
-use cagd::cost::polynomial_bits;
-use cagd::cost::Cost;
-
+/// Antiderivative and definite integral of Bernstein polynomials, Bézier or B-spline curves.
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Input: Bézier control points as columns (rows with --rows) over [0, 1] or --interval a,b; with
+--degree/--order and --knots a B-spline; or --bernstein N [--i I] alone.
+Layout: antiderivative holds the control points of ∫ (d×(n+2); a B-spline's with its knots,
+(u_0, u_0, …, u_m, u_m)); integral the definite integral over the domain (d×1); with --t, result
+holds ∫ from the start of the domain to t. Bernstein: rows of Bernstein coefficients of degree
+N+1 of ∫₀ᵗ B_i^N, and ∫₀¹ B_i^N = 1/(N+1).
+
+Examples:
+  cagd integrate \"[0 0; 1 2; 2 0]\" --rows --exact
+  cagd integrate --bernstein 3 --exact
+  cagd integrate \"[6 0 0 0]\" --degree 2 --knots \"[0 0 0 0.5 1 1 1]\" --exact")]
 pub struct IntegrateCommand {
     /// Control points of a Bézier curve (or with --knots/--degree/--order of a B-spline),
     /// one per column (rows with --rows). Leave out with --bernstein.
@@ -39,7 +42,7 @@ pub struct IntegrateCommand {
     #[arg(long, value_name = "P")]
     pub degree: Option<usize>,
     /// A B-spline curve of order K = P + 1.
-    #[arg(long, value_name = "K")]
+    #[arg(long, value_name = "K", conflicts_with = "degree")]
     pub order: Option<usize>,
     /// The knot vector of a B-spline curve.
     #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
@@ -60,233 +63,40 @@ pub struct IntegrateCommand {
     pub plot: PlotArgs,
 }
 
-/// Integrals.
-pub fn integrate<T: LiteralScalar>(
-    limits: &Limits,
-    cmd: &IntegrateCommand,
-) -> Result<Outcome, CliError> {
-    let bspline = cmd.degree.is_some() || cmd.order.is_some() || cmd.knots.is_some();
-    let ts: Vec<T> = match &cmd.t {
-        Some(t) => load_params(limits, "--t", t)?,
-        None => Vec::new(),
-    };
-    if cmd.i.is_some() && cmd.bernstein.is_none() {
-        return Err(usage(
-            "--i",
-            "has no effect without --bernstein",
-            "--bernstein N --i I, or no --i",
-        ));
+/// The names of this command's arguments.
+const NAMES: Names = Names {
+    command: "integrate",
+    input: "CONTROL",
+    special: &[(Role::Degree, "--bernstein")],
+};
+
+impl Run for IntegrateCommand {
+    fn exact(&self) -> bool {
+        self.output.exact
     }
-    let mut report = Report::new();
-    let mut files = PendingWrites::new();
-    if let Some(n) = cmd.bernstein {
-        for (arg, given) in [
-            ("CONTROL", cmd.control.is_some()),
-            ("--knots", bspline),
-            ("--interval", cmd.interval.is_some()),
-        ] {
-            if given {
-                return Err(usage(
-                    arg,
-                    "has no effect with --bernstein",
-                    "--bernstein N [--i I] [--t VALUES] alone",
-                ));
-            }
-        }
-        check_degree(limits, "--bernstein", n + 1)?;
-        if let Some(i) = cmd.i {
-            if i > n {
-                return Err(shape(
-                    "--i",
-                    format!("i = {i} exceeds the degree {n}"),
-                    "an index 0 ≤ i ≤ N",
-                ));
-            }
-        }
-        let rows: Vec<usize> = match cmd.i {
-            Some(i) => vec![i],
-            None => (0..=n).collect(),
+
+    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
+        let op = Integrate::<T> {
+            bernstein: self.bernstein,
+            index: self.i,
+            control: match &self.control {
+                Some(text) => Some(points(cx, "CONTROL", text, None, self.rows.rows)?),
+                None => None,
+            },
+            bspline: bspline_arg(cx, self.degree, self.order, &self.knots)?,
+            interval: interval(cx, &self.interval)?,
+            t: match &self.t {
+                Some(_) => Some(given_or_samples(cx, "--t", &self.t, None)?),
+                None => None,
+            },
+            steps: self.steps.steps,
+            drawing: self.plot.plot.is_some(),
         };
-        let n2 = n as u128 + 2;
-        check_work(
-            limits,
-            "--t",
-            weigh::<T>(Cost::new(
-                (rows.len() as u128 + ts.len() as u128) * n2 * n2,
-                polynomial_bits(n + 1, bits(&ts), 2 * n2),
-            )),
-        )?;
-        let coefficients: Vec<Vec<T>> = rows
-            .iter()
-            .map(|&i| bernstein_antiderivative::<T>(n, i))
-            .collect();
-        report.push(
-            "antiderivative",
-            Value::Matrix(DMatrix::from_fn(rows.len(), n + 2, |r, j| {
-                coefficients[r][j].clone()
-            })),
-        );
-        report.push(
-            "integral",
-            Value::Matrix(DMatrix::from_element(
-                rows.len(),
-                1,
-                T::from_ratio(1, n as i64 + 1),
-            )),
-        );
-        if !ts.is_empty() {
-            crate::slips::outside(
-                "--t",
-                &ts,
-                &T::zero(),
-                &T::one(),
-                "the polynomials are extrapolated there",
-            );
-            let basis = cagd::bernstein::basis_matrix(n + 1, &ts);
-            let values = DMatrix::from_fn(ts.len(), rows.len(), |k, r| {
-                (0..n + 2).fold(T::zero(), |s, j| {
-                    s + basis[(k, j)].clone() * coefficients[r][j].clone()
-                })
-            });
-            report.push(
-                "t",
-                Value::Matrix(DMatrix::from_column_slice(ts.len(), 1, &ts)),
-            );
-            report.push("result", Value::Matrix(values));
-        }
-        return finish(&report, &cmd.output, files, Vec::new());
+        let to = Destinations {
+            output: &self.output,
+            plot: self.plot.plot.as_deref(),
+            mesh: None,
+        };
+        respond(cx, &NAMES, &op, to)
     }
-    let text = cmd.control.as_ref().ok_or_else(|| {
-        usage(
-            "CONTROL",
-            "missing",
-            "control points of a curve, or --bernstein N",
-        )
-    })?;
-    let control = points::<T>(limits, "CONTROL", text, None, cmd.rows.rows)?;
-    let d = control.nrows() as u128;
-    let n1 = control.ncols() as u128 + 1;
-    let p = if bspline {
-        spline_degree(cmd.degree, cmd.order, 3)?
-    } else {
-        control.ncols().saturating_sub(1)
-    };
-    check_degree(limits, "CONTROL", p + 1)?;
-    // The partial sums, then the antiderivative at --t (a curve of degree p + 1).
-    let p2 = p as u128 + 2;
-    check_work(
-        limits,
-        "--t",
-        weigh::<T>(Cost::new(
-            4 * d * n1 + ts.len() as u128 * d * p2 * p2,
-            polynomial_bits(p + 1, bits(&ts), bits(control.iter()) + 2 * p2),
-        )),
-    )?;
-    if bspline {
-        if cmd.interval.is_some() {
-            return Err(usage(
-                "--interval",
-                "has no effect on a B-spline (its domain is [u_p, u_n])",
-                "--interval with a Bézier curve only",
-            ));
-        }
-        let form = "degree p, n ≥ p+1 control points and n+p+1 non-decreasing knots";
-        let curve = match &cmd.knots {
-            Some(k) => BSplineCurve::new(p, load_params(limits, "--knots", k)?, control),
-            None => BSplineCurve::clamped(p, control),
-        }
-        .map_err(lib("CONTROL/--degree/--knots", form))?;
-        let anti = bspline_antiderivative(&curve).map_err(lib("CONTROL", form))?;
-        let integral = bspline_integral(&curve).map_err(lib("CONTROL", form))?;
-        let (a, b) = curve.domain();
-        if cmd.steps.steps {
-            let u = curve.knots().as_slice();
-            let widths: Vec<T> = (0..curve.control().ncols())
-                .map(|i| (u[i + p + 1].clone() - u[i].clone()) / T::from_usize(p + 1))
-                .collect();
-            report.push("basis_integrals", Value::Matrix(row(&widths)));
-        }
-        report.push("knots", Value::Matrix(row(anti.knots().as_slice())));
-        report.push("antiderivative", Value::Matrix(anti.control().clone()));
-        report.push(
-            "integral",
-            Value::Matrix(DMatrix::from_column_slice(
-                integral.len(),
-                1,
-                integral.as_slice(),
-            )),
-        );
-        if !ts.is_empty() {
-            let mut cols = Vec::with_capacity(ts.len());
-            let start = anti.try_eval(a.clone()).map_err(lib("CONTROL", form))?;
-            for t in &ts {
-                let v = anti
-                    .try_eval(t.clone())
-                    .map_err(lib("--t", "parameters inside the domain [u_p, u_n]"))?;
-                cols.push(nalgebra::DVector::from_fn(v.len(), |r, _| {
-                    v[r].clone() - start[r].clone()
-                }));
-            }
-            report.push("t", Value::Matrix(row(&ts)));
-            report.push("result", Value::Matrix(DMatrix::from_columns(&cols)));
-        }
-        if let Some(path) = &cmd.plot.plot {
-            let dense: Vec<T> = T::linspace(&a, &b, 201);
-            let line = anti.eval_many(&dense).map_err(lib("--plot", "a curve"))?;
-            let figure = Figure::new("antiderivative of a B-spline curve")
-                .curve(to_f64(&line), Colour::Blue, "∫ C")
-                .control_polygon(to_f64(anti.control()), "its control polygon");
-            add_plot(&mut files, "--plot", path, &figure)?;
-        }
-        return finish(&report, &cmd.output, files, Vec::new());
-    }
-    let (a, b) = interval::<T>(limits, &cmd.interval)?;
-    let curve = BezierCurve::new_on_interval(control, a.clone(), b.clone()).map_err(lib(
-        "CONTROL",
-        "control points b_0..b_n, one per column (or per row with --rows)",
-    ))?;
-    let anti = bezier_antiderivative(&curve);
-    let integral = bezier_integral(&curve);
-    if cmd.steps.steps {
-        report.push(
-            "factor",
-            Value::Matrix(DMatrix::from_element(
-                1,
-                1,
-                (b.clone() - a.clone()) / T::from_usize(curve.degree() + 1),
-            )),
-        );
-    }
-    report.push("antiderivative", Value::Matrix(anti.control().clone()));
-    report.push(
-        "integral",
-        Value::Matrix(DMatrix::from_column_slice(
-            integral.len(),
-            1,
-            integral.as_slice(),
-        )),
-    );
-    if !ts.is_empty() {
-        crate::slips::outside(
-            "--t",
-            &ts,
-            &a,
-            &b,
-            "the antiderivative is extrapolated there",
-        );
-        let values = anti
-            .eval_many(&ts)
-            .map_err(lib("--t", "finite parameters"))?;
-        report.push("t", Value::Matrix(row(&ts)));
-        report.push("result", Value::Matrix(values));
-    }
-    if let Some(path) = &cmd.plot.plot {
-        let dense: Vec<T> = T::linspace(&a, &b, 101);
-        let line = anti.eval_many(&dense).map_err(lib("--plot", "a curve"))?;
-        let figure = Figure::new("antiderivative of a Bézier curve")
-            .curve(to_f64(&line), Colour::Blue, "∫ c")
-            .control_polygon(to_f64(anti.control()), "its control polygon");
-        add_plot(&mut files, "--plot", path, &figure)?;
-    }
-    finish(&report, &cmd.output, files, Vec::new())
 }

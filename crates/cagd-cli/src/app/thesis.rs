@@ -20,7 +20,18 @@ use super::common::*;
 use super::patches::coons_figure;
 use super::Outcome;
 
+/// Reproduce every worked example and appendix run of the thesis, with steps and pictures.
 #[derive(Debug, Args)]
+#[command(after_help = "\
+Needs no input. Prints Primer 2.4 (de Casteljau scheme at t = 1/2 and the curve), a Bézier
+patch example in place of Primer 3.2 (whose net is garbled in the source and whose printed
+z-values are inconsistent), Primer 4.3 (r_c, r_d, r_cd and x at (0.2, 0.5), exactly), the
+appendix C Coons patch (data script with its N and P4 bugs fixed) and the appendix D Gordon
+surface (g1, g2, g12 at a point, the grid, the conditioning). Pictures (SVG and PNG) and
+meshes (STL, OBJ, PLY) go to --out, written atomically.
+
+Example:
+  cagd thesis --out cagd-out")]
 pub struct ThesisCommand {
     /// The folder for the pictures and meshes (created if missing).
     #[arg(long, value_name = "DIR", default_value = "cagd-out")]

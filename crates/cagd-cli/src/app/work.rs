@@ -64,6 +64,25 @@ pub struct Sampling<'a, T: LiteralScalar> {
 }
 
 impl<T: LiteralScalar> Sampling<'_, T> {
+    /// The estimated work of all the samples: samples × expression size, and, unless that is
+    /// over the limit already, samples × the measured work of one sample
+    /// ([`per_sample`](Self::per_sample)).
+    pub fn work(&self, env: &Env<T>, limits: &Limits) -> cagd_ops::curves::Work {
+        let by_size = self
+            .samples()
+            .saturating_mul(self.expr.node_count() as u128);
+        if by_size > limits.max_work as u128 {
+            return cagd_ops::curves::Work {
+                operations: by_size,
+                what: "estimated operations (samples × expression nodes)",
+            };
+        }
+        cagd_ops::curves::Work {
+            operations: by_size.max(self.samples().saturating_mul(self.per_sample(env))),
+            what: "estimated operations (samples × work of one sample)",
+        }
+    }
+
     fn samples(&self) -> u128 {
         self.params
             .iter()

@@ -1,29 +1,15 @@
-//! The picture model: what a figure holds (title, layers, size), independent of how it is
-//! drawn ([`super::render`] draws it with plotters).
+//! The picture model: a [`Drawing`] of the operation layer (what a construction shows) with a
+//! size in pixels, independent of how it is drawn ([`super::render`] draws it with
+//! plotters).
 
 use std::path::Path;
 
 use cagd::grid::PointGrid;
+pub use cagd_ops::drawing::{Colour, Layer};
+use cagd_ops::Drawing;
 use nalgebra::DMatrix;
 
 use super::{PlotError, MAX_COORDINATE};
-
-/// Colours of lines.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Colour {
-    /// Curves (Octave's default line colour).
-    Blue,
-    /// Control points and polygons; `c1`, `c2` of a Coons patch.
-    Red,
-    /// `d1`, `d2` of a Coons patch.
-    Green,
-    /// Nets and edges.
-    Black,
-    /// Extra curves.
-    Orange,
-    /// Extra curves.
-    Purple,
-}
 
 /// Picture file formats.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -52,139 +38,58 @@ impl ImageKind {
     }
 }
 
-/// One thing drawn in a figure.
-#[derive(Debug, Clone, PartialEq)]
-pub enum Layer {
-    /// A line through the points (d × k, one point per column).
-    Curve {
-        /// The points.
-        points: DMatrix<f64>,
-        /// Line colour.
-        colour: Colour,
-        /// Line width in pixels.
-        width: u32,
-        /// Legend text.
-        label: String,
-    },
-    /// A control polygon: red circles at the points joined by a red line.
-    ControlPolygon {
-        /// The control points (d × (n+1)).
-        points: DMatrix<f64>,
-        /// Legend text.
-        label: String,
-    },
-    /// A surface drawn like Octave's `surf`: filled cells coloured by height, black edges.
-    Surface {
-        /// The grid (nu, nv, d).
-        grid: PointGrid<f64>,
-        /// Legend text.
-        label: String,
-    },
-    /// A wire net (lines along both grid directions), e.g. a control net, with its points.
-    Net {
-        /// The net (m+1, n+1, d).
-        grid: PointGrid<f64>,
-        /// Line colour.
-        colour: Colour,
-        /// Legend text.
-        label: String,
-    },
+/// Checks a layer before it is drawn: 2-D or 3-D points, at least one, finite and within
+/// [`MAX_COORDINATE`].
+pub(super) fn validate(layer: &Layer) -> Result<(), PlotError> {
+    let label = layer.label().to_string();
+    let d = layer.dim();
+    if !(2..=3).contains(&d) {
+        return Err(PlotError::Shape {
+            label,
+            message: format!("points have {d} coordinates, expected 2 or 3"),
+        });
+    }
+    if layer.is_empty() {
+        return Err(PlotError::Shape {
+            label,
+            message: "no points".into(),
+        });
+    }
+    let values = layer.values();
+    if let Some(index) = values.iter().position(|x| !x.is_finite()) {
+        return Err(PlotError::NonFinite { label, index });
+    }
+    if let Some(index) = values.iter().position(|x| x.abs() > MAX_COORDINATE) {
+        return Err(PlotError::OutOfRange {
+            label,
+            index,
+            value: values[index],
+        });
+    }
+    Ok(())
 }
 
-impl Layer {
-    pub(super) fn label(&self) -> &str {
-        match self {
-            Layer::Curve { label, .. }
-            | Layer::ControlPolygon { label, .. }
-            | Layer::Surface { label, .. }
-            | Layer::Net { label, .. } => label,
-        }
-    }
-
-    /// Dimension of the points.
-    pub(super) fn dim(&self) -> usize {
-        match self {
-            Layer::Curve { points, .. } | Layer::ControlPolygon { points, .. } => points.nrows(),
-            Layer::Surface { grid, .. } | Layer::Net { grid, .. } => grid.dim().2,
-        }
-    }
-
-    /// Every point, padded to 3-D with z = 0.
-    pub(super) fn points(&self) -> Vec<[f64; 3]> {
-        let pad = |p: &[f64]| [p[0], p[1], if p.len() > 2 { p[2] } else { 0.0 }];
-        match self {
-            Layer::Curve { points, .. } | Layer::ControlPolygon { points, .. } => {
-                points.column_iter().map(|c| pad(c.as_slice())).collect()
-            }
-            Layer::Surface { grid, .. } | Layer::Net { grid, .. } => {
-                let (nu, nv, _) = grid.dim();
-                let mut out = Vec::with_capacity(nu * nv);
-                for i in 0..nu {
-                    for j in 0..nv {
-                        let p: Vec<f64> = (0..grid.dim().2).map(|k| grid[[i, j, k]]).collect();
-                        out.push(pad(&p));
-                    }
-                }
-                out
-            }
-        }
-    }
-
-    pub(super) fn validate(&self) -> Result<(), PlotError> {
-        let label = self.label().to_string();
-        let d = self.dim();
-        if !(2..=3).contains(&d) {
-            return Err(PlotError::Shape {
-                label,
-                message: format!("points have {d} coordinates, expected 2 or 3"),
-            });
-        }
-        let (values, empty): (Vec<f64>, bool) = match self {
-            Layer::Curve { points, .. } | Layer::ControlPolygon { points, .. } => {
-                (points.iter().copied().collect(), points.ncols() == 0)
-            }
-            Layer::Surface { grid, .. } | Layer::Net { grid, .. } => (
-                grid.iter().copied().collect(),
-                grid.dim().0 == 0 || grid.dim().1 == 0,
-            ),
-        };
-        if empty {
-            return Err(PlotError::Shape {
-                label,
-                message: "no points".into(),
-            });
-        }
-        if let Some(index) = values.iter().position(|x| !x.is_finite()) {
-            return Err(PlotError::NonFinite { label, index });
-        }
-        if let Some(index) = values.iter().position(|x| x.abs() > MAX_COORDINATE) {
-            return Err(PlotError::OutOfRange {
-                label,
-                index,
-                value: values[index],
-            });
-        }
-        Ok(())
-    }
-}
-
-/// A picture: a title and layers, drawn in order (surfaces first, then nets, curves and
-/// control polygons on top).
+/// A picture: a [`Drawing`] (title and layers) and its size.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Figure {
-    pub(super) title: String,
-    pub(super) layers: Vec<Layer>,
+    pub(super) drawing: Drawing,
     pub(super) size: (u32, u32),
+}
+
+impl From<Drawing> for Figure {
+    /// The drawing at 900×700 pixels.
+    fn from(drawing: Drawing) -> Self {
+        Figure {
+            drawing,
+            size: (900, 700),
+        }
+    }
 }
 
 impl Figure {
     /// An empty figure of 900×700 pixels.
     pub fn new(title: impl Into<String>) -> Self {
-        Figure {
-            title: title.into(),
-            layers: Vec::new(),
-            size: (900, 700),
-        }
+        Figure::from(Drawing::new(title))
     }
 
     /// Sets the picture size in pixels (100…10000 per side).
@@ -195,68 +100,73 @@ impl Figure {
 
     /// Adds a layer.
     pub fn layer(mut self, layer: Layer) -> Self {
-        self.layers.push(layer);
+        self.drawing = self.drawing.layer(layer);
         self
     }
 
     /// Adds a curve (d × k points, one per column), 2 pixels wide.
-    pub fn curve(self, points: DMatrix<f64>, colour: Colour, label: impl Into<String>) -> Self {
-        self.layer(Layer::Curve {
-            points,
-            colour,
-            width: 2,
-            label: label.into(),
-        })
+    pub fn curve(mut self, points: DMatrix<f64>, colour: Colour, label: impl Into<String>) -> Self {
+        self.drawing = self.drawing.curve(points, colour, label);
+        self
     }
 
     /// Adds a boundary curve drawn 3 pixels wide (the thesis's `'LineWidth', 2.5`).
-    pub fn boundary(self, points: DMatrix<f64>, colour: Colour, label: impl Into<String>) -> Self {
-        self.layer(Layer::Curve {
-            points,
-            colour,
-            width: 3,
-            label: label.into(),
-        })
+    pub fn boundary(
+        mut self,
+        points: DMatrix<f64>,
+        colour: Colour,
+        label: impl Into<String>,
+    ) -> Self {
+        self.drawing = self.drawing.boundary(points, colour, label);
+        self
     }
 
     /// Adds a control polygon (red circles joined by a red line).
-    pub fn control_polygon(self, points: DMatrix<f64>, label: impl Into<String>) -> Self {
-        self.layer(Layer::ControlPolygon {
-            points,
-            label: label.into(),
-        })
+    pub fn control_polygon(mut self, points: DMatrix<f64>, label: impl Into<String>) -> Self {
+        self.drawing = self.drawing.control_polygon(points, label);
+        self
+    }
+
+    /// Adds marked points with their labels.
+    pub fn points(
+        mut self,
+        points: DMatrix<f64>,
+        labels: Vec<String>,
+        label: impl Into<String>,
+    ) -> Self {
+        self.drawing = self.drawing.points(points, labels, label);
+        self
     }
 
     /// Adds a surface grid (nu, nv, d) drawn like `surf`.
-    pub fn surface(self, grid: PointGrid<f64>, label: impl Into<String>) -> Self {
-        self.layer(Layer::Surface {
-            grid,
-            label: label.into(),
-        })
+    pub fn surface(mut self, grid: PointGrid<f64>, label: impl Into<String>) -> Self {
+        self.drawing = self.drawing.surface(grid, label);
+        self
     }
 
     /// Adds a net (m+1, n+1, d) drawn as lines with its points.
-    pub fn net(self, grid: PointGrid<f64>, colour: Colour, label: impl Into<String>) -> Self {
-        self.layer(Layer::Net {
-            grid,
-            colour,
-            label: label.into(),
-        })
+    pub fn net(mut self, grid: PointGrid<f64>, colour: Colour, label: impl Into<String>) -> Self {
+        self.drawing = self.drawing.net(grid, colour, label);
+        self
     }
 
     /// The layers.
     pub fn layers(&self) -> &[Layer] {
-        &self.layers
+        &self.drawing.layers
     }
 
     pub(super) fn has_legend(&self) -> bool {
-        self.layers.iter().any(|l| !l.label().is_empty())
+        self.layers().iter().any(|l| !l.label().is_empty())
     }
 
     /// The height in pixels the legend takes at the top of the plotting area (0 without one):
     /// a line of about 20 pixels per label and the margins of its box.
     pub(super) fn legend_height(&self) -> f64 {
-        let labels = self.layers.iter().filter(|l| !l.label().is_empty()).count();
+        let labels = self
+            .layers()
+            .iter()
+            .filter(|l| !l.label().is_empty())
+            .count();
         if labels == 0 {
             0.0
         } else {
@@ -264,16 +174,8 @@ impl Figure {
         }
     }
 
-    /// Layers in drawing order: surfaces, nets, curves, control polygons.
+    /// Layers in drawing order: surfaces, nets, curves, control polygons, marked points.
     pub(super) fn ordered(&self) -> Vec<&Layer> {
-        let rank = |l: &Layer| match l {
-            Layer::Surface { .. } => 0,
-            Layer::Net { .. } => 1,
-            Layer::Curve { .. } => 2,
-            Layer::ControlPolygon { .. } => 3,
-        };
-        let mut v: Vec<&Layer> = self.layers.iter().collect();
-        v.sort_by_key(|l| rank(l));
-        v
+        self.drawing.ordered()
     }
 }

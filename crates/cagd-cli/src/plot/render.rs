@@ -9,7 +9,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::model::{Colour, Figure, ImageKind, Layer};
+use super::model::{validate, Colour, Figure, ImageKind, Layer};
 use super::PlotError;
 
 /// The font embedded for text in pictures.
@@ -27,27 +27,26 @@ fn register_font() {
     });
 }
 
-impl Colour {
-    pub(super) fn rgb(self) -> RGBColor {
-        match self {
-            Colour::Blue => RGBColor(0, 114, 189),
-            Colour::Red => RGBColor(220, 20, 20),
-            Colour::Green => RGBColor(0, 150, 0),
-            Colour::Black => RGBColor(0, 0, 0),
-            Colour::Orange => RGBColor(237, 145, 33),
-            Colour::Purple => RGBColor(126, 47, 142),
-        }
+/// The colour's RGB value.
+pub(super) fn rgb(colour: Colour) -> RGBColor {
+    match colour {
+        Colour::Blue => RGBColor(0, 114, 189),
+        Colour::Red => RGBColor(220, 20, 20),
+        Colour::Green => RGBColor(0, 150, 0),
+        Colour::Black => RGBColor(0, 0, 0),
+        Colour::Orange => RGBColor(237, 145, 33),
+        Colour::Purple => RGBColor(126, 47, 142),
     }
 }
 
 impl Figure {
     /// Draws the figure into an in-memory SVG or PNG file.
     pub fn render(&self, kind: ImageKind) -> Result<Vec<u8>, PlotError> {
-        if self.layers.is_empty() {
+        if self.layers().is_empty() {
             return Err(PlotError::Empty);
         }
-        for l in &self.layers {
-            l.validate()?;
+        for l in self.layers() {
+            validate(l)?;
         }
         let (w, h) = self.size;
         if !(100..=10_000).contains(&w) || !(100..=10_000).contains(&h) {
@@ -74,13 +73,8 @@ impl Figure {
             )),
             #[cfg(not(target_arch = "wasm32"))]
             ImageKind::Png => {
-                let mut rgb = vec![0u8; w as usize * h as usize * 3];
-                {
-                    let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
-                    self.draw(&root)?;
-                    root.present().map_err(drawing)?;
-                }
-                encode_png(&rgb, w, h)
+                let svg = self.render(ImageKind::Svg)?;
+                rasterize(&String::from_utf8_lossy(&svg), w, h)
             }
         }
     }
@@ -97,7 +91,7 @@ impl Figure {
 
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<(), PlotError> {
         root.fill(&WHITE).map_err(drawing)?;
-        if self.layers.iter().all(|l| l.dim() == 2) {
+        if self.layers().iter().all(|l| l.dim() == 2) {
             self.draw_2d(root)
         } else {
             self.draw_3d(root)
@@ -106,7 +100,7 @@ impl Figure {
 
     fn bounds(&self) -> [(f64, f64); 3] {
         let mut b = [(f64::INFINITY, f64::NEG_INFINITY); 3];
-        for l in &self.layers {
+        for l in self.layers() {
             for p in l.points() {
                 for k in 0..3 {
                     b[k].0 = b[k].0.min(p[k]);
@@ -123,7 +117,7 @@ impl Figure {
         // (y, z, x), a cyclic permutation, so that the picture keeps the right-handed
         // orientation of the data.
         let mut chart = ChartBuilder::on(root)
-            .caption(&self.title, (FAMILY, 24))
+            .caption(&self.drawing.title, (FAMILY, 24))
             .margin(20)
             .build_cartesian_3d(by.0..by.1, bz.0..bz.1, bx.0..bx.1)
             .map_err(drawing)?;
@@ -148,7 +142,8 @@ impl Figure {
             .map_err(drawing)?;
         let to3 = |p: [f64; 3]| (p[1], p[2], p[0]);
         let names = axis_name_positions(chart.as_coord_spec(), [by, bz, bx], root.dim_in_pixel());
-        for (name, (x, y)) in ["y", "z", "x"].iter().zip(names) {
+        let axes = &self.drawing.axes;
+        for (name, (x, y)) in [&axes[1], &axes[2], &axes[0]].into_iter().zip(names) {
             root.draw(&Text::new(
                 name.to_string(),
                 (x, y),
@@ -222,11 +217,18 @@ impl Figure {
         let (w, h) = root.dim_in_pixel();
         let (aw, ah) = ((w as f64 - 110.0).max(50.0), (h as f64 - 120.0).max(50.0));
         let band = self.legend_height().min(ah / 2.0);
-        let scale = ((bx.1 - bx.0) / aw).max((by.1 - by.0) / (ah - band));
+        let (sx, sy) = ((bx.1 - bx.0) / aw, (by.1 - by.0) / (ah - band));
+        // Geometry: one scale for both axes; a graph: each axis fitted to its data.
+        let (sx, sy) = if self.drawing.equal_scales {
+            (sx.max(sy), sx.max(sy))
+        } else {
+            (sx, sy)
+        };
+        let scale = sy;
         let (cx, cy) = ((bx.0 + bx.1) / 2.0, (by.0 + by.1) / 2.0);
-        let (hx, hy) = (scale * aw / 2.0, scale * (ah - band) / 2.0);
+        let (hx, hy) = (sx * aw / 2.0, sy * (ah - band) / 2.0);
         let mut chart = ChartBuilder::on(root)
-            .caption(&self.title, (FAMILY, 24))
+            .caption(&self.drawing.title, (FAMILY, 24))
             .margin(20)
             .x_label_area_size(40)
             .y_label_area_size(50)
@@ -237,8 +239,8 @@ impl Figure {
             .light_line_style(BLACK.mix(0.08))
             .x_label_formatter(&|x| tick_text(*x, 2.0 * hx))
             .y_label_formatter(&|y| tick_text(*y, 2.0 * hy))
-            .x_desc("x")
-            .y_desc("y")
+            .x_desc(self.drawing.axes[0].as_str())
+            .y_desc(self.drawing.axes[1].as_str())
             .label_style((FAMILY, 13))
             .axis_desc_style((FAMILY, 16))
             .draw()
@@ -302,7 +304,7 @@ impl Figure {
                     colour,
                     label,
                 } => {
-                    let style = colour.rgb().stroke_width(1);
+                    let style = rgb(*colour).stroke_width(1);
                     let anno = chart
                         .draw_series(net_lines(grid).into_iter().map(|l| {
                             PathElement::new(l.into_iter().map(project).collect::<Vec<_>>(), style)
@@ -319,7 +321,7 @@ impl Figure {
                                 layer
                                     .points()
                                     .into_iter()
-                                    .map(|p| Circle::new(project(p), 3, colour.rgb().filled())),
+                                    .map(|p| Circle::new(project(p), 3, rgb(*colour).filled())),
                             )
                             .map_err(drawing)?;
                     }
@@ -330,7 +332,7 @@ impl Figure {
                     label,
                     ..
                 } => {
-                    let style = colour.rgb().stroke_width(*width);
+                    let style = rgb(*colour).stroke_width(*width);
                     let anno = chart
                         .draw_series(LineSeries::new(
                             layer.points().into_iter().map(project),
@@ -343,8 +345,30 @@ impl Figure {
                         });
                     }
                 }
+                Layer::Points { labels, label, .. } => {
+                    let black = rgb(Colour::Black);
+                    let anno = chart
+                        .draw_series(
+                            layer
+                                .points()
+                                .into_iter()
+                                .map(|p| Circle::new(project(p), 6, black.filled())),
+                        )
+                        .map_err(drawing)?;
+                    if !label.is_empty() {
+                        anno.label(label.as_str())
+                            .legend(move |(x, y)| Circle::new((x + 10, y), 5, black.filled()));
+                    }
+                    let font = (FAMILY, 14).into_font().color(&black);
+                    chart
+                        .draw_series(layer.points().into_iter().zip(labels).map(|(p, text)| {
+                            EmptyElement::at(project(p))
+                                + Text::new(text.clone(), (9, -18), font.clone())
+                        }))
+                        .map_err(drawing)?;
+                }
                 Layer::ControlPolygon { label, .. } => {
-                    let red = Colour::Red.rgb();
+                    let red = rgb(Colour::Red);
                     let anno = chart
                         .draw_series(LineSeries::new(
                             layer.points().into_iter().map(project),
@@ -532,6 +556,51 @@ fn viridis(t: f64) -> RGBColor {
 
 fn drawing<E: std::fmt::Debug>(e: E) -> PlotError {
     PlotError::Drawing(format!("{e:?}"))
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+/// The font database of PNG pictures: the embedded DejaVu Sans as the sans-serif family the
+/// SVG names.
+#[cfg(not(target_arch = "wasm32"))]
+fn fonts() -> std::sync::Arc<resvg::usvg::fontdb::Database> {
+    static FONTS: std::sync::OnceLock<std::sync::Arc<resvg::usvg::fontdb::Database>> =
+        std::sync::OnceLock::new();
+    FONTS
+        .get_or_init(|| {
+            let mut db = resvg::usvg::fontdb::Database::new();
+            db.load_font_data(FONT.to_vec());
+            db.set_sans_serif_family("DejaVu Sans");
+            std::sync::Arc::new(db)
+        })
+        .clone()
+}
+
+/// A PNG of the picture's SVG, drawn with anti-aliasing (resvg) on white: lines and text as
+/// smooth as the SVG's in a browser, and the same picture.
+#[cfg(not(target_arch = "wasm32"))]
+fn rasterize(svg: &str, width: u32, height: u32) -> Result<Vec<u8>, PlotError> {
+    use resvg::{tiny_skia, usvg};
+    let options = usvg::Options {
+        fontdb: fonts(),
+        ..Default::default()
+    };
+    let tree =
+        usvg::Tree::from_str(svg, &options).map_err(|e| PlotError::Drawing(e.to_string()))?;
+    let mut pixmap = tiny_skia::Pixmap::new(width, height)
+        .ok_or_else(|| PlotError::Drawing(format!("no {width}×{height} picture")))?;
+    pixmap.fill(tiny_skia::Color::WHITE);
+    resvg::render(
+        &tree,
+        tiny_skia::Transform::identity(),
+        &mut pixmap.as_mut(),
+    );
+    // Opaque on white: the premultiplied colours are the colours.
+    let rgb: Vec<u8> = pixmap
+        .data()
+        .chunks_exact(4)
+        .flat_map(|p| [p[0], p[1], p[2]])
+        .collect();
+    encode_png(&rgb, width, height)
 }
 
 #[cfg(not(target_arch = "wasm32"))]

@@ -82,7 +82,7 @@ fn png_decodes_with_the_requested_size_and_colours() {
     let pixels = &buf[..info.buffer_size()];
     let has = |c: RGBColor| pixels.chunks(3).any(|p| p == [c.0, c.1, c.2]);
     assert!(has(WHITE), "background");
-    assert!(has(Colour::Red.rgb()), "the red net is visible");
+    assert!(has(render::rgb(Colour::Red)), "the red net is visible");
     let viridis_like = pixels
         .chunks(3)
         .filter(|p| p[2] as i32 > p[0] as i32 + 30 && p[1] > 40)

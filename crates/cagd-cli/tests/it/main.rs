@@ -1,15 +1,19 @@
 //! The integration tests of the command line, one module per subject: snapshots of every
 //! subcommand, bad inputs, limits, atomic output, meshes, fuzzing regressions.
 
+mod any_curve;
 mod atomic_output;
 mod bad_inputs;
 mod cli;
 mod course;
+mod curvature;
 mod error_catalogue;
+mod file_rules;
 mod hostile;
 mod limits;
 mod mesh;
 mod non_finite;
 mod packed_network;
 mod regressions;
+#[cfg(feature = "serve")]
 mod serve;

@@ -297,3 +297,86 @@ fn command_line_inputs() {
         assert!(!matches!(err.kind, ErrorKind::Internal), "{case:?}");
     }
 }
+
+/// `--exact --format octave`: an exact result is finite, but its double may not be. Octave's
+/// format stores doubles, so such a value is refused, naming the entry and the exact value,
+/// instead of being written as Inf — for every subcommand, by the one renderer. The exact
+/// formats still print it.
+#[test]
+fn exact_results_beyond_the_doubles_are_refused_in_octave_format() {
+    use cagd_cli::{run, ErrorKind};
+    let dir = tempfile::tempdir().unwrap();
+    let script = dir.path().join("big.m");
+    std::fs::write(&script, "x = [1 2];\nbig = [1e308 -1e308] * 5;\n").unwrap();
+    let s = script.to_str().unwrap();
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (
+            vec!["decasteljau", "[1e308 -1e308; 0 1]", "--t", "5"],
+            "result(1,1) is the exact value `-9",
+        ),
+        (vec!["curve", "[1e308*u; u]", "--t", "5"], "result(1,1)"),
+        (
+            vec!["surface", "[1e308*u; v; u]", "--u", "5", "--v", "0"],
+            "result(1,1,1) is",
+        ),
+        (
+            vec![
+                "lagrange",
+                "--nodes",
+                "[0 1]",
+                "--points",
+                "[0 1e308]",
+                "--t",
+                "5",
+            ],
+            "result(1,1)",
+        ),
+        (
+            vec!["bernstein", "--degree", "2", "--t", "1e200"],
+            "result(1,1)",
+        ),
+        (vec!["script", s], "big(1,1) is the exact value `500"),
+        (
+            vec!["decasteljau", "[1e308 -1e308; 0 1]", "--t", "5", "--steps"],
+            "-Inf",
+        ),
+    ];
+    for (case, named) in cases {
+        let mut args = vec!["cagd"];
+        args.extend(&case);
+        args.extend(["--exact", "--format", "octave"]);
+        let err = run(&args).expect_err(&format!("{case:?} must be refused"));
+        let msg = err.to_string();
+        assert_eq!(err.argument, "--format octave", "{case:?}: {msg}");
+        assert!(msg.contains(named), "{case:?}: {msg}");
+        assert!(msg.contains("beyond the range of doubles"), "{msg}");
+        assert!(
+            matches!(&err.kind, ErrorKind::Library(e) if matches!(**e, cagd::Error::NonFinite { .. })),
+            "{case:?}"
+        );
+        assert_eq!(err.exit_code(), 2);
+        // The exact formats write the same value as a fraction.
+        let mut exact = args.clone();
+        exact.truncate(args.len() - 1);
+        exact.push("json");
+        let out = run(&exact).unwrap_or_else(|e| panic!("{case:?} in json: {e}"));
+        assert!(
+            out.stdout.contains("0000000000\""),
+            "{case:?}: {}",
+            out.stdout
+        );
+    }
+    // Within the doubles, Octave's format is written as before.
+    let out = run([
+        "cagd",
+        "decasteljau",
+        "[1e300 -1e300; 0 1]",
+        "--t",
+        "5",
+        "--exact",
+        "--format",
+        "octave",
+    ])
+    .unwrap();
+    assert!(out.stdout.contains("# name: result"), "{}", out.stdout);
+}

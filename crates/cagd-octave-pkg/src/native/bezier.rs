@@ -1,30 +1,17 @@
 //! Bézier curves and patches: values, derivatives, subdivision, degree elevation.
 
-use cagd::bezier::{BezierCurve, BezierPatch};
-use nalgebra::DMatrix;
+use cagd::grid::PointGrid;
 
-use super::{bezier_curve, cost, native};
+use cagd_ops::ops::surface::SurfaceParams;
+use cagd_ops::ops::{BezierPatchPoints, DeCasteljau, Derivative, Elevate, Subdivide};
+use cagd_ops::{Params, Role};
+
+use super::{emit_item, emit_result, native, CONTROL_FORM};
 use crate::args::Call;
 use crate::error::{Kind, PkgError, Result};
-use crate::number::{emit_grid, emit_matrix, params, scalar, Number};
+use crate::number::{matrix, params, scalar, Number};
+use crate::ops::{execute, Names};
 use crate::value::Sink;
-
-/// The points of `curve` at `t` as a `d × numel(t)` output `index`.
-fn emit_points<T: Number>(
-    call: &Call<'_, '_>,
-    sink: &mut dyn Sink,
-    index: usize,
-    curve: &BezierCurve<T>,
-    t: &[T],
-) -> Result<()> {
-    let d = curve.dim();
-    let n = curve.degree();
-    call.check_samples("t", t.len())?;
-    call.check_work("t", t.len(), cost::<T>((n + 1) * (n + 1 + d), n + 1))?;
-    T::emit_with(sink, index, &[d, t.len()], &mut |out| {
-        curve.eval_many_into(t, out)
-    })
-}
 
 native!(
     /// `X = cagd_bezier (P, t)`: the curve with control points `P` (columns) at `t`.
@@ -34,10 +21,16 @@ native!(
 fn bezier_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     call.nargin(2, 2, "X = cagd_bezier (P, t [, \"exact\"])")?;
     call.nargout_max(1)?;
-    let curve = bezier_curve::<T>(call, call.arg(0), "P")?;
-    let t = params::<T>(call, 1, "t")?;
-    emit_points(call, sink, 0, &curve, &t)
+    let op = DeCasteljau {
+        t: Params::Given(params::<T>(call, 1, "t")?),
+        ..DeCasteljau::new(matrix::<T>(call, 0, "P", CONTROL_FORM)?)
+    };
+    let report = execute(call, NAMES, &op)?;
+    emit_result(sink, 0, &report)
 }
+
+/// How the Bézier functions name their arguments.
+const NAMES: Names = &[(Role::Control, "P"), (Role::T, "t"), (Role::Result, "X")];
 
 native!(
     /// `[X, Q] = cagd_bezier_derivative (P, t, r)`: the `r`-th derivative (default 1) at `t`
@@ -52,16 +45,28 @@ fn bezier_derivative_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> R
         "[X, Q] = cagd_bezier_derivative (P, t [, r] [, \"exact\"])",
     )?;
     call.nargout_max(2)?;
-    let curve = bezier_curve::<T>(call, call.arg(0), "P")?;
-    let t = params::<T>(call, 1, "t")?;
-    let r = if call.has(2) { call.count(2, "r")? } else { 1 };
-    let derivative = curve.derivative(r)?;
-    emit_points(call, sink, 0, &derivative, &t)?;
+    let op = Derivative {
+        t: Some(Params::Given(params::<T>(call, 1, "t")?)),
+        ..Derivative::new(
+            matrix::<T>(call, 0, "P", CONTROL_FORM)?,
+            if call.has(2) { call.count(2, "r")? } else { 1 },
+        )
+    };
+    let report = execute(call, DERIVATIVE_NAMES, &op)?;
+    emit_result(sink, 0, &report)?;
     if call.nargout > 1 {
-        emit_matrix(sink, 1, derivative.control())?;
+        emit_item(sink, 1, &report, "control")?;
     }
     Ok(())
 }
+
+/// How `cagd_bezier_derivative` names its arguments.
+const DERIVATIVE_NAMES: Names = &[
+    (Role::Control, "P"),
+    (Role::T, "t"),
+    (Role::DerivativeOrder, "r"),
+    (Role::Result, "X"),
+];
 
 native!(
     /// `[L, R] = cagd_bezier_subdivide (P, t)`: the control points of the two pieces of the
@@ -72,15 +77,20 @@ native!(
 fn bezier_subdivide_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     call.nargin(2, 2, "[L, R] = cagd_bezier_subdivide (P, t [, \"exact\"])")?;
     call.nargout_max(2)?;
-    let curve = bezier_curve::<T>(call, call.arg(0), "P")?;
-    let t = scalar::<T>(call, 1, "t")?;
-    let (left, right) = curve.subdivide(t)?;
-    emit_matrix(sink, 0, left.control())?;
+    let op = Subdivide {
+        t: Some(scalar::<T>(call, 1, "t")?),
+        ..Subdivide::new(matrix::<T>(call, 0, "P", CONTROL_FORM)?)
+    };
+    let report = execute(call, SUBDIVIDE_NAMES, &op)?;
+    emit_item(sink, 0, &report, "left")?;
     if call.nargout > 1 {
-        emit_matrix(sink, 1, right.control())?;
+        emit_item(sink, 1, &report, "right")?;
     }
     Ok(())
 }
+
+/// How `cagd_bezier_subdivide` names its arguments.
+const SUBDIVIDE_NAMES: Names = &[(Role::Control, "P"), (Role::T, "t"), (Role::Result, "L")];
 
 native!(
     /// `Q = cagd_bezier_elevate (P, r)`: the same curve with its degree raised by `r`
@@ -91,14 +101,16 @@ native!(
 fn bezier_elevate_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     call.nargin(1, 2, "Q = cagd_bezier_elevate (P [, r] [, \"exact\"])")?;
     call.nargout_max(1)?;
-    let mut curve = bezier_curve::<T>(call, call.arg(0), "P")?;
-    let r = if call.has(1) { call.count(1, "r")? } else { 1 };
-    call.check_degree("P (degree + r)", curve.degree().saturating_add(r))?;
-    for _ in 0..r {
-        curve = curve.elevate();
-    }
-    emit_matrix(sink, 0, curve.control())
+    let op = Elevate {
+        by: if call.has(1) { call.count(1, "r")? } else { 1 },
+        ..Elevate::new(matrix::<T>(call, 0, "P", CONTROL_FORM)?)
+    };
+    let report = execute(call, ELEVATE_NAMES, &op)?;
+    emit_item(sink, 0, &report, "control")
 }
+
+/// How `cagd_bezier_elevate` names its arguments.
+const ELEVATE_NAMES: Names = &[(Role::Control, "P"), (Role::By, "r"), (Role::Result, "Q")];
 
 /// The form of a patch net.
 const PATCH_FORM: &str = "a d × (m+1) × (n+1) array, B(:, i+1, j+1) = b_ij";
@@ -121,18 +133,30 @@ fn bezier_patch_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result
             PATCH_FORM,
         ));
     }
+    // As every reader: NaN and ±Inf have no exact value.
     cagd::error::check_finite("B", b.data.iter())?;
+    // B(c, i+1, j+1) = b_ij(c) is the net (m+1, n+1, d) of the operation.
     let (d, m1, n1) = (b.dims[0], b.dims[1], b.dims.get(2).copied().unwrap_or(1));
-    call.check_degree("B (degree)", m1.max(n1) - 1)?;
-    let coords = (0..d)
-        .map(|c| DMatrix::from_fn(m1, n1, |i, j| T::from_input(b.data[c + d * (i + m1 * j)])))
-        .collect();
-    let patch = BezierPatch::new(coords)?;
-    let u = params::<T>(call, 1, "u")?;
-    let v = params::<T>(call, 2, "v")?;
-    call.check_grid("u, v", u.len(), v.len())?;
-    call.check_work("u, v", u.len() * v.len(), cost::<T>((m1 + n1) * d, m1 + n1))?;
-    let mut grid = vec![T::zero(); u.len() * v.len() * d];
-    patch.eval_grid_into(&u, &v, &mut grid)?;
-    emit_grid(sink, 0, (u.len(), v.len(), d), &grid)
+    let net = PointGrid::from_shape_fn((m1, n1, d), |(i, j, c)| {
+        T::from_input(b.data[c + d * (i + m1 * j)])
+    });
+    let op = BezierPatchPoints {
+        at: SurfaceParams {
+            u: Params::Given(params::<T>(call, 1, "u")?),
+            v: Params::Given(params::<T>(call, 2, "v")?),
+            list: false,
+        },
+        ..BezierPatchPoints::new(net)
+    };
+    let report = execute(call, PATCH_NAMES, &op)?;
+    emit_result(sink, 0, &report)
 }
+
+/// How `cagd_bezier_patch` names its arguments.
+const PATCH_NAMES: Names = &[
+    (Role::Net, "B"),
+    (Role::U, "u"),
+    (Role::V, "v"),
+    (Role::Grid, "u, v"),
+    (Role::Result, "X"),
+];

@@ -7,8 +7,8 @@
 //! | `[L, R] = cagd_bezier_subdivide (P, t)` | [`BezierCurve::subdivide`](cagd::BezierCurve::subdivide) |
 //! | `Q = cagd_bezier_elevate (P, r)` | [`BezierCurve::elevate`](cagd::BezierCurve::elevate) |
 //! | `X = cagd_bezier_patch (B, u, v)` | [`BezierPatch::eval_grid_into`](cagd::BezierPatch::eval_grid_into) |
-//! | `[X, rc, rd, rcd] = cagd_coons (c1, c2, d1, d2, u, v)` | [`CoonsPatch`](cagd::CoonsPatch) of Bézier curves |
-//! | `[X, g1, g2, g12] = cagd_gordon (cu, cv, un, vn, u, v)` | [`GordonSurface`](cagd::GordonSurface) of Bézier curves |
+//! | `[X, rc, rd, rcd] = cagd_coons (c1, c2, d1, d2, u, v)` | [`cagd_ops::ops::Coons`] of Bézier or NURBS curves |
+//! | `[X, g1, g2, g12] = cagd_gordon (cu, cv, un, vn, u, v)` | [`cagd_ops::ops::Gordon`] of Bézier or NURBS curves |
 //! | `X = cagd_bspline (p, P, U, t)` | [`BSplineCurve`](cagd::BSplineCurve) |
 //! | `X = cagd_nurbs (p, P, w, U, t)` | [`NurbsCurve`](cagd::NurbsCurve) |
 //! | `[X, D] = cagd_spline (Q, t, ends)` | [`CubicSpline`](cagd::CubicSpline) |
@@ -19,6 +19,7 @@
 //! Each takes the option `"exact"` as its last argument (see [`crate::number`]).
 
 mod bezier;
+mod curve_value;
 mod splines;
 mod surfaces;
 
@@ -27,7 +28,6 @@ pub use splines::{bernstein, bspline, convert, hermite, nurbs_curve, spline};
 pub use surfaces::{coons, gordon};
 
 use cagd::bezier::BezierCurve;
-use cagd::limits::exact_op_cost;
 
 use crate::args::Call;
 use crate::error::Result;
@@ -58,14 +58,37 @@ macro_rules! native {
 }
 pub(crate) use native;
 
-/// The operations of `ops` double operations in `T`: in exact arithmetic each weighs
-/// [`exact_op_cost`] of numbers of about `words` 64-bit words (they grow with the degree).
-fn cost<T: Number>(ops: usize, words: usize) -> usize {
-    if <T as cagd_octave::literal::LiteralScalar>::EXACT {
-        let per = exact_op_cost(64 * words.max(1) as u128);
-        ops.saturating_mul(usize::try_from(per).unwrap_or(usize::MAX))
-    } else {
-        ops
+/// Output `index`: the report's `result` (a matrix, or a grid as `d × nu × nv`).
+///
+/// # Errors
+/// [`Kind::Memory`](crate::Kind::Memory); a report without a result is an internal error.
+fn emit_result<T: Number>(
+    sink: &mut dyn Sink,
+    index: usize,
+    report: &cagd_ops::Report<T>,
+) -> Result<()> {
+    emit_item(sink, index, report, "result")
+}
+
+/// Output `index`: the report's item `name` (a matrix, or a grid as `d × nu × nv`).
+///
+/// # Errors
+/// [`Kind::Memory`](crate::Kind::Memory); a report without that item is an internal error.
+fn emit_item<T: Number>(
+    sink: &mut dyn Sink,
+    index: usize,
+    report: &cagd_ops::Report<T>,
+    name: &str,
+) -> Result<()> {
+    match report.get(name) {
+        Some(cagd_ops::Value::Matrix(m)) => crate::number::emit_matrix(sink, index, m),
+        Some(cagd_ops::Value::Grid(g)) => {
+            crate::number::emit_grid(sink, index, g.dim(), g.as_slice())
+        }
+        _ => Err(crate::PkgError::new(
+            crate::Kind::Internal,
+            format!("the answer has no numeric item `{name}`"),
+        )),
     }
 }
 

@@ -1,62 +1,26 @@
 //! B-spline and NURBS curves, interpolating cubic splines, Hermite cubics, the conversions of
 //! cubic forms, Bernstein values.
 
-use cagd::bspline::{BSplineCurve, KnotVector};
-use cagd::conversion::{self, CubicForm};
-use cagd::hermite::HermiteCubic;
-use cagd::nurbs::NurbsCurve;
-use cagd::spline::{CubicSpline, EndCondition};
-use nalgebra::{DMatrix, DVector};
+use cagd::conversion::GeometryForm;
+use cagd_ops::knots::Degree;
+use cagd_ops::ops::spline::{Ends, Knots, Spline};
+use cagd_ops::ops::{BSpline, Bernstein, Convert, Hermite, Nurbs};
+use cagd_ops::{Params, Role};
+use nalgebra::DMatrix;
 
-use super::{cost, native, CONTROL_FORM};
+use super::{emit_item, emit_result, native, CONTROL_FORM};
 use crate::args::Call;
 use crate::error::{Kind, PkgError, Result};
 use crate::number::{emit_matrix, matrix, params, Number};
+use crate::ops::{execute, Names};
 use crate::value::{Sink, Value};
 
-/// Every parameter within `[lo, hi]`, else the core's out-of-domain error.
-fn check_domain<T: Number>(what: &'static str, t: &[T], lo: &T, hi: &T) -> Result<()> {
-    match t.iter().find(|x| *x < lo || *x > hi) {
-        None => Ok(()),
-        Some(x) => Err(cagd::Error::ParameterOutOfRange {
-            what,
-            value: x.to_f64(),
-            min: lo.to_f64(),
-            max: hi.to_f64(),
-        }
-        .into()),
+/// The knots of argument `i`, or none for `[]` (the clamped uniform knots on [0, 1]).
+fn knots<T: Number>(call: &Call<'_, '_>, i: usize) -> Result<Option<Vec<T>>> {
+    match call.arg(i) {
+        Value::Real(r) if r.is_empty() => Ok(None),
+        _ => params::<T>(call, i, "U").map(Some),
     }
-}
-
-/// Writes `d × numel(t)` points computed by `fill` (row-major `numel(t) × d`, i.e. Octave's
-/// column-major `d × numel(t)`).
-fn emit_curve_points<T: Number>(
-    call: &Call<'_, '_>,
-    sink: &mut dyn Sink,
-    (d, t): (usize, &[T]),
-    per_point: usize,
-    mut fill: impl FnMut(&mut [T]) -> cagd::Result<()>,
-) -> Result<()> {
-    call.check_samples("t", t.len())?;
-    call.check_work("t", t.len(), per_point)?;
-    T::emit_with(sink, 0, &[d, t.len()], &mut fill)
-}
-
-/// The knots of argument `i`, or for `[]` the clamped uniform knots on `[0, 1]`.
-fn knots_or_clamped<T: Number>(
-    call: &Call<'_, '_>,
-    i: usize,
-    p: usize,
-    n: usize,
-) -> Result<Vec<T>> {
-    let given = match call.arg(i) {
-        Value::Real(r) => !r.is_empty(),
-        _ => true,
-    };
-    if given {
-        return params::<T>(call, i, "U");
-    }
-    Ok(KnotVector::<T>::clamped_uniform(p, n)?.as_slice().to_vec())
 }
 
 native!(
@@ -68,23 +32,25 @@ native!(
 fn bspline_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     call.nargin(4, 4, "X = cagd_bspline (p, P, U, t [, \"exact\"])")?;
     call.nargout_max(1)?;
-    let p = call.count(0, "p")?;
-    call.check_degree("p", p)?;
-    let control = matrix::<T>(call, 1, "P", CONTROL_FORM)?;
-    let (d, n) = (control.nrows(), control.ncols());
-    let knots = knots_or_clamped::<T>(call, 2, p, n)?;
-    let t = params::<T>(call, 3, "t")?;
-    let curve = BSplineCurve::new(p, knots, control)?;
-    let (lo, hi) = curve.domain();
-    check_domain("t", &t, &lo, &hi)?;
-    emit_curve_points(
-        call,
-        sink,
-        (d, &t),
-        cost::<T>((p + 1) * (p + 1 + d), p + 1),
-        |out| curve.try_eval_many_into(&t, out),
-    )
+    let op = BSpline {
+        degree: Degree::Degree(call.count(0, "p")?),
+        knots: knots::<T>(call, 2)?,
+        t: Params::Given(params::<T>(call, 3, "t")?),
+        ..BSpline::new(matrix::<T>(call, 1, "P", CONTROL_FORM)?)
+    };
+    let report = execute(call, SPLINE_NAMES, &op)?;
+    emit_result(sink, 0, &report)
 }
+
+/// How `cagd_bspline` and `cagd_nurbs` name their arguments.
+const SPLINE_NAMES: Names = &[
+    (Role::Degree, "p"),
+    (Role::Control, "P"),
+    (Role::Weights, "w"),
+    (Role::Knots, "U"),
+    (Role::T, "t"),
+    (Role::Result, "X"),
+];
 
 native!(
     /// `X = cagd_nurbs (p, P, w, U, t)`: the NURBS curve of degree `p`, control points `P`,
@@ -95,23 +61,15 @@ native!(
 fn nurbs_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     call.nargin(5, 5, "X = cagd_nurbs (p, P, w, U, t [, \"exact\"])")?;
     call.nargout_max(1)?;
-    let p = call.count(0, "p")?;
-    call.check_degree("p", p)?;
     let control = matrix::<T>(call, 1, "P", CONTROL_FORM)?;
-    let (d, n) = (control.nrows(), control.ncols());
-    let w = params::<T>(call, 2, "w")?;
-    let knots = knots_or_clamped::<T>(call, 3, p, n)?;
-    let t = params::<T>(call, 4, "t")?;
-    let curve = NurbsCurve::new(p, knots, control, w)?;
-    let (lo, hi) = curve.domain();
-    check_domain("t", &t, &lo, &hi)?;
-    emit_curve_points(
-        call,
-        sink,
-        (d, &t),
-        cost::<T>((p + 1) * (p + 2 + d), p + 1),
-        |out| curve.try_eval_many_into(&t, out),
-    )
+    let op = Nurbs {
+        degree: Degree::Degree(call.count(0, "p")?),
+        knots: knots::<T>(call, 3)?,
+        t: Params::Given(params::<T>(call, 4, "t")?),
+        ..Nurbs::new(control, params::<T>(call, 2, "w")?)
+    };
+    let report = execute(call, SPLINE_NAMES, &op)?;
+    emit_result(sink, 0, &report)
 }
 
 /// The end conditions a spline takes, in words.
@@ -132,64 +90,68 @@ fn spline_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
         "Q",
         "the points to interpolate, d × m (one per column)",
     )?;
-    let d = q.nrows();
-    let end = if !call.has(2) {
-        EndCondition::Natural
-    } else {
-        match call.arg(2).text().as_deref() {
-            Some("natural") => EndCondition::Natural,
-            Some("closed") => EndCondition::Closed,
-            Some(other) => {
-                return Err(PkgError::arg(
-                    Kind::Value,
-                    "ends",
-                    format!("'{other}'"),
-                    ENDS_FORM,
-                ));
-            }
-            None => {
-                let tangents = matrix::<T>(call, 2, "ends", ENDS_FORM)?;
-                if tangents.shape() != (d, 2) {
-                    return Err(PkgError::arg(
-                        Kind::Shape,
-                        "ends",
-                        format!("{}×{}", tangents.nrows(), tangents.ncols()),
-                        &format!("the end tangents as a {d} × 2 matrix"),
-                    ));
-                }
-                EndCondition::Clamped {
-                    start: tangents.column(0).into_owned(),
-                    end: tangents.column(1).into_owned(),
-                }
-            }
-        }
+    let (ends, tangents) = ends::<T>(call, q.nrows())?;
+    let (start_tangent, end_tangent) = match tangents {
+        Some(m) => (
+            Some(m.columns(0, 1).into_owned()),
+            Some(m.columns(1, 1).into_owned()),
+        ),
+        None => (None, None),
     };
-    call.check_degree("Q (points)", q.ncols())?;
-    let t = params::<T>(call, 1, "t")?;
-    let s = CubicSpline::interpolate(q, end)?;
-    let params_ = s.params();
-    check_domain("t", &t, &params_[0], &params_[params_.len() - 1])?;
-    emit_curve_points(call, sink, (d, &t), cost::<T>(16 * d, 2), |out| {
-        s.eval_many_into(&t, out)
-    })?;
+    let op = Spline {
+        ends: Some(ends),
+        start_tangent,
+        end_tangent,
+        knots: Knots::Chosen(cagd::spline::Parametrization::Uniform),
+        t: Params::Given(params::<T>(call, 1, "t")?),
+        ..Spline::new(q)
+    };
+    let report = execute(call, SPLINE_FN_NAMES, &op)?;
+    emit_result(sink, 0, &report)?;
     if call.nargout > 1 {
-        emit_matrix(sink, 1, s.tangents())?;
+        emit_item(sink, 1, &report, "tangents")?;
     }
     Ok(())
 }
 
-/// Argument `i` as a column of dimension `d` (any row or column of `d` values).
-fn vector<T: Number>(call: &Call<'_, '_>, i: usize, what: &'static str) -> Result<DVector<T>> {
-    let m = matrix::<T>(call, i, what, "a point or vector (d values)")?;
-    if m.nrows() != 1 && m.ncols() != 1 {
-        return Err(PkgError::arg(
-            Kind::Shape,
-            what,
-            format!("a {}×{} matrix", m.nrows(), m.ncols()),
-            "a point or vector (d values)",
-        ));
+/// How `cagd_spline` names its arguments.
+const SPLINE_FN_NAMES: Names = &[
+    (Role::Points, "Q"),
+    (Role::T, "t"),
+    (Role::Ends, "ends"),
+    (Role::T0, "ends"),
+    (Role::T1, "ends"),
+    (Role::Result, "X"),
+];
+
+/// The end condition of argument 2 (natural when absent), with the end tangents of a clamped
+/// spline as a `d × 2` matrix: the package's layout of the condition.
+fn ends<T: Number>(call: &Call<'_, '_>, d: usize) -> Result<(Ends, Option<DMatrix<T>>)> {
+    if !call.has(2) {
+        return Ok((Ends::Natural, None));
     }
-    Ok(DVector::from_iterator(m.len(), m.iter().cloned()))
+    match call.arg(2).text().as_deref() {
+        Some("natural") => Ok((Ends::Natural, None)),
+        Some("closed") => Ok((Ends::Closed, None)),
+        Some(other) => Err(PkgError::arg(
+            Kind::Value,
+            "ends",
+            format!("'{other}'"),
+            ENDS_FORM,
+        )),
+        None => {
+            let tangents = matrix::<T>(call, 2, "ends", ENDS_FORM)?;
+            if tangents.shape() != (d, 2) {
+                return Err(PkgError::arg(
+                    Kind::Shape,
+                    "ends",
+                    format!("{}×{}", tangents.nrows(), tangents.ncols()),
+                    &format!("the end tangents as a {d} × 2 matrix"),
+                ));
+            }
+            Ok((Ends::Clamped, Some(tangents)))
+        }
+    }
 }
 
 native!(
@@ -206,37 +168,45 @@ fn hermite_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> 
         "[X, B] = cagd_hermite (p0, p1, t0, t1, u [, \"exact\"])",
     )?;
     call.nargout_max(2)?;
-    let [p0, p1, t0, t1] = [
-        vector::<T>(call, 0, "p0")?,
-        vector::<T>(call, 1, "p1")?,
-        vector::<T>(call, 2, "t0")?,
-        vector::<T>(call, 3, "t1")?,
-    ];
-    let d = p0.len();
-    let h = HermiteCubic::new(p0, p1, t0, t1)?;
-    let u = params::<T>(call, 4, "u")?;
-    emit_curve_points(call, sink, (d, &u), cost::<T>(8 * d, 2), |out| {
-        for (x, t) in out.chunks_exact_mut(d).zip(&u) {
-            for (o, v) in x.iter_mut().zip(h.eval(t.clone()).iter()) {
-                *o = v.clone();
-            }
-        }
-        Ok(())
-    })?;
+    let form = cagd_ops::ops::hermite::VECTOR_FORM;
+    let op = Hermite {
+        data: [
+            matrix::<T>(call, 0, "p0", form)?,
+            matrix::<T>(call, 1, "p1", form)?,
+            matrix::<T>(call, 2, "t0", form)?,
+            matrix::<T>(call, 3, "t1", form)?,
+        ],
+        t: Params::Given(params::<T>(call, 4, "u")?),
+        steps: call.nargout > 1,
+        drawing: false,
+    };
+    let report = execute(call, HERMITE_NAMES, &op)?;
+    emit_result(sink, 0, &report)?;
     if call.nargout > 1 {
-        emit_matrix(sink, 1, h.to_bezier()?.control())?;
+        emit_item(sink, 1, &report, "bezier_control")?;
     }
     Ok(())
 }
 
+/// How `cagd_hermite` names its arguments.
+const HERMITE_NAMES: Names = &[
+    (Role::P0, "p0"),
+    (Role::P1, "p1"),
+    (Role::T0, "t0"),
+    (Role::T1, "t1"),
+    (Role::Hermite, "p0, p1, t0, t1"),
+    (Role::T, "u"),
+    (Role::Result, "X"),
+];
+
 /// A cubic form by its name.
-fn form(call: &Call<'_, '_>, i: usize, what: &str) -> Result<CubicForm> {
+fn form(call: &Call<'_, '_>, i: usize, what: &str) -> Result<GeometryForm> {
     let words = "\"hermite\", \"bezier\" or \"bspline\"";
     let text = call.text(i, what, words)?;
     match text.to_ascii_lowercase().as_str() {
-        "hermite" | "ferguson" => Ok(CubicForm::Hermite),
-        "bezier" => Ok(CubicForm::Bezier),
-        "bspline" => Ok(CubicForm::BSpline),
+        "hermite" | "ferguson" => Ok(GeometryForm::Hermite),
+        "bezier" => Ok(GeometryForm::Bezier),
+        "bspline" => Ok(GeometryForm::BSpline),
         other => Err(PkgError::arg(
             Kind::Value,
             what,
@@ -255,20 +225,22 @@ native!(
 fn convert_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     call.nargin(3, 3, "G = cagd_convert (G, from, to [, \"exact\"])")?;
     call.nargout_max(1)?;
-    let gform = "a d × 4 geometry matrix";
-    let g: DMatrix<T> = matrix::<T>(call, 0, "G", gform)?;
-    if g.ncols() != 4 {
-        return Err(PkgError::arg(
-            Kind::Shape,
-            "G",
-            format!("{}×{}", g.nrows(), g.ncols()),
-            gform,
-        ));
-    }
-    let from = form(call, 1, "from")?;
-    let to = form(call, 2, "to")?;
-    emit_matrix(sink, 0, &conversion::convert(&g, from, to)?)
+    let op = Convert::new(
+        matrix::<T>(call, 0, "G", "a d × 4 geometry matrix")?,
+        form(call, 1, "from")?,
+        form(call, 2, "to")?,
+    );
+    let report = execute(call, CONVERT_NAMES, &op)?;
+    emit_result(sink, 0, &report)
 }
+
+/// How `cagd_convert` names its arguments.
+const CONVERT_NAMES: Names = &[
+    (Role::Control, "G"),
+    (Role::From, "from"),
+    (Role::To, "to"),
+    (Role::Result, "G"),
+];
 
 native!(
     /// `B = cagd_bernstein (n, t)`: the Bernstein polynomials of degree `n` at `t`,
@@ -279,11 +251,157 @@ native!(
 fn bernstein_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     call.nargin(2, 2, "B = cagd_bernstein (n, t [, \"exact\"])")?;
     call.nargout_max(1)?;
-    let n = call.count(0, "n")?;
-    call.check_degree("n", n)?;
-    let t = params::<T>(call, 1, "t")?;
-    call.check_samples("t", t.len())?;
-    call.check_work("t", t.len(), cost::<T>((n + 1) * (n + 1), n + 1))?;
-    let b = cagd::bernstein::basis_matrix(n, &t);
-    emit_matrix(sink, 0, &b.transpose())
+    let op = Bernstein {
+        t: Params::Given(params::<T>(call, 1, "t")?),
+        ..Bernstein::new(call.count(0, "n")?)
+    };
+    let report = execute(call, BERNSTEIN_NAMES, &op)?;
+    // The operation's rows are the parameters; here B(i+1, k) = B_i^n(t(k)).
+    match report.matrix("result") {
+        Some(b) => emit_matrix(sink, 0, &b.transpose()),
+        None => emit_result(sink, 0, &report),
+    }
+}
+
+/// How `cagd_bernstein` names its arguments.
+const BERNSTEIN_NAMES: Names = &[(Role::Degree, "n"), (Role::T, "t"), (Role::Result, "B")];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::value::{Real, VecSink};
+    use cagd::limits::Limits;
+    use cagd_ops::{execute as run_op, Context};
+
+    fn real<'a>(dims: &'a [usize], data: &'a [f64]) -> Value<'a> {
+        Value::Real(Real { dims, data })
+    }
+
+    fn chars<'a>(dims: &'a [usize], text: &'a str) -> Value<'a> {
+        Value::Char {
+            dims,
+            bytes: text.as_bytes(),
+        }
+    }
+
+    /// The words of an operation's error, as every front end prints them after its name.
+    fn words<O: cagd_ops::Operation<f64>>(op: &O) -> String {
+        run_op(op, &mut Context::new(Limits::default()))
+            .unwrap_err()
+            .to_string()
+    }
+
+    #[test]
+    fn bspline_and_nurbs_answer_with_the_operations_words() {
+        let (one, row4, row6) = ([1usize, 1], [1usize, 4], [1usize, 6]);
+        let p = [0.0, 1.0, 2.0, 3.0];
+        let args = [
+            real(&one, &[2.0]),
+            real(&row4, &p),
+            real(&row6, &[0.0, 0.0, 0.0, 1.0, 1.0, 1.0]),
+            real(&one, &[0.5]),
+        ];
+        let call = Call::new("cagd_bspline", &args, 1, Limits::default());
+        let e = bspline(&call, &mut VecSink::default()).unwrap_err();
+        let op = BSpline {
+            degree: Degree::Degree(2),
+            knots: Some(vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0]),
+            t: Params::Given(vec![0.5]),
+            ..BSpline::new(DMatrix::from_row_slice(1, 4, &p))
+        };
+        assert_eq!(e.message, format!("U: {}", words(&op)));
+        assert_eq!(e.identifier(), "cagd:knots");
+        // [] is the clamped uniform vector: 0,0,0,½,1,1,1, so X(½) = 3/2.
+        let empty = [0usize, 0];
+        let three = [1usize, 3];
+        let args = [
+            real(&one, &[2.0]),
+            real(&row4, &p),
+            real(&empty, &[]),
+            real(&three, &[0.0, 0.5, 1.0]),
+        ];
+        let mut sink = VecSink::default();
+        bspline(
+            &Call::new("cagd_bspline", &args, 1, Limits::default()),
+            &mut sink,
+        )
+        .unwrap();
+        assert_eq!(sink.get(0).data(), &[0.0, 1.5, 3.0]);
+        // A zero weight: the weights are checked first, with the request's words.
+        let args = [
+            real(&one, &[2.0]),
+            real(&three, &[0.0, 1.0, 2.0]),
+            real(&three, &[1.0, 0.0, 1.0]),
+            real(&empty, &[]),
+            real(&one, &[0.5]),
+        ];
+        let e = nurbs_curve(
+            &Call::new("cagd_nurbs", &args, 1, Limits::default()),
+            &mut VecSink::default(),
+        )
+        .unwrap_err();
+        assert_eq!(e.identifier(), "cagd:weights");
+        assert!(
+            e.message.starts_with("w: NURBS weights: weight 1 is 0"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn splines_continue_their_end_segments_and_hermite_gives_its_bezier_points() {
+        // The natural spline through 0, 1, 0 at t = 5/2: its last segment continued, -11/16.
+        let (one, three) = ([1usize, 1], [1usize, 3]);
+        let args = [
+            real(&three, &[0.0, 1.0, 0.0]),
+            real(&one, &[2.5]),
+            chars(&[1, 7], "natural"),
+        ];
+        let mut sink = VecSink::default();
+        spline(
+            &Call::new("cagd_spline", &args, 2, Limits::default()),
+            &mut sink,
+        )
+        .unwrap();
+        assert_eq!(sink.get(0).data(), &[-0.6875]);
+        assert_eq!(sink.get(1).data(), &[1.5, 0.0, -1.5]);
+        let col = [2usize, 1];
+        let args = [
+            real(&col, &[0.0, 0.0]),
+            real(&col, &[1.0, 0.0]),
+            real(&col, &[1.0, 1.0]),
+            real(&col, &[1.0, -1.0]),
+            real(&one, &[0.5]),
+        ];
+        let mut sink = VecSink::default();
+        hermite(
+            &Call::new("cagd_hermite", &args, 2, Limits::default()),
+            &mut sink,
+        )
+        .unwrap();
+        assert_eq!(sink.get(0).data(), &[0.5, 0.25]);
+        let third = 1.0 / 3.0;
+        assert_eq!(
+            sink.get(1).data(),
+            &[0.0, 0.0, third, third, 1.0 - third, third, 1.0, 0.0]
+        );
+        // Vectors of different sizes: the four together.
+        let (col3, d3) = ([3usize, 1], [1.0, 0.0, 0.0]);
+        let args = [
+            real(&col, &[0.0, 0.0]),
+            real(&col3, &d3),
+            real(&col, &[1.0, 1.0]),
+            real(&col, &[1.0, 1.0]),
+            real(&one, &[0.5]),
+        ];
+        let e = hermite(
+            &Call::new("cagd_hermite", &args, 1, Limits::default()),
+            &mut VecSink::default(),
+        )
+        .unwrap_err();
+        assert!(
+            e.message
+                .starts_with("p0, p1, t0, t1: Hermite cubic: expected four vectors"),
+            "{e}"
+        );
+    }
 }

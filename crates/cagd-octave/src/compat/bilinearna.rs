@@ -4,6 +4,7 @@ use ndarray::{Array3, ArrayView2};
 
 use super::tenzor;
 use cagd::error::Result;
+use cagd::Scalar;
 
 /// One point of the Bézier patch with the packed net `b`: the twin of the thesis's
 /// `bilinearna` (appendix B, Algoritem 3), as fixed in `octave_ref/fixed/bilinearna.m`.
@@ -47,13 +48,13 @@ use cagd::error::Result;
 /// assert_eq!(l.iter().copied().collect::<Vec<_>>(), vec![0.5, 0.5, 0.5]);
 /// # Ok::<(), cagd::Error>(())
 /// ```
-pub fn bilinearna(b: ArrayView2<'_, f64>, u: f64, v: f64, n: usize) -> Result<Array3<f64>> {
+pub fn bilinearna<T: Scalar>(b: ArrayView2<'_, T>, u: T, v: T, n: usize) -> Result<Array3<T>> {
     let _ = n;
     let patch = crate::arrays::patch_from_array3(&tenzor(b)?)?;
     cagd::error::check_finite("bilinearna parameters u, v", [&u, &v])?;
     let point = patch.eval(u, v);
     Ok(Array3::from_shape_fn((1, 1, point.len()), |(_, _, c)| {
-        point[c]
+        point[c].clone()
     }))
 }
 

@@ -2,7 +2,8 @@
 
 use ndarray::{Array2, ArrayView2};
 
-use super::{check_finite_array, from_dmatrix, to_dmatrix};
+use super::{check_finite_array, from_dmatrix, samples, to_dmatrix};
+use crate::literal::LiteralScalar;
 use cagd::bezier::BezierCurve;
 use cagd::error::Result;
 
@@ -53,14 +54,16 @@ use cagd::error::Result;
 /// assert_eq!(t.column(2).to_vec(), vec![4.0, 0.0, 0.0]);  // b(1) = b3
 /// # Ok::<(), cagd::Error>(())
 /// ```
-pub fn de_casteljau(kontrolne_t: ArrayView2<'_, f64>, n: usize) -> Result<Array2<f64>> {
+pub fn de_casteljau<T: LiteralScalar>(
+    kontrolne_t: ArrayView2<'_, T>,
+    n: usize,
+) -> Result<Array2<T>> {
     check_finite_array("de_casteljau: kontrolneT", &kontrolne_t)?;
     let curve = BezierCurve::new(to_dmatrix(&kontrolne_t))?;
     if n == 0 {
         return Ok(Array2::zeros((curve.dim(), 0)));
     }
-    let t = cagd::linspace::linspace(0.0, 1.0, n);
-    Ok(from_dmatrix(&curve.eval_many(&t)?))
+    Ok(from_dmatrix(&curve.eval_many(&samples::<T>(n))?))
 }
 
 #[cfg(test)]

@@ -2,22 +2,24 @@
 
 use ndarray::{Array2, Array3, ArrayView2};
 
-use super::{check_shape, column_vector, to_dmatrix, untenzor};
+use super::{check_shape, column_vector, samples, to_dmatrix, untenzor};
+use crate::literal::LiteralScalar;
 use cagd::coons::{CoonsPatch, Tolerance};
 use cagd::error::{Error, Result};
 use cagd::param::{SampledCurve, Surface};
+use cagd::Scalar;
 
 /// A patch sampled on `linspace(0,1,N)²`, as returned by [`krpa_coons`] and
 /// [`krpa_gordon`](super::krpa_gordon): the outputs `[R, P]` of the fixed `krpaCoons` and
 /// `krpaGordon`.
 #[derive(Debug, Clone, PartialEq)]
-pub struct SampledPatch {
+pub struct SampledPatch<T: Scalar = f64> {
     /// `R`, `N × 3N`, packed: `R(i, 3j-2:3j)` is the point at `(u, v) = (t(i), t(j))`
     /// (Octave indices), the matrix the thesis code fills.
-    pub r: Array2<f64>,
+    pub r: Array2<T>,
     /// `P = tenzor(R)`, `N × N × 3`: `P[[i, j, c]]` is coordinate `c` of the point at
     /// `(t(i), t(j))` — the data the original drew with `surf`.
-    pub p: Array3<f64>,
+    pub p: Array3<T>,
 }
 
 /// The bilinearly blended Coons patch of four sampled boundary curves on `linspace(0,1,N)²`:
@@ -77,16 +79,16 @@ pub struct SampledPatch {
 /// # Ok::<(), cagd::Error>(())
 /// ```
 #[allow(clippy::too_many_arguments)] // the thesis signature, argument for argument
-pub fn krpa_coons(
-    c1: ArrayView2<'_, f64>,
-    c2: ArrayView2<'_, f64>,
-    d1: ArrayView2<'_, f64>,
-    d2: ArrayView2<'_, f64>,
-    p1: ArrayView2<'_, f64>,
-    p2: ArrayView2<'_, f64>,
-    p3: ArrayView2<'_, f64>,
-    p4: ArrayView2<'_, f64>,
-) -> Result<SampledPatch> {
+pub fn krpa_coons<T: LiteralScalar>(
+    c1: ArrayView2<'_, T>,
+    c2: ArrayView2<'_, T>,
+    d1: ArrayView2<'_, T>,
+    d2: ArrayView2<'_, T>,
+    p1: ArrayView2<'_, T>,
+    p2: ArrayView2<'_, T>,
+    p3: ArrayView2<'_, T>,
+    p4: ArrayView2<'_, T>,
+) -> Result<SampledPatch<T>> {
     let n = c1.ncols();
     let curves = [
         ("krpa_coons: c1", c1.view()),
@@ -110,7 +112,7 @@ pub fn krpa_coons(
         column_vector("krpa_coons: P3", &p3, Some(3))?,
         column_vector("krpa_coons: P4", &p4, Some(3))?,
     ];
-    let t = cagd::linspace::linspace(0.0, 1.0, n);
+    let t = samples::<T>(n);
     let [c1, c2, d1, d2] = curves.map(|(_, c)| SampledCurve::new(t.clone(), to_dmatrix(&c)));
     let patch = CoonsPatch::with_corners(c1?, c2?, d1?, d2?, corners, Tolerance::default())?;
     let p = crate::arrays::to_array3(patch.eval_grid(&t, &t));

@@ -3,9 +3,11 @@
 use ndarray::ArrayView2;
 
 use super::lagrange::node_vector;
-use super::{check_finite_array, check_shape, to_dmatrix, untenzor, PackedNetwork, SampledPatch};
+use super::{
+    check_finite_array, check_shape, samples, to_dmatrix, untenzor, PackedNetwork, SampledPatch,
+};
+use crate::literal::LiteralScalar;
 use cagd::error::{Error, Result};
-use cagd::linspace::linspace;
 use cagd::param::Surface;
 
 /// The Gordon surface of a sampled curve network on `linspace(0,1,N)²`: the twin of the
@@ -88,14 +90,14 @@ use cagd::param::Surface;
 /// assert_eq!(s.r.row(1).to_vec(), vec![0.5, 0.0, 0.5, 0.5, 0.5, 1.0, 0.5, 1.0, 1.5]);
 /// # Ok::<(), cagd::Error>(())
 /// ```
-pub fn krpa_gordon(
-    g_u: ArrayView2<'_, f64>,
-    g_v: ArrayView2<'_, f64>,
-    g_uv: ArrayView2<'_, f64>,
-    x_u: ArrayView2<'_, f64>,
-    x_v: ArrayView2<'_, f64>,
+pub fn krpa_gordon<T: LiteralScalar>(
+    g_u: ArrayView2<'_, T>,
+    g_v: ArrayView2<'_, T>,
+    g_uv: ArrayView2<'_, T>,
+    x_u: ArrayView2<'_, T>,
+    x_v: ArrayView2<'_, T>,
     n: usize,
-) -> Result<SampledPatch> {
+) -> Result<SampledPatch<T>> {
     let u_nodes = node_vector("krpa_gordon: x_u", &x_u)?;
     let v_nodes = node_vector("krpa_gordon: x_v", &x_v)?;
     let (mu, nv) = (u_nodes.len(), v_nodes.len());
@@ -118,9 +120,9 @@ pub fn krpa_gordon(
         &to_dmatrix(&g_uv),
         u_nodes,
         v_nodes,
-        |_, samples| linspace(0.0, 1.0, samples),
+        |_, count| samples::<T>(count),
     )?;
-    let t = linspace(0.0, 1.0, n);
+    let t = samples::<T>(n);
     let p = crate::arrays::to_array3(network.surface()?.eval_grid(&t, &t));
     let r = untenzor(p.view())?;
     Ok(SampledPatch { r, p })

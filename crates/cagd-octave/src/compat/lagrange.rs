@@ -5,6 +5,7 @@ use ndarray::{Array, ArrayView, ArrayView2, Dimension};
 use super::{check_finite_array, shape_str};
 use cagd::error::{Error, Result};
 use cagd::lagrange::{basis_product, check_distinct_nodes};
+use cagd::Scalar;
 
 /// The Lagrange basis polynomial `L_m` of the nodes `x` at every parameter of `u`: the twin of
 /// the thesis's `Lagrange` (appendix D, Algoritem 8), as fixed in `octave_ref/fixed/Lagrange.m`.
@@ -47,11 +48,11 @@ use cagd::lagrange::{basis_product, check_distinct_nodes};
 /// assert_eq!(lagrange(x.view(), 2, u.view())?, array![[0.0, 0.75, 1.0, 0.0]]);
 /// # Ok::<(), cagd::Error>(())
 /// ```
-pub fn lagrange<D: Dimension>(
-    x: ArrayView2<'_, f64>,
+pub fn lagrange<T: Scalar, D: Dimension>(
+    x: ArrayView2<'_, T>,
     m: usize,
-    u: ArrayView<'_, f64, D>,
-) -> Result<Array<f64, D>> {
+    u: ArrayView<'_, T, D>,
+) -> Result<Array<T, D>> {
     let nodes = node_vector("lagrange: x", &x)?;
     if m == 0 || m > nodes.len() {
         return Err(Error::InvalidArgument {
@@ -73,7 +74,7 @@ pub fn lagrange<D: Dimension>(
 
 /// A non-empty row or column of finite, pairwise distinct nodes, in Octave's order (the
 /// library's one node check, [`check_distinct_nodes`]).
-pub(crate) fn node_vector(what: &'static str, x: &ArrayView2<'_, f64>) -> Result<Vec<f64>> {
+pub(crate) fn node_vector<T: Scalar>(what: &'static str, x: &ArrayView2<'_, T>) -> Result<Vec<T>> {
     if x.is_empty() || (x.nrows() != 1 && x.ncols() != 1) {
         return Err(Error::ShapeMismatch {
             what,
@@ -82,7 +83,7 @@ pub(crate) fn node_vector(what: &'static str, x: &ArrayView2<'_, f64>) -> Result
         });
     }
     check_finite_array(what, x)?;
-    let nodes: Vec<f64> = x.iter().copied().collect();
+    let nodes: Vec<T> = x.iter().cloned().collect();
     check_distinct_nodes(what, &nodes, 1)?;
     Ok(nodes)
 }

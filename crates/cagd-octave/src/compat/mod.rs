@@ -8,6 +8,11 @@
 //! to the native types, calls the native API, and converts the result back. None of them holds a
 //! second implementation of the mathematics.
 //!
+//! Every twin is generic over the scalar ([`LiteralScalar`]): in `f64` it gives the numbers of the
+//! fixed Octave code; in exact `BigRational` the same construction without rounding, the samples
+//! `t = linspace(0,1,N)` then exactly `k/(N−1)` ([`samples`]; the Python package's
+//! `cagd.octave` calls the twins this way on `Fraction`s).
+//!
 //! | thesis (Octave) | twin | native function it wraps |
 //! |---|---|---|
 //! | `deCasteljau(kontrolneT, N)` (A, Alg. 1) | [`de_casteljau`] | [`BezierCurve::eval_many`](cagd::bezier::BezierCurve::eval_many) |
@@ -73,6 +78,9 @@ use nalgebra::{DMatrix, DVector};
 use ndarray::{Array2, ArrayView, ArrayView2, Dimension};
 
 use cagd::error::{Error, Result};
+use cagd::Scalar;
+
+use crate::literal::LiteralScalar;
 
 mod bilinearna;
 mod de_casteljau;
@@ -103,30 +111,48 @@ pub(crate) fn shape_str(shape: &[usize]) -> String {
 }
 
 /// Rejects NaN and infinities, reporting the column-major (Octave) index of the first one.
-pub(crate) fn check_finite_array<D: Dimension>(
+pub(crate) fn check_finite_array<T: Scalar, D: Dimension>(
     what: &'static str,
-    a: &ArrayView<'_, f64, D>,
+    a: &ArrayView<'_, T, D>,
 ) -> Result<()> {
     // The reversed view iterated in row-major order visits the original in column-major order.
     cagd::error::check_finite(what, a.view().reversed_axes().iter())
 }
 
 /// The matrix with the same entries (both are `rows × cols`).
-pub(crate) fn to_dmatrix(a: &ArrayView2<'_, f64>) -> DMatrix<f64> {
-    DMatrix::from_fn(a.nrows(), a.ncols(), |i, j| a[[i, j]])
+pub(crate) fn to_dmatrix<T: Scalar>(a: &ArrayView2<'_, T>) -> DMatrix<T> {
+    DMatrix::from_fn(a.nrows(), a.ncols(), |i, j| a[[i, j]].clone())
 }
 
 /// The array with the same entries.
-pub(crate) fn from_dmatrix(m: &DMatrix<f64>) -> Array2<f64> {
-    Array2::from_shape_fn((m.nrows(), m.ncols()), |(i, j)| m[(i, j)])
+pub(crate) fn from_dmatrix<T: Scalar>(m: &DMatrix<T>) -> Array2<T> {
+    Array2::from_shape_fn((m.nrows(), m.ncols()), |(i, j)| m[(i, j)].clone())
+}
+
+/// The thesis's sample parameters `t = linspace(0,1,N)`: in doubles Octave's own points (bit
+/// for bit, [`cagd::linspace::linspace`]), in exact arithmetic `t(k+1) = k/(N−1)` exactly
+/// (`[1]` for `N = 1`, as Octave).
+pub fn samples<T: LiteralScalar>(n: usize) -> Vec<T> {
+    if T::EXACT {
+        let last = n.saturating_sub(1).max(1) as i64;
+        let first = if n == 1 { 1 } else { 0 };
+        (0..n as i64)
+            .map(|k| T::from_ratio(k + first, last))
+            .collect()
+    } else {
+        cagd::linspace::linspace(0.0, 1.0, n)
+            .into_iter()
+            .map(|x| T::from_f64(x).unwrap_or_else(T::zero))
+            .collect()
+    }
 }
 
 /// A `d × 1` column (of dimension `dim` when given) as a vector.
-pub(crate) fn column_vector(
+pub(crate) fn column_vector<T: Scalar>(
     what: &'static str,
-    a: &ArrayView2<'_, f64>,
+    a: &ArrayView2<'_, T>,
     dim: Option<usize>,
-) -> Result<DVector<f64>> {
+) -> Result<DVector<T>> {
     let ok = a.ncols() == 1 && a.nrows() >= 1 && dim.is_none_or(|d| a.nrows() == d);
     if !ok {
         return Err(Error::ShapeMismatch {
@@ -139,13 +165,13 @@ pub(crate) fn column_vector(
         });
     }
     check_finite_array(what, a)?;
-    Ok(DVector::from_iterator(a.nrows(), a.iter().copied()))
+    Ok(DVector::from_iterator(a.nrows(), a.iter().cloned()))
 }
 
 /// Checks that `a` is `rows × cols` (either may be left free with `None`).
-pub(crate) fn check_shape(
+pub(crate) fn check_shape<T>(
     what: &'static str,
-    a: &ArrayView2<'_, f64>,
+    a: &ArrayView2<'_, T>,
     rows: Option<usize>,
     cols: Option<usize>,
 ) -> Result<()> {
@@ -178,6 +204,30 @@ mod tests {
             Err(Error::NonFinite { index, .. }) => assert_eq!(index, 2),
             other => panic!("expected NonFinite, got {other:?}"),
         }
+    }
+
+    #[test]
+    fn exact_samples_are_k_over_n_minus_1() {
+        use num_rational::BigRational;
+        let r = |a: i64, b: i64| BigRational::new(a.into(), b.into());
+        assert_eq!(
+            samples::<BigRational>(4),
+            vec![r(0, 1), r(1, 3), r(2, 3), r(1, 1)]
+        );
+        assert_eq!(samples::<BigRational>(1), vec![r(1, 1)]);
+        assert!(samples::<BigRational>(0).is_empty());
+        assert_eq!(samples::<f64>(11), cagd::linspace::linspace(0.0, 1.0, 11));
+    }
+
+    #[test]
+    fn exact_twin_gives_primer_2_4() {
+        use num_rational::BigRational;
+        let r = |a: i64, b: i64| BigRational::new(a.into(), b.into());
+        let p = Array2::from_shape_fn((3, 4), |(i, j)| {
+            r([[0, 0, 8, 4], [0, 2, 2, 0], [0, 2, 0, 0]][i][j], 1)
+        });
+        let t = de_casteljau(p.view(), 3).unwrap();
+        assert_eq!(t.column(1).to_vec(), vec![r(7, 2), r(3, 2), r(3, 4)]);
     }
 
     #[test]

@@ -2,7 +2,8 @@
 
 use ndarray::{Array3, ArrayView2};
 
-use super::tenzor;
+use super::{samples, tenzor};
+use crate::literal::LiteralScalar;
 use cagd::error::Result;
 
 /// The Bézier patch with the packed net `kontrolne_t` sampled on `linspace(0,1,N)²`: the twin
@@ -45,14 +46,14 @@ use cagd::error::Result;
 /// assert_eq!(p[[1, 2, 2]], 0.5); // z(1/2, 1)
 /// # Ok::<(), cagd::Error>(())
 /// ```
-pub fn ploskev_b(kontrolne_t: ArrayView2<'_, f64>, n: usize) -> Result<Array3<f64>> {
+pub fn ploskev_b<T: LiteralScalar>(kontrolne_t: ArrayView2<'_, T>, n: usize) -> Result<Array3<T>> {
     let patch = crate::arrays::patch_from_array3(&tenzor(kontrolne_t)?)?;
-    let t = cagd::linspace::linspace(0.0, 1.0, n);
-    let mut p = Array3::zeros((n, n, patch.dim()));
-    for (i, &u) in t.iter().enumerate() {
-        for (j, &v) in t.iter().enumerate() {
-            for (c, x) in patch.eval(u, v).iter().enumerate() {
-                p[[i, j, c]] = *x;
+    let t = samples::<T>(n);
+    let mut p = Array3::from_elem((n, n, patch.dim()), T::zero());
+    for (i, u) in t.iter().enumerate() {
+        for (j, v) in t.iter().enumerate() {
+            for (c, x) in patch.eval(u.clone(), v.clone()).iter().enumerate() {
+                p[[i, j, c]] = x.clone();
             }
         }
     }

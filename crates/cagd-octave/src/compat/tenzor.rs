@@ -4,6 +4,7 @@ use ndarray::{Array2, Array3, ArrayView2, ArrayView3};
 
 use super::{check_finite_array, shape_str};
 use cagd::error::{Error, Result};
+use cagd::Scalar;
 
 /// The packed net `B` as an `(m+1) × (n+1) × 3` array: the twin of the thesis's `tenzor`
 /// (appendix B, Algoritem 4), as fixed in `octave_ref/fixed/tenzor.m`.
@@ -44,7 +45,7 @@ use cagd::error::{Error, Result};
 /// assert_eq!(untenzor(a.view())?, b);
 /// # Ok::<(), cagd::Error>(())
 /// ```
-pub fn tenzor(b: ArrayView2<'_, f64>) -> Result<Array3<f64>> {
+pub fn tenzor<T: Scalar>(b: ArrayView2<'_, T>) -> Result<Array3<T>> {
     if b.ncols() % 3 != 0 {
         return Err(Error::ShapeMismatch {
             what: "tenzor: B",
@@ -55,7 +56,7 @@ pub fn tenzor(b: ArrayView2<'_, f64>) -> Result<Array3<f64>> {
     check_finite_array("tenzor: B", &b)?;
     let (rows, points) = (b.nrows(), b.ncols() / 3);
     Ok(Array3::from_shape_fn((rows, points, 3), |(k, l, c)| {
-        b[[k, 3 * l + c]]
+        b[[k, 3 * l + c]].clone()
     }))
 }
 
@@ -74,7 +75,7 @@ pub fn tenzor(b: ArrayView2<'_, f64>) -> Result<Array3<f64>> {
 /// assert_eq!(b.row(1).to_vec(), vec![100.0, 101.0, 102.0, 110.0, 111.0, 112.0]);
 /// # Ok::<(), cagd::Error>(())
 /// ```
-pub fn untenzor(a: ArrayView3<'_, f64>) -> Result<Array2<f64>> {
+pub fn untenzor<T: Scalar>(a: ArrayView3<'_, T>) -> Result<Array2<T>> {
     let (rows, points, d) = a.dim();
     if d != 3 {
         return Err(Error::ShapeMismatch {
@@ -85,7 +86,7 @@ pub fn untenzor(a: ArrayView3<'_, f64>) -> Result<Array2<f64>> {
     }
     check_finite_array("untenzor: A", &a)?;
     Ok(Array2::from_shape_fn((rows, 3 * points), |(k, col)| {
-        a[[k, col / 3, col % 3]]
+        a[[k, col / 3, col % 3]].clone()
     }))
 }
 
@@ -111,11 +112,11 @@ mod tests {
     #[test]
     fn empty_nets_stay_empty() {
         assert_eq!(
-            tenzor(Array2::zeros((0, 6)).view()).unwrap().dim(),
+            tenzor(Array2::<f64>::zeros((0, 6)).view()).unwrap().dim(),
             (0, 2, 3)
         );
         assert_eq!(
-            tenzor(Array2::zeros((2, 0)).view()).unwrap().dim(),
+            tenzor(Array2::<f64>::zeros((2, 0)).view()).unwrap().dim(),
             (2, 0, 3)
         );
     }

@@ -7,19 +7,20 @@ use super::column_vector;
 use cagd::coons::{CoonsPatch, Tolerance};
 use cagd::error::{check_finite, Result};
 use cagd::param::SampledCurve;
+use cagd::Scalar;
 
 /// The point of a Coons patch with its three parts, as returned by [`vrednost_coons`]: the
 /// outputs `[T, rc, rd, rcd]` of the fixed `vrednostCoons`, each a `d × 1` column.
 #[derive(Debug, Clone, PartialEq)]
-pub struct VrednostCoons {
+pub struct VrednostCoons<T: Scalar = f64> {
     /// `T = rc + rd − rcd`, the point `x(u, v)` (Izrek 4.2).
-    pub t: Array2<f64>,
+    pub t: Array2<T>,
     /// `rc = (1−v) c1(u) + v c2(u)`, eq. (4.1).
-    pub rc: Array2<f64>,
+    pub rc: Array2<T>,
     /// `rd = (1−u) d1(v) + u d2(v)`, eq. (4.2).
-    pub rd: Array2<f64>,
+    pub rd: Array2<T>,
     /// `rcd = (1−u)(1−v) P1 + u(1−v) P2 + (1−u)v P3 + uv P4`, eq. (4.3).
-    pub rcd: Array2<f64>,
+    pub rcd: Array2<T>,
 }
 
 /// The point of the bilinearly blended Coons patch at `(u, v)` from the values of its boundary
@@ -78,19 +79,19 @@ pub struct VrednostCoons {
 /// # Ok::<(), cagd::Error>(())
 /// ```
 #[allow(clippy::too_many_arguments)] // the thesis signature, argument for argument
-pub fn vrednost_coons(
-    u: f64,
-    v: f64,
-    c1: ArrayView2<'_, f64>,
-    c2: ArrayView2<'_, f64>,
-    d1: ArrayView2<'_, f64>,
-    d2: ArrayView2<'_, f64>,
-    p1: ArrayView2<'_, f64>,
-    p2: ArrayView2<'_, f64>,
-    p3: ArrayView2<'_, f64>,
-    p4: ArrayView2<'_, f64>,
-) -> Result<VrednostCoons> {
-    check_finite("vrednost_coons: u, v", [u, v].iter())?;
+pub fn vrednost_coons<T: Scalar>(
+    u: T,
+    v: T,
+    c1: ArrayView2<'_, T>,
+    c2: ArrayView2<'_, T>,
+    d1: ArrayView2<'_, T>,
+    d2: ArrayView2<'_, T>,
+    p1: ArrayView2<'_, T>,
+    p2: ArrayView2<'_, T>,
+    p3: ArrayView2<'_, T>,
+    p4: ArrayView2<'_, T>,
+) -> Result<VrednostCoons<T>> {
+    check_finite("vrednost_coons: u, v", [&u, &v])?;
     let c1 = column_vector("vrednost_coons: c1", &c1, None)?;
     let dim = Some(c1.len());
     let c2 = column_vector("vrednost_coons: c2", &c2, dim)?;
@@ -104,15 +105,15 @@ pub fn vrednost_coons(
     ];
     let [q1, q2, q3, q4] = &corners;
     let patch = CoonsPatch::with_corners(
-        through(q1, u, &c1, q2)?,
-        through(q3, u, &c2, q4)?,
-        through(q1, v, &d1, q3)?,
-        through(q2, v, &d2, q4)?,
+        through(q1, &u, &c1, q2)?,
+        through(q3, &u, &c2, q4)?,
+        through(q1, &v, &d1, q3)?,
+        through(q2, &v, &d2, q4)?,
         corners.clone(),
         Tolerance::default(),
     )?;
     let point = patch.eval_parts(u, v);
-    let column = |x: &DVector<f64>| Array2::from_shape_fn((x.len(), 1), |(i, _)| x[i]);
+    let column = |x: &DVector<T>| Array2::from_shape_fn((x.len(), 1), |(i, _)| x[i].clone());
     Ok(VrednostCoons {
         t: column(&point.x),
         rc: column(&point.rc),
@@ -125,23 +126,24 @@ pub fn vrednost_coons(
 /// (at 1): a [`SampledCurve`] through those points, which returns each of them exactly (its
 /// domain stays `[0, 1]` when `t` lies outside). When `t` is 0 or 1 the value given at `t`
 /// stands for that end (the corner check then compares it with the corner).
-fn through(
-    start: &DVector<f64>,
-    t: f64,
-    at_t: &DVector<f64>,
-    end: &DVector<f64>,
-) -> Result<SampledCurve> {
-    let mut points: Vec<(f64, &DVector<f64>)> = vec![(t, at_t)];
-    if t != 0.0 {
-        points.push((0.0, start));
+fn through<T: Scalar>(
+    start: &DVector<T>,
+    t: &T,
+    at_t: &DVector<T>,
+    end: &DVector<T>,
+) -> Result<SampledCurve<T>> {
+    let mut points: Vec<(T, &DVector<T>)> = vec![(t.clone(), at_t)];
+    if !t.is_zero() {
+        points.push((T::zero(), start));
     }
-    if t != 1.0 {
-        points.push((1.0, end));
+    if !t.is_one() {
+        points.push((T::one(), end));
     }
-    points.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let params = points.iter().map(|(s, _)| *s).collect();
-    let columns: Vec<DVector<f64>> = points.iter().map(|(_, p)| (*p).clone()).collect();
-    SampledCurve::new(params, DMatrix::from_columns(&columns))?.with_domain(0.0, 1.0)
+    // The parameters are finite (checked above): they compare.
+    points.sort_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal));
+    let params = points.iter().map(|(s, _)| s.clone()).collect();
+    let columns: Vec<DVector<T>> = points.iter().map(|(_, p)| (*p).clone()).collect();
+    SampledCurve::new(params, DMatrix::from_columns(&columns))?.with_domain(T::zero(), T::one())
 }
 
 #[cfg(test)]

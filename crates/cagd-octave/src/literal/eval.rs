@@ -50,7 +50,7 @@ fn unknown_name(name: &str, at: Position, is_call: bool) -> LiteralError {
 }
 
 /// Calls `f` on every node of the tree (pre-order).
-fn walk<'e>(e: &'e Expr, f: &mut dyn FnMut(&'e Expr)) {
+pub(crate) fn walk<'e>(e: &'e Expr, f: &mut dyn FnMut(&'e Expr)) {
     f(e);
     match &e.node {
         Node::Number { .. } | Node::Var(_) | Node::Colon => {}

@@ -16,7 +16,8 @@
 //!   `cos`, `tan`, `sqrt`, `exp`, `log`, `abs`, the constants `pi` and `e`, and the builtins
 //!   `linspace`, `zeros`, `ones`, `numel`, `length`, `size`. A [`ParamExpr`] is evaluated once
 //!   per sample, so `u^2` is the square of the sample (what the author meant), not a matrix
-//!   power.
+//!   power. [`ParamExpr::derivative`] differentiates one symbolically (`d/du [u; 0; u-u^2]`
+//!   is `[1; 0; 1 - 2 .* u .* 1]`), exact wherever the expression is rational.
 //!
 //! Evaluation is generic over [`LiteralScalar`]: in `f64`, or in exact rationals
 //! ([`BigRational`](num_rational::BigRational)), where the decimal `0.2` is exactly 1/5 (via
@@ -51,6 +52,7 @@
 //! assert_eq!(p.as_slice(), &[0.5, 0.0, 0.25]);
 //! ```
 
+mod derivative;
 mod env;
 mod error;
 pub(crate) mod eval;

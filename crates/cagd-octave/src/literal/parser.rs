@@ -507,7 +507,8 @@ impl<'t> Parser<'t> {
     }
 }
 
-fn chain(first: Expr, rest: Vec<(BinOp, Position, Expr)>) -> Expr {
+/// `first op₁ x₁ op₂ x₂ …` as one flat chain (just `first` without operators).
+pub(crate) fn chain(first: Expr, rest: Vec<(BinOp, Position, Expr)>) -> Expr {
     if rest.is_empty() {
         return first;
     }

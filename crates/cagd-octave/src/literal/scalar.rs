@@ -70,9 +70,6 @@ pub enum PowerError {
 
 /// A number type the evaluator works in: `f64` (as Octave) or [`BigRational`] (exact).
 pub trait LiteralScalar: Scalar {
-    /// Whether arithmetic is exact (no rounding).
-    const EXACT: bool;
-
     /// Whether an exact number has grown too large to compute with in reasonable time
     /// (numerator and denominator together longer than [`MAX_EXACT_BITS`]); never for `f64`.
     fn is_oversized(&self) -> bool {
@@ -87,13 +84,6 @@ pub trait LiteralScalar: Scalar {
     /// while charged as a few thousand operations).
     fn words(&self) -> u128 {
         1
-    }
-
-    /// The length of the number in bits, numerator and denominator together (exact numbers;
-    /// 0 for `f64`, whose cost does not depend on the value). Estimates of exact work weigh
-    /// each operation by the size its numbers reach ([`cagd::limits::exact_op_cost`]).
-    fn bits(&self) -> u128 {
-        0
     }
 
     /// The value of a decimal literal (`text` as lexed; `nearest` its nearest double).
@@ -134,8 +124,6 @@ pub trait LiteralScalar: Scalar {
 }
 
 impl LiteralScalar for f64 {
-    const EXACT: bool = false;
-
     fn from_literal(_text: &str, nearest: f64) -> Option<Self> {
         nearest.is_finite().then_some(nearest)
     }
@@ -199,18 +187,12 @@ impl LiteralScalar for f64 {
 pub const MAX_EXACT_BITS: u64 = 1 << 12;
 
 impl LiteralScalar for BigRational {
-    const EXACT: bool = true;
-
     fn is_oversized(&self) -> bool {
         self.numer().bits() + self.denom().bits() > MAX_EXACT_BITS
     }
 
     fn words(&self) -> u128 {
         self.bits().div_ceil(64).max(1)
-    }
-
-    fn bits(&self) -> u128 {
-        u128::from(self.numer().bits() + self.denom().bits())
     }
 
     fn from_literal(text: &str, _nearest: f64) -> Option<Self> {

@@ -3,6 +3,7 @@
 //! fixed Octave code, the bug catalogue of the printed code.
 
 mod bug_catalogue;
+mod derivative;
 mod differential;
 mod hostile;
 mod literal;

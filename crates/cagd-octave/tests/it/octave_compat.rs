@@ -283,7 +283,7 @@ fn bezier_twins_reject_bad_input() {
         Err(Error::NonFinite { index: 1, .. })
     ));
     assert!(matches!(
-        compat::de_casteljau(Array2::zeros((0, 3)).view(), 3),
+        compat::de_casteljau(Array2::<f64>::zeros((0, 3)).view(), 3),
         Err(Error::ShapeMismatch { .. })
     ));
     let inf = array![[0.0, 1.0, f64::INFINITY]];
@@ -296,7 +296,7 @@ fn bezier_twins_reject_bad_input() {
         Err(Error::NonFinite { .. })
     ));
     assert!(matches!(
-        compat::untenzor(Array3::zeros((2, 2, 4)).view()),
+        compat::untenzor(Array3::<f64>::zeros((2, 2, 4)).view()),
         Err(Error::ShapeMismatch { .. })
     ));
     assert!(compat::linspace(0.0, f64::NAN, 4).is_err());

@@ -1,0 +1,82 @@
+//! `cagd bspline`: points of a B-spline curve by de Boor's algorithm.
+
+use cagd_octave::literal::LiteralScalar;
+use cagd_ops::ops::BSpline;
+use clap::Args;
+
+use super::answer::{respond, Destinations};
+use super::cx::Cx;
+use super::read::{curve_params, points};
+use super::run::{Names, Run};
+use super::spline_args::{degree, values};
+use crate::args::{CurveParamArgs, OutputArgs, PlotArgs, RowsArgs, StepsArgs};
+use crate::{CliError, Outcome};
+
+/// A B-spline curve by de Boor's algorithm (the CAD notes and the lecture notes).
+#[derive(Debug, Args)]
+#[command(after_help = "\
+Input: n control points as columns (rows with --rows), --degree p (default 3, cubic) or
+--order k = p + 1 (as the lecture notes count), --knots: n + p + 1 non-decreasing values
+(default clamped uniform on [0, 1]). The curve is defined on [u_p, u_n]; --n samples it.
+Layout: result d×k at the parameters; --steps prints the basis functions N_i,p(t) (k×n) and
+the de Boor scheme of each t (span, α's and levels d0..dp).
+
+Example:
+  cagd bspline \"[0 0; 1 2; 3 2; 4 0]'\" --degree 2 --knots \"[0 0 0 0.5 1 1 1]\" --t 0.25 --steps --exact")]
+#[command(mut_arg("n", |a| a.help("Sample the knot domain [u_p, u_n] (not [0, 1]) at N equally spaced parameters")))]
+pub struct BSplineCommand {
+    /// Control points, one per column.
+    #[arg(value_name = "CONTROL", allow_hyphen_values = true)]
+    pub control: String,
+    /// The degree p (default 3).
+    #[arg(long, value_name = "P")]
+    pub degree: Option<usize>,
+    /// The order k = p + 1 instead of the degree (the lecture notes count B-splines by order).
+    #[arg(long, value_name = "K")]
+    pub order: Option<usize>,
+    /// The knot vector: n + p + 1 non-decreasing values for n control points; default clamped
+    /// uniform on [0, 1].
+    #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
+    pub knots: Option<String>,
+    #[command(flatten)]
+    pub params: CurveParamArgs,
+    #[command(flatten)]
+    pub rows: RowsArgs,
+    #[command(flatten)]
+    pub steps: StepsArgs,
+    #[command(flatten)]
+    pub output: OutputArgs,
+    #[command(flatten)]
+    pub plot: PlotArgs,
+}
+
+/// The names of this command's arguments.
+const NAMES: Names = Names {
+    command: "bspline",
+    input: "CONTROL",
+    special: &[],
+};
+
+impl Run for BSplineCommand {
+    fn exact(&self) -> bool {
+        self.output.exact
+    }
+
+    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
+        let op: BSpline<T> = BSpline {
+            control: points(cx, "CONTROL", &self.control, None, self.rows.rows)?,
+            degree: degree(&NAMES, self.degree, self.order)?,
+            knots: values(cx, "--knots", &self.knots)?,
+            t: curve_params(cx, &self.params)?,
+            basis: false,
+            steps: self.steps.steps,
+            drawing: self.plot.plot.is_some(),
+        };
+        let to = Destinations {
+            output: &self.output,
+            plot: self.plot.plot.as_deref(),
+            mesh: None,
+        };
+        respond(cx, &NAMES, &op, to)
+    }
+}

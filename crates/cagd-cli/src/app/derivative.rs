@@ -1,0 +1,80 @@
+//! `cagd derivative`: the control points (and values) of a derivative of a Bézier curve.
+
+use cagd_octave::literal::LiteralScalar;
+use cagd_ops::ops::Derivative;
+use cagd_ops::Params;
+use clap::Args;
+
+use super::answer::{respond, Destinations};
+use super::cx::Cx;
+use super::read::{given_or_samples, points};
+use super::run::{Names, Run};
+use crate::args::{OutputArgs, PlotArgs, RowsArgs, ScriptArgs};
+use crate::{CliError, Outcome};
+
+/// Control points (and values) of the r-th derivative of a Bézier curve.
+#[derive(Debug, Args)]
+#[command(after_help = "\
+Layout: control is d×(n-r+1), the points n!/(n-r)! Δ^r b_i as columns; with --t, result is d×k.
+
+Example:
+  cagd derivative \"[0 0 0; 0 2 2; 8 2 0; 4 0 0]'\" --order 1 --t 0.5 --exact")]
+pub struct DerivativeCommand {
+    /// Control points of the curve (columns), as for decasteljau.
+    #[arg(value_name = "CONTROL", allow_hyphen_values = true)]
+    pub control: String,
+    /// The order r of the derivative.
+    #[arg(long, short = 'r', value_name = "R", default_value_t = 1)]
+    pub order: usize,
+    /// Also the values of the derivative at these parameters.
+    #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
+    pub t: Option<String>,
+    #[command(flatten)]
+    pub rows: RowsArgs,
+    #[command(flatten)]
+    pub script: ScriptArgs,
+    #[command(flatten)]
+    pub output: OutputArgs,
+    #[command(flatten)]
+    pub plot: PlotArgs,
+}
+
+/// The names of this command's arguments.
+const NAMES: Names = Names {
+    command: "derivative",
+    input: "CONTROL",
+    special: &[],
+};
+
+impl Run for DerivativeCommand {
+    fn exact(&self) -> bool {
+        self.output.exact
+    }
+
+    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
+        let script = cx.script::<T>(&self.script, None)?;
+        let control = points(
+            cx,
+            "CONTROL",
+            &self.control,
+            script.as_ref(),
+            self.rows.rows,
+        )?;
+        let t = match &self.t {
+            Some(_) => Some(given_or_samples(cx, "--t", &self.t, None)?),
+            None => None::<Params<T>>,
+        };
+        let op = Derivative::<T> {
+            control,
+            order: self.order,
+            t,
+            drawing: self.plot.plot.is_some(),
+        };
+        let to = Destinations {
+            output: &self.output,
+            plot: self.plot.plot.as_deref(),
+            mesh: None,
+        };
+        respond(cx, &NAMES, &op, to).map(|o| o.with_script_warnings(&self.script, script.as_ref()))
+    }
+}

@@ -1,0 +1,64 @@
+//! The package's way into the operation layer ([`cagd_ops`]): a native function translates
+//! its Octave arguments into a request, runs it here, and writes the answer's items as its
+//! outputs. Checks, their wording and the work estimates are the operation's; the package
+//! names each role as its function's usage does (`P`, `U`, `t`).
+
+use cagd_ops::{OpError, Operation, Report, Role};
+
+use crate::args::Call;
+use crate::error::{Kind, PkgError, Result};
+use crate::number::Number;
+
+/// How a function names the roles of its operation: `(role, Octave name)`.
+pub type Names = &'static [(Role, &'static str)];
+
+/// Runs `op` within the call's limits and returns its report (checked finite).
+///
+/// # Errors
+/// The operation's error, named as `names` say.
+pub fn execute<T: Number, O: Operation<T> + ?Sized>(
+    call: &Call<'_, '_>,
+    names: Names,
+    op: &O,
+) -> Result<Report<T>> {
+    let mut cx = cagd_ops::Context::new(call.limits);
+    cagd_ops::execute(op, &mut cx)
+        .map(|answer| answer.report)
+        .map_err(|e| op_error(names, e))
+}
+
+/// The kind of an operation's error in the package's identifiers.
+pub fn kind_of(kind: cagd_ops::Kind) -> Kind {
+    use cagd_ops::Kind as K;
+    match kind {
+        K::Shape => Kind::Shape,
+        K::NonFinite | K::Overflow => Kind::NonFinite,
+        K::Domain => Kind::Domain,
+        K::Knots => Kind::Knots,
+        K::Weights => Kind::Weights,
+        K::Nodes => Kind::Nodes,
+        K::Corners => Kind::Corners,
+        K::Network => Kind::Network,
+        K::Singular => Kind::Singular,
+        K::Limit => Kind::Limit,
+        K::Internal => Kind::Internal,
+        _ => Kind::Value,
+    }
+}
+
+/// An operation's error as the package raises it: `ARGUMENT: PROBLEM; expected FORM`, the
+/// argument named as the function's usage names it, a limit with the call that raises it.
+pub fn op_error(names: Names, e: OpError) -> PkgError {
+    let name = names
+        .iter()
+        .find(|(r, _)| *r == e.role)
+        .map_or_else(|| e.role.key(), |(_, n)| *n);
+    let mut problem = e.problem;
+    if let Some(limit) = e.limit {
+        problem = format!(
+            "{problem} (raise it with cagd_limits (\"{}\", VALUE))",
+            limit.field()
+        );
+    }
+    PkgError::arg(kind_of(e.kind), name, problem, &e.expected)
+}

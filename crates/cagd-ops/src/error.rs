@@ -1,0 +1,242 @@
+//! The one error of the operation layer: which role, what kind, what was wrong and what was
+//! expected, worded once for every front end.
+
+use cagd::limits::Limit;
+
+use crate::Role;
+
+/// The kind of an error: the part after `cagd:` in an Octave identifier, the kind a Python
+/// `CagdError` carries, the class of a command-line refusal.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Kind {
+    /// A size or count that does not fit: too few points, mismatched shapes, an empty list.
+    Shape,
+    /// NaN or ±Inf in an argument.
+    NonFinite,
+    /// A value that is not allowed: an unknown option word, a derivative order above the
+    /// degree, a condition the construction states.
+    Value,
+    /// A parameter outside the domain of a curve or surface.
+    Domain,
+    /// A knot vector that decreases or has the wrong length.
+    Knots,
+    /// A NURBS weight that is zero or negative.
+    Weights,
+    /// Interpolation nodes that repeat or do not increase.
+    Nodes,
+    /// Boundary curves that do not meet at the corners (or tangents that disagree there).
+    Corners,
+    /// A Gordon network whose curves do not cross where they should.
+    Network,
+    /// A singular linear system.
+    Singular,
+    /// Work or a size above a resource limit ([`OpError::limit`] says which).
+    Limit,
+    /// A result whose value overflows the range of doubles.
+    Overflow,
+    /// Arguments that do not fit together (an option that has no effect, a conflict).
+    Usage,
+    /// The computation was interrupted by the user.
+    Interrupted,
+    /// A fault of the program itself.
+    Internal,
+}
+
+impl Kind {
+    /// Every kind.
+    pub const ALL: [Kind; 15] = [
+        Kind::Shape,
+        Kind::NonFinite,
+        Kind::Value,
+        Kind::Domain,
+        Kind::Knots,
+        Kind::Weights,
+        Kind::Nodes,
+        Kind::Corners,
+        Kind::Network,
+        Kind::Singular,
+        Kind::Limit,
+        Kind::Overflow,
+        Kind::Usage,
+        Kind::Interrupted,
+        Kind::Internal,
+    ];
+
+    /// The kind's name (`"knots"`): Octave's `cagd:knots`, Python's `CagdError.kind`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::Shape => "shape",
+            Kind::NonFinite => "nonfinite",
+            Kind::Value => "value",
+            Kind::Domain => "domain",
+            Kind::Knots => "knots",
+            Kind::Weights => "weights",
+            Kind::Nodes => "nodes",
+            Kind::Corners => "corners",
+            Kind::Network => "network",
+            Kind::Singular => "singular",
+            Kind::Limit => "limit",
+            Kind::Overflow => "overflow",
+            Kind::Usage => "usage",
+            Kind::Interrupted => "interrupted",
+            Kind::Internal => "internal",
+        }
+    }
+
+    /// The kind of a library error.
+    pub fn of(error: &cagd::Error) -> Kind {
+        use cagd::Error as E;
+        match error {
+            E::TooFewPoints { .. }
+            | E::ShapeMismatch { .. }
+            | E::EmptyGrid { .. }
+            | E::TooFewControlPoints { .. }
+            | E::TooFewCurves { .. } => Kind::Shape,
+            E::NonFinite { .. } => Kind::NonFinite,
+            E::ParameterOutOfRange { .. } => Kind::Domain,
+            E::DecreasingKnots { .. } | E::KnotCount { .. } => Kind::Knots,
+            E::NonPositiveWeight { .. } => Kind::Weights,
+            E::DuplicateNodes { .. } | E::UnsortedNodes { .. } => Kind::Nodes,
+            E::CornerMismatch { .. } => Kind::Corners,
+            E::NetworkMismatch { .. } => Kind::Network,
+            E::Singular { .. } | E::SingularMask { .. } => Kind::Singular,
+            E::TooLarge { .. } => Kind::Limit,
+            _ => Kind::Value,
+        }
+    }
+}
+
+/// An error of a construction: `problem; expected form`, about the argument in `role`.
+///
+/// A front end prints it after its own name of the role: the command line
+/// `cagd: error: --knots: PROBLEM; expected FORM`, Octave `cagd_bspline: U: PROBLEM; expected
+/// FORM` with the identifier `cagd:<kind>`, the page beside the field. The words after the
+/// name are the same everywhere. For a [`Kind::Limit`] error [`limit`](Self::limit) names the
+/// limit, which each front end tells how to raise in its own terms.
+///
+/// ```
+/// use cagd_ops::{Kind, OpError, Role};
+/// let e = OpError::new(Role::Samples, Kind::Shape, "N = 1 is too small", "an integer N ≥ 2");
+/// assert_eq!(e.to_string(), "N = 1 is too small; expected an integer N ≥ 2");
+/// ```
+#[derive(Debug, Clone, thiserror::Error)]
+#[error("{problem}; expected {expected}")]
+pub struct OpError {
+    /// The role of the argument the error is about.
+    pub role: Role,
+    /// The kind.
+    pub kind: Kind,
+    /// What was wrong, one line.
+    pub problem: String,
+    /// The form that would have been accepted, one line.
+    pub expected: String,
+    /// The resource limit a [`Kind::Limit`] error is about.
+    pub limit: Option<Limit>,
+    /// The library error underneath, if any.
+    pub source: Option<Box<cagd::Error>>,
+    /// A front end's own error underneath (an expression that did not evaluate), which the
+    /// front end may recognise again; opaque here.
+    pub cause: Option<std::sync::Arc<dyn std::error::Error + Send + Sync>>,
+}
+
+impl PartialEq for OpError {
+    /// Equal roles, kinds, words, limits and library errors (a front end's cause is compared
+    /// by its text).
+    fn eq(&self, other: &Self) -> bool {
+        let cause = |e: &OpError| e.cause.as_ref().map(|c| c.to_string());
+        self.role == other.role
+            && self.kind == other.kind
+            && self.problem == other.problem
+            && self.expected == other.expected
+            && self.limit == other.limit
+            && self.source == other.source
+            && cause(self) == cause(other)
+    }
+}
+
+impl OpError {
+    /// An error about `role`.
+    pub fn new(
+        role: Role,
+        kind: Kind,
+        problem: impl Into<String>,
+        expected: impl Into<String>,
+    ) -> Self {
+        OpError {
+            role,
+            kind,
+            problem: one_line(&problem.into()),
+            expected: one_line(&expected.into()),
+            limit: None,
+            source: None,
+            cause: None,
+        }
+    }
+
+    /// The same error with a front end's own error as its cause.
+    pub fn caused_by(self, cause: impl std::error::Error + Send + Sync + 'static) -> Self {
+        OpError {
+            cause: Some(std::sync::Arc::new(cause)),
+            ..self
+        }
+    }
+
+    /// A library error about `role`, with the form that would have been accepted. A limit
+    /// error keeps its [`Limit`]; its problem reads `WHAT: REQUESTED exceeds the limit of
+    /// LIMIT`.
+    pub fn library(role: Role, error: cagd::Error, expected: &str) -> Self {
+        let (problem, limit) = match &error {
+            cagd::Error::TooLarge {
+                what,
+                requested,
+                limit,
+                which,
+            } => (
+                format!("{what}: {requested} exceeds the limit of {limit}"),
+                Some(*which),
+            ),
+            other => (other.to_string(), None),
+        };
+        OpError {
+            limit,
+            source: Some(Box::new(error.clone())),
+            ..OpError::new(role, Kind::of(&error), problem, expected)
+        }
+    }
+
+    /// The same error about another role.
+    pub fn about(self, role: Role) -> Self {
+        OpError { role, ..self }
+    }
+}
+
+/// `|e| OpError::library(role, e, expected)`, for `map_err`.
+pub fn lib(role: Role, expected: &str) -> impl Fn(cagd::Error) -> OpError + '_ {
+    move |e| OpError::library(role, e, expected)
+}
+
+/// One line: runs of white space (line breaks among them) become one space, and control
+/// characters are shown escaped (`\u{1b}`), so that quoted input cannot break a message or
+/// send a terminal escape.
+///
+/// ```
+/// assert_eq!(cagd_ops::error::one_line("a\n  b\u{7}"), "a b\\u{7}");
+/// ```
+pub fn one_line(s: &str) -> String {
+    s.split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ")
+        .chars()
+        .flat_map(|c| {
+            if c.is_control() {
+                c.escape_unicode().collect::<Vec<_>>()
+            } else {
+                vec![c]
+            }
+        })
+        .collect()
+}
+
+/// The operation layer's result type.
+pub type Result<T, E = OpError> = std::result::Result<T, E>;

@@ -1,0 +1,3 @@
+//! Step layouts shared by several constructions.
+
+pub mod scheme;

@@ -1,0 +1,188 @@
+//! `bernstein`: the Bernstein polynomials of degree `n` (thesis (2.1)),
+//!
+//! `B_i^n(t) = C(n, i) t^i (1 − t)^(n−i)`,  `i = 0, …, n`,
+//!
+//! by the triangular recurrence `B_i^n = (1 − t) B_i^{n−1} + t B_{i−1}^{n−1}` (thesis (2.3)).
+//!
+//! ```
+//! use cagd_ops::{execute, ops::Bernstein, Context, Params};
+//! use num_rational::BigRational;
+//! // B_0^3(1/2) … B_3^3(1/2) = 1/8, 3/8, 3/8, 1/8.
+//! let op = Bernstein::<BigRational> {
+//!     t: Params::Given(vec![BigRational::new(1.into(), 2.into())]),
+//!     ..Bernstein::new(3)
+//! };
+//! let answer = execute(&op, &mut Context::new(cagd::Limits::default()))?;
+//! let b: Vec<String> = answer.report.matrix("result").unwrap().iter().map(|x| x.to_string()).collect();
+//! assert_eq!(b, ["1/8", "3/8", "3/8", "1/8"]);
+//! # Ok::<(), cagd_ops::OpError>(())
+//! ```
+
+use cagd::bernstein::{basis_cost, basis_matrix};
+use cagd::cost::max_bits;
+use cagd::Scalar;
+use nalgebra::DMatrix;
+
+use crate::drawing::{Colour, Drawing};
+use crate::error::{lib, Kind, OpError, Result};
+use crate::{Answer, Context, Operation, Params, Report, Role, Value};
+
+/// Samples of `[0, 1]` in the picture of the polynomials.
+const PICTURE_SAMPLES: usize = 201;
+
+/// The Bernstein polynomials of one degree at some parameters.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Bernstein<T> {
+    /// The degree `n`.
+    pub degree: usize,
+    /// Only `B_i^n` (else all of `B_0^n … B_n^n`).
+    pub index: Option<usize>,
+    /// The parameters (samples cover `[0, 1]`).
+    pub t: Params<T>,
+    /// A picture: the polynomials over `[0, 1]`, each as the plane curve `(t, B_i^n(t))`.
+    pub drawing: bool,
+}
+
+impl<T> Bernstein<T> {
+    /// All polynomials of degree `degree` at the default parameters.
+    pub fn new(degree: usize) -> Self {
+        Bernstein {
+            degree,
+            index: None,
+            t: Params::Default,
+            drawing: false,
+        }
+    }
+}
+
+impl<T: Scalar> Operation<T> for Bernstein<T> {
+    /// `t` (`k × 1`) and `result` (`k × (n+1)`, row = parameter, column = `B_0^n … B_n^n`; or
+    /// `k × 1` for one index).
+    fn run(&self, cx: &mut Context) -> Result<Answer<T>> {
+        let n = self.degree;
+        cx.check_degree(Role::Degree, n)?;
+        if let Some(i) = self.index.filter(|&i| i > n) {
+            return Err(OpError::new(
+                Role::Index,
+                Kind::Shape,
+                format!("i = {i} exceeds the degree {n}"),
+                "an index 0 ≤ i ≤ n",
+            ));
+        }
+        let unit = (&T::zero(), &T::one());
+        let ts = self
+            .t
+            .resolve(Role::T, unit, "the polynomials are extrapolated there", cx)?;
+        let picture = if self.drawing { PICTURE_SAMPLES } else { 0 };
+        let cost = basis_cost(n, max_bits(&ts)).times(ts.len() as u128 + picture as u128);
+        cx.check_cost(Role::T, cost, T::EXACT)?;
+        cx.check_interrupt()?;
+        let all = basis_matrix(n, &ts);
+        let result = match self.index {
+            Some(i) => all.columns(i, 1).into_owned(),
+            None => all,
+        };
+        let mut report = Report::new();
+        report.push(
+            "t",
+            Value::Matrix(DMatrix::from_column_slice(ts.len(), 1, &ts)),
+        );
+        report.push("result", Value::Matrix(result));
+        let drawing = if self.drawing {
+            Some(self.picture()?)
+        } else {
+            None
+        };
+        Ok(Answer {
+            report,
+            drawing,
+            mesh: None,
+        })
+    }
+}
+
+impl<T: Scalar> Bernstein<T> {
+    /// The polynomials over `[0, 1]`, each as the plane curve `(t, B_i^n(t))`.
+    fn picture(&self) -> Result<Drawing> {
+        let n = self.degree;
+        let dense = cagd::linspace::linspace_in(&T::zero(), &T::one(), PICTURE_SAMPLES)
+            .map_err(lib(Role::T, "a picture"))?;
+        let shown: Vec<usize> = match self.index {
+            Some(i) => vec![i],
+            None => (0..=n).collect(),
+        };
+        let values = basis_matrix(n, &dense).select_columns(&shown);
+        let title = format!("Bernstein polynomials of degree {n}");
+        Ok(graphs(Drawing::new(title), &dense, &values, &shown, |i| {
+            format!("B_{i}^{n}")
+        }))
+    }
+}
+
+/// The graphs `(t, f_k(t))` of the columns of `values` (one per function, at `ts`), coloured in
+/// turn; up to six labelled `label(index)` one by one, more by one label for all.
+pub(super) fn graphs<T: Scalar>(
+    mut drawing: Drawing,
+    ts: &[T],
+    values: &DMatrix<T>,
+    indices: &[usize],
+    label: impl Fn(&str) -> String,
+) -> Drawing {
+    let colours = [
+        Colour::Blue,
+        Colour::Red,
+        Colour::Green,
+        Colour::Orange,
+        Colour::Purple,
+        Colour::Black,
+    ];
+    let last = indices.last().copied().unwrap_or(0);
+    for (k, &i) in indices.iter().enumerate() {
+        let line = DMatrix::from_fn(2, ts.len(), |r, c| {
+            if r == 0 {
+                ts[c].to_f64()
+            } else {
+                values[(c, k)].to_f64()
+            }
+        });
+        let text = match (indices.len() <= 6, k) {
+            (true, _) => label(&i.to_string()),
+            (false, 0) => format!("{}, i = 0..{last}", label("i")),
+            _ => String::new(),
+        };
+        drawing = drawing.curve(line, colours[k % colours.len()], text);
+    }
+    drawing
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::execute;
+    use num_rational::BigRational;
+
+    #[test]
+    fn one_polynomial_and_an_index_above_the_degree() {
+        // B_1^3(1/3) = 3 · 1/3 · (2/3)² = 4/9.
+        let op = Bernstein {
+            index: Some(1),
+            t: Params::Given(vec![BigRational::new(1.into(), 3.into())]),
+            ..Bernstein::new(3)
+        };
+        let mut cx = Context::new(cagd::Limits::default());
+        let answer = execute(&op, &mut cx).unwrap();
+        assert_eq!(
+            answer.report.matrix("result").unwrap()[0],
+            BigRational::new(4.into(), 9.into())
+        );
+        let e = execute(
+            &Bernstein {
+                index: Some(4),
+                ..op
+            },
+            &mut cx,
+        )
+        .unwrap_err();
+        assert_eq!((e.role, e.kind), (Role::Index, Kind::Shape));
+    }
+}

@@ -1,0 +1,198 @@
+//! `bspline-basis`: the B-spline basis functions `N_{i,p}(u)` of a knot vector alone (the CAD
+//! notes §1.2, the lecture notes), with the Cox–de Boor triangle as steps:
+//!
+//! `N_{i,0}(u) = 1` if `u_i ≤ u < u_{i+1}`, else 0;
+//! `N_{i,j}(u) = (u − u_i)/(u_{i+j} − u_i) N_{i,j−1}(u) + (u_{i+j+1} − u)/(u_{i+j+1} − u_{i+1}) N_{i+1,j−1}(u)`.
+//!
+//! Every `N_{i,p}` lives on `[u_i, u_{i+p+1}]`: the values are taken over the whole knot range
+//! `[u_0, u_m]`, not only the domain `[u_p, u_n]` of a spline. The degree and the knots follow
+//! the one convention of [`crate::knots`].
+
+use cagd::bspline::{cox_de_boor_triangle, triangle_cost};
+use cagd::cost::max_bits;
+use cagd::Scalar;
+use nalgebra::DMatrix;
+
+use super::bspline::step_name;
+use super::{point_labels, WRITE_OPS};
+use crate::drawing::{Colour, Drawing};
+use crate::error::Result;
+use crate::knots::{self, Degree};
+use crate::{Answer, Context, Item, Operation, Params, Report, Role, Value};
+
+/// The form of the parameters of the basis.
+pub const RANGE_FORM: &str = "parameters between the first and the last knot";
+
+/// The basis functions of a knot vector.
+///
+/// ```
+/// use cagd_ops::{ops::BSplineBasis, knots::Degree, Context, Operation, Params};
+/// // Knots 0,0,0,1,1,1 of degree 2 are Bernstein's: at ½ the values ¼, ½, ¼.
+/// let op = BSplineBasis {
+///     degree: Degree::Degree(2),
+///     t: Params::Given(vec![0.5]),
+///     ..BSplineBasis::new(vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0])
+/// };
+/// let answer = op.run(&mut Context::new(cagd::Limits::default()))?;
+/// assert_eq!(answer.report.matrix("result").unwrap().as_slice(), &[0.25, 0.5, 0.25]);
+/// # Ok::<(), cagd_ops::OpError>(())
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct BSplineBasis<T> {
+    /// The knots `u_0 ≤ … ≤ u_m`.
+    pub knots: Vec<T>,
+    /// The degree (or order).
+    pub degree: Degree,
+    /// The parameters (samples cover `[u_0, u_m]`; outside it an error).
+    pub t: Params<T>,
+    /// The Cox–de Boor triangle of every parameter (`triangle`: `t`, levels `p0..pP`).
+    pub steps: bool,
+    /// A picture of the functions over `[u_0, u_m]`, with their values at `t` marked.
+    pub drawing: bool,
+}
+
+impl<T: Scalar> BSplineBasis<T> {
+    /// The cubic basis of `knots` at the default parameters.
+    pub fn new(knots: Vec<T>) -> Self {
+        BSplineBasis {
+            knots,
+            degree: Degree::Default,
+            t: Params::Default,
+            steps: false,
+            drawing: false,
+        }
+    }
+}
+
+impl<T: Scalar> Operation<T> for BSplineBasis<T> {
+    fn run(&self, cx: &mut Context) -> Result<Answer<T>> {
+        let p = self.degree.resolve(cx)?;
+        let n = knots::check_basis_knots(&self.knots, p)?;
+        let (a, b) = (&self.knots[0], &self.knots[self.knots.len() - 1]);
+        let what = ("B-spline basis", RANGE_FORM);
+        let ts = knots::params_within(&self.t, Role::T, (a, b), what, cx)?;
+        let dense = super::bspline::picture_params(self.drawing, (a, b))?;
+        self.check_cost(p, n, (&ts, &dense), cx)?;
+        let top = |t: &T| -> Vec<T> {
+            let mut levels = cox_de_boor_triangle(p, &self.knots, t);
+            levels.pop().unwrap_or_default()
+        };
+        let rows: Vec<Vec<T>> = ts.iter().map(top).collect();
+        let mut report = Report::new();
+        if self.steps {
+            for (k, t) in ts.iter().enumerate() {
+                report.push(step_name("triangle", k, ts.len()), self.triangle(p, t));
+            }
+        }
+        report.push(
+            "t",
+            Value::Matrix(DMatrix::from_column_slice(ts.len(), 1, &ts)),
+        );
+        let result = DMatrix::from_fn(ts.len(), n, |i, j| rows[i][j].clone());
+        report.push("result", Value::Matrix(result.clone()));
+        let drawing = if self.drawing {
+            let values: Vec<Vec<T>> = dense.iter().map(top).collect();
+            Some(picture(p, (&dense, &values), (&ts, &result)))
+        } else {
+            None
+        };
+        Ok(Answer {
+            report,
+            drawing,
+            mesh: None,
+        })
+    }
+}
+
+impl<T: Scalar> BSplineBasis<T> {
+    /// The triangles at `ts` (twice with steps) and at the picture's `dense`, and the numbers
+    /// written: refused above the limit, about the parameters.
+    fn check_cost(
+        &self,
+        p: usize,
+        n: usize,
+        (ts, dense): (&[T], &[T]),
+        cx: &Context,
+    ) -> Result<()> {
+        let knot_bits = max_bits(&self.knots);
+        let m = self.knots.len();
+        let at = |params: &[T]| {
+            triangle_cost(p, m, max_bits(params), knot_bits).times(params.len() as u128)
+        };
+        let times = if self.steps { 2 } else { 1 };
+        let work = at(ts).times(times).and(at(dense)).weigh(T::EXACT);
+        let per_t = n as u128
+            + if self.steps {
+                (p as u128 + 1) * m as u128
+            } else {
+                0
+            };
+        let written = (ts.len() as u128)
+            .saturating_mul(per_t)
+            .saturating_mul(WRITE_OPS);
+        cx.check_work(Role::T, work.saturating_add(written))
+    }
+
+    /// The Cox–de Boor triangle at `t`: `t` and the levels `p0 … pP` (`N_{0,j} … N_{m−j−1,j}`).
+    fn triangle(&self, p: usize, t: &T) -> Value<T> {
+        let mut parts = vec![Item {
+            name: "t".into(),
+            value: Value::scalar(t.clone()),
+        }];
+        for (j, level) in cox_de_boor_triangle(p, &self.knots, t).iter().enumerate() {
+            parts.push(Item {
+                name: format!("p{j}"),
+                value: Value::row(level),
+            });
+        }
+        Value::Record(parts)
+    }
+}
+
+/// The functions over `dense` (`values[k][i] = N_{i,p}(dense[k])`), six labelled at most, and
+/// the values at `ts` marked.
+fn picture<T: Scalar>(
+    p: usize,
+    (dense, values): (&[T], &[Vec<T>]),
+    (ts, result): (&[T], &DMatrix<T>),
+) -> Drawing {
+    let colours = [
+        Colour::Blue,
+        Colour::Red,
+        Colour::Green,
+        Colour::Orange,
+        Colour::Purple,
+        Colour::Black,
+    ];
+    let n = result.ncols();
+    let mut drawing = Drawing::new(format!("B-spline basis functions, degree {p}"));
+    for i in 0..n {
+        let line = DMatrix::from_fn(2, dense.len(), |r, k| {
+            if r == 0 {
+                dense[k].to_f64()
+            } else {
+                values[k][i].to_f64()
+            }
+        });
+        let label = match (n <= 6, i) {
+            (true, _) => format!("N_{i},{p}"),
+            (false, 0) => format!("N_i,{p}, i = 0..{}", n - 1),
+            _ => String::new(),
+        };
+        drawing = drawing.curve(line, colours[i % colours.len()], label);
+    }
+    let marks = DMatrix::from_fn(2, ts.len() * n, |r, c| {
+        let (k, i) = (c / n.max(1), c % n.max(1));
+        if r == 0 {
+            ts[k].to_f64()
+        } else {
+            result[(k, i)].to_f64()
+        }
+    });
+    let labels = ts
+        .iter()
+        .flat_map(|t| std::iter::repeat_n(point_labels("t", std::slice::from_ref(t)), n))
+        .flatten()
+        .collect();
+    drawing.points(marks, labels, "values at t")
+}

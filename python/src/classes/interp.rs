@@ -1,0 +1,214 @@
+//! `cagd.HermiteCubic` (Ferguson cubic), `cagd.CubicSpline` (interpolating cubic spline) and
+//! `cagd.Lagrange` (the interpolating polynomial curve, barycentric): the lecture notes'
+//! interpolation, points as rows.
+
+use cagd::hermite::HermiteCubic;
+use cagd::lagrange::{Lagrange, LagrangeInterpolant};
+use cagd::spline::{CubicSpline, EndCondition};
+use pyo3::prelude::*;
+
+use super::bezier::PyBezierCurve;
+use super::{build, exactness, on, point_in, point_out, Ex, Exact};
+use crate::convert::{params, points_as_rows, rows_out, vector_out, Num};
+use crate::error::{conversion, IntoPy};
+
+/// The Ferguson (Hermite) cubic `x(u) = x1 H0(u) + x2 H3(u) + t1 H1(u) + t2 H2(u)`,
+/// `u ∈ [0, 1]`, through `x1`, `x2` with the tangents `t1`, `t2` (the lecture notes).
+#[pyclass(module = "cagd", name = "HermiteCubic", frozen)]
+#[derive(Clone)]
+pub struct PyHermiteCubic {
+    pub(crate) inner: Ex<HermiteCubic<f64>, HermiteCubic<Exact>>,
+}
+
+fn new_hermite<T: Num>(args: [&Bound<'_, PyAny>; 4]) -> PyResult<HermiteCubic<T>> {
+    let [x1, x2, t1, t2] = args;
+    HermiteCubic::new(
+        point_in(x1, "x1")?,
+        point_in(x2, "x2")?,
+        point_in(t1, "t1")?,
+        point_in(t2, "t2")?,
+    )
+    .py()
+}
+
+#[pymethods]
+impl PyHermiteCubic {
+    #[new]
+    #[pyo3(signature = (x1, x2, t1, t2, exact = None))]
+    fn new(
+        x1: &Bound<'_, PyAny>,
+        x2: &Bound<'_, PyAny>,
+        t1: &Bound<'_, PyAny>,
+        t2: &Bound<'_, PyAny>,
+        exact: Option<bool>,
+    ) -> PyResult<Self> {
+        let exact = exactness(exact, &[x1, x2, t1, t2])?;
+        Ok(PyHermiteCubic {
+            inner: build!(exact, new_hermite([x1, x2, t1, t2])),
+        })
+    }
+
+    /// The tangent `x'(u)`.
+    fn tangent<'py>(&self, py: Python<'py>, u: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+        on!(self.inner, c => point_out(py, &c.eval_derivative(Num::scalar(u, "u")?)))
+    }
+
+    /// The same cubic as a Bézier curve: `b0 = x1`, `b1 = x1 + t1/3`, `b2 = x2 − t2/3`,
+    /// `b3 = x2`.
+    fn to_bezier(&self) -> PyResult<PyBezierCurve> {
+        Ok(PyBezierCurve {
+            inner: match &self.inner {
+                Ex::F(c) => Ex::F(c.to_bezier().py()?),
+                Ex::E(c) => Ex::E(c.to_bezier().py()?),
+            },
+        })
+    }
+
+    /// The geometry `[x1 x2 t1 t2]` as rows, `(4, d)`.
+    #[getter]
+    fn geometry<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        on!(self.inner, c => rows_out(py, c.geometry()))
+    }
+}
+
+/// The interpolating cubic spline through the points (rows, `(m, d)`), piecewise Ferguson
+/// cubics with continuous second derivative; `end='natural'` (`x'' = 0` at the ends),
+/// `'closed'` (periodic), or `'clamped'` with the end tangents `start`, `end_tangent`.
+/// `params` (optional): the parameter of each point (default `0, 1, …, m−1`).
+#[pyclass(module = "cagd", name = "CubicSpline", frozen)]
+#[derive(Clone)]
+pub struct PyCubicSpline {
+    pub(crate) inner: Ex<CubicSpline<f64>, CubicSpline<Exact>>,
+}
+
+fn new_spline<T: Num>(
+    points: &Bound<'_, PyAny>,
+    end: &str,
+    tangents: (Option<&Bound<'_, PyAny>>, Option<&Bound<'_, PyAny>>),
+    ps: Option<&Bound<'_, PyAny>>,
+) -> PyResult<CubicSpline<T>> {
+    let end = match (end, tangents) {
+        ("natural", _) => EndCondition::Natural,
+        ("closed", _) => EndCondition::Closed,
+        ("clamped", (Some(s), Some(e))) => EndCondition::Clamped {
+            start: point_in(s, "start")?,
+            end: point_in(e, "end_tangent")?,
+        },
+        _ => {
+            return Err(conversion(
+                "end",
+                "expected 'natural', 'closed' or 'clamped' with start= and end_tangent=",
+            ))
+        }
+    };
+    let points = points_as_rows::<T>(points, "points")?;
+    match ps {
+        None => CubicSpline::interpolate(points, end).py(),
+        Some(p) => {
+            CubicSpline::interpolate_with_params(points, params::<T>(p, "params")?.1, end).py()
+        }
+    }
+}
+
+#[pymethods]
+impl PyCubicSpline {
+    #[new]
+    #[pyo3(signature = (points, end = "natural", start = None, end_tangent = None, params = None, exact = None))]
+    fn new(
+        points: &Bound<'_, PyAny>,
+        end: &str,
+        start: Option<&Bound<'_, PyAny>>,
+        end_tangent: Option<&Bound<'_, PyAny>>,
+        params: Option<&Bound<'_, PyAny>>,
+        exact: Option<bool>,
+    ) -> PyResult<Self> {
+        let mut objs = vec![points];
+        objs.extend(start.iter().copied().chain(end_tangent).chain(params));
+        let exact = exactness(exact, &objs)?;
+        Ok(PyCubicSpline {
+            inner: build!(exact, new_spline(points, end, (start, end_tangent), params)),
+        })
+    }
+
+    /// The tangents at the points, `(m, d)`.
+    #[getter]
+    fn tangents<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        on!(self.inner, c => rows_out(py, c.tangents()))
+    }
+
+    /// The parameters of the points.
+    #[getter]
+    fn params<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        on!(self.inner, c => vector_out(py, c.params()))
+    }
+
+    /// Segment `k` as a Ferguson cubic on `[0, 1]`.
+    fn segment(&self, k: usize) -> PyResult<PyHermiteCubic> {
+        Ok(PyHermiteCubic {
+            inner: match &self.inner {
+                Ex::F(c) => Ex::F(c.segment(k).py()?),
+                Ex::E(c) => Ex::E(c.segment(k).py()?),
+            },
+        })
+    }
+}
+
+/// The Lagrange interpolating polynomial curve through the points (rows, `(m+1, d)`) at the
+/// nodes `t_0 … t_m`: `x(t) = Σ_i L_i(t) x_i`, `L_i(t) = Π_{j≠i} (t − t_j)/(t_i − t_j)`,
+/// evaluated in barycentric form. `basis(t)` gives `L_0(t) … L_m(t)`.
+#[pyclass(module = "cagd", name = "Lagrange", frozen)]
+#[derive(Clone)]
+pub struct PyLagrange {
+    pub(crate) inner: Ex<LagrangeInterpolant<f64>, LagrangeInterpolant<Exact>>,
+}
+
+fn new_lagrange<T: Num>(
+    nodes: &Bound<'_, PyAny>,
+    points: &Bound<'_, PyAny>,
+) -> PyResult<LagrangeInterpolant<T>> {
+    let (_, n) = params::<T>(nodes, "nodes")?;
+    crate::limits::current()
+        .check_degree("nodes (nodes - 1)", n.len().saturating_sub(1))
+        .py()?;
+    let basis = Lagrange::new(n).py()?;
+    LagrangeInterpolant::new(basis, points_as_rows::<T>(points, "points")?).py()
+}
+
+#[pymethods]
+impl PyLagrange {
+    #[new]
+    #[pyo3(signature = (nodes, points, exact = None))]
+    fn new(
+        nodes: &Bound<'_, PyAny>,
+        points: &Bound<'_, PyAny>,
+        exact: Option<bool>,
+    ) -> PyResult<Self> {
+        let exact = exactness(exact, &[nodes, points])?;
+        Ok(PyLagrange {
+            inner: build!(exact, new_lagrange(nodes, points)),
+        })
+    }
+
+    /// The basis values `L_0(t) … L_m(t)`.
+    fn basis<'py>(&self, py: Python<'py>, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+        on!(self.inner, c => vector_out(py, &c.basis().basis(&Num::scalar(t, "t")?)))
+    }
+
+    /// The barycentric weights `w_i = 1/Π_{j≠i}(t_i − t_j)`.
+    #[getter]
+    fn weights<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        on!(self.inner, c => vector_out(py, c.basis().weights()))
+    }
+}
+
+super::curve_methods!(PyHermiteCubic, "HermiteCubic");
+super::curve_methods!(PyCubicSpline, "CubicSpline");
+super::curve_methods!(PyLagrange, "Lagrange");
+
+/// Registers the classes.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<PyHermiteCubic>()?;
+    m.add_class::<PyCubicSpline>()?;
+    m.add_class::<PyLagrange>()?;
+    Ok(())
+}

@@ -1,0 +1,370 @@
+//! `cagd.CoonsPatch` (every blend of the thesis §4: bilinear, Hermite-blended, bicubic with
+//! cross-boundary derivatives), `cagd.GordonSurface` (§5) and `cagd.discrete_coons` (the CAD
+//! notes): the core's constructions over any of the package's curves.
+
+use cagd::coons::{
+    BicubicCoonsPatch, BlendingPair, CoonsBoundary, CoonsPatch, CrossDerivatives,
+    GeneralizedCoonsPatch, Tolerance, Twist,
+};
+use cagd::gordon::GordonSurface;
+use cagd::param::{Curve, Surface};
+use nalgebra::DVector;
+use pyo3::prelude::*;
+
+use super::bezier::PyBezierCurve;
+use super::interp::{PyCubicSpline, PyHermiteCubic, PyLagrange};
+use super::mixed;
+use super::splines::{PyBSplineCurve, PyNurbsCurve};
+use super::steps::Steps;
+use super::{on, point_out, Ex, Exact};
+use crate::convert::{net_in, net_out, params, Num};
+use crate::error::{conversion, IntoPy};
+
+/// Any curve of the package, in the core's arithmetic `T`.
+pub type AnyCurve<T> = Box<dyn cagd::CurveDeriv<T> + Send + Sync>;
+
+/// A curve object as the core's curve in `f64` (`Ok(Err(..))` for an exact one).
+fn any_curve(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Ex<AnyCurve<f64>, AnyCurve<Exact>>> {
+    macro_rules! take {
+        ($t:ty) => {
+            if let Ok(c) = obj.cast::<$t>() {
+                return Ok(match &c.get().inner {
+                    Ex::F(x) => Ex::F(Box::new(x.clone())),
+                    Ex::E(x) => Ex::E(Box::new(x.clone())),
+                });
+            }
+        };
+    }
+    take!(PyBezierCurve);
+    take!(PyBSplineCurve);
+    take!(PyNurbsCurve);
+    take!(PyHermiteCubic);
+    take!(PyCubicSpline);
+    take!(PyLagrange);
+    Err(conversion(
+        what,
+        "expected a cagd curve (BezierCurve, BSplineCurve, NurbsCurve, HermiteCubic, CubicSpline, Lagrange)",
+    ))
+}
+
+/// Curves in doubles or in exact rationals.
+type Curves = Ex<Vec<AnyCurve<f64>>, Vec<AnyCurve<Exact>>>;
+
+/// The curves `objs`, all in one arithmetic.
+fn curves(objs: &[(&Bound<'_, PyAny>, &str)]) -> PyResult<Curves> {
+    let mut floats = Vec::new();
+    let mut exacts = Vec::new();
+    for (obj, what) in objs {
+        match any_curve(obj, what)? {
+            Ex::F(c) if exacts.is_empty() => floats.push(c),
+            Ex::E(c) if floats.is_empty() => exacts.push(c),
+            _ => return Err(mixed(what)),
+        }
+    }
+    Ok(if exacts.is_empty() {
+        Ex::F(floats)
+    } else {
+        Ex::E(exacts)
+    })
+}
+
+/// The kinds of Coons patch.
+pub enum Coons<T: cagd::Scalar> {
+    /// Bilinearly blended (thesis (4.4)).
+    Bilinear(CoonsPatch<AnyCurve<T>, T>),
+    /// Blended by the pair `(f1, f2)` in both directions (thesis remark after (4.4)).
+    Blended(GeneralizedCoonsPatch<AnyCurve<T>, T>),
+    /// Bicubically blended with cross-boundary derivatives (thesis §4.3, (4.5)).
+    Bicubic(Box<BicubicCoonsPatch<AnyCurve<T>, AnyCurve<T>, T>>),
+}
+
+impl<T: cagd::Scalar> Coons<T> {
+    fn surface(&self) -> &(dyn Surface<T> + Sync) {
+        match self {
+            Coons::Bilinear(p) => p,
+            Coons::Blended(p) => p,
+            Coons::Bicubic(p) => p.as_ref(),
+        }
+    }
+
+    /// The point with its parts, as the core names them.
+    fn parts(&self, u: T, v: T) -> Vec<(&'static str, DVector<T>)> {
+        match self {
+            Coons::Bilinear(p) => {
+                let x = p.eval_parts(u, v);
+                vec![("rc", x.rc), ("rd", x.rd), ("rcd", x.rcd), ("x", x.x)]
+            }
+            Coons::Blended(p) => {
+                let x = p.eval_parts(u, v);
+                vec![("rc", x.rc), ("rd", x.rd), ("rcd", x.rcd), ("x", x.x)]
+            }
+            Coons::Bicubic(p) => {
+                let x = p.eval_parts(u, v);
+                vec![("hc", x.hc), ("hd", x.hd), ("hcd", x.hcd), ("x", x.x)]
+            }
+        }
+    }
+}
+
+/// Each kind of Coons patch is a surface of the core: the calls go to it.
+impl<T: cagd::Scalar> Surface<T> for Coons<T> {
+    fn dim(&self) -> usize {
+        self.surface().dim()
+    }
+
+    fn domain(&self) -> ((T, T), (T, T)) {
+        self.surface().domain()
+    }
+
+    fn eval(&self, u: T, v: T) -> DVector<T> {
+        self.surface().eval(u, v)
+    }
+
+    fn eval_grid_into(&self, us: &[T], vs: &[T], out: &mut [T]) -> cagd::Result<()> {
+        self.surface().eval_grid_into(us, vs, out)
+    }
+}
+
+/// A Coons patch through four boundary curves `c1 = x(u, 0)`, `c2 = x(u, 1)`,
+/// `d1 = x(0, v)`, `d2 = x(1, v)` (any cagd curves; each used on its domain mapped onto
+/// `[0, 1]`): `x = r_c + r_d − r_cd` (thesis (4.1)–(4.4)).
+///
+/// `blend='linear'` (bilinearly blended, the thesis's `krpaCoons`) or `'hermite'` (the cubic
+/// Hermite pair `(H0, H3)` of the partially bicubic patch, §4.2); `CoonsPatch.bicubic(…)` adds
+/// the cross-boundary derivatives (§4.3). `patch(u, v)` evaluates on the grid `u × v`;
+/// `patch.parts(u, v)` gives `r_c`, `r_d`, `r_cd` and `x` (thesis `vrednostCoons`).
+#[pyclass(module = "cagd", name = "CoonsPatch", frozen)]
+pub struct PyCoonsPatch {
+    inner: Ex<Coons<f64>, Coons<Exact>>,
+}
+
+fn coons_of<T: cagd::Scalar>(c: Vec<AnyCurve<T>>, blend: &str) -> PyResult<Coons<T>> {
+    let [c1, c2, d1, d2]: [AnyCurve<T>; 4] = c
+        .try_into()
+        .map_err(|_| conversion("curves", "expected four curves"))?;
+    Ok(match blend {
+        "linear" => Coons::Bilinear(CoonsPatch::new(c1, c2, d1, d2).py()?),
+        "hermite" => {
+            let (f, g) = (BlendingPair::hermite_cubic(), BlendingPair::hermite_cubic());
+            Coons::Blended(GeneralizedCoonsPatch::new(c1, c2, d1, d2, f, g).py()?)
+        }
+        other => {
+            return Err(conversion(
+                "blend",
+                format!("expected 'linear' or 'hermite', got '{other}'"),
+            ))
+        }
+    })
+}
+
+fn bicubic_of<T: cagd::Scalar>(c: Vec<AnyCurve<T>>, twist: &str) -> PyResult<Coons<T>> {
+    let [c1, c2, d1, d2, du0, du1, dv0, dv1]: [AnyCurve<T>; 8] = c
+        .try_into()
+        .map_err(|_| conversion("curves", "expected eight curves"))?;
+    let twist = match twist {
+        "zero" => Twist::Zero,
+        "gregory" => Twist::Gregory,
+        other => {
+            return Err(conversion(
+                "twist",
+                format!("expected 'zero' or 'gregory', got '{other}'"),
+            ))
+        }
+    };
+    let boundary = CoonsBoundary::new(c1, c2, d1, d2, Tolerance::default()).py()?;
+    let cross = CrossDerivatives { du0, du1, dv0, dv1 };
+    Ok(Coons::Bicubic(Box::new(
+        BicubicCoonsPatch::new(boundary, cross, twist).py()?,
+    )))
+}
+
+fn parts_steps<T: Num>(
+    py: Python<'_>,
+    parts: Vec<(&'static str, DVector<T>)>,
+    title: &str,
+) -> PyResult<Steps> {
+    let mut items = Vec::new();
+    for (name, p) in parts {
+        items.push((name.to_string(), point_out(py, &p)?.unbind()));
+    }
+    Ok(Steps::new(title, None, items))
+}
+
+#[pymethods]
+impl PyCoonsPatch {
+    #[new]
+    #[pyo3(signature = (c1, c2, d1, d2, blend = "linear"))]
+    fn new(
+        c1: &Bound<'_, PyAny>,
+        c2: &Bound<'_, PyAny>,
+        d1: &Bound<'_, PyAny>,
+        d2: &Bound<'_, PyAny>,
+        blend: &str,
+    ) -> PyResult<Self> {
+        let objs = [(c1, "c1"), (c2, "c2"), (d1, "d1"), (d2, "d2")];
+        Ok(PyCoonsPatch {
+            inner: match curves(&objs)? {
+                Ex::F(c) => Ex::F(coons_of(c, blend)?),
+                Ex::E(c) => Ex::E(coons_of(c, blend)?),
+            },
+        })
+    }
+
+    /// The bicubically blended patch (thesis (4.5)): the boundary curves and the four
+    /// cross-boundary derivative curves `du0 = x_u(0, v)`, `du1 = x_u(1, v)`,
+    /// `dv0 = x_v(u, 0)`, `dv1 = x_v(u, 1)`; corner twists `'zero'` or `'gregory'`.
+    #[staticmethod]
+    #[pyo3(signature = (c1, c2, d1, d2, du0, du1, dv0, dv1, twist = "zero"))]
+    #[allow(clippy::too_many_arguments)] // the four curves and the four cross derivatives
+    fn bicubic(
+        c1: &Bound<'_, PyAny>,
+        c2: &Bound<'_, PyAny>,
+        d1: &Bound<'_, PyAny>,
+        d2: &Bound<'_, PyAny>,
+        du0: &Bound<'_, PyAny>,
+        du1: &Bound<'_, PyAny>,
+        dv0: &Bound<'_, PyAny>,
+        dv1: &Bound<'_, PyAny>,
+        twist: &str,
+    ) -> PyResult<Self> {
+        let objs = [
+            (c1, "c1"),
+            (c2, "c2"),
+            (d1, "d1"),
+            (d2, "d2"),
+            (du0, "du0"),
+            (du1, "du1"),
+            (dv0, "dv0"),
+            (dv1, "dv1"),
+        ];
+        Ok(PyCoonsPatch {
+            inner: match curves(&objs)? {
+                Ex::F(c) => Ex::F(bicubic_of(c, twist)?),
+                Ex::E(c) => Ex::E(bicubic_of(c, twist)?),
+            },
+        })
+    }
+
+    /// The point at `(u, v)` with its parts: `rc`, `rd`, `rcd`, `x` (`hc`, `hd`, `hcd`, `x` for
+    /// the bicubic patch).
+    fn parts(&self, py: Python<'_>, u: &Bound<'_, PyAny>, v: &Bound<'_, PyAny>) -> PyResult<Steps> {
+        on!(self.inner, p => parts_steps(py, p.parts(Num::scalar(u, "u")?, Num::scalar(v, "v")?), "Coons patch point"))
+    }
+}
+
+/// A Gordon surface through a network of curves (thesis §5, (5.3)):
+/// `g = g1 + g2 − g12`, `g1 = Σ_i L_i(u) g(u_i, v)`, `g2 = Σ_j L_j(v) g(u, v_j)`,
+/// `g12 = Σ_i Σ_j L_i(u) L_j(v) g(u_i, v_j)` with Lagrange polynomials over the nodes.
+///
+/// `curves_at_u[i]` is the curve `g(u_i, ·)`, `curves_at_v[j]` the curve `g(·, v_j)`; they must
+/// cross at `g(u_i, v_j)`.
+#[pyclass(module = "cagd", name = "GordonSurface", frozen)]
+pub struct PyGordonSurface {
+    inner: Ex<GordonSurface<AnyCurve<f64>, f64>, GordonSurface<AnyCurve<Exact>, Exact>>,
+}
+
+fn gordon_of<T: Num>(
+    u: &Bound<'_, PyAny>,
+    v: &Bound<'_, PyAny>,
+    mut c: Vec<AnyCurve<T>>,
+    split: usize,
+) -> PyResult<GordonSurface<AnyCurve<T>, T>> {
+    let (_, un) = params::<T>(u, "u_nodes")?;
+    let (_, vn) = params::<T>(v, "v_nodes")?;
+    let limits = crate::limits::current();
+    limits
+        .check_degree("u_nodes (nodes - 1)", un.len().saturating_sub(1))
+        .py()?;
+    limits
+        .check_degree("v_nodes (nodes - 1)", vn.len().saturating_sub(1))
+        .py()?;
+    let at_v = c.split_off(split);
+    GordonSurface::new(un, vn, c, at_v).py()
+}
+
+#[pymethods]
+impl PyGordonSurface {
+    #[new]
+    fn new(
+        u_nodes: &Bound<'_, PyAny>,
+        v_nodes: &Bound<'_, PyAny>,
+        curves_at_u: Vec<Bound<'_, PyAny>>,
+        curves_at_v: Vec<Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
+        let mut objs: Vec<(&Bound<'_, PyAny>, &str)> =
+            curves_at_u.iter().map(|c| (c, "curves_at_u")).collect();
+        objs.extend(curves_at_v.iter().map(|c| (c, "curves_at_v")));
+        let split = curves_at_u.len();
+        Ok(PyGordonSurface {
+            inner: match curves(&objs)? {
+                Ex::F(c) => Ex::F(gordon_of(u_nodes, v_nodes, c, split)?),
+                Ex::E(c) => Ex::E(gordon_of(u_nodes, v_nodes, c, split)?),
+            },
+        })
+    }
+
+    /// The point at `(u, v)` with its parts `g1`, `g2`, `g12`, `g`.
+    fn parts(&self, py: Python<'_>, u: &Bound<'_, PyAny>, v: &Bound<'_, PyAny>) -> PyResult<Steps> {
+        on!(self.inner, s => {
+            let p = s.eval_parts(Num::scalar(u, "u")?, Num::scalar(v, "v")?);
+            parts_steps(py, vec![("g1", p.g1), ("g2", p.g2), ("g12", p.g12), ("g", p.g)], "Gordon surface point")
+        })
+    }
+}
+
+/// The discrete Coons patch of the CAD notes: the inner points of a control net `(m+1, n+1, d)`
+/// from its boundary rows and columns, `b_ij = (1−i/m) b_0j + (i/m) b_mj + (1−j/n) b_i0 +
+/// (j/n) b_in − (bilinear blend of the corners)`. The inner points given are ignored.
+#[pyfunction]
+#[pyo3(signature = (net, exact = None))]
+fn discrete_coons<'py>(
+    net: &Bound<'py, PyAny>,
+    exact: Option<bool>,
+) -> PyResult<Bound<'py, PyAny>> {
+    fn run<'py, T: Num>(net: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+        let coords = net_in::<T>(net, "net")?;
+        let (m, n) = coords.first().map_or((0, 0), |c| (c.nrows(), c.ncols()));
+        let limits = crate::limits::current();
+        limits.check_grid("net", m, n).py()?;
+        let cost = cagd::coons::discrete_coons_cost(m, n, coords.len());
+        limits.check_work("net", cost.weigh(T::EXACT)).py()?;
+        net_out(net.py(), &cagd::coons::discrete_coons(&coords).py()?)
+    }
+    if super::exactness(exact, &[net])? {
+        run::<Exact>(net)
+    } else {
+        run::<f64>(net)
+    }
+}
+
+super::surface_methods!(PyCoonsPatch, "CoonsPatch");
+super::surface_methods!(PyGordonSurface, "GordonSurface");
+
+/// Registers the classes and functions.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<PyCoonsPatch>()?;
+    m.add_class::<PyGordonSurface>()?;
+    m.add_function(wrap_pyfunction!(discrete_coons, m)?)?;
+    Ok(())
+}
+
+/// The joint of two curves of the package (`first` at the end of its domain, `second` at the
+/// start of its), by the core's [`cagd::continuity::curve_joint`].
+pub fn joint(
+    first: &Bound<'_, PyAny>,
+    second: &Bound<'_, PyAny>,
+    tol: f64,
+) -> PyResult<cagd::continuity::Joint> {
+    match curves(&[(first, "first"), (second, "second")])? {
+        Ex::F(c) => {
+            let (a, b) = (&c[0], &c[1]);
+            cagd::continuity::curve_joint(a, a.domain().1, b, b.domain().0, tol).py()
+        }
+        Ex::E(c) => {
+            let (a, b) = (&c[0], &c[1]);
+            let tol = <Exact as cagd::Scalar>::from_f64(tol)
+                .ok_or_else(|| conversion("tol", "not a finite number"))?;
+            cagd::continuity::curve_joint(a, a.domain().1, b, b.domain().0, tol).py()
+        }
+    }
+}

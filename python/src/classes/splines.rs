@@ -1,0 +1,370 @@
+//! `cagd.BSplineCurve`, `cagd.BSplineSurface`, `cagd.NurbsCurve`, `cagd.NurbsSurface` (the CAD
+//! notes §1.2–1.3, octave-nurbs' conventions): the core's types, points as rows.
+
+use cagd::bspline::{BSplineCurve, BSplineSurface};
+use cagd::nurbs::{NurbsCurve, NurbsSurface};
+use nalgebra::DMatrix;
+use pyo3::prelude::*;
+
+use super::steps::Steps;
+use super::{build, exactness, on, point_out, Ex, Exact};
+use crate::convert::{net_in, net_out, params, points_as_rows, rows_out, vector_out, Num};
+use crate::error::IntoPy;
+
+/// Degree and knot checks shared by the constructors: the core's limit on the degree.
+fn check_degree(p: usize) -> PyResult<()> {
+    crate::limits::current().check_degree("degree", p).py()
+}
+
+/// A B-spline curve `C(u) = Σ_{i=0}^{n−1} P_i N_{i,p}(u)`, `u ∈ [u_p, u_n]`, with `n + p + 1`
+/// knots and the control points as the rows of an `(n, d)` array (octave-nurbs' conventions:
+/// degree `p`, spans from 0). Outside the domain the end pieces continue.
+#[pyclass(module = "cagd", name = "BSplineCurve", frozen)]
+#[derive(Clone)]
+pub struct PyBSplineCurve {
+    pub(crate) inner: Ex<BSplineCurve<f64>, BSplineCurve<Exact>>,
+}
+
+impl PyBSplineCurve {
+    /// The Python object of a core curve.
+    pub fn from_inner(inner: Ex<BSplineCurve<f64>, BSplineCurve<Exact>>) -> Self {
+        PyBSplineCurve { inner }
+    }
+}
+
+fn new_bspline<T: Num>(
+    degree: usize,
+    knots: &Bound<'_, PyAny>,
+    points: &Bound<'_, PyAny>,
+) -> PyResult<BSplineCurve<T>> {
+    check_degree(degree)?;
+    let (_, k) = params::<T>(knots, "knots")?;
+    BSplineCurve::new(degree, k, points_as_rows::<T>(points, "points")?).py()
+}
+
+fn clamped<T: Num>(degree: usize, points: &Bound<'_, PyAny>) -> PyResult<BSplineCurve<T>> {
+    check_degree(degree)?;
+    BSplineCurve::clamped(degree, points_as_rows::<T>(points, "points")?).py()
+}
+
+fn de_boor<T: Num>(py: Python<'_>, c: &BSplineCurve<T>, u: &Bound<'_, PyAny>) -> PyResult<Steps> {
+    let s = c.de_boor_scheme(T::scalar(u, "u")?).py()?;
+    let mut items = vec![(
+        "span".to_string(),
+        s.span.into_pyobject(py)?.into_any().unbind(),
+    )];
+    for (r, level) in s.levels.iter().enumerate() {
+        items.push((format!("r = {r}"), rows_out(py, level)?.unbind()));
+    }
+    for (r, a) in s.alphas.iter().enumerate() {
+        items.push((format!("alpha r = {}", r + 1), vector_out(py, a)?.unbind()));
+    }
+    Ok(Steps::new("de Boor scheme", None, items))
+}
+
+#[pymethods]
+impl PyBSplineCurve {
+    #[new]
+    #[pyo3(signature = (degree, knots, points, exact = None))]
+    fn new(
+        degree: usize,
+        knots: &Bound<'_, PyAny>,
+        points: &Bound<'_, PyAny>,
+        exact: Option<bool>,
+    ) -> PyResult<Self> {
+        let exact = exactness(exact, &[knots, points])?;
+        Ok(Self::from_inner(build!(
+            exact,
+            new_bspline(degree, knots, points)
+        )))
+    }
+
+    /// The curve with clamped uniform knots on `[0, 1]`: it starts at the first and ends at
+    /// the last control point.
+    #[staticmethod]
+    #[pyo3(signature = (degree, points, exact = None))]
+    fn clamped(degree: usize, points: &Bound<'_, PyAny>, exact: Option<bool>) -> PyResult<Self> {
+        let exact = exactness(exact, &[points])?;
+        Ok(Self::from_inner(build!(exact, clamped(degree, points))))
+    }
+
+    /// The degree `p`.
+    #[getter]
+    fn degree(&self) -> usize {
+        on!(self.inner, c => c.degree())
+    }
+
+    /// The knots `u_0 … u_{n+p}`.
+    #[getter]
+    fn knots<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        on!(self.inner, c => vector_out(py, c.knots().as_slice()))
+    }
+
+    /// The control points, `(n, d)`.
+    #[getter]
+    fn control_points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        on!(self.inner, c => rows_out(py, c.control()))
+    }
+
+    /// The values `N_{0,p}(u) … N_{n−1,p}(u)` of all basis functions at `u` (in the domain).
+    fn basis<'py>(&self, py: Python<'py>, u: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+        on!(self.inner, c => vector_out(py, &c.basis(&Num::scalar(u, "u")?).py()?))
+    }
+
+    /// de Boor's scheme at `u`: `d_i^r = (1 − α_i^r) d_{i−1}^{r−1} + α_i^r d_i^{r−1}`,
+    /// `α_i^r = (u − u_i)/(u_{i+p+1−r} − u_i)`; level `r` as rows, the last is `C(u)`.
+    fn de_boor(&self, py: Python<'_>, u: &Bound<'_, PyAny>) -> PyResult<Steps> {
+        on!(self.inner, c => de_boor(py, c, u))
+    }
+
+    /// The derivative curve `C'(u) = Σ Q_i N_{i,p−1}(u)`,
+    /// `Q_i = p (P_{i+1} − P_i)/(u_{i+p+1} − u_{i+1})`.
+    fn derivative(&self) -> PyResult<Self> {
+        Ok(Self::from_inner(match &self.inner {
+            Ex::F(c) => Ex::F(c.derivative().py()?),
+            Ex::E(c) => Ex::E(c.derivative().py()?),
+        }))
+    }
+
+    /// The same curve with the knots `u` (a number or a list) inserted (Boehm; Piegl & Tiller
+    /// A5.4).
+    fn insert_knots(&self, u: &Bound<'_, PyAny>) -> PyResult<Self> {
+        Ok(Self::from_inner(match &self.inner {
+            Ex::F(c) => Ex::F(c.insert_knots(&params::<f64>(u, "u")?.1).py()?),
+            Ex::E(c) => Ex::E(c.insert_knots(&params::<Exact>(u, "u")?.1).py()?),
+        }))
+    }
+
+    /// The same curve of degree `p + r` (Piegl & Tiller A5.9).
+    #[pyo3(signature = (r = 1))]
+    fn elevate(&self, r: usize) -> PyResult<Self> {
+        check_degree(self.degree().saturating_add(r))?;
+        Ok(Self::from_inner(match &self.inner {
+            Ex::F(c) => Ex::F(c.elevate(r).py()?),
+            Ex::E(c) => Ex::E(c.elevate(r).py()?),
+        }))
+    }
+
+    /// `∫_{u_p}^{u_n} C(u) du`, a point.
+    fn integral<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        on!(self.inner, c => point_out(py, &cagd::integral::bspline_integral(c).py()?))
+    }
+}
+
+/// A NURBS curve `C(u) = Σ w_i P_i N_{i,p}(u) / Σ w_i N_{i,p}(u)` (the CAD notes (5)): a
+/// B-spline in homogeneous coordinates `(w_i P_i, w_i)`. Points as rows `(n, d)`, weights `(n,)`.
+#[pyclass(module = "cagd", name = "NurbsCurve", frozen)]
+#[derive(Clone)]
+pub struct PyNurbsCurve {
+    pub(crate) inner: Ex<NurbsCurve<f64>, NurbsCurve<Exact>>,
+}
+
+fn new_nurbs<T: Num>(
+    degree: usize,
+    knots: &Bound<'_, PyAny>,
+    points: &Bound<'_, PyAny>,
+    weights: &Bound<'_, PyAny>,
+) -> PyResult<NurbsCurve<T>> {
+    check_degree(degree)?;
+    let (_, k) = params::<T>(knots, "knots")?;
+    let (_, w) = params::<T>(weights, "weights")?;
+    NurbsCurve::new(degree, k, points_as_rows::<T>(points, "points")?, w).py()
+}
+
+#[pymethods]
+impl PyNurbsCurve {
+    #[new]
+    #[pyo3(signature = (degree, knots, points, weights, exact = None))]
+    fn new(
+        degree: usize,
+        knots: &Bound<'_, PyAny>,
+        points: &Bound<'_, PyAny>,
+        weights: &Bound<'_, PyAny>,
+        exact: Option<bool>,
+    ) -> PyResult<Self> {
+        let exact = exactness(exact, &[knots, points, weights])?;
+        Ok(PyNurbsCurve {
+            inner: build!(exact, new_nurbs(degree, knots, points, weights)),
+        })
+    }
+
+    /// The full circle of radius `radius` about `center` (octave-nurbs `nrbcirc`; in doubles:
+    /// its weights are `cos(π/4)`).
+    #[staticmethod]
+    #[pyo3(signature = (radius = 1.0, center = None))]
+    fn circle(radius: f64, center: Option<Vec<f64>>) -> PyResult<Self> {
+        let center = center.unwrap_or_else(|| vec![0.0, 0.0]);
+        Ok(PyNurbsCurve {
+            inner: Ex::F(NurbsCurve::circle(radius, &center).py()?),
+        })
+    }
+
+    /// The arc of radius `radius` about `center` from angle `start` to `end` (radians).
+    #[staticmethod]
+    fn arc(radius: f64, center: Vec<f64>, start: f64, end: f64) -> PyResult<Self> {
+        Ok(PyNurbsCurve {
+            inner: Ex::F(NurbsCurve::arc(radius, &center, start, end).py()?),
+        })
+    }
+
+    /// The first derivative `C'(u)` (in the domain).
+    fn tangent<'py>(&self, py: Python<'py>, u: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+        on!(self.inner, c => point_out(py, &c.try_eval_derivative(Num::scalar(u, "u")?).py()?))
+    }
+
+    /// The degree `p`.
+    #[getter]
+    fn degree(&self) -> usize {
+        on!(self.inner, c => c.degree())
+    }
+
+    /// The knots.
+    #[getter]
+    fn knots<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        on!(self.inner, c => vector_out(py, c.knots()))
+    }
+
+    /// The control points, `(n, d)`.
+    #[getter]
+    fn control_points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        on!(self.inner, c => rows_out(py, &c.points()))
+    }
+
+    /// The weights, `(n,)`.
+    #[getter]
+    fn weights<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        on!(self.inner, c => vector_out(py, &c.weights()))
+    }
+
+    /// The same curve with the knots `u` inserted.
+    fn insert_knots(&self, u: &Bound<'_, PyAny>) -> PyResult<Self> {
+        Ok(PyNurbsCurve {
+            inner: match &self.inner {
+                Ex::F(c) => Ex::F(c.insert_knots(&params::<f64>(u, "u")?.1).py()?),
+                Ex::E(c) => Ex::E(c.insert_knots(&params::<Exact>(u, "u")?.1).py()?),
+            },
+        })
+    }
+}
+
+/// A tensor-product B-spline surface `S(u, v) = Σ_i Σ_j P_ij N_{i,p}(u) N_{j,q}(v)`; the net
+/// an `(nu, nv, d)` array. `surface(u, v)` evaluates on the grid `u × v`.
+#[pyclass(module = "cagd", name = "BSplineSurface", frozen)]
+pub struct PyBSplineSurface {
+    inner: Ex<BSplineSurface<f64>, BSplineSurface<Exact>>,
+}
+
+fn new_bspline_surface<T: Num>(
+    (p, q): (usize, usize),
+    knots: (&Bound<'_, PyAny>, &Bound<'_, PyAny>),
+    net: &Bound<'_, PyAny>,
+) -> PyResult<BSplineSurface<T>> {
+    check_degree(p.max(q))?;
+    let (_, ku) = params::<T>(knots.0, "knots_u")?;
+    let (_, kv) = params::<T>(knots.1, "knots_v")?;
+    BSplineSurface::new(p, q, ku, kv, net_in::<T>(net, "net")?).py()
+}
+
+#[pymethods]
+impl PyBSplineSurface {
+    #[new]
+    #[pyo3(signature = (degrees, knots_u, knots_v, net, exact = None))]
+    fn new(
+        degrees: (usize, usize),
+        knots_u: &Bound<'_, PyAny>,
+        knots_v: &Bound<'_, PyAny>,
+        net: &Bound<'_, PyAny>,
+        exact: Option<bool>,
+    ) -> PyResult<Self> {
+        let exact = exactness(exact, &[knots_u, knots_v, net])?;
+        Ok(PyBSplineSurface {
+            inner: build!(exact, new_bspline_surface(degrees, (knots_u, knots_v), net)),
+        })
+    }
+
+    /// The degrees `(p, q)`.
+    #[getter]
+    fn degree(&self) -> (usize, usize) {
+        on!(self.inner, s => s.degrees())
+    }
+
+    /// The control net, `(nu, nv, d)`.
+    #[getter]
+    fn control_points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        on!(self.inner, s => net_out(py, s.coordinates()))
+    }
+}
+
+/// A NURBS surface `S(u, v) = Σ w_ij P_ij N_i N_j / Σ w_ij N_i N_j`; net `(nu, nv, d)`,
+/// weights `(nu, nv)`.
+#[pyclass(module = "cagd", name = "NurbsSurface", frozen)]
+pub struct PyNurbsSurface {
+    inner: Ex<NurbsSurface<f64>, NurbsSurface<Exact>>,
+}
+
+fn new_nurbs_surface<T: Num>(
+    (p, q): (usize, usize),
+    knots: (&Bound<'_, PyAny>, &Bound<'_, PyAny>),
+    net: &Bound<'_, PyAny>,
+    weights: &Bound<'_, PyAny>,
+) -> PyResult<NurbsSurface<T>> {
+    check_degree(p.max(q))?;
+    let (_, ku) = params::<T>(knots.0, "knots_u")?;
+    let (_, kv) = params::<T>(knots.1, "knots_v")?;
+    let w = T::with_values(weights, "weights", |shape, v| match *shape {
+        [r, c] => Ok(DMatrix::from_row_slice(r, c, v)),
+        _ => Err(crate::convert::rank_error(
+            "weights",
+            "an (nu, nv) array",
+            shape,
+        )),
+    })?;
+    NurbsSurface::new(p, q, ku, kv, net_in::<T>(net, "net")?, w).py()
+}
+
+#[pymethods]
+impl PyNurbsSurface {
+    #[new]
+    #[pyo3(signature = (degrees, knots_u, knots_v, net, weights, exact = None))]
+    fn new(
+        degrees: (usize, usize),
+        knots_u: &Bound<'_, PyAny>,
+        knots_v: &Bound<'_, PyAny>,
+        net: &Bound<'_, PyAny>,
+        weights: &Bound<'_, PyAny>,
+        exact: Option<bool>,
+    ) -> PyResult<Self> {
+        let exact = exactness(exact, &[knots_u, knots_v, net, weights])?;
+        Ok(PyNurbsSurface {
+            inner: build!(
+                exact,
+                new_nurbs_surface(degrees, (knots_u, knots_v), net, weights)
+            ),
+        })
+    }
+
+    /// The ruled surface between two NURBS curves (`nrbruled`).
+    #[staticmethod]
+    fn ruled(c1: &PyNurbsCurve, c2: &PyNurbsCurve) -> PyResult<Self> {
+        let inner = match (&c1.inner, &c2.inner) {
+            (Ex::F(a), Ex::F(b)) => Ex::F(NurbsSurface::ruled(a, b).py()?),
+            (Ex::E(a), Ex::E(b)) => Ex::E(NurbsSurface::ruled(a, b).py()?),
+            _ => return Err(super::mixed("c2")),
+        };
+        Ok(PyNurbsSurface { inner })
+    }
+}
+
+super::curve_methods!(PyBSplineCurve, "BSplineCurve");
+super::curve_methods!(PyNurbsCurve, "NurbsCurve");
+super::surface_methods!(PyBSplineSurface, "BSplineSurface");
+super::surface_methods!(PyNurbsSurface, "NurbsSurface");
+
+/// Registers the classes.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<PyBSplineCurve>()?;
+    m.add_class::<PyNurbsCurve>()?;
+    m.add_class::<PyBSplineSurface>()?;
+    m.add_class::<PyNurbsSurface>()?;
+    Ok(())
+}
