@@ -7,7 +7,8 @@
 //! `crate::parent::g` or `super::g` depends on the parent. A path is resolved to the deepest module that exists, and through the
 //! re-exports of a parent (`pub use child::Item` in `a/mod.rs` sends `a::Item` to `a/child`), so
 //! that a parent re-exporting its children is not counted as depending on them. Comments and
-//! string literals are ignored; `mod` declarations are not dependencies. The test fails with
+//! string literals are ignored; `mod` declarations are not dependencies. The code of an inline
+//! module (`mod tests { use super::*; }`) counts as its file's, its `super::` meaning the file. The test fails with
 //! every cycle found (Tarjan's strongly connected components) and the edges inside it.
 
 use std::collections::{BTreeMap, BTreeSet};
@@ -83,6 +84,70 @@ fn code_only(source: &str) -> String {
             _ => out.push(c),
         }
     }
+    out
+}
+
+/// `code` with the paths inside each inline module (`mod name { … }`) rewritten as seen from
+/// the file: one leading `super::` of a path there names the file's module, so it becomes
+/// `self::` (and `super::super::` becomes `super::`).
+fn inline_modules_flattened(code: &str) -> String {
+    let bytes = code.as_bytes();
+    let mut out = String::with_capacity(code.len());
+    let mut i = 0;
+    while let Some(at) = code[i..].find("mod ").map(|k| i + k) {
+        let starts_word = at == 0 || !is_ident(bytes[at - 1] as char);
+        let rest = &code[at + 4..];
+        let name_len = rest.find(|c: char| !is_ident(c)).unwrap_or(rest.len());
+        let after = rest[name_len..].trim_start();
+        if !starts_word || name_len == 0 || !after.starts_with('{') {
+            out.push_str(&code[i..at + 4]);
+            i = at + 4;
+            continue;
+        }
+        let open = code.len() - after.len();
+        let mut depth = 0usize;
+        let mut close = code.len();
+        for (k, c) in code[open..].char_indices() {
+            match c {
+                '{' => depth += 1,
+                '}' => {
+                    depth -= 1;
+                    if depth == 0 {
+                        close = open + k;
+                        break;
+                    }
+                }
+                _ => {}
+            }
+        }
+        out.push_str(&code[i..open]);
+        out.push_str(&one_super_less(&code[open..close]));
+        i = close;
+    }
+    out.push_str(&code[i..]);
+    out
+}
+
+/// `block` with the first `super` of each path replaced by `self` (`super::super` by `super`).
+fn one_super_less(block: &str) -> String {
+    let mut out = String::with_capacity(block.len());
+    let mut rest = block;
+    while let Some(k) = rest.find("super::") {
+        let before = &rest[..k];
+        let word_start = !before.ends_with(|c: char| is_ident(c)) && !before.ends_with("::");
+        out.push_str(before);
+        if word_start && rest[k + 7..].starts_with("super::") {
+            out.push_str("super::");
+            rest = &rest[k + 14..];
+        } else if word_start {
+            out.push_str("self::");
+            rest = &rest[k + 7..];
+        } else {
+            out.push_str("super::");
+            rest = &rest[k + 7..];
+        }
+    }
+    out.push_str(rest);
     out
 }
 
@@ -248,7 +313,7 @@ fn cycles(root: &Path) -> Vec<String> {
         .map(|f| {
             (
                 module_of(root, f),
-                code_only(&std::fs::read_to_string(f).unwrap()),
+                inline_modules_flattened(&code_only(&std::fs::read_to_string(f).unwrap())),
             )
         })
         .collect();
@@ -452,4 +517,24 @@ fn the_checker_finds_a_parent_child_cycle() {
     )
     .unwrap();
     assert!(cycles(root).is_empty(), "{:?}", cycles(root));
+    // A test module inside the child, taking the child's items with `super::*`, is the child.
+    std::fs::write(
+        root.join("app/bezier.rs"),
+        "pub fn decasteljau() { super::cx::prepare() }\n\
+         #[cfg(test)]\nmod tests {\n    use super::*;\n    fn t() { decasteljau() }\n}\n",
+    )
+    .unwrap();
+    assert!(cycles(root).is_empty(), "{:?}", cycles(root));
+    // ... but `super::super::prepare()` there is the parent again.
+    std::fs::write(
+        root.join("app/bezier.rs"),
+        "pub fn decasteljau() {}\nmod tests {\n    fn t() { super::super::prepare() }\n}\n",
+    )
+    .unwrap();
+    std::fs::write(
+        root.join("app/mod.rs"),
+        "mod bezier;\npub fn run() { bezier::decasteljau() }\npub fn prepare() {}\n",
+    )
+    .unwrap();
+    assert_eq!(cycles(root), ["  app -> app/bezier\n  app/bezier -> app\n"]);
 }

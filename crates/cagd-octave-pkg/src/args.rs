@@ -279,6 +279,18 @@ pub fn view2_of<'a>(r: Real<'a>, what: &str, form: &str) -> Result<ArrayView2<'a
         .expect("an Octave matrix holds rows · cols elements"))
 }
 
+/// Refuses a NaN or ±Inf among `values`, in the operation layer's words
+/// ([`cagd_ops::check::non_finite`]), so that the package reads the same as every front end.
+///
+/// # Errors
+/// [`Kind::NonFinite`] about `what`.
+pub fn finite(what: &str, values: &[f64]) -> Result<()> {
+    match cagd_ops::check::non_finite(values) {
+        None => Ok(()),
+        Some((problem, expected)) => Err(PkgError::arg(Kind::NonFinite, what, problem, expected)),
+    }
+}
+
 /// A value as a matrix of finite values with at least one element.
 ///
 /// # Errors
@@ -294,7 +306,7 @@ pub fn matrix_of(v: &Value<'_>, what: &'static str, form: &str) -> Result<DMatri
             form,
         ));
     }
-    cagd::error::check_finite(what, r.data.iter())?;
+    finite(what, r.data)?;
     Ok(DMatrix::from_column_slice(r.rows(), r.cols(), r.data))
 }
 
@@ -313,7 +325,7 @@ pub fn scalar_of(v: &Value<'_>, what: &'static str) -> Result<f64> {
             form,
         ));
     }
-    cagd::error::check_finite(what, r.data.iter())?;
+    finite(what, r.data)?;
     Ok(r.data[0])
 }
 
@@ -340,7 +352,7 @@ pub fn count_of(v: &Value<'_>, what: &'static str) -> Result<usize> {
 /// [`Kind::Class`], [`Kind::NonFinite`].
 pub fn params_of<'a>(v: &Value<'a>, what: &'static str) -> Result<&'a [f64]> {
     let r = real_of(v, what, "real parameter values (a double array)")?;
-    cagd::error::check_finite(what, r.data.iter())?;
+    finite(what, r.data)?;
     Ok(r.data)
 }
 

@@ -94,26 +94,9 @@ impl Kind {
         }
     }
 
-    /// The kind of a library error.
+    /// The kind of a library error: the operation layer's ([`cagd_ops::Kind::of`]).
     pub fn of(error: &cagd::Error) -> Kind {
-        use cagd::Error as E;
-        match error {
-            E::TooFewPoints { .. }
-            | E::ShapeMismatch { .. }
-            | E::EmptyGrid { .. }
-            | E::TooFewControlPoints { .. }
-            | E::TooFewCurves { .. } => Kind::Shape,
-            E::NonFinite { .. } => Kind::NonFinite,
-            E::ParameterOutOfRange { .. } => Kind::Domain,
-            E::DecreasingKnots { .. } | E::KnotCount { .. } => Kind::Knots,
-            E::NonPositiveWeight { .. } => Kind::Weights,
-            E::DuplicateNodes { .. } | E::UnsortedNodes { .. } => Kind::Nodes,
-            E::CornerMismatch { .. } => Kind::Corners,
-            E::NetworkMismatch { .. } => Kind::Network,
-            E::Singular { .. } | E::SingularMask { .. } => Kind::Singular,
-            E::TooLarge { .. } => Kind::Limit,
-            _ => Kind::Value,
-        }
+        Kind::from(cagd_ops::Kind::of(error))
     }
 }
 
@@ -183,6 +166,27 @@ pub type Result<T, E = PkgError> = std::result::Result<T, E>;
 /// A [`Limit`] by its field name (`"max_grid_points"`), as `cagd_limits` takes it.
 pub fn limit_by_name(name: &str) -> Option<Limit> {
     Limit::ALL.into_iter().find(|l| l.field() == name)
+}
+
+/// The kind of an operation's error in the package's identifiers.
+impl From<cagd_ops::Kind> for Kind {
+    fn from(kind: cagd_ops::Kind) -> Kind {
+        use cagd_ops::Kind as K;
+        match kind {
+            K::Shape => Kind::Shape,
+            K::NonFinite | K::Overflow => Kind::NonFinite,
+            K::Domain => Kind::Domain,
+            K::Knots => Kind::Knots,
+            K::Weights => Kind::Weights,
+            K::Nodes => Kind::Nodes,
+            K::Corners => Kind::Corners,
+            K::Network => Kind::Network,
+            K::Singular => Kind::Singular,
+            K::Limit => Kind::Limit,
+            K::Internal => Kind::Internal,
+            _ => Kind::Value,
+        }
+    }
 }
 
 #[cfg(test)]

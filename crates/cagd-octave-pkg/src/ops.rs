@@ -27,25 +27,6 @@ pub fn execute<T: Number, O: Operation<T> + ?Sized>(
         .map_err(|e| op_error(names, e))
 }
 
-/// The kind of an operation's error in the package's identifiers.
-pub fn kind_of(kind: cagd_ops::Kind) -> Kind {
-    use cagd_ops::Kind as K;
-    match kind {
-        K::Shape => Kind::Shape,
-        K::NonFinite | K::Overflow => Kind::NonFinite,
-        K::Domain => Kind::Domain,
-        K::Knots => Kind::Knots,
-        K::Weights => Kind::Weights,
-        K::Nodes => Kind::Nodes,
-        K::Corners => Kind::Corners,
-        K::Network => Kind::Network,
-        K::Singular => Kind::Singular,
-        K::Limit => Kind::Limit,
-        K::Internal => Kind::Internal,
-        _ => Kind::Value,
-    }
-}
-
 /// An operation's error as the package raises it: `ARGUMENT: PROBLEM; expected FORM`, the
 /// argument named as the function's usage names it, a limit with the call that raises it.
 pub fn op_error(names: Names, e: OpError) -> PkgError {
@@ -60,5 +41,5 @@ pub fn op_error(names: Names, e: OpError) -> PkgError {
             limit.field()
         );
     }
-    PkgError::arg(kind_of(e.kind), name, problem, &e.expected)
+    PkgError::arg(Kind::from(e.kind), name, problem, &e.expected)
 }

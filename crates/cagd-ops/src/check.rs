@@ -21,19 +21,28 @@ use crate::Role;
 /// # Errors
 /// [`Kind::NonFinite`] about `role` for the first NaN or ±Inf.
 pub fn finite<'a, T: Scalar>(role: Role, values: impl IntoIterator<Item = &'a T>) -> Result<()> {
-    match values
+    match non_finite(values) {
+        None => Ok(()),
+        Some((problem, expected)) => Err(OpError::new(role, Kind::NonFinite, problem, expected)),
+    }
+}
+
+/// The words of [`finite`] for the first NaN or ±Inf of `values`, if any: a front end that
+/// reads numbers before any request (an Octave argument of a thesis function) refuses them
+/// with these words under its own name.
+pub fn non_finite<'a, T: Scalar>(
+    values: impl IntoIterator<Item = &'a T>,
+) -> Option<(String, &'static str)> {
+    values
         .into_iter()
         .enumerate()
         .find(|(_, x)| !x.is_finite_value())
-    {
-        None => Ok(()),
-        Some((k, x)) => Err(OpError::new(
-            role,
-            Kind::NonFinite,
-            format!("value {} is not finite ({})", k + 1, number_text(x)),
-            "finite numbers",
-        )),
-    }
+        .map(|(k, x)| {
+            (
+                format!("value {} is not finite ({})", k + 1, number_text(x)),
+                "finite numbers",
+            )
+        })
 }
 
 /// [`finite`] for a matrix (column-major, as Octave counts).

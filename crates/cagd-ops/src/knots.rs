@@ -177,6 +177,7 @@ pub fn knots_or_clamped<T: Scalar>(
 /// than `p + 1` — each with the library's error underneath.
 pub fn check_knots<T: Scalar>(knots: &[T], p: usize, n: usize, roles: KnotRoles) -> Result<()> {
     let at_fault = |e| OpError::library(roles.knots, e, KNOTS_FORM);
+    crate::check::finite(roles.knots, knots)?;
     in_order(knots, roles.knots_what).map_err(at_fault)?;
     enough_control_points(p, n, roles)?;
     let expected = n.saturating_add(p).saturating_add(1);
@@ -212,6 +213,7 @@ pub fn check_knots<T: Scalar>(knots: &[T], p: usize, n: usize, roles: KnotRoles)
 /// # Ok::<(), cagd_ops::OpError>(())
 /// ```
 pub fn check_basis_knots<T: Scalar>(knots: &[T], p: usize) -> Result<usize> {
+    crate::check::finite(Role::Knots, knots)?;
     in_order(knots, "knot vector").map_err(lib(Role::Knots, BASIS_KNOTS_FORM))?;
     let shape = |problem: String| OpError::new(Role::Knots, Kind::Shape, problem, BASIS_KNOTS_FORM);
     if knots.len() < p.saturating_add(2) {

@@ -117,8 +117,10 @@ impl<T: Scalar> Report<T> {
 
     /// The first number of the report that is not finite: the item's name, the flat index
     /// (column-major for matrices, row-major `(i, j, k)` for grids) and the value's double.
-    /// Text items (steps) are searched for the words `inf` and `NaN` in any case. Every
-    /// request's report is checked with it before it is returned ([`crate::finish`]).
+    /// Text items (steps) are searched for the words `inf` and `NaN` in any case. The item
+    /// `result` is searched first (the answer is what a refusal names, whatever steps were
+    /// asked for). Every request's report is checked with it before it is returned
+    /// ([`crate::finish`]).
     ///
     /// ```
     /// use cagd_ops::{Report, Value};
@@ -128,8 +130,11 @@ impl<T: Scalar> Report<T> {
     /// assert_eq!(r.first_non_finite(), Some(("result".to_string(), 1, f64::INFINITY)));
     /// ```
     pub fn first_non_finite(&self) -> Option<(String, usize, f64)> {
-        self.items
-            .iter()
+        let (result, rest): (Vec<_>, Vec<_>) =
+            self.items.iter().partition(|item| item.name == "result");
+        result
+            .into_iter()
+            .chain(rest)
             .find_map(|item| first_bad(&item.name, &item.value, &|x: &T| x.is_finite_value()))
     }
 

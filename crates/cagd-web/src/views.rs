@@ -13,7 +13,6 @@ use cagd_cli::{CliError, ErrorKind};
 use cagd_ops::knots::Degree;
 use cagd_ops::ops::{BSpline, Nurbs};
 use cagd_ops::ops::{DeCasteljau, Elevate, Subdivide};
-use cagd_ops::Params;
 use cagd_ops::{execute, Context, OpError, Operation, Params, Role};
 use nalgebra::DMatrix;
 use serde_json::{json, Value};
@@ -44,11 +43,12 @@ fn points(argument: &str, flat: &[f64], dim: usize) -> Result<DMatrix<f64>, CliE
             "control points given coordinate by coordinate, one point after the other",
         ));
     }
-    if let Some(i) = flat.iter().position(|x| !x.is_finite()) {
-        return Err(shape(
+    if let Some((problem, expected)) = cagd_ops::check::non_finite(flat) {
+        return Err(CliError::new(
             argument,
-            format!("coordinate {} is not a finite number", i + 1),
-            "finite numbers",
+            problem,
+            expected,
+            ErrorKind::Operation(cagd_ops::Kind::NonFinite),
         ));
     }
     Ok(DMatrix::from_column_slice(dim, flat.len() / dim, flat))
@@ -113,14 +113,19 @@ pub fn bezier_view(control: Vec<f64>, dim: usize, t: f64, samples: usize) -> Str
             ..DeCasteljau::new(b.clone())
         })?;
         warnings.extend(more);
-        let (elevated, _) = ops::execute(&Elevate::new(b.clone()))?;
+        // At the highest degree allowed the elevated curve is over the limit: the view shows
+        // the rest and says why that part is missing.
+        let elevated = ops::execute(&Elevate::new(b.clone()));
         let mut view = json!({
             "curve": item(&curve.report, "result"),
             "levels": levels(&scheme.report),
             "point": item(&scheme.report, "result"),
-            "elevated": item(&elevated.report, "control"),
+            "elevated": elevated.as_ref().map_or(Value::Null, |(e, _)| item(&e.report, "control")),
             "warnings": warnings.iter().map(|w| format!("{}: {}", w.role.key(), w.message)).collect::<Vec<_>>(),
         });
+        if let Err(e) = &elevated {
+            view["elevated_error"] = json!(format!("cagd: error: {e}"));
+        }
         match ops::execute(&Subdivide {
             t: Some(t),
             ..Subdivide::new(b)

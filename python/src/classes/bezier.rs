@@ -4,8 +4,8 @@
 use cagd::bezier::{BezierCurve, BezierPatch, Edge};
 use pyo3::prelude::*;
 
+use super::shared::{build, exactness, on, point_out, Ex, Exact};
 use super::steps::Steps;
-use super::{build, exactness, on, point_out, Ex, Exact};
 use crate::convert::{net_in, net_out, points_as_rows, rows_out, Num};
 use crate::error::IntoPy;
 
@@ -137,8 +137,8 @@ impl PyBezierCurve {
     }
 }
 
-super::curve_methods!(PyBezierCurve, "BezierCurve");
-super::surface_methods!(PyBezierPatch, "BezierPatch");
+super::shared::curve_methods!(PyBezierCurve, "BezierCurve");
+super::shared::surface_methods!(PyBezierPatch, "BezierPatch");
 
 fn scheme_steps<T: Num>(
     py: Python<'_>,

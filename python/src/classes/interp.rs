@@ -8,7 +8,7 @@ use cagd::spline::{CubicSpline, EndCondition};
 use pyo3::prelude::*;
 
 use super::bezier::PyBezierCurve;
-use super::{build, exactness, on, point_in, point_out, Ex, Exact};
+use super::shared::{build, exactness, on, point_in, point_out, Ex, Exact};
 use crate::convert::{params, points_as_rows, rows_out, vector_out, Num};
 use crate::error::{conversion, IntoPy};
 
@@ -201,9 +201,9 @@ impl PyLagrange {
     }
 }
 
-super::curve_methods!(PyHermiteCubic, "HermiteCubic");
-super::curve_methods!(PyCubicSpline, "CubicSpline");
-super::curve_methods!(PyLagrange, "Lagrange");
+super::shared::curve_methods!(PyHermiteCubic, "HermiteCubic");
+super::shared::curve_methods!(PyCubicSpline, "CubicSpline");
+super::shared::curve_methods!(PyLagrange, "Lagrange");
 
 /// Registers the classes.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {

@@ -13,10 +13,10 @@ use pyo3::prelude::*;
 
 use super::bezier::PyBezierCurve;
 use super::interp::{PyCubicSpline, PyHermiteCubic, PyLagrange};
-use super::mixed;
+use super::shared::mixed;
+use super::shared::{on, point_out, Ex, Exact};
 use super::splines::{PyBSplineCurve, PyNurbsCurve};
 use super::steps::Steps;
-use super::{on, point_out, Ex, Exact};
 use crate::convert::{net_in, net_out, params, Num};
 use crate::error::{conversion, IntoPy};
 
@@ -330,15 +330,15 @@ fn discrete_coons<'py>(
         limits.check_work("net", cost.weigh(T::EXACT)).py()?;
         net_out(net.py(), &cagd::coons::discrete_coons(&coords).py()?)
     }
-    if super::exactness(exact, &[net])? {
+    if super::shared::exactness(exact, &[net])? {
         run::<Exact>(net)
     } else {
         run::<f64>(net)
     }
 }
 
-super::surface_methods!(PyCoonsPatch, "CoonsPatch");
-super::surface_methods!(PyGordonSurface, "GordonSurface");
+super::shared::surface_methods!(PyCoonsPatch, "CoonsPatch");
+super::shared::surface_methods!(PyGordonSurface, "GordonSurface");
 
 /// Registers the classes and functions.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {

@@ -6,8 +6,8 @@ use cagd::nurbs::{NurbsCurve, NurbsSurface};
 use nalgebra::DMatrix;
 use pyo3::prelude::*;
 
+use super::shared::{build, exactness, on, point_out, Ex, Exact};
 use super::steps::Steps;
-use super::{build, exactness, on, point_out, Ex, Exact};
 use crate::convert::{net_in, net_out, params, points_as_rows, rows_out, vector_out, Num};
 use crate::error::IntoPy;
 
@@ -349,16 +349,16 @@ impl PyNurbsSurface {
         let inner = match (&c1.inner, &c2.inner) {
             (Ex::F(a), Ex::F(b)) => Ex::F(NurbsSurface::ruled(a, b).py()?),
             (Ex::E(a), Ex::E(b)) => Ex::E(NurbsSurface::ruled(a, b).py()?),
-            _ => return Err(super::mixed("c2")),
+            _ => return Err(super::shared::mixed("c2")),
         };
         Ok(PyNurbsSurface { inner })
     }
 }
 
-super::curve_methods!(PyBSplineCurve, "BSplineCurve");
-super::curve_methods!(PyNurbsCurve, "NurbsCurve");
-super::surface_methods!(PyBSplineSurface, "BSplineSurface");
-super::surface_methods!(PyNurbsSurface, "NurbsSurface");
+super::shared::curve_methods!(PyBSplineCurve, "BSplineCurve");
+super::shared::curve_methods!(PyNurbsCurve, "NurbsCurve");
+super::shared::surface_methods!(PyBSplineSurface, "BSplineSurface");
+super::shared::surface_methods!(PyNurbsSurface, "NurbsSurface");
 
 /// Registers the classes.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {

@@ -6,7 +6,7 @@ use nalgebra::DMatrix;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use super::exactness;
+use super::shared::exactness;
 use crate::convert::{columns_out, params, points_as_rows, rows_out, Num};
 use crate::error::{conversion, IntoPy};
 
@@ -29,7 +29,7 @@ fn bernstein<'py>(i: usize, n: usize, t: &Bound<'py, PyAny>) -> PyResult<Bound<'
         })
     }
     if crate::convert::any_exact(&[t])? {
-        run::<super::Exact>(i, n, t)
+        run::<super::shared::Exact>(i, n, t)
     } else {
         run::<f64>(i, n, t)
     }
@@ -60,7 +60,7 @@ fn conversion_matrix_of<'py>(
 ) -> PyResult<Bound<'py, PyAny>> {
     let (f, t) = (form(source)?, form(target)?);
     if exact {
-        columns_out(py, &conversion_matrix::<super::Exact>(f, t))
+        columns_out(py, &conversion_matrix::<super::shared::Exact>(f, t))
     } else {
         columns_out(py, &conversion_matrix::<f64>(f, t))
     }
@@ -86,7 +86,7 @@ fn convert_cubic<'py>(
     }
     let (f, t) = (form(source)?, form(target)?);
     if exactness(exact, &[geometry])? {
-        run::<super::Exact>(geometry, f, t)
+        run::<super::shared::Exact>(geometry, f, t)
     } else {
         run::<f64>(geometry, f, t)
     }

@@ -6,7 +6,7 @@
 use std::path::Path;
 
 use cagd_octave::literal::{LiteralScalar, Position, Warning};
-use cagd_ops::{Answer, OpError, Operation, Role};
+use cagd_ops::{Answer, OpError, Operation};
 
 use super::common::{add_mesh, add_plot, finish};
 use super::cx::Cx;
@@ -48,7 +48,7 @@ pub(crate) fn respond<T: LiteralScalar, O: Operation<T> + ?Sized>(
         })
         .collect();
     let answer = result.map_err(|e| op_error(names, e))?;
-    outcome(answer, to, warnings)
+    outcome(answer, to, warnings, names)
 }
 
 /// The report rendered, the picture and the mesh staged.
@@ -56,6 +56,7 @@ fn outcome<T: LiteralScalar>(
     answer: Answer<T>,
     to: Destinations<'_>,
     warnings: Vec<(String, Warning)>,
+    names: &Names,
 ) -> Result<Outcome, CliError> {
     let mut files = PendingWrites::new();
     if let (Some(path), Some(drawing)) = (to.plot, answer.drawing) {
@@ -64,7 +65,7 @@ fn outcome<T: LiteralScalar>(
     if let (Some(path), Some(grid)) = (to.mesh, &answer.mesh) {
         add_mesh(&mut files, "--mesh", path, grid)?;
     }
-    finish(&answer.report, to.output, files, warnings)
+    finish(&answer.report, to.output, files, warnings, names)
 }
 
 /// An error of the operation layer as the command line prints it: the role named as this
@@ -77,9 +78,6 @@ pub(crate) fn op_error(names: &Names, e: OpError) -> CliError {
             crate::limits::flag(limit),
             crate::limits::variable(limit)
         );
-    }
-    if e.role == Role::Result {
-        problem = problem.replacen("the result", &format!("the {} result", names.command), 1);
     }
     let literal = e
         .cause

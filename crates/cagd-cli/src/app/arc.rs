@@ -31,7 +31,6 @@ pub struct ArcCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "arc",
     input: "--radius",
     special: SPECIAL,
 };

@@ -37,7 +37,6 @@ pub struct BernsteinCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "bernstein",
     input: "--degree",
     special: &[],
 };

@@ -84,7 +84,6 @@ pub struct BezierPatchCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "bezier-patch",
     input: "NET",
     special: &[(Role::DerivativeOrder, "--du/--dv")],
 };

@@ -52,7 +52,6 @@ pub struct BSplineCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "bspline",
     input: "CONTROL",
     special: &[],
 };

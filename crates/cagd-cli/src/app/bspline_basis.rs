@@ -48,7 +48,6 @@ pub struct BSplineBasisCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "bspline-basis",
     input: "--knots",
     special: &[],
 };

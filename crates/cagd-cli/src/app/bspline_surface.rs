@@ -31,7 +31,6 @@ pub struct BSplineSurfaceCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "bspline-surface",
     input: "NET",
     special: &[],
 };

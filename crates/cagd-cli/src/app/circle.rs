@@ -25,7 +25,6 @@ pub struct CircleCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "circle",
     input: "--radius",
     special: SPECIAL,
 };

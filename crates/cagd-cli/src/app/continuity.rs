@@ -57,7 +57,6 @@ pub struct ContinuityCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "continuity",
     input: "FIRST/SECOND",
     special: &[(Role::First, "FIRST"), (Role::Second, "SECOND")],
 };

@@ -79,7 +79,6 @@ pub struct ConvertCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "convert",
     input: "GEOMETRY",
     special: &[(Role::Control, "GEOMETRY")],
 };

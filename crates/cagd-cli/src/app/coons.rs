@@ -66,7 +66,6 @@ pub struct CoonsCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "coons",
     input: "--c1/--c2/--d1/--d2",
     special: &[],
 };

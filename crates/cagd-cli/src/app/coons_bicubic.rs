@@ -91,7 +91,6 @@ pub struct CoonsBicubicCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "coons-bicubic",
     input: "--c1/--c2/--d1/--d2",
     special: &[],
 };

@@ -19,8 +19,11 @@ use crate::plot::{Colour, Figure};
 use crate::{CliError, PendingWrites, Report, Value};
 
 use super::common::*;
-use super::thesis::{heading, q, text, Files, Q};
+use super::cx::Cx;
+use super::run::Run;
+use super::worked::{heading, q, text, Files, Q};
 use super::Outcome;
+use cagd_octave::literal::LiteralScalar;
 
 /// Reproduce the worked examples of the course notes (matrix-form, lecture and CAD notes).
 #[derive(Debug, Args)]
@@ -39,6 +42,12 @@ pub struct CourseCommand {
     /// The folder for the pictures (created if missing).
     #[arg(long, value_name = "DIR", default_value = "cagd-course")]
     pub out: PathBuf,
+}
+
+impl Run for CourseCommand {
+    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
+        course(&cx.limits, self)
+    }
 }
 
 const INTERNAL: &str = "a valid built-in example";

@@ -49,7 +49,6 @@ pub struct CurvatureCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "curvature",
     input: "CURVE",
     special: &[(cagd_ops::Role::Control, "CURVE")],
 };

@@ -41,7 +41,6 @@ pub struct CurveCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "curve",
     input: "EXPR",
     special: &[(Role::Control, "EXPR")],
 };

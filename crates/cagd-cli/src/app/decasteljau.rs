@@ -53,7 +53,6 @@ pub struct DecasteljauCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "decasteljau",
     input: "CONTROL",
     special: &[],
 };

@@ -41,7 +41,6 @@ pub struct DerivativeCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "derivative",
     input: "CONTROL",
     special: &[],
 };

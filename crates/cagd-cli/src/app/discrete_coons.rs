@@ -52,7 +52,6 @@ pub struct DiscreteCoonsCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "discrete-coons",
     input: "NET",
     special: &[],
 };

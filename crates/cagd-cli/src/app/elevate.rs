@@ -53,7 +53,6 @@ pub struct ElevateCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "elevate",
     input: "CONTROL",
     special: &[],
 };

@@ -65,7 +65,6 @@ impl<T: LiteralScalar> Evaluator<T> for ExprCurve<T> {
             .derivative(self.param)
             .map_err(|e| self.error(e))?;
         let work = Sampling {
-            argument: "",
             expr: &derivative,
             params: vec![(self.param, ts)],
         }
@@ -84,7 +83,6 @@ impl<T: LiteralScalar> Evaluator<T> for ExprCurve<T> {
     fn work(&self, ts: &[T]) -> Work {
         let env = self.env.borrow();
         let sampling = Sampling {
-            argument: "",
             expr: &self.expr,
             params: vec![(self.param, ts)],
         };

@@ -77,7 +77,6 @@ pub struct FergusonCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "ferguson",
     input: "--points/--du/--dv/--twists",
     special: &[(Role::Points, "--points")],
 };

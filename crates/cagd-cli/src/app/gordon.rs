@@ -71,7 +71,6 @@ pub struct GordonCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "gordon",
     input: "--u-curve/--v-curve",
     special: &[],
 };

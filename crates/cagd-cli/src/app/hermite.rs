@@ -45,7 +45,6 @@ pub struct HermiteCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "hermite",
     input: "--p0/--p1/--t0/--t1",
     special: &[],
 };

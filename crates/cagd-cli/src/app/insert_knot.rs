@@ -57,7 +57,6 @@ pub struct InsertKnotCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "insert-knot",
     input: "CONTROL",
     special: &[(Role::At, "--insert")],
 };

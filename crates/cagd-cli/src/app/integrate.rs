@@ -65,7 +65,6 @@ pub struct IntegrateCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "integrate",
     input: "CONTROL",
     special: &[(Role::Degree, "--bernstein")],
 };

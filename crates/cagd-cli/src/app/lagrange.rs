@@ -57,7 +57,6 @@ pub struct LagrangeCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "lagrange",
     input: "--nodes/--points",
     special: &[(Role::Points, "--points")],
 };

@@ -1,7 +1,6 @@
 //! The `cagd` command line in-process: parse the arguments, call the library, and return what
 //! would be printed and written (see [`crate::run`]).
 
-use cagd::limits::Limits;
 use std::ffi::OsString;
 
 use clap::error::{ContextKind, ErrorKind as ClapKind};
@@ -12,8 +11,6 @@ mod answer;
 mod arc;
 
 mod bernstein;
-
-mod bezier;
 
 mod bezier_patch;
 
@@ -38,7 +35,7 @@ mod derivative;
 
 mod expr_curve;
 
-mod legacy;
+mod serve;
 
 mod read;
 
@@ -64,8 +61,6 @@ mod convert;
 
 mod course_examples;
 
-mod curve;
-
 mod discrete_coons;
 
 mod elevate;
@@ -87,7 +82,7 @@ mod outcome;
 
 mod lagrange;
 
-mod patches;
+mod worked;
 
 mod ruled;
 
@@ -103,10 +98,8 @@ mod thesis;
 
 mod work;
 
-use crate::args::{LimitArgs, ScriptArgs};
-use crate::{load_script, CliError, ErrorKind, PendingWrites};
-use cagd_octave::literal::{Env, LiteralScalar};
-use cagd_octave::script::Script;
+use crate::args::LimitArgs;
+use crate::{CliError, ErrorKind, PendingWrites};
 
 /// Curves and surfaces of computer-aided geometric design, checked against GNU Octave.
 #[derive(Debug, Parser)]
@@ -198,68 +191,13 @@ where
     let limits = &cli.limits.resolve()?;
     crate::slips::take();
     let mut cx = Cx::new(*limits);
-    let outcome = cli.command.run(&mut cx).map_err(|e| {
-        // A non-finite result is about the command's input (see `common::finish`).
-        if e.argument == common::RESULT {
-            let (name, input) = cli.command.input();
-            CliError {
-                argument: input.to_string(),
-                problem: e
-                    .problem
-                    .replacen("the result", &format!("the {name} result"), 1),
-                ..e
-            }
-        } else {
-            e
-        }
-    });
+    let outcome = cli.command.run(&mut cx);
     // The slips noticed while reading the input come first; each warning is printed once.
     let mut warnings = crate::slips::take();
     let mut outcome = outcome?;
     warnings.append(&mut outcome.warnings);
     outcome.warnings = crate::slips::dedup(warnings);
     Ok(outcome)
-}
-
-impl Command {
-    /// The subcommand's name and the input its result is computed from.
-    fn input(&self) -> (&'static str, &'static str) {
-        match self {
-            Command::Thesis(_) => ("thesis", "thesis"),
-            Command::Decasteljau(_) => ("decasteljau", "CONTROL"),
-            Command::BezierPatch(_) => ("bezier-patch", "NET"),
-            Command::Coons(_) => ("coons", "--c1/--c2/--d1/--d2"),
-            Command::CoonsBicubic(_) => ("coons-bicubic", "--c1/--c2/--d1/--d2"),
-            Command::DiscreteCoons(_) => ("discrete-coons", "NET"),
-            Command::Gordon(_) => ("gordon", "--u-curve/--v-curve"),
-            Command::Lagrange(_) => ("lagrange", "--nodes/--points"),
-            Command::Bernstein(_) => ("bernstein", "--degree"),
-            Command::Derivative(_) => ("derivative", "CONTROL"),
-            Command::Spline(_) => ("spline", "POINTS"),
-            Command::Hermite(_) => ("hermite", "--p0/--p1/--t0/--t1"),
-            Command::Bspline(_) => ("bspline", "CONTROL"),
-            Command::Nurbs(_) => ("nurbs", "CONTROL"),
-            Command::Curve(_) => ("curve", "EXPR"),
-            Command::Surface(_) => ("surface", "EXPR"),
-            Command::Script(_) => ("script", "FILE"),
-            Command::Serve(_) => ("serve", "--dir"),
-            Command::Course(_) => ("course", "course"),
-            Command::Convert(_) => ("convert", "GEOMETRY"),
-            Command::Elevate(_) => ("elevate", "CONTROL"),
-            Command::Subdivide(_) => ("subdivide", "CONTROL"),
-            Command::InsertKnot(_) => ("insert-knot", "CONTROL"),
-            Command::BsplineBasis(_) => ("bspline-basis", "--knots"),
-            Command::Continuity(_) => ("continuity", "FIRST/SECOND"),
-            Command::Curvature(_) => ("curvature", "CURVE"),
-            Command::Integrate(_) => ("integrate", "CONTROL"),
-            Command::Ruled(_) => ("ruled", "--first/--second"),
-            Command::Ferguson(_) => ("ferguson", "--points"),
-            Command::BsplineSurface(_) => ("bspline-surface", "NET"),
-            Command::NurbsSurface(_) => ("nurbs-surface", "NET"),
-            Command::Circle(_) => ("circle", "--radius"),
-            Command::Arc(_) => ("arc", "--radius"),
-        }
-    }
 }
 
 /// The clap definition of the whole command line (see [`crate::schema`]).
@@ -289,15 +227,6 @@ where
         }) => Some(c),
         _ => None,
     }
-}
-
-/// Runs `--script` if given, binding `N` first.
-pub fn prepare_script<T: LiteralScalar>(
-    limits: &Limits,
-    script: &ScriptArgs,
-    n: Option<usize>,
-) -> Result<Option<Script<T>>, CliError> {
-    read::run_script(limits, script, n)
 }
 
 /// Turns a clap error into the one-line form (help and version are printed as a result).

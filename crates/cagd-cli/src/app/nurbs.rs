@@ -54,7 +54,6 @@ pub struct NurbsCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "nurbs",
     input: "CONTROL",
     special: &[],
 };

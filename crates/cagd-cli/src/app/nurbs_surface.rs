@@ -37,7 +37,6 @@ pub struct NurbsSurfaceCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "nurbs-surface",
     input: "NET",
     special: &[],
 };

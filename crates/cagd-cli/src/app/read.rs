@@ -1,7 +1,7 @@
 //! Reading a subcommand's arguments into the typed values of a request: points (columns, or
 //! rows with `--rows`), parameters (`--t`, `--u`, `--v`, `--n`), an interval, a data script.
 
-use cagd_octave::literal::{Env, LiteralScalar, Warning};
+use cagd_octave::literal::{Env, LiteralScalar};
 use cagd_octave::script::Script;
 use cagd_ops::bspline_arg::{BSplineArg, SplineDegree};
 use cagd_ops::Params;
@@ -128,17 +128,6 @@ impl Outcome {
         self.warnings = warnings;
         self
     }
-}
-
-/// A warning of this command about `argument`.
-pub(crate) fn warning(argument: &str, message: String) -> (String, Warning) {
-    (
-        argument.to_string(),
-        Warning {
-            at: cagd_octave::literal::Position::default(),
-            message,
-        },
-    )
 }
 
 /// The one number of `argument` (a list of one value, as `--t` and `--k` take), else an error

@@ -57,7 +57,6 @@ pub struct RuledCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "ruled",
     input: "--first/--second",
     special: &[(Role::Boundary, "--first/--second")],
 };

@@ -35,8 +35,6 @@ pub(crate) fn run_any<R: Run>(command: &R, cx: &mut Cx) -> Result<Outcome, CliEr
 /// input (a result that overflows is about what it was computed from).
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Names {
-    /// The subcommand (`decasteljau`).
-    pub command: &'static str,
     /// The argument the result is computed from (`CONTROL`).
     pub input: &'static str,
     /// Roles named otherwise than [`option_name`] says.

@@ -8,7 +8,7 @@ use clap::Args;
 
 use super::common::finish;
 use super::cx::Cx;
-use super::run::Run;
+use super::run::{Names, Run};
 use crate::args::{OutputArgs, ScriptArgs};
 use crate::{CliError, ErrorKind, Outcome, PendingWrites, Report, Value};
 
@@ -55,6 +55,10 @@ impl Run for ScriptCommand {
             &self.output,
             PendingWrites::new(),
             warnings,
+            &Names {
+                input: "FILE",
+                special: &[],
+            },
         )
     }
 }

@@ -72,7 +72,6 @@ pub struct SplineCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "spline",
     input: "POINTS",
     special: &[
         (Role::Nodes, "--params"),

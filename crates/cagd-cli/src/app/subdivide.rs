@@ -44,7 +44,6 @@ pub struct SubdivideCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "subdivide",
     input: "CONTROL",
     special: &[],
 };

@@ -51,7 +51,6 @@ pub struct SurfaceCommand {
 
 /// The names of this command's arguments.
 const NAMES: Names = Names {
-    command: "surface",
     input: "EXPR",
     special: &[(Role::Control, "EXPR")],
 };
@@ -106,7 +105,6 @@ impl<T: LiteralScalar> SurfaceEvaluator<T> for ExprSurface<T> {
 
     fn work(&self, us: &[T], vs: &[T]) -> Work {
         let sampling = Sampling {
-            argument: "",
             expr: &self.expr,
             params: vec![("u", us), ("v", vs)],
         };

@@ -3,21 +3,22 @@
 
 use cagd::limits::Limits;
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use cagd::grid::PointGrid;
 use clap::Args;
 use nalgebra::{DMatrix, DVector};
-use num_rational::BigRational;
 
 use crate::plot::{Colour, Figure};
-use crate::{render, CliError, Format, PendingWrites, Report, Value};
+use crate::{CliError, PendingWrites, Report, Value};
 use cagd::bezier::{BezierCurve, BezierPatch};
 use cagd::{CoonsPatch, GordonSurface, SampledCurve, Surface, Tolerance};
 use cagd_octave::literal::{Env, LiteralScalar, ParamExpr};
 
 use super::common::*;
-use super::patches::coons_figure;
+use super::cx::Cx;
+use super::run::Run;
+use super::worked::{coons_figure, heading, q, text, Files, Q};
 use super::Outcome;
 
 /// Reproduce every worked example and appendix run of the thesis, with steps and pictures.
@@ -38,18 +39,10 @@ pub struct ThesisCommand {
     pub out: PathBuf,
 }
 
-pub(super) type Q = BigRational;
-
-pub(super) fn q(num: i64, den: i64) -> Q {
-    Q::new(num.into(), den.into())
-}
-
-pub(super) fn text<T: LiteralScalar>(report: &Report<T>) -> String {
-    render(report, Format::Text).unwrap_or_default()
-}
-
-pub(super) fn heading(out: &mut String, title: &str) {
-    let _ = writeln!(out, "{title}\n{}\n", "=".repeat(title.chars().count()));
+impl Run for ThesisCommand {
+    fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
+        thesis(&cx.limits, self)
+    }
 }
 
 /// The appendix C data script (algorithm 5's input), with the two bugs of the printed
@@ -82,33 +75,6 @@ P2 = [1;0;0];
 P3 = [0;1;0];
 P4 = [1;1;1];
 ";
-
-/// The pictures and meshes of a worked-examples command, staged until everything is computed.
-pub(super) struct Files<'a> {
-    pub(super) dir: &'a Path,
-    pub(super) pending: PendingWrites,
-    pub(super) written: Vec<String>,
-}
-
-impl Files<'_> {
-    pub(super) fn picture(&mut self, name: &str, figure: &Figure) -> Result<(), CliError> {
-        for ext in crate::plot::PICTURE_EXTENSIONS {
-            let file = format!("{name}.{ext}");
-            add_plot(&mut self.pending, "--out", &self.dir.join(&file), figure)?;
-            self.written.push(file);
-        }
-        Ok(())
-    }
-
-    pub(super) fn meshes(&mut self, name: &str, grid: &PointGrid<f64>) -> Result<(), CliError> {
-        for ext in ["stl", "obj", "ply"] {
-            let file = format!("{name}.{ext}");
-            add_mesh(&mut self.pending, "--out", &self.dir.join(&file), grid)?;
-            self.written.push(file);
-        }
-        Ok(())
-    }
-}
 
 fn expr(text: &str) -> Result<ParamExpr, CliError> {
     ParamExpr::parse(text).map_err(|e| CliError::literal("thesis", e, "a valid built-in example"))
@@ -324,7 +290,8 @@ fn appendix_c(limits: &Limits, out: &mut String, files: &mut Files) -> Result<()
             .ok_or_else(|| shape("thesis", format!("no {name}"), INTERNAL))
     };
     let corners = [corner("P1")?, corner("P2")?, corner("P3")?, corner("P4")?];
-    let [c1, c2, d1, d2]: [CliCurve<f64>; 4] = curves.try_into().unwrap_or_else(|_| unreachable!());
+    let [c1, c2, d1, d2]: [SampledCurve<f64>; 4] =
+        curves.try_into().unwrap_or_else(|_| unreachable!());
     let patch = CoonsPatch::with_corners(
         c1.clone(),
         c2.clone(),

@@ -10,9 +10,9 @@ use std::time::SystemTime;
 
 use hyper::body::Bytes;
 
+use super::budget::MAX_CACHED_FILE_BYTES;
 use super::files::{cache_control, compressible, content_type, resolve_in};
 use super::negotiate::Accepts;
-use super::MAX_CACHED_FILE_BYTES;
 
 /// The most bytes kept in memory for all cached files together; past it the cache starts over.
 const MAX_CACHE_BYTES: usize = 256 << 20;

@@ -18,10 +18,10 @@ use tokio::net::{TcpListener, TcpStream};
 use tokio::sync::Semaphore;
 use tokio::time::{Instant, Sleep};
 
+use super::budget::{HEADER_TIMEOUT, MAX_CONNECTIONS, MAX_CONNECTION_TIME, STALL_TIMEOUT};
 use super::cache::{self, Found, Large, Page, Variant};
 use super::files;
 use super::negotiate::{self, Accepts};
-use super::{HEADER_TIMEOUT, MAX_CONNECTIONS, MAX_CONNECTION_TIME, STALL_TIMEOUT};
 
 type Answer = Response<BoxBody<Bytes, io::Error>>;
 

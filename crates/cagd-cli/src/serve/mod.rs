@@ -37,17 +37,21 @@
 //! size or modification time changes); larger ones are streamed from disk uncompressed.
 
 use std::path::{Path, PathBuf};
-use std::time::Duration;
 
 use clap::Args;
 
 use crate::{CliError, ErrorKind};
 
+mod budget;
 mod cache;
 mod files;
 mod http;
 mod negotiate;
 
+pub use budget::{
+    FILE_THREADS, HEADER_TIMEOUT, MAX_CACHED_FILE_BYTES, MAX_CONNECTIONS, MAX_CONNECTION_TIME,
+    STALL_TIMEOUT, WORKER_THREADS,
+};
 pub use files::{content_type, is_hashed_name, resolve};
 
 /// Serve the web page (every construction, in the browser) on localhost.
@@ -74,22 +78,6 @@ pub struct ServeCommand {
     #[arg(long, value_name = "DIR", value_parser = crate::args::path_value)]
     pub dir: Option<PathBuf>,
 }
-
-/// The threads that serve connections (each connection is a task on one of them).
-pub const WORKER_THREADS: usize = 2;
-/// The threads that read files from disk and compress them, at most.
-pub const FILE_THREADS: usize = 4;
-/// The most connections served at once; further clients wait in the listening queue.
-pub const MAX_CONNECTIONS: usize = 256;
-/// A connection that makes no progress (no byte read or written) for this long is closed: a
-/// client that stopped reading its answers, or an idle kept-alive connection.
-pub const STALL_TIMEOUT: Duration = Duration::from_secs(15);
-/// The longest a client may take to send the head of a request (a slow-loris client).
-pub const HEADER_TIMEOUT: Duration = Duration::from_secs(10);
-/// The longest one connection is served, however busy (a client trickling bytes forever).
-pub const MAX_CONNECTION_TIME: Duration = Duration::from_secs(600);
-/// Files up to this size are kept in memory (and compressed there); larger ones are streamed.
-pub const MAX_CACHED_FILE_BYTES: u64 = 32 << 20;
 
 /// Where the built page is looked for when `--dir` is not given, relative to a base folder.
 const DEFAULT_DIR: &str = "web/dist";

@@ -134,7 +134,7 @@ fn bezier_patch_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result
         ));
     }
     // As every reader: NaN and ±Inf have no exact value.
-    cagd::error::check_finite("B", b.data.iter())?;
+    crate::args::finite("B", b.data)?;
     // B(c, i+1, j+1) = b_ij(c) is the net (m+1, n+1, d) of the operation.
     let (d, m1, n1) = (b.dims[0], b.dims[1], b.dims.get(2).copied().unwrap_or(1));
     let net = PointGrid::from_shape_fn((m1, n1, d), |(i, j, c)| {

@@ -77,6 +77,7 @@ impl<T: Scalar> BSpline<T> {
     /// # Errors
     /// The rules of [`crate::knots`]; non-finite control points.
     pub fn curve(&self, cx: &Context) -> Result<BSplineCurve<T>> {
+        crate::check::points(Role::Control, &self.control, 1, "control points")?;
         let p = self.degree.resolve(cx)?;
         let n = self.control.ncols();
         let knots = knots::knots_or_clamped(self.knots.as_deref(), p, n, knots::CURVE)?;

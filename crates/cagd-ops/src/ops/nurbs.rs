@@ -100,6 +100,8 @@ pub(crate) fn curve<T: Scalar>(
     knots: Option<&[T]>,
     cx: &Context,
 ) -> Result<NurbsCurve<T>> {
+    crate::check::points(Role::Control, control, 1, "control points")?;
+    crate::check::finite(Role::Weights, weights)?;
     let h = cagd::nurbs::homogenize("NURBS weights", control, weights)
         .map_err(lib(Role::Weights, WEIGHTS_FORM))?;
     let p = degree.resolve(cx)?;
