@@ -25,7 +25,7 @@ use cagd::limits::Limits;
 
 /// `f64` or an exact rational, with the package's input and output conventions.
 ///
-/// Whether it is the exact arithmetic is [`LiteralScalar::EXACT`].
+/// Whether it is the exact arithmetic is [`cagd::Scalar::EXACT`].
 pub trait Number: cagd::Scalar + LiteralScalar {
     /// An Octave double as this number: itself, or the shortest decimal that gives it back.
     fn from_input(x: f64) -> Self;
