@@ -37,7 +37,7 @@ endfunction
 %!assert (size (cagd_bezier (P, zeros (2, 3))), [3 6])
 %!assert (cagd_bezier ([1 2 4], 2), 9)
 %!error <P: empty> cagd_bezier ([], 0.5)
-%!error <t: value at index 1 is not finite> cagd_bezier (P, [0 NaN])
+%!error <t: value 2 is not finite> cagd_bezier (P, [0 NaN])
 %!error <called with 1 argument> cagd_bezier (P)
 %!error <P: .* does not parse|P: > cagd_bezier ("[0 1", 0.5, "exact")
 
