@@ -5,7 +5,8 @@
 # The last line printed is the path of the tarball (OUTDIR/cagd-VERSION.tar.gz).
 #
 # The tarball holds the package (DESCRIPTION, COPYING, INDEX, inst/*.m) and the sources of its
-# oct-file: src/__cagd__.cc, src/Makefile, and in src/rust/ the Rust crates it links -- the core
+# oct-file: src/__cagd__.cc, src/Makefile, src/cagd_twin_docs.h (generated here from the .m
+# files by src/twin_docs.py), and in src/rust/ the Rust crates it links -- the core
 # cagd (src/), cagd-ops, cagd-octave, cagd-octave-pkg, cagd-octave-ffi -- as a workspace of their own with
 # the checkout's Cargo.lock. `pkg install` runs src/Makefile: cargo builds the static library
 # (release profile; crates.io must be reachable, or the crates vendored/cached), then mkoctfile
@@ -29,6 +30,10 @@ mkdir -p "$pkg/inst" "$pkg/src/rust/crates"
 cp -p "$here/DESCRIPTION" "$here/COPYING" "$here/INDEX" "$pkg/"
 cp -p "$here"/inst/*.m "$pkg/inst/"
 cp -p "$here/src/__cagd__.cc" "$here/src/Makefile" "$pkg/src/"
+# The builtin twins (see __cagd__.cc): their docstrings from their .m files, and their test
+# blocks as NAME.cc-tst in place of the .m files (no .m file of a builtin's name on the path).
+python3 "$here/src/twin_docs.py" "$here/inst" "$pkg/src/cagd_twin_docs.h"
+python3 "$here/src/twin_docs.py" --tests "$pkg/inst"
 
 rust="$pkg/src/rust"
 cp -p "$root/Cargo.toml" "$root/Cargo.lock" "$root/rustfmt.toml" "$rust/"

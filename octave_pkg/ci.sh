@@ -6,8 +6,11 @@
 #      library in release mode, mkoctfile links the gateway);
 #   3. runs every package test in live Octave, one process (octave_pkg/tests/cagd_run_tests.m):
 #      the functions' own test blocks, the thesis examples against octave_ref/expected, the
-#      differential test against octave_ref/fixed (>= 1000 random cases), octave-nurbs' tests
-#      with the cagd_ twins and >= 500 random NURBS against nrbeval, the bad-input table.
+#      differential test against octave_ref/fixed (>= 1000 random cases), the octave-nurbs twins
+#      (tests/cagd_test_nurbs.m: octave-nurbs' own test blocks and demos in a copy whose calls of
+#      the twinned functions are renamed to cagd_*, with each twin; ~2400 random calls of every
+#      argument form against octave-nurbs in the same session; cagd_nrbcoons against nrbcoons),
+#      the bad-input table.
 # Exits non-zero on any failure.
 #
 # Needs octave with octave-nurbs, mkoctfile (Debian: octave-dev, installed here if missing),

@@ -34,3 +34,9 @@ endfunction
 %!error <m: expected the index of a node> Lagrange ([0 0.5 1], 4, 0.5)
 %!error <nodes 0 and 1 are equal> Lagrange ([1 1], 1, 0.5)
 %!error <u: value at index 1 is not finite> Lagrange ([0 1], 1, [0 Inf])
+
+%!demo
+%! ## The three quadratic Lagrange basis polynomials on the nodes 0, 1/2, 1.
+%! x = [0 0.5 1]; u = linspace (0, 1, 101);
+%! plot (u, Lagrange (x, 1, u), u, Lagrange (x, 2, u), u, Lagrange (x, 3, u));
+%! legend ("L_1", "L_2", "L_3"); title ("Lagrange: the basis on the nodes 0, 1/2, 1");

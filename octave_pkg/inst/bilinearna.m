@@ -38,5 +38,11 @@ endfunction
 %! ## Degree (1, 2): b_{0,j} = (0, j/2, 0), b_{1,j} = (1, j/2, z_j), z = 0, 2, 0.
 %! B = [0 0 0 0 0.5 0 0 1 0; 1 0 0 1 0.5 2 1 1 0];
 %! assert (squeeze (bilinearna (B, 0.5, 0.5, 10))', [0.5 0.5 0.5]);
-%!error <u: value at index 0 is not finite> bilinearna ([0 0 0], NaN, 0, 1)
+%!error <u: value 1 is not finite> bilinearna ([0 0 0], NaN, 0, 1)
 %!error <B: logical is not accepted> bilinearna (true (1, 3), 0, 0, 1)
+
+%!demo
+%! ## The bilinear patch z = uv (thesis: bilinearna) on a 15 x 15 grid.
+%! B = [0 0 0  0 1 0; 1 0 0  1 1 1];
+%! L = bilinearna (B, 0, 0, 15);
+%! surf (L(:,:,1), L(:,:,2), L(:,:,3)); title ("bilinearna: the hyperbolic paraboloid z = uv");

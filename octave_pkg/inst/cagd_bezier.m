@@ -37,6 +37,13 @@ endfunction
 %!assert (size (cagd_bezier (P, zeros (2, 3))), [3 6])
 %!assert (cagd_bezier ([1 2 4], 2), 9)
 %!error <P: empty> cagd_bezier ([], 0.5)
-%!error <t: value at index 1 is not finite> cagd_bezier (P, [0 NaN])
+%!error <t: value 2 is not finite> cagd_bezier (P, [0 NaN])
 %!error <called with 1 argument> cagd_bezier (P)
 %!error <P: .* does not parse|P: > cagd_bezier ("[0 1", 0.5, "exact")
+
+%!demo
+%! ## Thesis Primer 2.4: the cubic and its control polygon.
+%! P = [0 0 8 4; 0 2 2 0; 0 2 0 0];
+%! X = cagd_bezier (P, linspace (0, 1, 101));
+%! plot3 (P(1,:), P(2,:), P(3,:), "ro--", X(1,:), X(2,:), X(3,:), "b-"); grid on;
+%! title ("cagd\_bezier: thesis Primer 2.4");

@@ -36,3 +36,12 @@ endfunction
 %! assert (cagd_bezier_derivative (P, 0.3, 3), 6 * (P(:,4) - 3*P(:,3) + 3*P(:,2) - P(:,1)));
 %!assert (cagd_bezier_derivative (P, "1/3", 1, "exact"), {"28/3"; "2"; "0"})
 %!error <derivative order 4 exceeds the degree 3> cagd_bezier_derivative (P, 0.5, 4)
+
+%!demo
+%! ## A plane cubic with its tangent vectors (the hodograph's values) at 9 points.
+%! P = [0 1 3 4; 0 2 2 0]; t = linspace (0, 1, 9);
+%! X = cagd_bezier (P, linspace (0, 1, 101)); [D, Q] = cagd_bezier_derivative (P, t);
+%! Y = cagd_bezier (P, t);
+%! plot (X(1,:), X(2,:), "b-", P(1,:), P(2,:), "ro--"); hold on;
+%! quiver (Y(1,:), Y(2,:), D(1,:), D(2,:), 0.3); hold off; axis equal;
+%! title ("cagd\_bezier\_derivative: tangents of a cubic");

@@ -30,3 +30,10 @@ endfunction
 %! assert (cagd_bezier (cagd_bezier_elevate (P, 3), s), cagd_bezier (P, s), 1e-14);
 %!error <r: -1 is not a non-negative integer> cagd_bezier_elevate ([0 1], -1)
 %!error <cagd_limits> cagd_bezier_elevate ([0 1], 5000)
+
+%!demo
+%! ## A cubic raised to degree 4 and 8: the polygons approach the curve.
+%! P = [0 1 3 4; 0 2 -1 1]; X = cagd_bezier (P, linspace (0, 1, 101));
+%! Q4 = cagd_bezier_elevate (P, 1); Q8 = cagd_bezier_elevate (P, 5);
+%! plot (P(1,:), P(2,:), "o--", Q4(1,:), Q4(2,:), "s-", Q8(1,:), Q8(2,:), "d-", X(1,:), X(2,:), "k");
+%! legend ("degree 3", "degree 4", "degree 8", "curve"); title ("cagd\_bezier\_elevate");

@@ -38,3 +38,11 @@ endfunction
 %! X = cagd_bezier_patch (permute (tenzor (K), [3 1 2]), linspace (0, 1, 4), linspace (0, 1, 4));
 %! assert (permute (X, [2 3 1]), P, 1e-15);
 %!error <B: an array of size 3×2×2×2> cagd_bezier_patch (zeros (3, 2, 2, 2), 0, 0)
+
+%!demo
+%! ## A bicubic Bezier patch on a 25 x 25 grid with its control net.
+%! B = zeros (3, 4, 4);
+%! for i = 0:3, for j = 0:3, B(:, i+1, j+1) = [i/3; j/3; mod(7*i + 3*j, 5)/4 - 1/2]; end, end
+%! t = linspace (0, 1, 25); X = cagd_bezier_patch (B, t, t);
+%! surf (squeeze (X(1,:,:)), squeeze (X(2,:,:)), squeeze (X(3,:,:))); hold on;
+%! plot3 (B(1,:), B(2,:), B(3,:), "ro"); hold off; title ("cagd\_bezier\_patch: a bicubic patch");

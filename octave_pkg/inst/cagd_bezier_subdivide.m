@@ -37,3 +37,10 @@ endfunction
 %! assert (R, {"7/9", "5/3", "3"});
 %!error <interval \[0, 0\] is empty> cagd_bezier_subdivide ([0 1 3], 0)
 %!error <t: an array of size 1×2> cagd_bezier_subdivide ([0 1 3], [0.2 0.4])
+
+%!demo
+%! ## Thesis Primer 2.4 split at t = 1/2: two cubics, their polygons closer to the curve.
+%! P = [0 0 8 4; 0 2 2 0]; [L, R] = cagd_bezier_subdivide (P, 0.5);
+%! X = cagd_bezier (P, linspace (0, 1, 101));
+%! plot (X(1,:), X(2,:), "k", P(1,:), P(2,:), "o--", L(1,:), L(2,:), "s-", R(1,:), R(2,:), "d-");
+%! legend ("curve", "polygon", "left half", "right half"); title ("cagd\_bezier\_subdivide");

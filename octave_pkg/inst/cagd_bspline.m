@@ -28,3 +28,9 @@ endfunction
 %!assert (cagd_bspline (2, [0 1 2 3], "[0 0 0 1/3 1 1 1]", "1/3", "exact"), {"4/3"})
 %!error <expected 7 knots> cagd_bspline (2, [0 1 2 3], [0 0 0 1 1 1], 0.5)
 %!error <outside the domain> cagd_bspline (2, [0 1 2 3], [0 0 0 0.5 1 1 1], 1.5)
+
+%!demo
+%! ## A quadratic B-spline with a double knot at 1/2 (a corner) and its control polygon.
+%! P = [0 1 2 3 4; 0 2 0 2 0]; U = [0 0 0 0.5 0.5 1 1 1];
+%! X = cagd_bspline (2, P, U, linspace (0, 1, 201));
+%! plot (P(1,:), P(2,:), "ro--", X(1,:), X(2,:), "b-"); title ("cagd\_bspline: a double knot");

@@ -31,3 +31,11 @@ endfunction
 %! assert (cagd_convert (cagd_convert (G, "bezier", "bspline"), "bspline", "bezier"), G, 1e-13);
 %!error <to: 'monomial'> cagd_convert ([0 1 2 4], "bezier", "monomial")
 %!error <G: 3 column\(s\) for the hermite form; expected 4 columns> cagd_convert ([0 1 2], "bezier", "hermite")
+
+%!demo
+%! ## One cubic in three forms: Bezier control points, Hermite data, B-spline points.
+%! B = [0 1 3 4; 0 2 -1 1];
+%! H = cagd_convert (B, "bezier", "hermite"); S = cagd_convert (B, "bezier", "bspline");
+%! X = cagd_bezier (B, linspace (0, 1, 101));
+%! plot (X(1,:), X(2,:), "k", B(1,:), B(2,:), "o--", S(1,:), S(2,:), "s--");
+%! legend ("curve", "Bezier polygon", "uniform B-spline polygon"); title ("cagd\_convert");

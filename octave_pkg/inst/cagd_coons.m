@@ -85,3 +85,16 @@ endfunction
 %!error <do not meet at the corners> cagd_coons (c1, c2, d1, d2 + 1, 0.5, 0.5)
 %!error <c1: .*has no field 'order'> cagd_coons (struct ("coefs", [1 0; 0 1; 0 0; 1 1], "knots", [0 0 1 1]), c2, d1, d2, 0.5, 0.5)
 %!error <c2: .*not accepted> cagd_coons (c1, {c2}, d1, d2, 0.5, 0.5)
+
+%!demo
+%! ## Appendix C of the thesis: the Coons patch of c1 = (u, 0, u - u^2), c2 = (u, 1, u),
+%! ## d1 = (0, v^2, v - v^2), d2 = (1, v, v), with its four boundary curves.
+%! c1 = [0 0.5 1; 0 0 0; 0 0.5 0]; c2 = [0 1; 1 1; 0 1];
+%! d1 = [0 0 0; 0 0 1; 0 0.5 0];   d2 = [1 1; 0 1; 0 1];
+%! t = linspace (0, 1, 25);
+%! X = cagd_coons (c1, c2, d1, d2, t, t);
+%! surf (squeeze (X(1,:,:)), squeeze (X(2,:,:)), squeeze (X(3,:,:))); hold on;
+%! for c = {c1, c2, d1, d2}
+%!   b = cagd_bezier (c{1}, t); plot3 (b(1,:), b(2,:), b(3,:), "r", "linewidth", 2.5);
+%! endfor
+%! hold off; title ("cagd\_coons: the appendix C patch and its boundary curves");

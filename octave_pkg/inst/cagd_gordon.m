@@ -77,3 +77,16 @@ endfunction
 %!error <cu: double is not accepted> cagd_gordon ([0 1], c, x, x, 0.5, 0.5)
 %!error <nodes must increase> cagd_gordon (d, c, [0 1 0.5], x, 0.5, 0.5)
 %!error <cv: .*not a recognised NURBS> cagd_gordon (d, {c{1}, struct("form", "L-NURBS"), c{3}}, x, x, 0.5, 0.5)
+
+%!demo
+%! ## Appendix D's network: the Gordon surface (u, v, v + u - u^2) through six curves.
+%! d = {[0 0; 0 1; 0 1], [0.5 0.5; 0 1; 0.25 1.25], [1 1; 0 1; 0 1]};
+%! c = {[0 0.5 1; 0 0 0; 0 0.5 0], [0 0.5 1; 0.5 0.5 0.5; 0.5 1 0.5], [0 0.5 1; 1 1 1; 1 1.5 1]};
+%! x = [0 0.5 1]; t = linspace (0, 1, 25);
+%! X = cagd_gordon (d, c, x, x, t, t);
+%! surf (squeeze (X(1,:,:)), squeeze (X(2,:,:)), squeeze (X(3,:,:))); hold on;
+%! for k = 1:3
+%!   a = cagd_bezier (c{k}, t); b = cagd_bezier (d{k}, t);
+%!   plot3 (a(1,:), a(2,:), a(3,:), "r", b(1,:), b(2,:), b(3,:), "g", "linewidth", 2);
+%! endfor
+%! hold off; title ("cagd\_gordon: appendix D's network");

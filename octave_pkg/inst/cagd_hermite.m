@@ -31,3 +31,10 @@ endfunction
 %! assert (X, {"1/2"; "1/4"});
 %! assert (B, {"0", "1/3", "2/3", "1"; "0", "1/3", "1/3", "0"});
 %!error <Hermite cubic: expected four vectors of the same positive length> cagd_hermite ([0;0], [1;0;0], [1;1], [1;-1], 0.5)
+
+%!demo
+%! ## A Hermite (Ferguson) cubic from (0,0) to (1,0) with tangents (1,1) and (1,-1).
+%! u = linspace (0, 1, 101);
+%! [X, B] = cagd_hermite ([0;0], [1;0], [1;1], [1;-1], u);
+%! plot (X(1,:), X(2,:), "b", B(1,:), B(2,:), "ro--"); axis equal;
+%! legend ("cubic", "its Bezier polygon"); title ("cagd\_hermite");

@@ -54,3 +54,10 @@ endfunction
 %! assert (size (deCasteljau ([0 1], 11)), [1 11]);
 %!error <no limit 'samples'> cagd_limits ("samples", 10)
 %!error <VALUE: 0; expected a positive integer> cagd_limits ("max_degree", 0)
+
+%!demo
+%! ## The session's resource limits (a grid too large for them is refused before any work).
+%! L = cagd_limits ()
+%! cagd_limits ("max_samples", 10);
+%! try, deCasteljau ([0 1], 11); catch err, disp (err.message); end
+%! cagd_limits ("default");

@@ -4,27 +4,40 @@
 ## @deftypefnx {} {@var{p} =} cagd_nrbeval (@var{vol}, @{@var{ut}, @var{vt}, @var{wt}@})
 ## @deftypefnx {} {@var{p} =} cagd_nrbeval (@var{srf}, @var{pts})
 ## @deftypefnx {} {[@var{p}, @var{w}] =} cagd_nrbeval (@dots{})
-## Evaluate a NURBS curve, surface or volume: a drop-in replacement of octave-nurbs'
-## @code{nrbeval}, with the same arguments and the same sizes of the results.
+## Evaluate a NURBS curve, surface or volume: octave-nurbs' @code{nrbeval}, argument for
+## argument, with the same sizes of the results.
 ##
 ## The NURBS is a structure from @code{nrbmak}, @code{nrbcirc}, @code{nrbcoons},
-## @code{nrbtestsrf}, @dots{} (fields @code{form = "B-NURBS"}, @code{coefs} @math{4 × n1 × …}
-## homogeneous, @code{knots} (a vector, or a cell of two or three), @code{order}).
+## @code{nrbderiv}, @dots{} (fields @code{form = "B-NURBS"}, @code{coefs} @math{4 × n1 × …}
+## homogeneous @math{(w x, w y, w z, w)}, @code{knots} (a vector, or a cell of two or three),
+## @code{order}, @code{number}).
 ## @itemize
 ## @item curve, parameters @var{ut} of any size: @var{p} is @math{3 × numel (ut)} for a row
 ## (otherwise @code{[3, size(ut)]}), @var{w} is the size of @var{ut};
 ## @item surface or volume on a grid @code{@{ut, vt@}} / @code{@{ut, vt, wt@}}: @var{p} is
 ## @math{3 × nu × nv (× nw)}, @code{p(:, i, j)} the point at @code{(ut(i), vt(j))};
-## @item surface or volume at scattered points @var{pts} (@math{2 × n} or @math{3 × n};
-## @math{n × 2} is transposed as @code{nrbeval} does): @var{p} is @math{3 × n}.
+## @item surface or volume at scattered points @var{pts} (@math{2 × n} or @math{3 × n},
+## or @math{2 × a × b …}; @math{n × 2} is transposed as @code{nrbeval} does): @var{p} is
+## @math{3 × n}.
 ## @end itemize
 ## With two outputs @var{p} holds the homogeneous coordinates (w·x, w·y, w·z) and @var{w} the
 ## weights, as @code{nrbeval}.
 ##
-## The values agree with @code{nrbeval} to rounding (the tests ask 1e-13 relative; most agree
-## bit for bit); a surface grid is computed as one tensor-product sweep, not by two calls of
-## @code{bspeval}.  One difference: a parameter outside the domain of the knots is an error
-## (@code{cagd:domain}) where @code{nrbeval} extrapolates.
+## As @code{nrbeval}: weights may have any sign (a zero weight gives Inf or NaN, as the
+## NURBS of a derivative from @code{nrbderiv} needs); any parameter in
+## @math{[U(1), U(end)]} of its knots is evaluated (past the last knot of the domain the last
+## span continues, an empty last span gives NaN) and a parameter outside the knots is an
+## error (octave-nurbs 1.4.3 does not extrapolate); NaN parameters give NaN; @code{coefs} and
+## knots may be double or single, parameters any real numeric class.  The values agree
+## with @code{nrbeval} to rounding (most bit for bit): where every parameter lies in the
+## domain they come from cagd's batch kernels (a surface grid in one tensor-product sweep,
+## a curve at many sorted parameters by its Bézier pieces).
+##
+## Differences from octave-nurbs 1.4.3: where @code{nrbeval} reads before its arrays (a
+## parameter below @math{U(p+1)} of a knot vector not clamped at its start, where it
+## returns whatever memory lies there) this gives the NURBS's value, the sum over the basis
+## functions that exist.  Errors carry the identifiers @code{cagd:domain},
+## @code{cagd:value}, @code{cagd:shape}, @code{cagd:class}, @code{cagd:struct}.
 ##
 ## Example:
 ## @example
@@ -35,7 +48,7 @@
 ##   @result{} 1.1102e-16
 ## @end group
 ## @end example
-## @seealso{cagd_bspeval, cagd_basisfun, cagd_findspan, cagd_nurbs}
+## @seealso{cagd_bspeval, cagd_basisfun, cagd_findspan, cagd_nrbdeval, cagd_nurbs}
 ## @end deftypefn
 
 function [p, w] = cagd_nrbeval (varargin)
@@ -72,14 +85,38 @@ endfunction
 %! q = cagd_nrbeval (srf, [0.5; 0.5]);
 %! assert (q, p(:,2,3), 1e-15);
 %!test
-%! if (exist ("nrbmak"))
-%!   s = nrbtestsrf ();
-%!   tt = {linspace(0, 1, 7), linspace(0, 1, 5)};
-%!   assert (cagd_nrbeval (s, tt), nrbeval (s, tt), 1e-13 * max (abs (s.coefs(:))));
-%!   [p1, w1] = cagd_nrbeval (s, tt); [p2, w2] = nrbeval (s, tt);
-%!   assert (p1, p2, 1e-12); assert (w1, w2, 1e-14);
-%! endif
-%!error <NURBS: double is not a NURBS structure> cagd_nrbeval (1, 0.5)
+%! ## Weights of any sign: the homogeneous form of a NURBS whose weights change sign.
+%! c = [0 1 2; 0 1 0; 0 0 0; 1 -1 2];
+%! n = struct ("form", "B-NURBS", "dim", 4, "number", 3, "coefs", c, ...
+%!             "knots", [0 0 0 1 1 1], "order", 3);
+%! [p, w] = cagd_nrbeval (n, 0.5);
+%! assert (w, 0.25 - 0.5 + 0.5, 1e-15);
+%! assert (p, [1; 0.5; 0], 1e-15);
+%! assert (cagd_nrbeval (n, 0.5), p / w, 1e-15);
+%!test
+%! ## Knots not clamped at the end (octave-nurbs gives NaN from 0.4 on); NaN parameters.
+%! c = [0 1 3 4 5; 0 2 2 0 1; 0 0 0 0 0; 1 1 1 1 1];
+%! n = struct ("form", "B-NURBS", "dim", 4, "number", 5, "coefs", c, ...
+%!             "knots", [0 0 0 .4 .4 .4 1 1], "order", 3);
+%! p = cagd_nrbeval (n, [0.2 0.7 NaN]);
+%! assert (p(:,1), [1.25; 1.5; 0], 1e-15);
+%! assert (all (isnan (p(:, 2:3)(:))));
+%!test
+%! ## Parameters of other classes; cell grids with one point per direction.
+%! assert (cagd_nrbeval (crv, single (0.5)), cagd_nrbeval (crv, 0.5));
+%! assert (size (cagd_nrbeval (srf, {int8(1), 0.5})), [3 1]);
+%!error <is not a NURBS structure> cagd_nrbeval (1, 0.5)
 %!error <has no field 'coefs'> cagd_nrbeval (struct ("form", "B-NURBS", "knots", [0 1], "order", 1), 0.5)
-%!error <outside the domain> cagd_nrbeval (crv, 1.5)
-%!error <weights must be positive> cagd_nrbeval (setfield (crv, "coefs", [1 0 0; 0 0 1; 0 0 0; 1 0 1]), 0.5)
+%!error <outside the knots> cagd_nrbeval (crv, 1.5)
+
+%!demo
+%! ## A circle (octave-nurbs' nrbcirc) and a test surface evaluated by the twin.
+%! if (exist ("nrbcirc"))
+%!   crv = nrbcirc (1, [0 0], 0, pi);
+%!   p = cagd_nrbeval (crv, linspace (0, 1, 50));
+%!   subplot (1, 2, 1); plot (p(1,:), p(2,:)); axis equal; title ("cagd\\_nrbeval: a half circle");
+%!   srf = nrbtestsrf ();
+%!   p = cagd_nrbeval (srf, {linspace(0, 1, 30), linspace(0, 1, 30)});
+%!   subplot (1, 2, 2); surf (squeeze (p(1,:,:)), squeeze (p(2,:,:)), squeeze (p(3,:,:)));
+%!   title ("cagd\\_nrbeval: nrbtestsrf on a 30 x 30 grid");
+%! endif

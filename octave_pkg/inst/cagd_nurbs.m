@@ -31,3 +31,12 @@ endfunction
 %!assert (cagd_nurbs (2, [0 1 2], [1 2 1], [], "1/3", "exact"), {"10/13"})
 %!error <weight 1 is 0> cagd_nurbs (2, [0 1 2], [1 0 1], [], 0.5)
 %!error <expected 3 weights> cagd_nurbs (2, [0 1 2], [1 1], [], 0.5)
+
+%!demo
+%! ## A circle from four rational quadratic arcs (weights 1 and sqrt(2)/2).
+%! h = sqrt (2) / 2;
+%! P = [1 1 0 -1 -1 -1 0 1 1; 0 1 1 1 0 -1 -1 -1 0];
+%! w = [1 h 1 h 1 h 1 h 1];
+%! U = [0 0 0 1 1 2 2 3 3 4 4 4] / 4;
+%! X = cagd_nurbs (2, P, w, U, linspace (0, 1, 201));
+%! plot (X(1,:), X(2,:), "b", P(1,:), P(2,:), "ro--"); axis equal; title ("cagd\_nurbs: a circle");

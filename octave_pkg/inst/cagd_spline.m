@@ -43,3 +43,9 @@ endfunction
 %!error <ends: 'periodic'> cagd_spline ([0 1 0], 0.5, "periodic")
 %!assert (cagd_spline ([0 1 0], 2.5, "natural", "exact"), {"-11/16"})
 %!assert (cagd_spline ([1 0 -1 0; 0 1 0 -1], 5, "closed"), cagd_spline ([1 0 -1 0; 0 1 0 -1], 1, "closed"), 1e-15)
+
+%!demo
+%! ## The natural cubic spline through five points.
+%! Q = [0 1 2 3 4; 0 1 0 1 0]; t = linspace (0, 4, 201);
+%! X = cagd_spline (Q, t, "natural");
+%! plot (X(1,:), X(2,:), "b", Q(1,:), Q(2,:), "ro"); title ("cagd\_spline: a natural spline");

@@ -67,3 +67,8 @@ endfunction
 %!error <N: 2.5 is not a non-negative integer> deCasteljau ([0 1], 2.5)
 %!error <kontrolneT: empty> deCasteljau (zeros (3, 0), 3)
 %!error <not finite> deCasteljau ([0 NaN], 3)
+
+%!demo
+%! ## Thesis Primer 2.4 drawn by the thesis function itself (no output argument).
+%! deCasteljau ([0 0 8 4; 0 2 2 0; 0 2 0 0], 50);
+%! title ("deCasteljau: thesis Primer 2.4");

@@ -81,3 +81,12 @@ endfunction
 %!error <corners> krpaCoons (c1, c2, d1, d2, P1, P2, [1;1;1], P4)
 %!error <d2: expected 3×5> krpaCoons (c1, c2, d1, d2(:,1:4), P1, P2, P3, P4)
 %!error <P4: empty> krpaCoons (c1, c2, d1, d2, P1, P2, P3, [])
+
+%!demo
+%! ## Appendix C of the thesis, drawn by krpaCoons itself (no output argument): the patch
+%! ## with its boundary curves c1, c2 (red) and d1, d2 (green).
+%! N = 25; u = linspace (0, 1, N); v = u;
+%! c1 = [u; zeros(1, N); u - u.^2]; c2 = [u; ones(1, N); u];
+%! d1 = [zeros(1, N); v.^2; v - v.^2]; d2 = [ones(1, N); v; v];
+%! krpaCoons (c1, c2, d1, d2, [0;0;0], [1;0;0], [0;1;0], [1;1;1]);
+%! title ("krpaCoons: the appendix C patch");

@@ -68,3 +68,14 @@ endfunction
 %!error <network> krpaGordon (g_u, g_v, g_uv + 0.25, x, x, N)
 %!error <nodes must increase> krpaGordon (g_u, g_v, g_uv, [0 1 0.5], x, N)
 %!error <g_u: expected 3×15> krpaGordon (g_u(:, 1:14), g_v, g_uv, x, x, N)
+
+%!demo
+%! ## Appendix D of the thesis, drawn by krpaGordon itself (no output argument): the Gordon
+%! ## surface of the network c_j(u) = g(u, v_j), d_i(v) = g(u_i, v), g = (u, v, v + u - u^2).
+%! N = 25; u = linspace (0, 1, N); v = u; o = ones (1, N);
+%! g_u = [[u; 0*o; u-u.^2], [u; 0.5*o; 0.5+u-u.^2], [u; o; 1+u-u.^2]];
+%! g_v = [[0*o; v; v], [0.5*o; v; 0.25+v], [o; v; v]];
+%! g_uv = [0 0 0  0 0.5 0.5  0 1 1; 0.5 0 0.25  0.5 0.5 0.75  0.5 1 1.25; 1 0 0  1 0.5 0.5  1 1 1];
+%! x = [0 0.5 1];
+%! krpaGordon (g_u, g_v, g_uv, x, x, N);
+%! title ("krpaGordon: the appendix D surface");

@@ -60,3 +60,10 @@ endfunction
 %! end_unwind_protect
 %!error <divisible by 3> ploskevB ([0 1 2 3], 3)
 %!error <cagd_limits> ploskevB ([0 0 0], 1e5)
+
+%!demo
+%! ## A bicubic Bezier patch drawn by the thesis function (no output argument).
+%! B = zeros (4, 12);
+%! for i = 0:3, for j = 0:3, B(i+1, 3*j+1:3*j+3) = [i/3, j/3, mod(7*i + 3*j, 5)/4 - 1/2]; end, end
+%! ploskevB (B, 30);
+%! title ("ploskevB: a bicubic patch");

@@ -41,3 +41,9 @@ endfunction
 %! endfor
 %!error <B: .*multiple of 3|divisible by 3> tenzor ([0 1 2 3])
 %!error <B: a cell array is not accepted> tenzor ({1, 2, 3})
+
+%!demo
+%! ## The control net of the bilinear patch z = uv as tenzor returns it.
+%! A = tenzor ([0 0 0  0 1 0; 1 0 0  1 1 1]);
+%! plot3 (A(:,:,1)(:), A(:,:,2)(:), A(:,:,3)(:), "ro"); grid on;
+%! title ("tenzor: the net as an (m+1) x (n+1) x 3 array");

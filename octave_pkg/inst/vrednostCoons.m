@@ -60,3 +60,10 @@ endfunction
 %!error <corners> vrednostCoons (0, 0.5, [1;0;0], [0;0;0], [0;0;0], [0;0;0], [0;0;0], [0;0;0], [0;0;0], [0;0;0])
 %!error <d2: expected a 3×1 column> vrednostCoons (0.5, 0.5, [0;0;0], [0;0;0], [0;0;0], [0;0], [0;0;0], [0;0;0], [0;0;0], [0;0;0])
 %!error <u: complex double is not accepted> vrednostCoons (1i, 0.5, [0;0;0], [0;0;0], [0;0;0], [0;0;0], [0;0;0], [0;0;0], [0;0;0], [0;0;0])
+
+%!demo
+%! ## Thesis Primer 4.3: the point x(0.2, 0.5) = (0.2, 0.3, 0.38) and its three parts.
+%! u = 0.2; v = 0.5;
+%! [T, rc, rd, rcd] = vrednostCoons (u, v, [u;0;u-u^2], [u;1;u], [0;v^2;v-v^2], [1;v;v], ...
+%!                                   [0;0;0], [1;0;0], [0;1;0], [1;1;1]);
+%! printf ("x = rc + rd - rcd:\n"); disp ([T, rc, rd, rcd]);

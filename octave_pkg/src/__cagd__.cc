@@ -7,13 +7,25 @@
 // cagd_value that borrows Octave's own arrays (no copy); the results are Octave arrays created
 // here, zero-filled, and filled by the Rust side through the sink callbacks (no copy either).
 //
+// The octave-nurbs twins of octave-nurbs' own oct-files and evaluators (cagd_bspeval,
+// cagd_basisfun, cagd_basisfunder, cagd_bspderiv, cagd_findspan, cagd_nrbeval) are builtins
+// of this oct-file as well (autoloaded by the PKG_ADD lines below): one call for one point
+// then costs one builtin call, as the octave-nurbs oct-files do. Their .m files in inst/ hold
+// the documentation and the test blocks; build.sh generates the docstrings here from them
+// (cagd_twin_docs.h) and ships their test blocks as NAME.cc-tst instead of the .m files (a .m
+// file of a builtin's name on the path misleads Octave 7's lookup of function handles).
+//
 // Errors: the Rust side returns an identifier ("cagd:shape") and a message; this gateway raises
 // the Octave error with error_with_id only after cagd_call has returned, so no C++ exception
 // ever unwinds through Rust frames, and the callbacks below are noexcept. A Rust panic is caught
 // on the Rust side and comes back as the error cagd:internal.
 
 #include <cstring>
-#include <deque>
+#include <algorithm>
+#include <list>
+#include <tuple>
+#include <typeinfo>
+#include <vector>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,33 +33,78 @@
 #include <octave/oct.h>
 #include <octave/Cell.h>
 #include <octave/oct-map.h>
+#include <octave/ov-re-mat.h>
 
 #include "cagd_octave_ffi.h"
+#include "cagd_twin_docs.h"
 
 namespace
 {
   // Deepest nesting of cells and structs described (as MAX_DEPTH on the Rust side).
   const std::size_t max_depth = 64;
 
-  // Everything the argument tree points into, alive until the call returns.
+  // Everything the argument tree points into, alive until the call returns, at stable
+  // addresses. A call of a few scalars and arrays (the usual one) allocates nothing here:
+  // scalars and sizes go to fixed buffers, and the lists, used only for what those do not
+  // hold (converted arrays, texts, cells, structs), allocate nothing until used.
   struct arena
   {
-    std::deque<NDArray> arrays;
-    std::deque<charNDArray> chars;
-    std::deque<std::string> texts;
-    std::deque<std::vector<std::size_t>> dims;
-    std::deque<std::vector<cagd_value>> children;
-    std::deque<std::vector<const char *>> names;
+    double scalars[16];
+    std::size_t n_scalars = 0;
+    std::size_t dims[48];
+    std::size_t n_dims = 0;
+    std::list<double> more_scalars;
+    std::list<std::vector<std::size_t>> more_dims;
+    std::list<NDArray> arrays;
+    std::list<charNDArray> chars;
+    std::list<std::string> texts;
+    std::list<std::vector<cagd_value>> children;
+    std::list<std::vector<const char *>> names;
+
+    const double *
+    keep_scalar (double x)
+    {
+      if (n_scalars < sizeof scalars / sizeof scalars[0])
+        {
+          scalars[n_scalars] = x;
+          return &scalars[n_scalars++];
+        }
+      more_scalars.push_back (x);
+      return &more_scalars.back ();
+    }
+
+    // The sizes of one value, contiguous.
+    std::size_t *
+    keep_dims (std::size_t n)
+    {
+      if (n_dims + n <= sizeof dims / sizeof dims[0])
+        {
+          n_dims += n;
+          return &dims[n_dims - n];
+        }
+      more_dims.emplace_back (n);
+      return more_dims.back ().data ();
+    }
   };
+
+  // The array of a full real double matrix, borrowed (no copy, no allocation); nullptr for
+  // any other value (scalars, ranges, diagonal matrices, other classes).
+  const NDArray *
+  full_array (const octave_value& v)
+  {
+    const octave_base_value *rep = v.internal_rep ();
+    if (typeid (*rep) != typeid (octave_matrix))     // cheaper than a dynamic_cast
+      return nullptr;
+    return &static_cast<const octave_matrix *> (rep)->matrix_ref ();
+  }
 
   const std::size_t *
   keep_dims (arena& a, const dim_vector& dv)
   {
-    std::vector<std::size_t> d (dv.ndims ());
+    std::size_t *d = a.keep_dims (dv.ndims ());
     for (int i = 0; i < dv.ndims (); i++)
       d[i] = static_cast<std::size_t> (dv(i));
-    a.dims.push_back (std::move (d));
-    return a.dims.back ().data ();
+    return d;
   }
 
   // The class of a refused value, as the messages name it.
@@ -89,15 +146,48 @@ namespace
         other (out, a, "undefined");
         return;
       }
-    const dim_vector dv = v.dims ();
+    if (v.is_real_scalar () && v.is_double_type ())
+      {
+        // A double scalar: its value, without an NDArray or a dim_vector (each of which
+        // allocates).
+        out.real = a.keep_scalar (v.double_value ());
+        std::size_t *d = a.keep_dims (2);
+        d[0] = d[1] = 1;
+        out.dims = d;
+        out.kind = CAGD_REAL;
+        out.ndims = 2;
+        return;
+      }
     if (v.is_double_type () && v.isreal () && ! v.issparse () && ! v.iscomplex ())
       {
+        // A full double matrix lends its own array (no copy); ranges and diagonal matrices
+        // have none and are converted.
+        const NDArray *arr = full_array (v);
+        if (! arr)
+          {
+            a.arrays.push_back (v.array_value ());
+            arr = &a.arrays.back ();
+          }
+        out.kind = CAGD_REAL;
+        out.ndims = arr->ndims ();
+        out.dims = keep_dims (a, arr->dims ());
+        out.real = arr->data ();
+        return;
+      }
+    const dim_vector dv = v.dims ();
+    if ((v.isnumeric () || v.islogical ()) && v.isreal ())
+      {
+        // single, integer, logical, sparse: converted to double, the class kept for the
+        // octave-nurbs twins (every other function refuses it by its class).
         a.arrays.push_back (v.array_value ());
         const NDArray& arr = a.arrays.back ();
-        out.kind = CAGD_REAL;
+        a.texts.push_back (class_of (v));
+        out.kind = CAGD_NUMERIC;
         out.ndims = dv.ndims ();
         out.dims = keep_dims (a, dv);
         out.real = arr.data ();
+        out.text = a.texts.back ().data ();
+        out.text_len = a.texts.back ().size ();
       }
     else if (v.is_char_matrix () || v.is_string ())
       {
@@ -146,15 +236,12 @@ namespace
   }
 
   // The outputs, created by the callbacks and returned once the Rust call is done.
-  struct outputs
-  {
-    std::deque<std::pair<std::size_t, NDArray>> reals;
-    std::deque<std::pair<std::size_t, octave_value>> others;
-  };
-
   dim_vector
   size_of (std::size_t ndims, const std::size_t *dims)
   {
+    if (ndims == 2)                    // one allocation instead of two
+      return dim_vector (static_cast<octave_idx_type> (dims[0]),
+                         static_cast<octave_idx_type> (dims[1]));
     dim_vector dv;
     dv.resize (ndims < 2 ? 2 : static_cast<int> (ndims), 1);
     for (std::size_t i = 0; i < ndims; i++)
@@ -162,14 +249,70 @@ namespace
     return dv;
   }
 
+  // The outputs: real arrays (a Matrix for 2 dimensions, the cheaper object, else an
+  // NDArray) that own their data while Rust fills them — an Octave value made at once would
+  // copy a 1 x 1 array into a scalar — and cells of strings as Octave values. The first few
+  // in place, the others in lists (nothing allocated for the usual call).
+  struct outputs
+  {
+    static const std::size_t few = 6;
+    alignas (Matrix) unsigned char slots[few][sizeof (Matrix) > sizeof (NDArray)
+                                               ? sizeof (Matrix) : sizeof (NDArray)];
+    bool is_matrix[few];
+    std::size_t index[few];
+    std::size_t n = 0;
+    std::list<std::pair<std::size_t, NDArray>> more;
+    std::list<std::pair<std::size_t, octave_value>> others;
+
+    double *
+    add_real (std::size_t i, std::size_t ndims, const std::size_t *dims)
+    {
+      if (n < few && ndims == 2)
+        {
+          Matrix *m = new (slots[n]) Matrix (static_cast<octave_idx_type> (dims[0]),
+                                             static_cast<octave_idx_type> (dims[1]), 0.0);
+          is_matrix[n] = true;
+          index[n++] = i;
+          return m->fortran_vec ();
+        }
+      if (n < few)
+        {
+          NDArray *a = new (slots[n]) NDArray (size_of (ndims, dims), 0.0);
+          is_matrix[n] = false;
+          index[n++] = i;
+          return a->fortran_vec ();
+        }
+      more.emplace_back (std::piecewise_construct, std::forward_as_tuple (i),
+                         std::forward_as_tuple (size_of (ndims, dims), 0.0));
+      return more.back ().second.fortran_vec ();
+    }
+
+    octave_value
+    value (std::size_t k) const
+    {
+      if (is_matrix[k])
+        return octave_value (*reinterpret_cast<const Matrix *> (slots[k]));
+      return octave_value (*reinterpret_cast<const NDArray *> (slots[k]));
+    }
+
+    ~outputs ()
+    {
+      for (std::size_t k = 0; k < n; k++)
+        if (is_matrix[k])
+          reinterpret_cast<Matrix *> (slots[k])->~Matrix ();
+        else
+          reinterpret_cast<NDArray *> (slots[k])->~NDArray ();
+    }
+  };
+
+
   extern "C" double *
   sink_real (void *ctx, std::size_t index, std::size_t ndims, const std::size_t *dims) noexcept
   {
     try
       {
         outputs& out = *static_cast<outputs *> (ctx);
-        out.reals.emplace_back (index, NDArray (size_of (ndims, dims)));
-        return out.reals.back ().second.fortran_vec ();
+        return out.add_real (index, ndims, dims);
       }
     catch (...)
       {
@@ -197,26 +340,27 @@ namespace
   }
 }
 
-DEFUN_DLD (__cagd__, args, nargout,
-           "-*- texinfo -*-\n\
-@deftypefn {} {[@dots{}] =} __cagd__ (@var{name}, @dots{})\n\
-Internal gateway of the cagd package: calls the package function @var{name}.\n\
-Use the package's functions (@code{help cagd_bezier}, @code{help deCasteljau}, @dots{}).\n\
-@end deftypefn")
+// The package function NAME called with args(first:end): the arguments described, the Rust
+// call, its error raised or its outputs returned.
+static octave_value_list
+call_package (const std::string& name, const octave_value_list& args, octave_idx_type first,
+              int nargout)
 {
-  if (args.length () < 1 || ! args(0).is_string ())
-    error_with_id ("cagd:nargin", "__cagd__: the first argument must be a function name");
-  const std::string name = args(0).string_value ();
-
   arena a;
-  std::vector<cagd_value> values (args.length () - 1);
-  for (octave_idx_type i = 1; i < args.length (); i++)
-    describe (args(i), values[i - 1], a, 0);
+  // The top-level values: inline for up to 8 arguments.
+  cagd_value few[8];
+  std::vector<cagd_value> many;
+  const std::size_t nvals = static_cast<std::size_t> (args.length () - first);
+  if (nvals > 8)
+    many.resize (nvals);
+  cagd_value *values = nvals > 8 ? many.data () : few;
+  for (octave_idx_type i = first; i < args.length (); i++)
+    describe (args(i), values[i - first], a, 0);
 
   outputs out;
   const cagd_sink sink = { &out, sink_real, sink_strings };
   cagd_error err = { nullptr, nullptr };
-  const int status = cagd_call (name.data (), name.size (), values.data (), values.size (),
+  const int status = cagd_call (name.data (), name.size (), values, nvals,
                                 nargout, &sink, &err);
   if (status != 0)
     {
@@ -227,18 +371,70 @@ Use the package's functions (@code{help cagd_bezier}, @code{help deCasteljau}, @
       error_with_id (id.c_str (), "%s", message.c_str ());
     }
 
-  octave_value_list retval;
-  for (auto& r : out.reals)
-    {
-      if (retval.length () <= static_cast<octave_idx_type> (r.first))
-        retval.resize (r.first + 1);
-      retval(r.first) = octave_value (r.second);
-    }
-  for (auto& o : out.others)
-    {
-      if (retval.length () <= static_cast<octave_idx_type> (o.first))
-        retval.resize (o.first + 1);
-      retval(o.first) = o.second;
-    }
+  // The list of outputs at its size at once.
+  std::size_t n_out = 0;
+  for (std::size_t k = 0; k < out.n; k++)
+    n_out = std::max (n_out, out.index[k] + 1);
+  for (const auto& v : out.more)
+    n_out = std::max (n_out, v.first + 1);
+  for (const auto& v : out.others)
+    n_out = std::max (n_out, v.first + 1);
+  if (n_out == 1 && out.n == 1)
+    return octave_value_list (out.value (0));
+  octave_value_list retval (static_cast<octave_idx_type> (n_out), octave_value ());
+  for (std::size_t k = 0; k < out.n; k++)
+    retval(out.index[k]) = out.value (k);
+  for (const auto& v : out.more)
+    retval(v.first) = octave_value (v.second);
+  for (const auto& v : out.others)
+    retval(v.first) = v.second;
   return retval;
+}
+
+DEFUN_DLD (__cagd__, args, nargout,
+           "-*- texinfo -*-\n\
+@deftypefn {} {[@dots{}] =} __cagd__ (@var{name}, @dots{})\n\
+Internal gateway of the cagd package: calls the package function @var{name}.\n\
+Use the package's functions (@code{help cagd_bezier}, @code{help deCasteljau}, @dots{}).\n\
+@end deftypefn")
+{
+  if (args.length () < 1 || ! args(0).is_string ())
+    error_with_id ("cagd:nargin", "__cagd__: the first argument must be a function name");
+  return call_package (args(0).string_value (), args, 1, nargout);
+}
+
+// PKG_ADD: autoload ("cagd_bspeval", "__cagd__.oct");
+DEFUN_DLD (cagd_bspeval, args, nargout, CAGD_DOC_cagd_bspeval)
+{
+  return call_package ("cagd_bspeval", args, 0, nargout);
+}
+
+// PKG_ADD: autoload ("cagd_basisfun", "__cagd__.oct");
+DEFUN_DLD (cagd_basisfun, args, nargout, CAGD_DOC_cagd_basisfun)
+{
+  return call_package ("cagd_basisfun", args, 0, nargout);
+}
+
+// PKG_ADD: autoload ("cagd_basisfunder", "__cagd__.oct");
+DEFUN_DLD (cagd_basisfunder, args, nargout, CAGD_DOC_cagd_basisfunder)
+{
+  return call_package ("cagd_basisfunder", args, 0, nargout);
+}
+
+// PKG_ADD: autoload ("cagd_bspderiv", "__cagd__.oct");
+DEFUN_DLD (cagd_bspderiv, args, nargout, CAGD_DOC_cagd_bspderiv)
+{
+  return call_package ("cagd_bspderiv", args, 0, nargout);
+}
+
+// PKG_ADD: autoload ("cagd_findspan", "__cagd__.oct");
+DEFUN_DLD (cagd_findspan, args, nargout, CAGD_DOC_cagd_findspan)
+{
+  return call_package ("cagd_findspan", args, 0, nargout);
+}
+
+// PKG_ADD: autoload ("cagd_nrbeval", "__cagd__.oct");
+DEFUN_DLD (cagd_nrbeval, args, nargout, CAGD_DOC_cagd_nrbeval)
+{
+  return call_package ("cagd_nrbeval", args, 0, nargout);
 }

@@ -3,7 +3,8 @@
 %   cagd_test_package          the test blocks of every function (docstring examples, errors)
 %   cagd_test_thesis_examples  the thesis's examples and appendix C/D scripts vs octave_ref/expected
 %   cagd_test_differential     >= 1000 random cases, package vs octave_ref/fixed
-%   cagd_test_nurbs            octave-nurbs' own tests with the cagd_ twins; >= 500 random NURBS
+%   cagd_test_nurbs            the octave-nurbs twins: octave-nurbs' own tests and demos with
+%                              the cagd_ twins, ~2400 random calls against octave-nurbs, nrbcoons
 %   cagd_test_bad_input        the bad-input table, then the process alive and correct
 % The last line is "cagd package tests: OK" when all pass (the exit status of Octave 7 is not
 % reliable at exit, see octave_ref/README.md).

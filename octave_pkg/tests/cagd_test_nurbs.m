@@ -1,227 +1,495 @@
-% cagd_test_nurbs (count, seed) -- the octave-nurbs twins against octave-nurbs itself.
+% cagd_test_nurbs (count, seed) -- the octave-nurbs twins against octave-nurbs itself, in this
+% Octave session (octave-nurbs loaded):
 %
-% 1. octave-nurbs' own test blocks (%!shared, %!test, %!assert, %!error) of nrbeval, bspeval,
-%    basisfun and findspan, read from the installed package (the .m files and the -tst files
-%    its build extracted from the C++ sources), with every call of those four functions
-%    replaced by its cagd_ twin, run with Octave's test ().  (bspeval has no test block of its
-%    own; part 2 covers it.)  Then, the same way, every other test file of octave-nurbs whose
-%    blocks call one of the four (nrbderiv, nrbdeval, nrbclamp, nrbsurfderiveval, …): they
-%    must pass with the twins as they pass with the originals.
-% 2. `count` random NURBS (default 600: half curves, half surfaces; seed 2014): degrees 1-5,
-%    non-uniform knots with interior multiplicities up to the degree (a fifth of them
-%    unclamped), random weights in [0.3, 3] (a fifth
-%    of them all 1, B-splines), coordinates of scale 1e-2 to 1e2; curves at sorted,
-%    unsorted and column parameters (few, and from 256 on, where sorted parameters are
-%    evaluated through Bezier pieces), surfaces on grids {u, v} and at scattered points, with one
-%    output and with the homogeneous [p, w]; plus bspeval, findspan and basisfun at the same
-%    knots.  cagd_nrbeval must equal nrbeval within 1e-13 relative to the scale of the result
-%    (bspeval likewise; findspan exactly; basisfun within 1e-13).  Then 40 random volumes
-%    (three knot vectors) on grids {u, v, w} and at scattered points.
-% Prints the counts and the worst errors and "nurbs: OK".
-function cagd_test_nurbs (count, seed)
-  if nargin < 1 || isempty (count), count = 600; end
+% 1. octave-nurbs' own test blocks and demos in a copy of the installed octave-nurbs whose
+%    calls of the twinned functions are renamed to cagd_<name> (cagd_nurbs_copy): with its own
+%    functions, with the four evaluators' twins, with each new twin swapped in as well, and with
+%    every twin; each run must pass all of them.
+% 2. A differential test over random inputs of every argument form the twins take (about
+%    `count` cases per group, default 150; seed 2014): NURBS curves, surfaces and volumes with
+%    weights of any sign and zero, knots clamped or not at either end, parameters anywhere in
+%    [U(1), U(end)] and outside, NaN, every class octave-nurbs takes (single, integer, logical,
+%    sparse), rows, columns, matrices, cell grids, scattered points, the homogeneous [p, w];
+%    bspeval, findspan (n not matching the knots), basisfun and basisfunder (wrong spans),
+%    bspderiv, bspkntins (knots at the ends, beyond the order), bspdegelev, nrbkntins,
+%    nrbdegelev, nrbderiv (1 to 4 outputs) with nrbdeval (2 to 5 outputs), each against the
+%    octave-nurbs function of the same name on the same arguments.  Each pair must agree: both
+%    fail, or both return results of the same class and size, NaN and Inf at the same places,
+%    and values within 1e-12 relative to the result's scale (NURBS points are compared
+%    weighted by their weights, so that a weight near zero does not magnify rounding).
+% 3. cagd_nrbcoons against nrbcoons on random NURBS boundaries: the same knots and orders, the
+%    surfaces equal on a 21 x 21 grid within 1e-12 relative.
+% Prints the counts and "nurbs: OK".
+function cagd_test_nurbs (count, seed, copies)
+  if nargin < 1 || isempty (count), count = 150; end
   if nargin < 2 || isempty (seed), seed = 2014; end
+  if nargin < 3 || isempty (copies), copies = true; end
   pkg load nurbs;
-  own_blocks ();
-  random_cases (count, seed);
+  warning ("off", "all", "local");
+  if copies
+    renamed_copies ();
+  end
+  rand ("state", seed);
+  t0 = tic ();
+  g = struct ("pairs", 0, "errors", 0, "worst", 0);
+  g = evaluators (g, count);
+  g = spans_and_bases (g, count);
+  g = refinement (g, count);
+  g = derivatives (g, count);
+  printf ("  differential: %d pairs against octave-nurbs (%d refused by both), worst %.2g relative; %.0f s\n", ...
+          g.pairs, g.errors, g.worst, toc (t0));
+  coons_cases (ceil (count / 3));
   printf ("nurbs: OK\n");
 end
 
-function own_blocks ()
-  mdir = fileparts (which ("nrbmak"));
-  adir = fileparts (which ("bspeval"));
-  own = {fullfile(mdir, "nrbeval.m"), fullfile(mdir, "bspeval.m"), ...
-         fullfile(mdir, "basisfun.m"), fullfile(mdir, "findspan.m"), ...
-         fullfile(adir, "basisfun.cc-tst"), fullfile(adir, "bspeval.cc-tst")};
-  others = [cellfun(@(f) fullfile (mdir, f), {dir(fullfile (mdir, "*.m")).name}, "UniformOutput", false), ...
-            cellfun(@(f) fullfile (adir, f), {dir(fullfile (adir, "*-tst")).name}, "UniformOutput", false)];
-  others = setdiff (others, own);
-  twins = '(?<![\w.])(nrbeval|bspeval|basisfun|findspan)(?!\w)';
-  tmp = tempname ();
-  mkdir (tmp);
-  unwind_protect
-    total = [0 0];
-    for k = 1:numel (own) + numel (others)
-      is_own = k <= numel (own);
-      if is_own, source = own{k}; else, source = others{k - numel (own)}; end
-      [~, base, ext] = fileparts (source);
-      label = [base ext];
-      if ! exist (source, "file")
-        printf ("  %-24s (not installed)\n", label);
-        continue;
-      end
-      lines = strsplit (fileread (source), "\n");
-      code = strjoin (lines(strncmp (lines, "%!", 2)), "\n");
-      if isempty (regexp (code, '^%!(test|assert|error|shared)', "once", "lineanchors"))
-        if is_own, printf ("  %-24s no test blocks\n", label); end
-        continue;
-      end
-      if ! is_own && isempty (regexp (code, twins, "once"))
-        continue;
-      end
-      name = sprintf ("cagd_twin_tests_%d", k);
-      file = fullfile (tmp, [name ".m"]);
-      fid = fopen (file, "w");
-      fprintf (fid, "function %s ()\nend\n%s\n", name, regexprep (code, twins, 'cagd_$1'));
-      fclose (fid);
-      [ok, n] = test (file, "quiet", 0);
-      printf ("  %-24s %2d of %2d test blocks pass with the cagd_ twins\n", label, ok, n);
-      if ok != n
-        test (file, "verbose", stdout);
-        error ("nurbs: %s: %d of %d test blocks fail with the cagd_ twins", label, n - ok, n);
-      end
-      total += [is_own, ! is_own] * n;
+% ---------------------------------------------------------------------------------------------
+% 1. octave-nurbs' own tests and demos with the twins.
+
+function renamed_copies ()
+  old = {"nrbeval", "bspeval", "basisfun", "findspan"};
+  new = {"basisfunder", "bspderiv", "bspkntins", "bspdegelev", "nrbkntins", "nrbdegelev", ...
+         "nrbderiv", "nrbdeval", "nrbcoons"};
+  printf ("  octave-nurbs 1.4.3's own test blocks and demos, in a copy with calls renamed:\n");
+  [t0, d0] = full_run ({}, "octave-nurbs' own functions");
+  [t4, d4] = full_run (old, "the 4 evaluators' twins");
+  % Each new twin with the four: the files whose code reaches it run again; the others run
+  % the same code as with the four alone (all passing there), so the totals are exact.
+  for k = 1:numel (new)
+    [ta, da, s] = cagd_nurbs_copy ([old, new(k)], true, "both", new(k));
+    [tb, db] = cagd_nurbs_copy (old, false, "both", new(k));
+    if ta(1) != ta(2) || da(1) != da(2)
+      error ("nurbs: octave-nurbs' tests or demos fail with cagd_%s", new{k});
     end
-    printf ("  octave-nurbs test blocks: %d of nrbeval/basisfun/findspan, %d of others calling them\n", total);
-    if total(1) == 0
-      error ("nurbs: no octave-nurbs test block found");
-    end
-  unwind_protect_cleanup
-    confirm_recursive_rmdir (false, "local");
-    rmdir (tmp, "s");
-  end_unwind_protect
+    printf ("    %-30s tests %3d/%3d, demos %2d/%2d (%d tests, %d demos reach it; %.0f s)\n", ...
+            ["+ cagd_" new{k}], t4 - tb + ta, d4 - db + da, ta(2), da(2), s);
+  end
+  full_run ([old, new], "every twin (13)");
 end
 
-% Knots of degree p for n control points: clamped (p+1 equal ends) with interior knots of
-% multiplicity 1..p, or unclamped (sorted random, some repeated).
-function U = random_knots (p, n)
-  if rand () < 0.8
-    interior = [];
-    while numel (interior) < n - p - 1
-      m = min (1 + floor (p * rand ()), n - p - 1 - numel (interior));
-      x = 0.02 + 0.96 * rand ();
-      if all (abs (x - interior) > 1e-3)
-        interior = [interior, repmat(x, 1, m)];
-      end
-    end
-    U = [zeros(1, p + 1), sort(interior), ones(1, p + 1)];
-  else
-    do
-      U = sort (rand (1, n + p + 1));
-      k = 1 + floor ((n + p) * rand ());
-      U(k + 1) = U(k);              % one repeated knot
-    until U(p + 1) < U(n + 1)
+function [t, d] = full_run (names, label)
+  [t, d, s] = cagd_nurbs_copy (names, true);
+  printf ("    %-30s tests %3d/%3d, demos %2d/%2d (%.0f s)\n", label, t, d, s);
+  if t(1) != t(2) || d(1) != d(2) || t(2) == 0
+    error ("nurbs: octave-nurbs' tests or demos fail with %s", label);
   end
 end
 
-function C = random_coefs (varargin)
-  sz = [varargin{:}];
-  s = 10 ^ (4 * rand () - 2);
-  w = exp (log (0.3) + (log (3) - log (0.3)) * rand ([1, sz]));
-  if rand () < 0.2
-    w(:) = 1;                         % a B-spline written as a NURBS
+% ---------------------------------------------------------------------------------------------
+% Comparison.
+
+% Runs f_nurbs and f_cagd (function handles returning a cell of outputs); both fail, or both
+% give the same outputs.  `weights` (optional) holds the weights for NURBS points: the
+% comparison is then of p .* w.
+function g = check (g, label, f_nurbs, f_cagd, weights)
+  if nargin < 5, weights = []; end
+  [a, ea] = attempt (f_nurbs);
+  [b, eb] = attempt (f_cagd);
+  g.pairs += 1;
+  if ! isempty (ea) || ! isempty (eb)
+    if isempty (ea) || isempty (eb)
+      error ("nurbs: %s: octave-nurbs %s, the twin %s", label, ...
+             ifelse_ (isempty (ea), "succeeds", ["fails (" ea ")"]), ...
+             ifelse_ (isempty (eb), "succeeds", ["fails (" eb ")"]));
+    end
+    g.errors += 1;
+    return;
+  end
+  for k = 1:numel (a)
+    w = [];
+    if k == 1, w = weights; end
+    [e, why] = differ (a{k}, b{k}, w);
+    if ! isempty (why)
+      error ("nurbs: %s, output %d: %s", label, k, why);
+    end
+    g.worst = max (g.worst, e);
+  end
+end
+
+function [out, err] = attempt (f)
+  out = {}; err = "";
+  try
+    out = f ();
+  catch e
+    err = e.message;
+  end
+end
+
+% The relative difference of twin's b from octave-nurbs' a, or a reason they differ.
+function [e, why] = differ (a, b, w)
+  e = 0; why = "";
+  if ! strcmp (class (a), class (b))
+    why = sprintf ("class %s, octave-nurbs %s", class (b), class (a)); return;
+  end
+  if ! isequal (size (a), size (b))
+    why = sprintf ("size %s, octave-nurbs %s", mat2str (size (b)), mat2str (size (a))); return;
+  end
+  if isstruct (a)
+    if ! isequal (fieldnames (a), fieldnames (b))
+      why = "different fields"; return;
+    end
+    for f = fieldnames (a)'
+      [ef, why] = differ (a.(f{1}), b.(f{1}), []);
+      if ! isempty (why), why = [f{1} ": " why]; return; end
+      e = max (e, ef);
+    end
+    return;
+  end
+  if iscell (a)
+    for k = 1:numel (a)
+      [ek, why] = differ (a{k}, b{k}, []);
+      if ! isempty (why), why = sprintf ("{%d}: %s", k, why); return; end
+      e = max (e, ek);
+    end
+    return;
+  end
+  if ischar (a)
+    if ! strcmp (a, b), why = "different text"; end
+    return;
+  end
+  a = double (a); b = double (b);
+  if ! isequal (isnan (a), isnan (b))
+    why = "NaN at other places"; return;
+  end
+  if ! isequal (a(isinf (a)), b(isinf (b))) || ! isequal (isinf (a), isinf (b))
+    why = "Inf at other places"; return;
+  end
+  fin = isfinite (a);
+  if ! isempty (w)
+    w = abs (double (w));
+    a = a .* reshape (repmat (w(:)', size (a, 1), 1), size (a));
+    b = b .* reshape (repmat (w(:)', size (b, 1), 1), size (b));
+    fin &= isfinite (a) & isfinite (b);
+  end
+  a = a(fin)(:); b = b(fin)(:);
+  scale = max ([abs(a); realmin]);
+  e = max ([abs(a - b); 0]) / scale;
+  if e > 1e-12
+    why = sprintf ("values differ by %.3g relative", e);
+  end
+end
+
+function s = ifelse_ (c, a, b)
+  if c, s = a; else, s = b; end
+end
+
+% ---------------------------------------------------------------------------------------------
+% Random inputs.
+
+% Knots of degree p for n control points: "clamped", "open end" (the last knot fewer than
+% p + 1 times), "open start", or "open" at both ends; interior knots repeated up to p times.
+function U = knots (p, n, kind)
+  interior = [];
+  while numel (interior) < n - p - 1
+    m = min (1 + floor (p * rand ()), n - p - 1 - numel (interior));
+    x = 0.05 + 0.9 * rand ();
+    if all (abs (x - interior) > 1e-3)
+      interior = [interior, repmat(x, 1, m)];
+    end
+  end
+  interior = sort (interior);
+  lo = zeros (1, p + 1); hi = ones (1, p + 1);
+  switch kind
+    case "open end"
+      hi = sort (1 + 0.2 * rand (1, p + 1)); hi(1) = 1;
+    case "open start"
+      lo = sort (-0.2 * rand (1, p + 1)); lo(end) = 0;
+    case "open"
+      lo = sort (-0.2 * rand (1, p + 1)); lo(end) = 0;
+      hi = sort (1 + 0.2 * rand (1, p + 1)); hi(1) = 1;
+  end
+  U = [lo, interior, hi];
+end
+
+function kind = knot_kind ()
+  kinds = {"clamped", "clamped", "clamped", "open end", "open start", "open"};
+  kind = kinds{1 + floor (numel (kinds) * rand ())};
+end
+
+% Homogeneous coefficients 4 x sz: weights positive, of any sign, with zeros, or all 1.
+function [C, sign] = coefs (sz)
+  s = 10 ^ (3 * rand () - 1);
+  r = rand ();
+  if r < 0.4
+    w = exp (log (0.3) + (log (3) - log (0.3)) * rand ([1, sz])); sign = "positive";
+  elseif r < 0.6
+    w = ones ([1, sz]); sign = "unit";
+  elseif r < 0.85
+    w = 2 * rand ([1, sz]) - 1; sign = "any sign";
+  else
+    w = 0.5 + rand ([1, sz]); w(1 + floor (numel (w) * rand ())) = 0; sign = "zero";
   end
   C = zeros ([4, sz]);
   C(4, :) = w(:)';
-  C(1:3, :) = s * (2 * rand (3, prod (sz)) - 1) .* repmat (w(:)', 3, 1);
+  C(1:3, :) = s * (2 * rand (3, prod (sz)) - 1);
 end
 
-% Parameters in the domain [a, b]: sorted with the ends, or unsorted.
-function t = params (a, b, n)
-  if rand () < 0.6
+% Parameters in [a, b] (sorted with the ends, or unsorted), sometimes with NaN, a value past
+% the end of the knots (an error for both), or every value out of the domain but in the knots.
+function t = params (a, b, n, lo, hi)
+  if rand () < 0.5
     t = linspace (a, b, n);
   else
     t = a + (b - a) * rand (1, n);
-    t(1) = b;
+  end
+  r = rand ();
+  if r < 0.08
+    t(1 + floor (n * rand ())) = NaN;
+  elseif r < 0.12
+    t(end) = hi + 0.5;
+  elseif r < 0.25 && hi > b
+    t = b + (hi - b) * rand (1, n);     % past the domain, inside the knots
   end
 end
 
-function e = rel (a, b)
-  e = max (abs (a(:) - b(:))) / max ([abs(b(:)); realmin]);
+% A random class conversion of parameters.
+function t = as_class (t)
+  r = rand ();
+  if r < 0.07
+    t = single (t);
+  elseif r < 0.1
+    t = int32 (round (t));
+  elseif r < 0.12
+    t = logical (t > 0.5);
+  elseif r < 0.14 && isvector (t) && all (isfinite (t))
+    t = sparse (t);
+  end
 end
 
-function random_cases (count, seed)
-  rand ("state", seed);
-  worst = struct ("curve", 0, "surface", 0, "bspeval", 0, "basisfun", 0);
-  counts = struct ("curve", 0, "surface", 0, "bspeval", 0, "basisfun", 0, "findspan", 0);
+function [g, crv] = curve_case (g, k)
+  p = 1 + floor (5 * rand ()); n = p + 1 + floor (7 * rand ());
+  kind = knot_kind ();
+  U = knots (p, n, kind);
+  [C, sign] = coefs (n);
+  crv = nrbmak (C, U);
+  if rand () < 0.1, crv.coefs = single (crv.coefs); end
+  if rand () < 0.05, crv.knots = single (crv.knots); end
+  if rand () < 0.5, m = 1 + floor (60 * rand ()); else, m = 256 + floor (600 * rand ()); end
+  t = params (U(p+1), U(n+1), m, U(1), U(end));
+  if ! any (strcmp (kind, {"open start", "open"}))
+    % below U(p+1) octave-nurbs reads before its arrays: only above it there
+  else
+    t(t < U(p+1)) = U(p+1);
+  end
+  shape = rand ();
+  if shape < 0.15, t = t'; elseif shape < 0.25 && mod (numel (t), 2) == 0, t = reshape (t, 2, []); elseif shape < 0.3, t = {t}; end
+  if ! iscell (t), t = as_class (t); end
+  label = sprintf ("nrbeval curve %d (degree %d, %s knots, %s weights)", k, p, kind, sign);
+  [~, w] = safe_weights (crv, t);
+  g = check (g, label, @() {nrbeval(crv, t)}, @() {cagd_nrbeval(crv, t)}, w);
+  g = check (g, [label " [p, w]"], @() two (@nrbeval, crv, t), @() two (@cagd_nrbeval, crv, t));
+  % bspeval at the same knots, any number of rows.
+  c = crv.coefs(1:1 + floor (4 * rand ()), :);
+  g = check (g, sprintf ("bspeval %d", k), @() {bspeval(p, c, U, t)}, @() {cagd_bspeval(p, c, U, t)});
+end
+
+function out = two (f, varargin)
+  [a, b] = f (varargin{:});
+  out = {a, b};
+end
+
+% The weights octave-nurbs evaluates (for the weighted comparison), [] when it fails.
+function [p, w] = safe_weights (nrb, t)
+  p = []; w = [];
+  try
+    [p, w] = nrbeval (nrb, t);
+  end
+end
+
+function g = evaluators (g, count)
   for k = 1:count
-    if k <= count / 2
-      p = 1 + floor (5 * rand ()); n = p + 1 + floor (8 * rand ());
-      U = random_knots (p, n);
-      crv = nrbmak (random_coefs (n), U);
-      % Few points (the core's NURBS batch) or many (cut into Bezier pieces, from 256 sorted).
-      if rand () < 0.5, m = 1 + floor (200 * rand ()); else, m = 256 + floor (1500 * rand ()); end
-      t = params (U(p + 1), U(n + 1), m);
-      if rand () < 0.2, t = t'; end
-      if rand () < 0.3
-        [p1, w1] = nrbeval (crv, t); [p2, w2] = cagd_nrbeval (crv, t);
-        e = max (rel (p2, p1), rel (w2, w1));
-        same = isequal (size (p1), size (p2)) && isequal (size (w1), size (w2));
-      else
-        p1 = nrbeval (crv, t); p2 = cagd_nrbeval (crv, t);
-        e = rel (p2, p1); same = isequal (size (p1), size (p2));
-      end
-      if ! same || e > 1e-13
-        error ("nurbs: random curve %d (degree %d, knots %s): error %g", k, p, mat2str (U, 4), e);
-      end
-      worst.curve = max (worst.curve, e); counts.curve += 1;
-      % bspeval, findspan, basisfun at the same knots (the homogeneous coefficients).
-      c = crv.coefs;
-      e = rel (cagd_bspeval (p, c, U, t), bspeval (p, c, U, t));
-      if e > 1e-13
-        error ("nurbs: bspeval, case %d: error %g", k, e);
-      end
-      worst.bspeval = max (worst.bspeval, e); counts.bspeval += 1;
-      if U(1) == U(p + 1) && U(end) == U(n + 1)    % findspan numbers spans of clamped knots
-        s1 = findspan (n - 1, p, t, U); s2 = cagd_findspan (n - 1, p, t, U);
-        if ! isequal (s1, s2)
-          error ("nurbs: findspan, case %d differs", k);
-        end
-        counts.findspan += 1;
-        e = rel (cagd_basisfun (s2, t, p, U), basisfun (s1, t, p, U));
-        if e > 1e-13
-          error ("nurbs: basisfun, case %d: error %g", k, e);
-        end
-        worst.basisfun = max (worst.basisfun, e); counts.basisfun += 1;
-      end
-    else
-      p = 1 + floor (5 * rand (1, 2)); n = p + 1 + floor (6 * rand (1, 2));
-      U = {random_knots(p(1), n(1)), random_knots(p(2), n(2))};
-      srf = nrbmak (random_coefs (n(1), n(2)), U);
-      u = params (U{1}(p(1) + 1), U{1}(n(1) + 1), 1 + floor (40 * rand ()));
-      v = params (U{2}(p(2) + 1), U{2}(n(2) + 1), 1 + floor (40 * rand ()));
-      if rand () < 0.25
-        tt = [u(1:min(end, numel(v))); v(1:min(end, numel(u)))];
-      else
-        tt = {u, v};
-      end
-      if rand () < 0.3
-        [p1, w1] = nrbeval (srf, tt); [p2, w2] = cagd_nrbeval (srf, tt);
-        e = max (rel (p2, p1), rel (w2, w1));
-        same = isequal (size (p1), size (p2)) && isequal (size (w1), size (w2));
-      else
-        p1 = nrbeval (srf, tt); p2 = cagd_nrbeval (srf, tt);
-        e = rel (p2, p1); same = isequal (size (p1), size (p2));
-      end
-      if ! same || e > 1e-13
-        error ("nurbs: random surface %d (degrees %d, %d): error %g", k, p, e);
-      end
-      worst.surface = max (worst.surface, e); counts.surface += 1;
-    end
+    g = curve_case (g, k);
   end
-  worst.volume = 0;
-  for k = 1:40
+  for k = 1:count
+    p = 1 + floor (4 * rand (1, 2)); n = p + 1 + floor (5 * rand (1, 2));
+    kinds = {knot_kind(), knot_kind()};
+    U = {knots(p(1), n(1), kinds{1}), knots(p(2), n(2), kinds{2})};
+    [C, sign] = coefs (n);
+    srf = nrbmak (C, U);
+    if rand () < 0.1, srf.coefs = single (srf.coefs); end
+    t = cell (1, 2);
+    for d = 1:2
+      t{d} = params (U{d}(p(d)+1), U{d}(n(d)+1), 1 + floor (25 * rand ()), U{d}(1), U{d}(end));
+      if any (strcmp (kinds{d}, {"open start", "open"})), t{d}(t{d} < U{d}(p(d)+1)) = U{d}(p(d)+1); end
+    end
+    r = rand ();
+    if r < 0.5
+      tt = {as_class(t{1}), t{2}};
+    else
+      m = min (numel (t{1}), numel (t{2}));
+      tt = [t{1}(1:m); t{2}(1:m)];
+      if r < 0.6, tt = tt'; elseif r < 0.7 && mod (m, 2) == 0, tt = reshape (tt, 2, 2, []); end
+    end
+    label = sprintf ("nrbeval surface %d (degrees %d, %d; %s, %s knots; %s weights)", k, p, kinds{:}, sign);
+    [~, w] = safe_weights (srf, tt);
+    g = check (g, label, @() {nrbeval(srf, tt)}, @() {cagd_nrbeval(srf, tt)}, w);
+    g = check (g, [label " [p, w]"], @() two (@nrbeval, srf, tt), @() two (@cagd_nrbeval, srf, tt));
+  end
+  for k = 1:ceil (count / 3)
     p = 1 + floor (3 * rand (1, 3)); n = p + 1 + floor (3 * rand (1, 3));
-    U = {random_knots(p(1), n(1)), random_knots(p(2), n(2)), random_knots(p(3), n(3))};
-    vol = nrbmak (random_coefs (n(1), n(2), n(3)), U);
-    t = arrayfun (@(d) params (U{d}(p(d) + 1), U{d}(n(d) + 1), 1 + floor (8 * rand ())), 1:3, ...
-                  "UniformOutput", false);
+    U = arrayfun (@(d) knots (p(d), n(d), "clamped"), 1:3, "UniformOutput", false);
+    [C, sign] = coefs (n);
+    vol = nrbmak (C, U);
+    t = arrayfun (@(d) params (0, 1, 1 + floor (8 * rand ()), 0, 1), 1:3, "UniformOutput", false);
     if rand () < 0.5
       tt = t;
     else
       m = min (cellfun (@numel, t));
       tt = [t{1}(1:m); t{2}(1:m); t{3}(1:m)];
     end
-    p1 = nrbeval (vol, tt); p2 = cagd_nrbeval (vol, tt);
-    e = rel (p2, p1);
-    if ! isequal (size (p1), size (p2)) || e > 1e-13
-      error ("nurbs: random volume %d: error %g", k, e);
-    end
-    worst.volume = max (worst.volume, e);
+    label = sprintf ("nrbeval volume %d (%s weights)", k, sign);
+    [~, w] = safe_weights (vol, tt);
+    g = check (g, label, @() {nrbeval(vol, tt)}, @() {cagd_nrbeval(vol, tt)}, w);
+    g = check (g, [label " [p, w]"], @() two (@nrbeval, vol, tt), @() two (@cagd_nrbeval, vol, tt));
   end
-  printf ("  random: %d curves (worst %.2g), %d surfaces (worst %.2g), 40 volumes (worst %.2g) against nrbeval;\n", ...
-          counts.curve, worst.curve, counts.surface, worst.surface, worst.volume);
-  printf ("          %d bspeval (worst %.2g), %d findspan (exact), %d basisfun (worst %.2g);\n", ...
-          counts.bspeval, worst.bspeval, counts.findspan, counts.basisfun, worst.basisfun);
-  printf ("          errors relative to the largest value of each result; seed %d\n", seed);
+  % Fixed forms: the issue's examples and classes octave-nurbs refuses.
+  crv = nrbmak ([0 1 3 4 5; 0 2 2 0 1], [0 0 0 .4 .4 .4 1 1]);
+  g = check (g, "unclamped end at 0.7", @() {nrbeval(crv, [0.2 0.4 0.7 1])}, @() {cagd_nrbeval(crv, [0.2 0.4 0.7 1])});
+  dc = nrbderiv (nrbcirc (1));
+  g = check (g, "[p, w] of nrbderiv (nrbcirc (1))", @() two (@nrbeval, dc, 0.5), @() two (@cagd_nrbeval, dc, 0.5));
+  bad = crv; bad.coefs = int32 (bad.coefs);
+  g = check (g, "int32 coefs", @() {nrbeval(bad, 0.5)}, @() {cagd_nrbeval(bad, 0.5)});
+  g = check (g, "complex parameter", @() {nrbeval(crv, 0.5i)}, @() {cagd_nrbeval(crv, 0.5i)});
+  g = check (g, "empty parameters", @() two (@nrbeval, crv, []), @() two (@cagd_nrbeval, crv, []));
+  srf = nrbtestsrf ();
+  g = check (g, "cell grid of 3 for a surface", @() {nrbeval(srf, {0.5, 0.5, 0.5})}, @() {cagd_nrbeval(srf, {0.5, 0.5, 0.5})});
+  g = check (g, "matrix grid item", @() {nrbeval(srf, {[0 .5; .2 .7], 0.5})}, @() {cagd_nrbeval(srf, {[0 .5; .2 .7], 0.5})});
+end
+
+% ---------------------------------------------------------------------------------------------
+% findspan, basisfun, basisfunder.
+
+function g = spans_and_bases (g, count)
+  for k = 1:count
+    p = floor (5 * rand ()); n = p + 1 + floor (6 * rand ());
+    U = knots (p, n, "clamped");
+    u = rand (1, 1 + floor (30 * rand ()));
+    u(u < 0.1) = 0; u(u > 0.9) = 1;
+    nn = n - 1 + floor (3 * rand ()) - 1;          % n not always matching the knots
+    if rand () < 0.1, u(1) = NaN; end
+    if rand () < 0.05, u(end) = 1.5; end
+    if rand () < 0.2, u = reshape (u, 1, 1, []); end
+    uu = as_class (u);
+    g = check (g, sprintf ("findspan %d", k), @() {findspan(nn, p, uu, U)}, @() {cagd_findspan(nn, p, uu, U)});
+    s = findspan (n - 1, p, min (max (u(isfinite (u)), 0), 1), U);
+    uf = min (max (u(isfinite (u)), 0), 1);
+    if isempty (uf), continue; end
+    if rand () < 0.3                                 % wrong spans whose knots exist
+      s = min (max (s + round (2 * rand (size (s)) - 1), p), numel (U) - p - 2);
+    end
+    if rand () < 0.2, uf(1) = 1.3; end               % no range check in basisfun
+    g = check (g, sprintf ("basisfun %d", k), @() {basisfun(s, uf, p, U)}, @() {cagd_basisfun(s, uf, p, U)});
+    nd = floor (6 * rand ());
+    g = check (g, sprintf ("basisfunder %d (nd = %d)", k, nd), @() {basisfunder(s, p, uf, U, nd)}, ...
+               @() {cagd_basisfunder(s, p, uf, U, nd)});
+  end
+end
+
+% ---------------------------------------------------------------------------------------------
+% bspderiv, bspkntins, bspdegelev, nrbkntins, nrbdegelev.
+
+function g = refinement (g, count)
+  for k = 1:count
+    p = 1 + floor (4 * rand ()); n = p + 1 + floor (6 * rand ());
+    kind = knot_kind ();
+    U = knots (p, n, kind);
+    c = 2 * rand (1 + floor (4 * rand ()), n) - 1;
+    g = check (g, sprintf ("bspderiv %d", k), @() two (@bspderiv, p, c, U), @() two (@cagd_bspderiv, p, c, U));
+    u = U(1) + (U(end) - U(1)) * rand (1, 1 + floor (4 * rand ()));
+    if rand () < 0.3, u = [u, U(p+2) * ones(1, 1 + floor (p * rand ()))]; end   % repeated knots
+    if rand () < 0.1, u(end+1) = U(end); end                                     % the end of the range
+    if rand () < 0.05, u(end+1) = U(end) + 1; end                                % outside: both fail
+    g = check (g, sprintf ("bspkntins %d (%s knots)", k, kind), @() two (@bspkntins, p, c, U, u), ...
+               @() two (@cagd_bspkntins, p, c, U, u));
+    t = floor (4 * rand ());
+    g = check (g, sprintf ("bspdegelev %d (%s knots, t = %d)", k, kind, t), @() two (@bspdegelev, p, c, U, t), ...
+               @() two (@cagd_bspdegelev, p, c, U, t));
+  end
+  for k = 1:count
+    dims = 1 + floor (3 * rand ());
+    p = 1 + floor (3 * rand (1, dims)); n = p + 1 + floor (3 * rand (1, dims));
+    U = arrayfun (@(d) knots (p(d), n(d), "clamped"), 1:dims, "UniformOutput", false);
+    if dims == 1, U = U{1}; end
+    nrb = nrbmak (coefs (n), U);
+    if dims == 1
+      ins = rand (1, floor (4 * rand ()));
+      elev = floor (3 * rand ());
+    else
+      ins = arrayfun (@(d) rand (1, floor (3 * rand ())), 1:dims, "UniformOutput", false);
+      elev = floor (3 * rand (1, dims));
+    end
+    g = check (g, sprintf ("nrbkntins %d (%d directions)", k, dims), @() {nrbkntins(nrb, ins)}, @() {cagd_nrbkntins(nrb, ins)});
+    g = check (g, sprintf ("nrbdegelev %d (%d directions)", k, dims), @() {nrbdegelev(nrb, elev)}, @() {cagd_nrbdegelev(nrb, elev)});
+  end
+end
+
+% ---------------------------------------------------------------------------------------------
+% nrbderiv and nrbdeval.
+
+function g = derivatives (g, count)
+  for k = 1:count
+    dims = 1 + floor (3 * rand ());
+    p = 1 + floor (3 * rand (1, dims)); n = p + 1 + floor (3 * rand (1, dims));
+    U = arrayfun (@(d) knots (p(d), n(d), "clamped"), 1:dims, "UniformOutput", false);
+    if dims == 1, U = U{1}; end
+    C = coefs (n);
+    C(4, :) = 0.5 + rand (1, prod (n));            % nrbdeval divides by the weights
+    nrb = nrbmak (C, U);
+    nout = 1 + floor ((4 - (dims == 3) * 2) * rand ());
+    D = cell (1, nout); E = cell (1, nout);
+    [D{:}] = nrbderiv (nrb);
+    g = check (g, sprintf ("nrbderiv %d (%d directions, %d outputs)", k, dims, nout), @() D, @() outs (@cagd_nrbderiv, nout, nrb));
+    if dims == 1
+      tt = rand (1, 1 + floor (10 * rand ()));
+      if rand () < 0.3, tt = {tt}; end
+    elseif rand () < 0.5
+      tt = arrayfun (@(d) rand (1, 1 + floor (5 * rand ())), 1:dims, "UniformOutput", false);
+    else
+      tt = rand (dims, 1 + floor (6 * rand ()));
+    end
+    m = 2 + floor (nout * rand ());
+    if dims == 3, m = min (m, 3); end
+    args = [{nrb}, D(1:min (nout, m - 1)), {tt}];
+    g = check (g, sprintf ("nrbdeval %d (%d directions, %d derivative structures, %d outputs)", k, dims, numel (args) - 2, m), ...
+               @() outs (@nrbdeval, m, args{:}), @() outs (@cagd_nrbdeval, m, args{:}));
+  end
+end
+
+function o = outs (f, n, varargin)
+  o = cell (1, n);
+  [o{:}] = f (varargin{:});
+end
+
+% ---------------------------------------------------------------------------------------------
+% 3. nrbcoons.
+
+function coons_cases (count)
+  worst = 0;
+  t = linspace (0, 1, 21);
+  for k = 1:count
+    % Four random NURBS boundaries through random corners (weights 1 at the corners, so that
+    % the curves meet in homogeneous coordinates too).
+    P = 10 * rand (3, 4);
+    curves = cell (1, 4);
+    ends = [1 2; 3 4; 1 3; 2 4];                     % u1: P1-P2, u2: P3-P4, v1: P1-P3, v2: P2-P4
+    for c = 1:4
+      p = 1 + floor (4 * rand ()); n = p + 1 + floor (5 * rand ());
+      w = 0.3 + 2.7 * rand (1, n); w([1 end]) = 1;
+      X = 10 * rand (3, n);
+      X(:, 1) = P(:, ends(c, 1)); X(:, end) = P(:, ends(c, 2));
+      curves{c} = nrbmak ([X .* w; w], knots (p, n, "clamped"));
+    end
+    a = nrbcoons (curves{:});
+    b = cagd_nrbcoons (curves{:});
+    if ! isequal (a.order, b.order) || ! isequal (a.number, b.number) || ! isequal (a.knots, b.knots)
+      error ("nurbs: nrbcoons case %d: orders, numbers or knots differ", k);
+    end
+    pa = nrbeval (a, {t, t}); pb = cagd_nrbeval (b, {t, t});
+    e = max (abs (pa(:) - pb(:))) / max (abs (pa(:)));
+    ec = max (abs (a.coefs(:) - b.coefs(:))) / max (abs (a.coefs(:)));
+    if e > 1e-12 || ec > 1e-12
+      error ("nurbs: nrbcoons case %d: surfaces differ by %.3g (coefficients %.3g) relative", k, e, ec);
+    end
+    worst = max ([worst, e, ec]);
+  end
+  printf ("  nrbcoons: %d random NURBS boundaries, same knots and orders, surfaces on a 21 x 21 grid and coefficients within %.2g relative\n", count, worst);
 end

@@ -4,8 +4,8 @@
 % per function and "package tests: OK".
 function cagd_test_package ()
   dir_ = fileparts (which ("cagd_bezier"));
-  files = dir (fullfile (dir_, "*.m"));
-  names = regexprep ({files.name}, '\.m$', '');
+  files = [dir(fullfile (dir_, "*.m")); dir(fullfile (dir_, "*.cc-tst"))];   % builtin twins: .cc-tst
+  names = regexprep ({files.name}, '\.(m|cc-tst)$', '');
   names = names(! strncmp (names, "__", 2));
   warning ("off", "Octave:gnuplot-graphics");
   set (0, "defaultfigurevisible", "off");

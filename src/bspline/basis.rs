@@ -143,7 +143,23 @@ pub(crate) fn basis_values<T: Scalar>(p: usize, knots: &[T], span: usize, u: &T)
 /// operations in the same order as [`basis_functions`] (so the same values, bit for bit), with
 /// no allocation: the batch evaluations of B-spline and NURBS curves and surfaces call it once
 /// per parameter.
-pub(crate) fn basis_functions_into<T: Scalar>(
+///
+/// The scheme reads only the knots `u_{s+1−p}, …, u_{s+p}`; any span `s` for which they exist
+/// gives the polynomial pieces of that span at `u` (a zero-length span divides zero by zero:
+/// NaN), which is what octave-nurbs `basisfun` computes for a span it is given.
+///
+/// # Panics
+/// If a buffer holds fewer than `p + 1` entries or the knots `u_{s+1−p} … u_{s+p}` do not
+/// exist (`s + 1 < p` or `s + p ≥ knots.len()`).
+///
+/// ```
+/// use cagd::bspline::basis_functions_into;
+/// let knots = [0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0];
+/// let (mut n, mut l, mut r) = ([0.0; 3], [0.0; 3], [0.0; 3]);
+/// basis_functions_into(2, &knots, 2, &0.25, &mut n, &mut l, &mut r);
+/// assert_eq!(n, [0.25, 0.625, 0.125]);
+/// ```
+pub fn basis_functions_into<T: Scalar>(
     p: usize,
     knots: &[T],
     span: usize,

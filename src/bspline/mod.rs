@@ -14,6 +14,7 @@
 mod basis;
 mod batch;
 mod boehm_scheme;
+pub(crate) mod compatible;
 mod curve;
 mod de_boor_scheme;
 mod definite_integral;
@@ -24,10 +25,15 @@ mod extrapolate;
 mod grid;
 mod knots;
 mod surface;
+mod surface_refine;
 mod triangle;
 
-pub use basis::{basis_all, basis_cost, basis_functions, cox_de_boor, curve_point_cost, find_span};
+pub use basis::{
+    basis_all, basis_cost, basis_functions, basis_functions_into, cox_de_boor, curve_point_cost,
+    find_span,
+};
 pub use boehm_scheme::BoehmStep;
+pub use compatible::make_compatible;
 pub use curve::BSplineCurve;
 pub use de_boor_scheme::DeBoorScheme;
 pub use design_matrix::{design_matrix, DesignMatrix};

@@ -24,7 +24,8 @@
 //!
 //! Constructions, one per file:
 //! - [`CoonsPatch`] (`bilinear.rs`): the bilinearly blended patch `x = r_c + r_d − r_cd`
-//!   (Izrek 4.2);
+//!   (Izrek 4.2); of Bézier curves exactly as one Bézier patch, of B-spline curves as one
+//!   B-spline surface ([`coons_bspline_net`], `bspline_form.rs`);
 //! - [`GeneralizedCoonsPatch`] (`generalized.rs`): user blending functions `f1, f2, g1, g2`,
 //!   including the partially bicubic blend `H0³ = B0³ + B1³`, `H3³ = B2³ + B3³` (§4.2);
 //! - [`BicubicCoonsPatch`] (`bicubic.rs`): the bicubically blended (Hermite) patch of §4.3 with
@@ -45,6 +46,7 @@ use crate::scalar::Scalar;
 
 mod bicubic;
 mod bilinear;
+mod bspline_form;
 mod discrete;
 mod generalized;
 mod gregory;
@@ -56,6 +58,7 @@ pub use bicubic::{
     Twist,
 };
 pub use bilinear::{coons_point_cost, CoonsPatch};
+pub use bspline_form::coons_bspline_net;
 pub use discrete::{
     discrete_coons, discrete_coons_cost, discrete_coons_parts, discrete_coons_parts_cost,
 };

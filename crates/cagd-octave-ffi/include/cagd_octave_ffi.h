@@ -26,7 +26,9 @@ enum cagd_kind
   CAGD_CHAR = 1,   /* char array: dims, text/text_len (bytes, column-major) */
   CAGD_CELL = 2,   /* cell array: dims, items/n_items (column-major) */
   CAGD_STRUCT = 3, /* scalar struct: items/n_items values, names (NUL-terminated) */
-  CAGD_OTHER = 4   /* any other class: text/text_len holds its name */
+  CAGD_OTHER = 4,  /* any other class: text/text_len holds its name */
+  CAGD_NUMERIC = 5 /* real single, integer, logical or sparse array: text/text_len holds its
+                      class name, dims/real its values converted to double */
 };
 
 typedef struct cagd_value
@@ -34,8 +36,8 @@ typedef struct cagd_value
   int32_t kind;
   size_t ndims;                    /* number of entries of dims (>= 2 for arrays) */
   const size_t *dims;              /* Octave's size () */
-  const double *real;              /* CAGD_REAL: prod (dims) doubles, column-major */
-  const char *text;                /* CAGD_CHAR: the bytes; CAGD_OTHER: the class name */
+  const double *real;              /* CAGD_REAL, CAGD_NUMERIC: prod (dims) doubles, column-major */
+  const char *text;                /* CAGD_CHAR: the bytes; CAGD_OTHER, CAGD_NUMERIC: the class */
   size_t text_len;
   const struct cagd_value *items;  /* CAGD_CELL: the items; CAGD_STRUCT: the field values */
   const char *const *names;        /* CAGD_STRUCT: the field names */

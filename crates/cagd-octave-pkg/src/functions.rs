@@ -24,6 +24,15 @@ pub const FUNCTIONS: &[(&str, Function)] = &[
     ("cagd_bspeval", nurbs::bspeval),
     ("cagd_basisfun", nurbs::basisfun),
     ("cagd_findspan", nurbs::findspan),
+    ("cagd_basisfunder", nurbs::basisfunder),
+    ("cagd_bspderiv", nurbs::bspderiv),
+    ("cagd_bspkntins", nurbs::bspkntins),
+    ("cagd_bspdegelev", nurbs::bspdegelev),
+    ("cagd_nrbkntins", nurbs::nrbkntins),
+    ("cagd_nrbdegelev", nurbs::nrbdegelev),
+    ("cagd_nrbderiv", nurbs::nrbderiv),
+    ("cagd_nrbdeval", nurbs::nrbdeval),
+    ("cagd_nrbcoons", nurbs::nrbcoons),
     ("cagd_bezier", native::bezier),
     ("cagd_bezier_derivative", native::bezier_derivative),
     ("cagd_bezier_subdivide", native::bezier_subdivide),
@@ -73,7 +82,18 @@ pub fn call(
     if name == "cagd_limits" {
         return limits::cagd_limits(args, nargout, limits, sink).map_err(|e| e.prefixed(name));
     }
-    let Some((octave_name, function)) = FUNCTIONS.iter().find(|(n, _)| *n == name) else {
+    // A one-point call costs about a microsecond: the lookup by name is a hash (FNV-1a, short
+    // keys) rather than a search of the table.
+    static INDEX: std::sync::LazyLock<
+        std::collections::HashMap<&'static str, usize, std::hash::BuildHasherDefault<Fnv>>,
+    > = std::sync::LazyLock::new(|| {
+        FUNCTIONS
+            .iter()
+            .enumerate()
+            .map(|(k, (n, _))| (*n, k))
+            .collect()
+    });
+    let Some((octave_name, function)) = INDEX.get(name).map(|&k| &FUNCTIONS[k]) else {
         return Err(PkgError::new(
             Kind::Internal,
             format!("__cagd__: no package function '{name}'"),
@@ -81,4 +101,26 @@ pub fn call(
     };
     let c = Call::new(octave_name, args, nargout, *limits);
     function(&c, sink).map_err(|e| e.prefixed(octave_name))
+}
+
+/// FNV-1a: the hash of the function names (a few short keys, no adversary).
+#[derive(Default)]
+struct Fnv(u64);
+
+impl std::hash::Hasher for Fnv {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+
+    fn write(&mut self, bytes: &[u8]) {
+        let mut h = if self.0 == 0 {
+            0xcbf2_9ce4_8422_2325
+        } else {
+            self.0
+        };
+        for &b in bytes {
+            h = (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
+        }
+        self.0 = h;
+    }
 }

@@ -12,9 +12,10 @@
 //! - the thesis functions, fixed ([`thesis`]): `deCasteljau`, `ploskevB`, `bilinearna`,
 //!   `tenzor`, `krpaCoons`, `vrednostCoons`, `krpaGordon`, `Lagrange`, with the arguments and
 //!   results of `octave_ref/fixed/`;
-//! - octave-nurbs' evaluators ([`nurbs`]): `cagd_nrbeval`, `cagd_bspeval`, `cagd_basisfun`,
-//!   `cagd_findspan`, with the arguments and layouts of `nrbeval`, `bspeval`, `basisfun`,
-//!   `findspan`;
+//! - octave-nurbs' twins ([`nurbs`]): `cagd_nrbeval`, `cagd_bspeval`, `cagd_basisfun`,
+//!   `cagd_findspan`, `cagd_basisfunder`, `cagd_bspderiv`, `cagd_bspkntins`, `cagd_bspdegelev`,
+//!   `cagd_nrbkntins`, `cagd_nrbdegelev`, `cagd_nrbderiv`, `cagd_nrbdeval`, `cagd_nrbcoons`,
+//!   with the arguments, results and errors of octave-nurbs' functions of those names;
 //! - native functions ([`native`]): Bézier curves with derivatives, subdivision and
 //!   elevation, Bézier patches, Coons and Gordon patches with their parts, B-splines, NURBS,
 //!   interpolating splines, Hermite cubics, the cubic conversions, Bernstein values — exact

@@ -81,6 +81,17 @@ pub enum Value<'a> {
         /// `prod(dims)` items.
         items: Vec<Value<'a>>,
     },
+    /// A real numeric or logical array of a class other than full double — `single`, an
+    /// integer type, `logical`, a sparse matrix — with its values converted to double. Only
+    /// the octave-nurbs twins read it (octave-nurbs takes these classes); every other function
+    /// refuses it by its class, as [`Value::Other`].
+    Numeric {
+        /// The class as the package names it in messages (`single`, `int32`, `logical`,
+        /// `sparse double`, …).
+        class: &'a str,
+        /// Octave's size and the values as doubles, column-major.
+        real: Real<'a>,
+    },
     /// A scalar struct (1 × 1): its fields in Octave's order.
     Struct {
         /// `(name, value)` pairs.
@@ -103,7 +114,7 @@ impl<'a> Value<'a> {
             Value::Char { .. } => "char",
             Value::Cell { .. } => "cell",
             Value::Struct { .. } => "struct",
-            Value::Other { class } => class,
+            Value::Numeric { class, .. } | Value::Other { class } => class,
         }
     }
 

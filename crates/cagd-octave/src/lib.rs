@@ -8,11 +8,15 @@
 //!   read through it;
 //! - [`literal`]: the Octave syntax users type (matrix literals, ranges, curve expressions);
 //! - [`script`]: the thesis's data scripts;
-//! - [`arrays`]: Octave-shaped `ndarray` arrays to the core's native types and back.
+//! - [`arrays`]: Octave-shaped `ndarray` arrays to the core's native types and back;
+//! - [`octave_nurbs`]: octave-nurbs' functions with its conventions (homogeneous `coefs`,
+//!   evaluation on `[U(1), U(end)]`, weights of any sign), as the Octave package's twins use
+//!   them.
 
 pub mod arrays;
 pub mod compat;
 pub mod literal;
+pub mod octave_nurbs;
 pub mod script;
 pub mod text_format;
 

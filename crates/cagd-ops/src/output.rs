@@ -120,7 +120,7 @@ impl<T: Scalar> Report<T> {
     /// Text items (steps) are searched for the words `inf` and `NaN` in any case. The item
     /// `result` is searched first (the answer is what a refusal names, whatever steps were
     /// asked for). Every request's report is checked with it before it is returned
-    /// (`finish`).
+    /// ([`crate::execute`]).
     ///
     /// ```
     /// use cagd_ops::{Report, Value};

@@ -1,14 +1,12 @@
 //! B-spline and NURBS curves, interpolating cubic splines, Hermite cubics, the conversions of
 //! cubic forms, Bernstein values.
 
+use cagd::conversion::GeometryForm;
 use cagd_ops::knots::Degree;
 use cagd_ops::ops::spline::{Ends, Knots, Spline};
-use cagd_ops::ops::{BSpline, Hermite, Nurbs};
+use cagd_ops::ops::{BSpline, Bernstein, Convert, Hermite, Nurbs};
 use cagd_ops::{Params, Role};
 use nalgebra::DMatrix;
-
-use cagd::conversion::GeometryForm;
-use cagd_ops::ops::{Bernstein, Convert};
 
 use super::{emit_item, emit_result, native, CONTROL_FORM};
 use crate::args::Call;
