@@ -69,6 +69,16 @@ pub(super) fn validate(layer: &Layer) -> Result<(), PlotError> {
     Ok(())
 }
 
+/// Whether `layer` marks points it cannot draw (see [`drawable`]).
+pub(super) fn has_points_too_far(layer: &Layer) -> bool {
+    match layer {
+        Layer::Points { points, .. } => points
+            .iter()
+            .any(|x| x.is_nan() || x.abs() > MAX_COORDINATE),
+        _ => false,
+    }
+}
+
 /// `layer` without the marked points it cannot draw (a coordinate beyond [`MAX_COORDINATE`]):
 /// the answer at a parameter far outside the curve's domain (`--t 1e308`) is a number the
 /// command prints, not a reason to draw no picture. The legend says how many were left out;

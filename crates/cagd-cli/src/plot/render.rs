@@ -7,7 +7,7 @@ use std::sync::Once;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::model::{drawable, validate, Colour, Figure, ImageKind};
+use super::model::{drawable, has_points_too_far, validate, Colour, Figure, ImageKind};
 use super::PlotError;
 
 /// The font embedded for text in pictures.
@@ -44,11 +44,8 @@ impl Figure {
             return Err(PlotError::Empty);
         }
         // Marked points too far to draw are left out (and the legend says so).
-        if self
-            .layers()
-            .iter()
-            .any(|l| drawable(l).as_ref() != Some(l))
-        {
+        // (Asked of the layers themselves, not by comparing them: a NaN never equals itself.)
+        if self.layers().iter().any(has_points_too_far) {
             let mut shown = self.clone();
             shown.drawing.layers = self.layers().iter().filter_map(drawable).collect();
             if shown.drawing.layers.is_empty() {
