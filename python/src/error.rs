@@ -187,7 +187,12 @@ mod tests {
             "n + p + 1 knots",
         );
         assert_eq!(op_kind(&lib), "KnotCount");
-        let own = OpError::new(Role::Weights, Kind::NonFinite, "value 2 is not finite (NaN)", "x");
+        let own = OpError::new(
+            Role::Weights,
+            Kind::NonFinite,
+            "value 2 is not finite (NaN)",
+            "x",
+        );
         assert_eq!(op_kind(&own), "NonFinite");
         const NAMES: Names = &[(Role::Control, "points")];
         assert_eq!(name_of(NAMES, Role::Control), "points");

@@ -387,7 +387,11 @@ fn check_gordon_work<T: Num>(m: &[ArrayView2<'_, T>], n: usize) -> PyResult<()> 
 }
 
 /// How `krpaGordon` names the roles of its checks.
-const GORDON_NAMES: Names = &[(Role::UNodes, "x_u"), (Role::VNodes, "x_v"), (Role::Grid, "N")];
+const GORDON_NAMES: Names = &[
+    (Role::UNodes, "x_u"),
+    (Role::VNodes, "x_v"),
+    (Role::Grid, "N"),
+];
 
 /// `v = Lagrange(x, m, u)`: the `m`-th (from 1) Lagrange basis polynomial of the nodes `x` at
 /// every value of `u` (any shape; a number gives a number).

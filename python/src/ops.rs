@@ -40,10 +40,7 @@ impl Signals {
     }
 
     fn take(&self) -> Option<PyErr> {
-        self.raised
-            .lock()
-            .unwrap_or_else(|p| p.into_inner())
-            .take()
+        self.raised.lock().unwrap_or_else(|p| p.into_inner()).take()
     }
 }
 
@@ -92,12 +89,9 @@ pub fn finite<'a, T: Scalar + 'a>(
 ) -> PyResult<()> {
     match cagd_ops::check::non_finite(values) {
         None => Ok(()),
-        Some((problem, expected)) => Err(crate::error::worded(
-            "NonFinite",
-            name,
-            &problem,
-            expected,
-        )),
+        Some((problem, expected)) => {
+            Err(crate::error::worded("NonFinite", name, &problem, expected))
+        }
     }
 }
 

@@ -136,7 +136,10 @@ fn new_spline<T: Num>(
     let op = ops::Spline {
         ends: Some(ends),
         start_tangent: tangents.0.map(|s| column_in(s, "start")).transpose()?,
-        end_tangent: tangents.1.map(|e| column_in(e, "end_tangent")).transpose()?,
+        end_tangent: tangents
+            .1
+            .map(|e| column_in(e, "end_tangent"))
+            .transpose()?,
         knots: match ps {
             None => Knots::Chosen(Parametrization::Uniform),
             Some(p) => Knots::Given(params::<T>(p, "params")?.1),
@@ -210,7 +213,8 @@ fn new_lagrange<T: Num>(
         cx.check_degree(Role::Nodes, n.len().saturating_sub(1))?;
         cagd_ops::params::check_given(Role::Nodes, &n, cx)?;
         let basis = Lagrange::new(n).map_err(lib(Role::Nodes, ops::LAGRANGE_NODES_FORM))?;
-        LagrangeInterpolant::new(basis, values).map_err(lib(Role::Points, ops::LAGRANGE_VALUES_FORM))
+        LagrangeInterpolant::new(basis, values)
+            .map_err(lib(Role::Points, ops::LAGRANGE_VALUES_FORM))
     })
 }
 

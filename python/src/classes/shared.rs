@@ -12,7 +12,12 @@ use crate::convert::{chunked, params, Num};
 use crate::ops::{checked, Names};
 
 /// How evaluations name their parameters.
-const EVAL_NAMES: Names = &[(Role::T, "t"), (Role::U, "u"), (Role::V, "v"), (Role::Grid, "u, v")];
+const EVAL_NAMES: Names = &[
+    (Role::T, "t"),
+    (Role::U, "u"),
+    (Role::V, "v"),
+    (Role::Grid, "u, v"),
+];
 
 /// A core object in doubles or in exact rationals.
 #[derive(Clone, Debug)]

@@ -113,7 +113,12 @@ fn insert_bspline<T: Num>(c: &BSplineCurve<T>, u: &Bound<'_, PyAny>) -> PyResult
     let data = (c.degree(), c.knots().as_slice(), c.control().clone(), None);
     let report = insert(u, data)?;
     let knots = item(&report, "knots")?;
-    BSplineCurve::new(c.degree(), knots.as_slice().to_vec(), item(&report, "control")?).py()
+    BSplineCurve::new(
+        c.degree(),
+        knots.as_slice().to_vec(),
+        item(&report, "control")?,
+    )
+    .py()
 }
 
 fn insert_nurbs<T: Num>(c: &NurbsCurve<T>, u: &Bound<'_, PyAny>) -> PyResult<NurbsCurve<T>> {
@@ -168,7 +173,10 @@ impl PyBSplineCurve {
     #[pyo3(signature = (degree, points, exact = None))]
     fn clamped(degree: usize, points: &Bound<'_, PyAny>, exact: Option<bool>) -> PyResult<Self> {
         let exact = exactness(exact, &[points])?;
-        Ok(Self::from_inner(build!(exact, new_bspline(degree, None, points))))
+        Ok(Self::from_inner(build!(
+            exact,
+            new_bspline(degree, None, points)
+        )))
     }
 
     /// The degree `p`.

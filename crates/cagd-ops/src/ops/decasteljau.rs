@@ -69,9 +69,7 @@ pub(crate) fn bezier_on<T: Scalar>(
     control: &DMatrix<T>,
     interval: Option<&(T, T)>,
 ) -> Result<(BezierCurve<T>, (T, T))> {
-    let (a, b) = interval
-        .cloned()
-        .unwrap_or_else(|| (T::zero(), T::one()));
+    let (a, b) = interval.cloned().unwrap_or_else(|| (T::zero(), T::one()));
     let curve = BezierCurve::new_on_interval(control.clone(), a.clone(), b.clone())
         .map_err(lib(Role::Control, CONTROL_FORM))?;
     Ok((curve, (a, b)))

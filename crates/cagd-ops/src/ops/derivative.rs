@@ -65,7 +65,12 @@ impl<T: Scalar> Operation<T> for Derivative<T> {
             .derivative(self.order)
             .map_err(lib(Role::DerivativeOrder, "an order r ≤ the degree n"))?;
         let ts = match &self.t {
-            Some(t) => t.resolve(Role::T, (&a, &b), "the derivative is extrapolated there", cx)?,
+            Some(t) => t.resolve(
+                Role::T,
+                (&a, &b),
+                "the derivative is extrapolated there",
+                cx,
+            )?,
             None => Vec::new(),
         };
         let dense = if self.drawing {

@@ -201,25 +201,24 @@ impl<T: Scalar> Spline<T> {
             _ => None,
         };
         cx.check_work(Role::Points, work(&self.points, &end, given))?;
-        CubicSpline::interpolate_with_params(self.points.clone(), params, end)
-            .map_err(|e| {
-                let role = match &e {
-                    cagd::Error::InvalidArgument {
-                        what: "spline parameters",
-                        ..
-                    }
-                    | cagd::Error::ShapeMismatch {
-                        what: "spline parameters",
-                        ..
-                    } => Role::Nodes,
-                    cagd::Error::ShapeMismatch {
-                        what: "spline end tangents",
-                        ..
-                    } => Role::T0,
-                    _ => Role::Points,
-                };
-                OpError::library(role, e, POINTS_FORM)
-            })
+        CubicSpline::interpolate_with_params(self.points.clone(), params, end).map_err(|e| {
+            let role = match &e {
+                cagd::Error::InvalidArgument {
+                    what: "spline parameters",
+                    ..
+                }
+                | cagd::Error::ShapeMismatch {
+                    what: "spline parameters",
+                    ..
+                } => Role::Nodes,
+                cagd::Error::ShapeMismatch {
+                    what: "spline end tangents",
+                    ..
+                } => Role::T0,
+                _ => Role::Points,
+            };
+            OpError::library(role, e, POINTS_FORM)
+        })
     }
 }
 
