@@ -17,8 +17,10 @@ Array = NDArray[Any]
 Curve = Union["BezierCurve", "BSplineCurve", "NurbsCurve", "HermiteCubic", "CubicSpline", "Lagrange"]
 
 class CagdError(ValueError):
-    """An input cagd cannot use: ``kind`` names the library's error (docs/ERRORS.md, or
-    ``"Conversion"`` for a Python value of the wrong type), ``argument`` the argument."""
+    """An input cagd cannot use, in the operation layer's words (``NAME: PROBLEM; expected
+    FORM``, as every front end words it): ``kind`` names the library's error underneath or the
+    operation layer's kind (docs/ERRORS.md), or ``"Conversion"`` for a Python value of the
+    wrong type; ``argument`` the Python name of the argument."""
 
     kind: str
     argument: Optional[str]

@@ -18,6 +18,7 @@
 
 use std::ops::Range;
 
+use cagd::grid::PointGrid;
 use nalgebra::DMatrix;
 use ndarray::{Array, Dimension};
 use num_rational::BigRational;
@@ -225,11 +226,8 @@ fn exact_element(item: &Bound<'_, PyAny>, what: &str, index: usize) -> PyResult<
             )
         })?;
         if !x.is_finite() {
-            return Err(crate::error::to_py(cagd::Error::NonFinite {
-                what: "exact input",
-                index,
-                value: x,
-            }));
+            let (problem, expected) = cagd_ops::check::not_finite_at(index, &x);
+            return Err(crate::error::worded("NonFinite", what, &problem, expected));
         }
         fraction.call1((PyFloat::new(py, x).repr()?,))
     };
@@ -416,6 +414,27 @@ pub fn net_in<T: Num>(obj: &Bound<'_, PyAny>, what: &'static str) -> PyResult<Ve
             .map(|c| DMatrix::from_fn(rows, cols, |i, j| v[(i * cols + j) * d + c].clone()))
             .collect()),
         _ => Err(rank_error(what, "an (m+1, n+1, d) array of points", shape)),
+    })
+}
+
+/// A `(rows, cols, d)` array as the core's grid of points (the same row-major layout).
+pub fn grid_in<T: Num>(obj: &Bound<'_, PyAny>, what: &'static str) -> PyResult<PointGrid<T>> {
+    T::with_values(obj, what, |shape, v| match *shape {
+        [rows, cols, d] => PointGrid::from_vec((rows, cols, d), v.to_vec())
+            .ok_or_else(|| rank_error(what, "an (m+1, n+1, d) array of points", shape)),
+        _ => Err(rank_error(what, "an (m+1, n+1, d) array of points", shape)),
+    })
+}
+
+/// A grid of points as a `(rows, cols, d)` array.
+///
+/// # Errors
+/// `MemoryError`; conversion of a big integer.
+pub fn grid_out<'py, T: Num>(py: Python<'py>, g: &PointGrid<T>) -> PyResult<Bound<'py, PyAny>> {
+    let (rows, cols, d) = g.dim();
+    T::output(py, &[rows, cols, d], |_, out| {
+        out.clone_from_slice(g.as_slice());
+        Ok(())
     })
 }
 

@@ -1,11 +1,18 @@
 //! `cagd.CagdError`: the one exception of the package, a `ValueError` carrying the kind of the
-//! library's error and the argument it names.
+//! error and the argument it names.
 //!
-//! Every error of the core ([`cagd::Error`]) keeps its own one-line text; `kind` is the name of
-//! its variant (`"ShapeMismatch"`, `"NonFinite"`, `"TooLarge"`, …, as in docs/ERRORS.md) and
-//! `argument` the argument the library names (`"B-spline knots"`), or `None`. The only errors
-//! made here are the conversions of Python values that the core never sees (a complex or text
-//! array, a value that is no number): kind `"Conversion"`.
+//! Errors come from the operation layer ([`cagd_ops::OpError`], [`op_error`]): the message is
+//! `NAME: PROBLEM; expected FORM`, the operation's words after the Python name of the argument
+//! (`knots`, `points`, `weights`), the same words as the command line's, the Octave package's
+//! and the page's; `argument` is that name. `kind` is the name of the library error underneath
+//! (`"KnotCount"`, `"NonPositiveWeight"`, `"TooLarge"`, … as in docs/ERRORS.md), or, for a rule
+//! the operation layer states itself, the name of its [`Kind`] (`"NonFinite"`, `"Shape"`,
+//! `"Knots"`, …). The few calls that still reach the core directly (evaluations, the thesis
+//! functions) raise its error with its own text ([`to_py`]). The only errors made here are the
+//! conversions of Python values that no layer below sees (a complex or text array, a value
+//! that is no number): kind `"Conversion"`.
+
+use cagd_ops::{Kind, OpError, Role};
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -14,7 +21,7 @@ pyo3::create_exception!(
     cagd,
     CagdError,
     PyValueError,
-    "An input cagd cannot use: `kind` names the library's error (as in docs/ERRORS.md), `argument` the argument it concerns (or None)."
+    "An input cagd cannot use, in the operation layer's words: `kind` names the library's error underneath or the operation layer's kind (as in docs/ERRORS.md), `argument` the Python name of the argument it concerns (or None)."
 );
 
 /// The name of the variant of `e` (the first word of its derived `Debug` form).
@@ -80,6 +87,67 @@ pub fn conversion(argument: &str, message: impl Into<String>) -> PyErr {
     )
 }
 
+/// How a class or function names the roles of its operation: `(role, Python name)`; a role
+/// not listed is named by its key ([`Role::key`]).
+pub type Names = &'static [(Role, &'static str)];
+
+/// The Python name of `role`.
+pub fn name_of(names: Names, role: Role) -> &'static str {
+    names
+        .iter()
+        .find(|(r, _)| *r == role)
+        .map_or_else(|| role.key(), |(_, n)| *n)
+}
+
+/// The kind a `CagdError` carries for `e`: the variant of the library's error underneath, or
+/// the operation layer's kind.
+fn op_kind(e: &OpError) -> String {
+    match &e.source {
+        Some(source) => kind_of(source),
+        None => format!("{:?}", e.kind),
+    }
+}
+
+/// An operation's error as `cagd.CagdError`: `NAME: PROBLEM; expected FORM`, the argument
+/// named as `names` say; a limit says how to raise it (`cagd.set_limit`).
+pub fn op_error(names: Names, e: OpError) -> PyErr {
+    let name = name_of(names, e.role);
+    let mut problem = e.problem.clone();
+    if let Some(limit) = e.limit {
+        problem = format!(
+            "{problem} (raise it with cagd.set_limit(\"{}\", VALUE))",
+            limit.field()
+        );
+    }
+    if e.kind == Kind::Interrupted {
+        let message = format!("{name}: {problem}; expected {}", e.expected);
+        return pyo3::exceptions::PyKeyboardInterrupt::new_err(message);
+    }
+    worded(&op_kind(&e), name, &problem, &e.expected)
+}
+
+/// The exception `NAME: PROBLEM; expected FORM` of the operation layer's words about the
+/// argument `name`.
+pub fn worded(kind: &str, name: &str, problem: &str, expected: &str) -> PyErr {
+    cagd_error(
+        kind,
+        Some(name),
+        format!("{name}: {problem}; expected {expected}"),
+    )
+}
+
+/// `Result<T, OpError>` → `PyResult<T>`, the roles named as `names` say.
+pub trait OpIntoPy<T> {
+    /// The error as `cagd.CagdError`.
+    fn named(self, names: Names) -> PyResult<T>;
+}
+
+impl<T> OpIntoPy<T> for cagd_ops::Result<T> {
+    fn named(self, names: Names) -> PyResult<T> {
+        self.map_err(|e| op_error(names, e))
+    }
+}
+
 /// `Result<T, cagd::Error>` → `PyResult<T>`.
 pub trait IntoPy<T> {
     /// The error as `cagd.CagdError`.
@@ -105,5 +173,29 @@ mod tests {
         };
         assert_eq!(kind_of(&e), "EmptyInterval");
         assert_eq!(argument_of(&e), Some("x"));
+    }
+
+    #[test]
+    fn operation_errors_keep_the_library_kind_or_name_their_own() {
+        let lib = OpError::library(
+            Role::Knots,
+            cagd::Error::KnotCount {
+                what: "knot vector",
+                expected: 7,
+                found: 6,
+            },
+            "n + p + 1 knots",
+        );
+        assert_eq!(op_kind(&lib), "KnotCount");
+        let own = OpError::new(
+            Role::Weights,
+            Kind::NonFinite,
+            "value 2 is not finite (NaN)",
+            "x",
+        );
+        assert_eq!(op_kind(&own), "NonFinite");
+        const NAMES: Names = &[(Role::Control, "points")];
+        assert_eq!(name_of(NAMES, Role::Control), "points");
+        assert_eq!(name_of(NAMES, Role::Knots), "knots");
     }
 }

@@ -1,7 +1,8 @@
-//! The Python package `cagd` (`import cagd`), a thin front end over the core crate `cagd`:
-//! Python values are translated into the core's types ([`convert`]), the core computes, its
-//! typed errors become `cagd.CagdError` ([`error`]). No mathematics, checks or wording of its
-//! own: every rule is the core's (and, when it lands, the operation layer's).
+//! The Python package `cagd` (`import cagd`), a thin front end over the core crate `cagd` and
+//! the operation layer `cagd-ops`: Python values are translated into the core's types
+//! ([`convert`]), the operation layer checks them and runs its requests ([`ops`]), the core
+//! computes, errors become `cagd.CagdError` ([`error`]). No mathematics, checks or wording of
+//! its own: every rule is the operation layer's or the core's.
 //!
 //! - [`octave`]: the eight thesis functions with the layouts of `octave_ref/fixed/`;
 //! - [`limits`]: the core's resource limits for the interpreter;
@@ -17,6 +18,7 @@ pub mod convert;
 pub mod error;
 pub mod limits;
 pub mod octave;
+pub mod ops;
 pub mod scipy_bspline;
 
 /// The extension module `cagd._cagd`; `cagd/__init__.py` arranges its names.

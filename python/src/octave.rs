@@ -21,9 +21,12 @@ use num_rational::BigRational;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
+use cagd_ops::Role;
+
 use crate::convert::{any_exact, rank_error, Num};
 use crate::error::IntoPy;
 use crate::limits::current as limits;
+use crate::ops::{checked, finite, Names};
 
 /// Runs `$f::<T>(args)` in exact arithmetic when any of `$objs` is exact, else in doubles.
 macro_rules! by_exactness {
@@ -62,6 +65,8 @@ fn with_matrices<T: Num, R>(
         };
         T::with_values(obj, what, |shape, v| {
             let view = matrix(what, shape, v)?;
+            // Counted as Octave counts: down the columns.
+            finite(what, view.t().iter())?;
             // Each view lives as long as the values `with_values` lends: the recursion keeps
             // them all alive until `f` has run.
             let mut all: Vec<ArrayView2<'_, T>> = done.iter().map(|a| a.view()).collect();
@@ -87,10 +92,23 @@ fn sample_bits<T: Num>(n: usize) -> u128 {
     }
 }
 
-/// Refuses `points` evaluations of `cost` each above the limit on work (`what` drives it).
-fn check_work<T: Num>(what: &'static str, points: usize, cost: cagd::cost::Cost) -> PyResult<()> {
-    let work = (points as u128).saturating_mul(cost.weigh(T::EXACT));
-    limits().check_work(what, work).py()
+/// Refuses `points` evaluations of `cost` each above the limit on work, by the operation
+/// layer's check about `role` (named by `names`).
+fn check_work<T: Num>(
+    names: Names,
+    role: Role,
+    (points, cost): (usize, cagd::cost::Cost),
+) -> PyResult<()> {
+    checked(names, |cx| {
+        cx.check_cost(role, cost.times(points as u128), T::EXACT)
+    })
+}
+
+/// One number, finite.
+fn finite_scalar<T: Num>(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<T> {
+    let x = T::scalar(obj, what)?;
+    finite(what, [&x])?;
+    Ok(x)
 }
 
 /// The cost of one look-up on a curve of `samples` samples of `bits` bits (the sampled
@@ -125,16 +143,17 @@ fn de_casteljau<'py>(kontrolne_t: &Bound<'py, PyAny>, n: usize) -> PyResult<Boun
 }
 
 fn de_casteljau_in<'py, T: Num>(p: &Bound<'py, PyAny>, n: usize) -> PyResult<Bound<'py, PyAny>> {
+    const NAMES: Names = &[(Role::Control, "kontrolneT"), (Role::Samples, "N")];
     let py = p.py();
     limits().check_samples("N", n).py()?;
     with_matrices::<T, _>(&[(p, "kontrolneT")], &mut |m| {
-        limits()
-            .check_degree("kontrolneT (degree)", m[0].ncols().saturating_sub(1))
-            .py()?;
+        let degree = m[0].ncols().saturating_sub(1);
         let control = DMatrix::from_fn(m[0].nrows(), m[0].ncols(), |i, j| m[0][[i, j]].clone());
-        if let Ok(curve) = cagd::BezierCurve::new(control) {
-            check_work::<T>("N", n, curve.eval_cost(sample_bits::<T>(n), bits(&m[0])))?;
-        }
+        let cost = cagd::BezierCurve::new(control)
+            .map(|c| c.eval_cost(sample_bits::<T>(n), bits(&m[0])))
+            .unwrap_or_default();
+        checked(NAMES, |cx| cx.check_degree(Role::Control, degree))?;
+        check_work::<T>(NAMES, Role::Samples, (n, cost))?;
         let t = py.detach(|| compat::de_casteljau(m[0].view(), n)).py()?;
         T::from_array(py, t)
     })
@@ -149,15 +168,14 @@ fn ploskev_b<'py>(kontrolne_t: &Bound<'py, PyAny>, n: usize) -> PyResult<Bound<'
 }
 
 fn ploskev_b_in<'py, T: Num>(b: &Bound<'py, PyAny>, n: usize) -> PyResult<Bound<'py, PyAny>> {
+    const NAMES: Names = &[(Role::Net, "kontrolneT"), (Role::Grid, "N")];
     let py = b.py();
-    limits().check_grid("N", n, n).py()?;
+    checked(NAMES, |cx| cx.check_grid(Role::Grid, n, n))?;
     with_matrices::<T, _>(&[(b, "kontrolneT")], &mut |m| {
-        limits()
-            .check_degree("kontrolneT (degree)", net_degree(&m[0]))
-            .py()?;
+        checked(NAMES, |cx| cx.check_degree(Role::Net, net_degree(&m[0])))?;
         let (b, tb) = (bits(&m[0]), sample_bits::<T>(n));
         let cost = patch_of(&m[0])?.scheme_cost(tb, tb, b);
-        check_work::<T>("N", n.saturating_mul(n), cost)?;
+        check_work::<T>(NAMES, Role::Grid, (n.saturating_mul(n), cost))?;
         let p = py.detach(|| compat::ploskev_b(m[0].view(), n)).py()?;
         T::from_array(py, p)
     })
@@ -182,14 +200,13 @@ fn bilinearna_in<'py, T: Num>(
     v: &Bound<'py, PyAny>,
     n: usize,
 ) -> PyResult<Bound<'py, PyAny>> {
+    const NAMES: Names = &[(Role::Net, "B")];
     let py = b.py();
-    let (u, v) = (T::scalar(u, "u")?, T::scalar(v, "v")?);
+    let (u, v) = (finite_scalar::<T>(u, "u")?, finite_scalar::<T>(v, "v")?);
     with_matrices::<T, _>(&[(b, "B")], &mut |m| {
-        limits()
-            .check_degree("B (degree)", net_degree(&m[0]))
-            .py()?;
+        checked(NAMES, |cx| cx.check_degree(Role::Net, net_degree(&m[0])))?;
         let cost = patch_of(&m[0])?.scheme_cost(u.bits(), v.bits(), bits(&m[0]));
-        check_work::<T>("B", 1, cost)?;
+        check_work::<T>(NAMES, Role::Net, (1, cost))?;
         let (u, v) = (u.clone(), v.clone());
         let l = py
             .detach(|| compat::bilinearna(m[0].view(), u, v, n))
@@ -237,12 +254,13 @@ fn krpa_coons_in<'py, T: Num>(args: &[&Bound<'py, PyAny>; 8]) -> PyResult<Bound<
     let py = args[0].py();
     let objs: Vec<_> = args.iter().copied().zip(NAMES).collect();
     with_matrices::<T, _>(&objs, &mut |m| {
+        const GRID: Names = &[(Role::Grid, "c1 (samples N)")];
         let n = m[0].ncols();
-        limits().check_grid("c1 (samples N)", n, n).py()?;
+        checked(GRID, |cx| cx.check_grid(Role::Grid, n, n))?;
         let b = m.iter().map(bits).max().unwrap_or(0);
         let tb = sample_bits::<T>(n);
         let cost = cagd::coons::coons_point_cost([sampled_cost::<T>(n, b); 4], 3, tb, tb);
-        check_work::<T>("c1 (samples N)", n.saturating_mul(n), cost)?;
+        check_work::<T>(GRID, Role::Grid, (n.saturating_mul(n), cost))?;
         let s = py
             .detach(|| compat::krpa_coons(m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7]))
             .py()?;
@@ -281,7 +299,10 @@ fn vrednost_coons_in<'py, T: Num>(
 ) -> PyResult<Bound<'py, PyTuple>> {
     const NAMES: [&str; 8] = ["c1", "c2", "d1", "d2", "P1", "P2", "P3", "P4"];
     let py = args[0].py();
-    let (u, v) = (T::scalar(args[0], "u")?, T::scalar(args[1], "v")?);
+    let (u, v) = (
+        finite_scalar::<T>(args[0], "u")?,
+        finite_scalar::<T>(args[1], "v")?,
+    );
     let objs: Vec<_> = args[2..].iter().copied().zip(NAMES).collect();
     with_matrices::<T, _>(&objs, &mut |m| {
         let r = compat::vrednost_coons(
@@ -326,15 +347,13 @@ fn krpa_gordon_in<'py, T: Num>(
 ) -> PyResult<Bound<'py, PyTuple>> {
     const NAMES: [&str; 5] = ["g_u", "g_v", "g_uv", "x_u", "x_v"];
     let py = args[0].py();
-    limits().check_grid("N", n, n).py()?;
+    checked(GORDON_NAMES, |cx| cx.check_grid(Role::Grid, n, n))?;
     let objs: Vec<_> = args.iter().copied().zip(NAMES).collect();
     with_matrices::<T, _>(&objs, &mut |m| {
-        limits()
-            .check_degree("x_u (nodes - 1)", m[3].len().saturating_sub(1))
-            .py()?;
-        limits()
-            .check_degree("x_v (nodes - 1)", m[4].len().saturating_sub(1))
-            .py()?;
+        checked(GORDON_NAMES, |cx| {
+            cx.check_degree(Role::UNodes, m[3].len().saturating_sub(1))?;
+            cx.check_degree(Role::VNodes, m[4].len().saturating_sub(1))
+        })?;
         check_gordon_work::<T>(m, n)?;
         let s = py
             .detach(|| compat::krpa_gordon(m[0], m[1], m[2], m[3], m[4], n))
@@ -364,8 +383,15 @@ fn check_gordon_work<T: Num>(m: &[ArrayView2<'_, T>], n: usize) -> PyResult<()> 
     let work = (n.saturating_mul(n) as u128)
         .saturating_mul(point.weigh(T::EXACT))
         .saturating_add(setup.weigh(T::EXACT));
-    limits().check_work("N", work).py()
+    checked(GORDON_NAMES, |cx| cx.check_work(Role::Grid, work))
 }
+
+/// How `krpaGordon` names the roles of its checks.
+const GORDON_NAMES: Names = &[
+    (Role::UNodes, "x_u"),
+    (Role::VNodes, "x_v"),
+    (Role::Grid, "N"),
+];
 
 /// `v = Lagrange(x, m, u)`: the `m`-th (from 1) Lagrange basis polynomial of the nodes `x` at
 /// every value of `u` (any shape; a number gives a number).
@@ -385,15 +411,17 @@ fn lagrange_in<'py, T: Num>(
     u: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let py = x.py();
+    const NAMES: Names = &[(Role::Nodes, "x"), (Role::T, "u")];
     with_matrices::<T, _>(&[(x, "x")], &mut |nodes| {
-        limits()
-            .check_degree("x (nodes - 1)", nodes[0].len().saturating_sub(1))
-            .py()?;
+        checked(NAMES, |cx| {
+            cx.check_degree(Role::Nodes, nodes[0].len().saturating_sub(1))
+        })?;
         T::with_values(u, "u", |shape, values| {
+            finite("u", values)?;
             let u_bits = values.iter().map(|x| x.bits()).max().unwrap_or(0);
             let (count, x_bits) = (nodes[0].len(), bits(&nodes[0]));
             let cost = cagd::lagrange::Lagrange::<f64>::basis_cost(count, u_bits, x_bits);
-            check_work::<T>("u", values.len(), cost)?;
+            check_work::<T>(NAMES, Role::T, (values.len(), cost))?;
             let view = ArrayViewD::from_shape(IxDyn(shape), values)
                 .map_err(|e| crate::error::conversion("u", e.to_string()))?;
             let l = py.detach(|| compat::lagrange(nodes[0], m, view)).py()?;

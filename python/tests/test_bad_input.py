@@ -46,7 +46,7 @@ CASES = {
     "Lagrange m = 0": (lambda: octave.Lagrange([0, 0.5, 1], 0, 0.5), "InvalidArgument"),
     "Lagrange duplicate": (lambda: octave.Lagrange([0, 0.5, 0], 1, 0.5), "DuplicateNodes"),
     # classes
-    "BezierCurve empty": (lambda: cagd.BezierCurve(np.zeros((0, 2))), "TooFewPoints"),
+    "BezierCurve empty": (lambda: cagd.BezierCurve(np.zeros((0, 2))), "Shape"),
     "BezierCurve degree over the limit": (lambda: cagd.BezierCurve(np.zeros((2000, 2))), "TooLarge"),
     "BezierCurve Inf": (lambda: cagd.BezierCurve([[0, math.inf]]), "NonFinite"),
     "BezierCurve exact NaN": (lambda: cagd.BezierCurve([[F(1, 2), nan]]), "NonFinite"),
@@ -63,7 +63,9 @@ CASES = {
     "CoonsPatch mixed": (lambda: cagd.CoonsPatch(line, cagd.BezierCurve([[0, 1], [1, 1]], exact=True), line, line), "Conversion"),
     "GordonSurface too few": (lambda: cagd.GordonSurface([0], [0, 1], [line], [line, line]), "TooFewCurves"),
     "CubicSpline too few": (lambda: cagd.CubicSpline([[0, 0]]), "TooFewPoints"),
-    "CubicSpline end": (lambda: cagd.CubicSpline([[0, 0], [1, 1]], end="clamped"), "Conversion"),
+    "CubicSpline end": (lambda: cagd.CubicSpline([[0, 0], [1, 1]], end="cubic"), "Conversion"),
+    "CubicSpline clamped without tangents": (lambda: cagd.CubicSpline([[0, 0], [1, 1]], end="clamped"), "Usage"),
+    "CubicSpline natural with a tangent": (lambda: cagd.CubicSpline([[0, 0], [1, 1]], start=[1, 0]), "Usage"),
     "HermiteCubic dimensions": (lambda: cagd.HermiteCubic([0, 0], [1, 1, 1], [0, 0], [0, 0]), "ShapeMismatch"),
     "Lagrange unsorted or equal nodes": (lambda: cagd.Lagrange([0, 0], [[0], [1]]), "DuplicateNodes"),
     "bernstein degree over the limit": (lambda: cagd.bernstein(0, 5000, 0.5), "TooLarge"),
@@ -95,7 +97,8 @@ def test_bad_input_raises_cagd_error(name):
 def test_error_names_its_argument():
     with pytest.raises(cagd.CagdError) as info:
         cagd.BSplineCurve(1, [0, 1, 0.5, 2], [[0], [1]])
-    assert info.value.argument == "knot vector"
+    assert info.value.argument == "knots"
+    assert str(info.value).startswith("knots: knot vector: knot 2 (0.5) is below")
     assert "non-decreasing" in str(info.value)
 
 
@@ -127,3 +130,27 @@ def test_ctrl_c_stops_a_long_evaluation():
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
         signal.signal(signal.SIGALRM, old)
+
+
+def test_ctrl_c_stops_a_long_request():
+    """A request of the operation layer (here an exact degree elevation by 900, some seconds of
+    work) asks Python for signals between its steps, the interpreter's lock released: Ctrl-C
+    (interrupt_main from a timer thread) ends it with KeyboardInterrupt within moments, and
+    the next request runs as usual."""
+    import _thread
+    import threading
+    import time
+
+    curve = cagd.BezierCurve([[F(1, 3), F(2, 7)], [F(5, 11), F(3, 13)]], exact=True)
+    cagd.set_limit("max_work", 10**16)
+    timer = threading.Timer(0.3, _thread.interrupt_main)
+    try:
+        start = time.monotonic()
+        timer.start()
+        with pytest.raises(KeyboardInterrupt):
+            curve.elevate(900)
+        assert time.monotonic() - start < 3
+    finally:
+        timer.cancel()
+        cagd.set_limit()
+    assert curve.elevate(2).degree == 3

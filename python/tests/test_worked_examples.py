@@ -128,3 +128,19 @@ def test_continuity_of_a_subdivision():
     b0 = cagd.BezierCurve(b.control_points)
     a0 = cagd.BezierCurve(a.control_points)
     assert cagd.continuity(a0, b0) == {"c0": True, "c1": False, "g1": True}
+
+
+def test_the_halves_of_a_subdivision_differentiate_on_their_intervals():
+    """The derivative, elevation and subdivision of a half keep its parameter interval: the
+    half's derivative at t is the whole curve's (Primer 2.4's cubic), not the derivative of
+    the half reparametrised over [0, 1]."""
+    c = cagd.BezierCurve([[0, 0, 0], [0, 2, 2], [8, 2, 0], [4, 0, 0]], exact=True)
+    a, b = c.subdivide(F(1, 3))
+    t = F(1, 6)
+    assert a.derivative()(t).tolist() == c.derivative()(t).tolist()
+    assert a.derivative(2)(t).tolist() == c.derivative(2)(t).tolist()
+    assert a.elevate(2).domain == (0, F(1, 3))
+    assert a.elevate(2)(t).tolist() == c(t).tolist()
+    left, right = b.subdivide(F(2, 3))
+    assert left.domain == (F(1, 3), F(2, 3)) and right.domain == (F(2, 3), 1)
+    assert right(F(5, 6)).tolist() == c(F(5, 6)).tolist()

@@ -37,12 +37,21 @@ pub fn non_finite<'a, T: Scalar>(
         .into_iter()
         .enumerate()
         .find(|(_, x)| !x.is_finite_value())
-        .map(|(k, x)| {
-            (
-                format!("value {} is not finite ({})", k + 1, number_text(x)),
-                "finite numbers",
-            )
-        })
+        .map(|(k, x)| not_finite_at(k, x))
+}
+
+/// The words of [`non_finite`] for the value `x` at `index` (from 0), for a front end that
+/// meets it while reading values one by one (a Python object array read as fractions).
+///
+/// ```
+/// let (problem, expected) = cagd_ops::check::not_finite_at(1, &f64::INFINITY);
+/// assert_eq!(format!("{problem}; expected {expected}"), "value 2 is not finite (inf); expected finite numbers");
+/// ```
+pub fn not_finite_at<T: Scalar>(index: usize, x: &T) -> (String, &'static str) {
+    (
+        format!("value {} is not finite ({})", index + 1, number_text(x)),
+        "finite numbers",
+    )
 }
 
 /// [`finite`] for a matrix (column-major, as Octave counts).

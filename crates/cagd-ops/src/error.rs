@@ -5,8 +5,9 @@ use cagd::limits::Limit;
 
 use crate::Role;
 
-/// The kind of an error: the part after `cagd:` in an Octave identifier, the kind a Python
-/// `CagdError` carries, the class of a command-line refusal.
+/// The kind of an error: the part after `cagd:` in an Octave identifier, the class of a
+/// command-line refusal; a Python `CagdError.kind` is the variant of the library's error
+/// underneath ([`OpError::source`]), or this kind by its type name (`NonFinite`, `Shape`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub enum Kind {
@@ -63,7 +64,7 @@ impl Kind {
         Kind::Internal,
     ];
 
-    /// The kind's name (`"knots"`): Octave's `cagd:knots`, Python's `CagdError.kind`.
+    /// The kind's name (`"knots"`): Octave's `cagd:knots`.
     pub fn name(self) -> &'static str {
         match self {
             Kind::Shape => "shape",

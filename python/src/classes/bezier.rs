@@ -2,12 +2,27 @@
 //! [`BezierPatch`], points as rows.
 
 use cagd::bezier::{BezierCurve, BezierPatch, Edge};
+use cagd_ops::error::lib;
+use cagd_ops::ops::{Derivative, Elevate, Subdivide};
+use cagd_ops::Role;
 use pyo3::prelude::*;
 
 use super::shared::{build, exactness, on, point_out, Ex, Exact};
 use super::steps::Steps;
 use crate::convert::{net_in, net_out, points_as_rows, rows_out, Num};
 use crate::error::IntoPy;
+use crate::ops::{execute, item, with_context, Names};
+
+/// How `BezierCurve` names the roles of its requests.
+const CURVE_NAMES: Names = &[
+    (Role::Control, "points"),
+    (Role::DerivativeOrder, "r"),
+    (Role::By, "times"),
+    (Role::T, "t"),
+];
+
+/// How `BezierPatch` names the roles of its checks.
+const PATCH_NAMES: Names = &[(Role::Net, "net")];
 
 type CurveEx = Ex<BezierCurve<f64>, BezierCurve<Exact>>;
 type PatchEx = Ex<BezierPatch<f64>, BezierPatch<Exact>>;
@@ -26,13 +41,68 @@ pub struct PyBezierCurve {
     pub(crate) inner: CurveEx,
 }
 
+/// The curve of the control points: the operation layer's checks of a Bézier curve's points
+/// (at least one, finite, the degree within the limit), as its requests make them.
 fn new_curve<T: Num>(points: &Bound<'_, PyAny>) -> PyResult<BezierCurve<T>> {
-    let limits = crate::limits::current();
     let control = points_as_rows::<T>(points, "points")?;
-    limits
-        .check_degree("points (degree)", control.ncols().saturating_sub(1))
-        .py()?;
-    BezierCurve::new(control).py()
+    with_context(points.py(), CURVE_NAMES, |cx| {
+        cagd_ops::check::points(Role::Control, &control, 1, "control points")?;
+        cx.check_degree(Role::Control, control.ncols().saturating_sub(1))?;
+        BezierCurve::new(control).map_err(lib(Role::Control, cagd_ops::ops::BEZIER_CONTROL_FORM))
+    })
+}
+
+/// The curve on `[a, b]` of the control points `name` of a request's report.
+fn curve_item<T: Num>(
+    report: &cagd_ops::Report<T>,
+    name: &str,
+    (a, b): (&T, &T),
+) -> PyResult<BezierCurve<T>> {
+    BezierCurve::new_on_interval(item(report, name)?, a.clone(), b.clone()).py()
+}
+
+/// The interval of `c`, owned.
+fn interval<T: Num>(c: &BezierCurve<T>) -> (T, T) {
+    let (a, b) = c.interval();
+    (a.clone(), b.clone())
+}
+
+/// The derivative of order `r` (on the curve's interval) by the request [`Derivative`].
+fn derivative<T: Num>(py: Python<'_>, c: &BezierCurve<T>, r: usize) -> PyResult<BezierCurve<T>> {
+    let op = Derivative {
+        interval: Some(interval(c)),
+        ..Derivative::new(c.control().clone(), r)
+    };
+    curve_item(&execute(py, CURVE_NAMES, &op)?, "control", c.interval())
+}
+
+/// The curve elevated `times` times by the request [`Elevate`] (on the curve's interval: the
+/// elevated control points do not depend on it).
+fn elevate<T: Num>(py: Python<'_>, c: &BezierCurve<T>, times: usize) -> PyResult<BezierCurve<T>> {
+    let op = Elevate {
+        by: times,
+        ..Elevate::new(c.control().clone())
+    };
+    curve_item(&execute(py, CURVE_NAMES, &op)?, "control", c.interval())
+}
+
+/// The two halves at `t` by the request [`Subdivide`], on `[a, t]` and `[t, b]`.
+fn subdivide<T: Num>(
+    c: &BezierCurve<T>,
+    t: &Bound<'_, PyAny>,
+) -> PyResult<(BezierCurve<T>, BezierCurve<T>)> {
+    let at = T::scalar(t, "t")?;
+    let op = Subdivide {
+        interval: Some(interval(c)),
+        t: Some(at.clone()),
+        ..Subdivide::new(c.control().clone())
+    };
+    let report = execute(t.py(), CURVE_NAMES, &op)?;
+    let (a, b) = c.interval();
+    Ok((
+        curve_item(&report, "left", (a, &at))?,
+        curve_item(&report, "right", (&at, b))?,
+    ))
 }
 
 fn wrap_curve(inner: CurveEx) -> PyBezierCurve {
@@ -69,38 +139,31 @@ impl PyBezierCurve {
     /// The derivative of order `r` as a Bézier curve of degree `n − r`:
     /// `b^{(r)}(t) = n!/(n−r)! Σ Δ^r b_i B_i^{n−r}(t)` (thesis (2.4)).
     #[pyo3(signature = (r = 1))]
-    fn derivative(&self, r: usize) -> PyResult<Self> {
+    fn derivative(&self, py: Python<'_>, r: usize) -> PyResult<Self> {
         Ok(wrap_curve(match &self.inner {
-            Ex::F(c) => Ex::F(c.derivative(r).py()?),
-            Ex::E(c) => Ex::E(c.derivative(r).py()?),
+            Ex::F(c) => Ex::F(derivative(py, c, r)?),
+            Ex::E(c) => Ex::E(derivative(py, c, r)?),
         }))
     }
 
     /// The same curve of degree `n + times`: `b_i^{(1)} = i/(n+1) b_{i−1} + (1 − i/(n+1)) b_i`.
     #[pyo3(signature = (times = 1))]
-    fn elevate(&self, times: usize) -> PyResult<Self> {
-        crate::limits::current()
-            .check_degree("times (degree)", self.degree().saturating_add(times))
-            .py()?;
-        let mut out = self.inner.clone();
-        for _ in 0..times {
-            out = match &out {
-                Ex::F(c) => Ex::F(c.elevate()),
-                Ex::E(c) => Ex::E(c.elevate()),
-            };
-        }
-        Ok(wrap_curve(out))
+    fn elevate(&self, py: Python<'_>, times: usize) -> PyResult<Self> {
+        Ok(wrap_curve(match &self.inner {
+            Ex::F(c) => Ex::F(elevate(py, c, times)?),
+            Ex::E(c) => Ex::E(elevate(py, c, times)?),
+        }))
     }
 
     /// The two halves at `t`: their control points are the two edges of the scheme at `t`.
     fn subdivide(&self, t: &Bound<'_, PyAny>) -> PyResult<(Self, Self)> {
         Ok(match &self.inner {
             Ex::F(c) => {
-                let (a, b) = c.subdivide(f64::scalar(t, "t")?).py()?;
+                let (a, b) = subdivide(c, t)?;
                 (wrap_curve(Ex::F(a)), wrap_curve(Ex::F(b)))
             }
             Ex::E(c) => {
-                let (a, b) = c.subdivide(Exact::scalar(t, "t")?).py()?;
+                let (a, b) = subdivide(c, t)?;
                 (wrap_curve(Ex::E(a)), wrap_curve(Ex::E(b)))
             }
         })
@@ -168,13 +231,16 @@ pub struct PyBezierPatch {
     pub(crate) inner: PatchEx,
 }
 
+/// The patch of the net: the operation layer's checks of a Bézier patch's net (finite, the
+/// degree within the limit), as its request makes them.
 fn new_patch<T: Num>(net: &Bound<'_, PyAny>) -> PyResult<BezierPatch<T>> {
     let coords = net_in::<T>(net, "net")?;
     let (m, n) = coords.first().map_or((0, 0), |c| (c.nrows(), c.ncols()));
-    crate::limits::current()
-        .check_degree("net (degree)", m.max(n).saturating_sub(1))
-        .py()?;
-    BezierPatch::new(coords).py()
+    with_context(net.py(), PATCH_NAMES, |cx| {
+        cagd_ops::check::finite(Role::Net, coords.iter().flat_map(|c| c.iter()))?;
+        cx.check_degree(Role::Net, m.max(n).saturating_sub(1))?;
+        BezierPatch::new(coords).map_err(lib(Role::Net, cagd_ops::ops::BEZIER_NET_FORM))
+    })
 }
 
 fn edge(name: &str) -> PyResult<Edge> {

@@ -4,13 +4,45 @@
 
 use cagd::hermite::HermiteCubic;
 use cagd::lagrange::{Lagrange, LagrangeInterpolant};
-use cagd::spline::{CubicSpline, EndCondition};
+use cagd::spline::{CubicSpline, Parametrization};
+use cagd_ops::error::lib;
+use cagd_ops::ops::{self, spline::Ends, spline::Knots};
+use cagd_ops::Role;
+use nalgebra::DMatrix;
 use pyo3::prelude::*;
 
 use super::bezier::PyBezierCurve;
-use super::shared::{build, exactness, on, point_in, point_out, Ex, Exact};
+use super::shared::{build, exactness, on, point_out, Ex, Exact};
 use crate::convert::{params, points_as_rows, rows_out, vector_out, Num};
 use crate::error::{conversion, IntoPy};
+use crate::ops::{with_context, Names};
+
+/// How `HermiteCubic` names its arguments.
+const HERMITE_NAMES: Names = &[
+    (Role::P0, "x1"),
+    (Role::P1, "x2"),
+    (Role::T0, "t1"),
+    (Role::T1, "t2"),
+    (Role::Hermite, "x1, x2, t1, t2"),
+];
+
+/// How `CubicSpline` names its arguments.
+const SPLINE_NAMES: Names = &[
+    (Role::Points, "points"),
+    (Role::T0, "start"),
+    (Role::T1, "end_tangent"),
+    (Role::Nodes, "params"),
+    (Role::Ends, "end"),
+];
+
+/// How `Lagrange` names its arguments.
+const LAGRANGE_NAMES: Names = &[(Role::Nodes, "nodes"), (Role::Points, "points")];
+
+/// A point or vector (any array of `d` numbers) as a `d × 1` column.
+fn column_in<T: Num>(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<DMatrix<T>> {
+    let (_, v) = params::<T>(obj, what)?;
+    Ok(DMatrix::from_vec(v.len(), 1, v))
+}
 
 /// The Ferguson (Hermite) cubic `x(u) = x1 H0(u) + x2 H3(u) + t1 H1(u) + t2 H2(u)`,
 /// `u ∈ [0, 1]`, through `x1`, `x2` with the tangents `t1`, `t2` (the lecture notes).
@@ -20,15 +52,16 @@ pub struct PyHermiteCubic {
     pub(crate) inner: Ex<HermiteCubic<f64>, HermiteCubic<Exact>>,
 }
 
+/// The cubic built by the request [`ops::Hermite`] (its checks of the four vectors).
 fn new_hermite<T: Num>(args: [&Bound<'_, PyAny>; 4]) -> PyResult<HermiteCubic<T>> {
     let [x1, x2, t1, t2] = args;
-    HermiteCubic::new(
-        point_in(x1, "x1")?,
-        point_in(x2, "x2")?,
-        point_in(t1, "t1")?,
-        point_in(t2, "t2")?,
-    )
-    .py()
+    let op = ops::Hermite::new([
+        column_in(x1, "x1")?,
+        column_in(x2, "x2")?,
+        column_in(t1, "t1")?,
+        column_in(t2, "t2")?,
+    ]);
+    with_context(x1.py(), HERMITE_NAMES, |_| op.cubic())
 }
 
 #[pymethods]
@@ -81,19 +114,18 @@ pub struct PyCubicSpline {
     pub(crate) inner: Ex<CubicSpline<f64>, CubicSpline<Exact>>,
 }
 
+/// The spline built by the request [`ops::Spline`]: its end condition (the tangents it needs
+/// or ignores), the parameters of the points and the work checked by the operation layer.
 fn new_spline<T: Num>(
     points: &Bound<'_, PyAny>,
     end: &str,
     tangents: (Option<&Bound<'_, PyAny>>, Option<&Bound<'_, PyAny>>),
     ps: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<CubicSpline<T>> {
-    let end = match (end, tangents) {
-        ("natural", _) => EndCondition::Natural,
-        ("closed", _) => EndCondition::Closed,
-        ("clamped", (Some(s), Some(e))) => EndCondition::Clamped {
-            start: point_in(s, "start")?,
-            end: point_in(e, "end_tangent")?,
-        },
+    let ends = match end {
+        "natural" => Ends::Natural,
+        "closed" => Ends::Closed,
+        "clamped" => Ends::Clamped,
         _ => {
             return Err(conversion(
                 "end",
@@ -101,13 +133,20 @@ fn new_spline<T: Num>(
             ))
         }
     };
-    let points = points_as_rows::<T>(points, "points")?;
-    match ps {
-        None => CubicSpline::interpolate(points, end).py(),
-        Some(p) => {
-            CubicSpline::interpolate_with_params(points, params::<T>(p, "params")?.1, end).py()
-        }
-    }
+    let op = ops::Spline {
+        ends: Some(ends),
+        start_tangent: tangents.0.map(|s| column_in(s, "start")).transpose()?,
+        end_tangent: tangents
+            .1
+            .map(|e| column_in(e, "end_tangent"))
+            .transpose()?,
+        knots: match ps {
+            None => Knots::Chosen(Parametrization::Uniform),
+            Some(p) => Knots::Given(params::<T>(p, "params")?.1),
+        },
+        ..ops::Spline::new(points_as_rows::<T>(points, "points")?)
+    };
+    with_context(points.py(), SPLINE_NAMES, |cx| op.spline(cx))
 }
 
 #[pymethods]
@@ -167,11 +206,16 @@ fn new_lagrange<T: Num>(
     points: &Bound<'_, PyAny>,
 ) -> PyResult<LagrangeInterpolant<T>> {
     let (_, n) = params::<T>(nodes, "nodes")?;
-    crate::limits::current()
-        .check_degree("nodes (nodes - 1)", n.len().saturating_sub(1))
-        .py()?;
-    let basis = Lagrange::new(n).py()?;
-    LagrangeInterpolant::new(basis, points_as_rows::<T>(points, "points")?).py()
+    let values = points_as_rows::<T>(points, "points")?;
+    // The checks of the request [`ops::Lagrange`]: the degree within the limit, the nodes
+    // given and finite; the core's barycentric form keeps the nodes in the order given.
+    with_context(nodes.py(), LAGRANGE_NAMES, |cx| {
+        cx.check_degree(Role::Nodes, n.len().saturating_sub(1))?;
+        cagd_ops::params::check_given(Role::Nodes, &n, cx)?;
+        let basis = Lagrange::new(n).map_err(lib(Role::Nodes, ops::LAGRANGE_NODES_FORM))?;
+        LagrangeInterpolant::new(basis, values)
+            .map_err(lib(Role::Points, ops::LAGRANGE_VALUES_FORM))
+    })
 }
 
 #[pymethods]

@@ -1,7 +1,11 @@
 //! The Pythonic classes of the course, points as rows: each holds the core's object in doubles
 //! or in exact rationals ([`shared::Ex`]) and each method is a small translation — arrays in
-//! ([`crate::convert`]), the core's call, arrays or `cagd.CagdError` out. When the operation
-//! layer (`cagd-ops`) lands, the bodies of the methods become its requests one for one.
+//! ([`crate::convert`]), the operation layer's request or checks ([`crate::ops`]), arrays or
+//! `cagd.CagdError` out. Constructors build their object as the operation layer's requests
+//! build it (the same checks and words); methods that are requests (`derivative`, `elevate`,
+//! `subdivide`, `insert_knots`, `bernstein`, `discrete_coons`) run them; evaluation of a kept
+//! object (`obj(t)`, `surface(u, v)`) checks its parameters by the operation layer and calls
+//! the core's batch evaluation, writing straight into the array returned.
 //!
 //! - [`bezier`]: `BezierCurve`, `BezierPatch`;
 //! - [`splines`]: `BSplineCurve`, `BSplineSurface`, `NurbsCurve`, `NurbsSurface`;

@@ -8,6 +8,13 @@ use cagd::coons::{
 };
 use cagd::gordon::GordonSurface;
 use cagd::param::{Curve, Surface};
+use cagd_ops::error::lib;
+use cagd_ops::ops::coons::boundary_error;
+use cagd_ops::ops::coons_bicubic::CROSS_FORM;
+use cagd_ops::ops::gordon::network_error;
+use cagd_ops::ops::DiscreteCoons;
+use cagd_ops::params::check_given;
+use cagd_ops::{Role, Value};
 use nalgebra::DVector;
 use pyo3::prelude::*;
 
@@ -17,8 +24,29 @@ use super::shared::mixed;
 use super::shared::{on, point_out, Ex, Exact};
 use super::splines::{PyBSplineCurve, PyNurbsCurve};
 use super::steps::Steps;
-use crate::convert::{net_in, net_out, params, Num};
+use crate::convert::{grid_in, grid_out, params, Num};
 use crate::error::{conversion, IntoPy};
+use crate::ops::{execute, with_context, Names, OpIntoPy};
+
+/// How `CoonsPatch` names the roles of its checks.
+const COONS_NAMES: Names = &[
+    (Role::C1, "c1"),
+    (Role::C2, "c2"),
+    (Role::D1, "d1"),
+    (Role::D2, "d2"),
+    (Role::Boundary, "c1, c2, d1, d2"),
+    (Role::Blend, "blend"),
+    (Role::Cross, "du0, du1, dv0, dv1"),
+];
+
+/// How `GordonSurface` names the roles of its checks.
+const GORDON_NAMES: Names = &[
+    (Role::UNodes, "u_nodes"),
+    (Role::VNodes, "v_nodes"),
+    (Role::UCurves, "curves_at_u"),
+    (Role::VCurves, "curves_at_v"),
+    (Role::Network, "curves_at_u, curves_at_v"),
+];
 
 /// Any curve of the package, in the core's arithmetic `T`.
 pub type AnyCurve<T> = Box<dyn cagd::CurveDeriv<T> + Send + Sync>;
@@ -143,10 +171,18 @@ fn coons_of<T: cagd::Scalar>(c: Vec<AnyCurve<T>>, blend: &str) -> PyResult<Coons
         .try_into()
         .map_err(|_| conversion("curves", "expected four curves"))?;
     Ok(match blend {
-        "linear" => Coons::Bilinear(CoonsPatch::new(c1, c2, d1, d2).py()?),
+        "linear" => Coons::Bilinear(
+            CoonsPatch::new(c1, c2, d1, d2)
+                .map_err(boundary_error)
+                .named(COONS_NAMES)?,
+        ),
         "hermite" => {
             let (f, g) = (BlendingPair::hermite_cubic(), BlendingPair::hermite_cubic());
-            Coons::Blended(GeneralizedCoonsPatch::new(c1, c2, d1, d2, f, g).py()?)
+            Coons::Blended(
+                GeneralizedCoonsPatch::new(c1, c2, d1, d2, f, g)
+                    .map_err(boundary_error)
+                    .named(COONS_NAMES)?,
+            )
         }
         other => {
             return Err(conversion(
@@ -171,11 +207,14 @@ fn bicubic_of<T: cagd::Scalar>(c: Vec<AnyCurve<T>>, twist: &str) -> PyResult<Coo
             ))
         }
     };
-    let boundary = CoonsBoundary::new(c1, c2, d1, d2, Tolerance::default()).py()?;
+    let boundary = CoonsBoundary::new(c1, c2, d1, d2, Tolerance::default())
+        .map_err(boundary_error)
+        .named(COONS_NAMES)?;
     let cross = CrossDerivatives { du0, du1, dv0, dv1 };
-    Ok(Coons::Bicubic(Box::new(
-        BicubicCoonsPatch::new(boundary, cross, twist).py()?,
-    )))
+    let patch = BicubicCoonsPatch::new(boundary, cross, twist)
+        .map_err(lib(Role::Cross, CROSS_FORM))
+        .named(COONS_NAMES)?;
+    Ok(Coons::Bicubic(Box::new(patch)))
 }
 
 fn parts_steps<T: Num>(
@@ -271,15 +310,16 @@ fn gordon_of<T: Num>(
 ) -> PyResult<GordonSurface<AnyCurve<T>, T>> {
     let (_, un) = params::<T>(u, "u_nodes")?;
     let (_, vn) = params::<T>(v, "v_nodes")?;
-    let limits = crate::limits::current();
-    limits
-        .check_degree("u_nodes (nodes - 1)", un.len().saturating_sub(1))
-        .py()?;
-    limits
-        .check_degree("v_nodes (nodes - 1)", vn.len().saturating_sub(1))
-        .py()?;
     let at_v = c.split_off(split);
-    GordonSurface::new(un, vn, c, at_v).py()
+    // The checks of the request [`cagd_ops::ops::Gordon`]: as many curves as nodes within the
+    // degree limit, the nodes given and finite, the network's refusal worded by it.
+    with_context(u.py(), GORDON_NAMES, |cx| {
+        cx.check_degree(Role::UCurves, c.len().saturating_sub(1))?;
+        cx.check_degree(Role::VCurves, at_v.len().saturating_sub(1))?;
+        check_given(Role::UNodes, &un, cx)?;
+        check_given(Role::VNodes, &vn, cx)?;
+        GordonSurface::new(un, vn, c, at_v).map_err(network_error)
+    })
 }
 
 #[pymethods]
@@ -322,13 +362,17 @@ fn discrete_coons<'py>(
     exact: Option<bool>,
 ) -> PyResult<Bound<'py, PyAny>> {
     fn run<'py, T: Num>(net: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
-        let coords = net_in::<T>(net, "net")?;
-        let (m, n) = coords.first().map_or((0, 0), |c| (c.nrows(), c.ncols()));
-        let limits = crate::limits::current();
-        limits.check_grid("net", m, n).py()?;
-        let cost = cagd::coons::discrete_coons_cost(m, n, coords.len());
-        limits.check_work("net", cost.weigh(T::EXACT)).py()?;
-        net_out(net.py(), &cagd::coons::discrete_coons(&coords).py()?)
+        const NAMES: Names = &[(Role::Net, "net")];
+        let op = DiscreteCoons::new(grid_in::<T>(net, "net")?);
+        let report = execute(net.py(), NAMES, &op)?;
+        match report.get("result") {
+            Some(Value::Grid(g)) => grid_out(net.py(), g),
+            _ => Err(crate::error::cagd_error(
+                "Internal",
+                None,
+                "the request answered no grid 'result'".into(),
+            )),
+        }
     }
     if super::shared::exactness(exact, &[net])? {
         run::<Exact>(net)

@@ -6,8 +6,18 @@ use nalgebra::DVector;
 use num_rational::BigRational;
 use pyo3::prelude::*;
 
+use cagd_ops::Role;
+
 use crate::convert::{chunked, params, Num};
-use crate::error::IntoPy;
+use crate::ops::{checked, Names};
+
+/// How evaluations name their parameters.
+const EVAL_NAMES: Names = &[
+    (Role::T, "t"),
+    (Role::U, "u"),
+    (Role::V, "v"),
+    (Role::Grid, "u, v"),
+];
 
 /// A core object in doubles or in exact rationals.
 #[derive(Clone, Debug)]
@@ -189,6 +199,7 @@ pub fn eval_curve<'py, T: Num, C: Curve<T> + Sync + ?Sized>(
     // The parameters are read in place (float64, contiguous) and the points written straight
     // into the array returned.
     T::with_values(t, "t", |shape, ts| {
+        checked(EVAL_NAMES, |_| cagd_ops::check::finite(Role::T, ts))?;
         let d = c.dim();
         let mut out_shape = shape.to_vec();
         out_shape.push(d);
@@ -210,9 +221,11 @@ pub fn eval_surface<'py, T: Num, S: Surface<T> + Sync + ?Sized>(
     let (su, us) = params::<T>(u, "u")?;
     let (sv, vs) = params::<T>(v, "v")?;
     let d = s.dim();
-    crate::limits::current()
-        .check_grid("u, v", us.len(), vs.len())
-        .py()?;
+    checked(EVAL_NAMES, |cx| {
+        cagd_ops::check::finite(Role::U, &us)?;
+        cagd_ops::check::finite(Role::V, &vs)?;
+        cx.check_grid(Role::Grid, us.len(), vs.len())
+    })?;
     let row = vs.len() * d;
     let shape = if su.is_empty() && sv.is_empty() {
         vec![d]
@@ -229,12 +242,6 @@ pub fn eval_surface<'py, T: Num, S: Surface<T> + Sync + ?Sized>(
 /// A point as a 1-D array.
 pub fn point_out<'py, T: Num>(py: Python<'py>, p: &DVector<T>) -> PyResult<Bound<'py, PyAny>> {
     crate::convert::vector_out(py, p.as_slice())
-}
-
-/// A point `(d,)` (or a list of numbers) as a vector.
-pub fn point_in<T: Num>(obj: &Bound<'_, PyAny>, what: &'static str) -> PyResult<DVector<T>> {
-    let (_, v) = params::<T>(obj, what)?;
-    Ok(DVector::from_vec(v))
 }
 
 /// A pair of numbers as a tuple.

@@ -3,17 +3,42 @@
 
 use cagd::bspline::{BSplineCurve, BSplineSurface};
 use cagd::nurbs::{NurbsCurve, NurbsSurface};
+use cagd_ops::bspline_arg::{BSplineArg, SplineDegree};
+use cagd_ops::knots::Degree;
+use cagd_ops::ops::{self, Elevate, InsertKnot};
+use cagd_ops::Role;
 use nalgebra::DMatrix;
 use pyo3::prelude::*;
 
 use super::shared::{build, exactness, on, point_out, Ex, Exact};
 use super::steps::Steps;
-use crate::convert::{net_in, net_out, params, points_as_rows, rows_out, vector_out, Num};
+use crate::convert::{grid_in, net_out, params, points_as_rows, rows_out, vector_out, Num};
 use crate::error::IntoPy;
+use crate::ops::{execute, item, with_context, Names};
 
-/// Degree and knot checks shared by the constructors: the core's limit on the degree.
-fn check_degree(p: usize) -> PyResult<()> {
-    crate::limits::current().check_degree("degree", p).py()
+/// How the curve classes name the roles of their requests.
+const CURVE_NAMES: Names = &[
+    (Role::Control, "points"),
+    (Role::Knots, "knots"),
+    (Role::Degree, "degree"),
+    (Role::Weights, "weights"),
+    (Role::By, "r"),
+    (Role::At, "u"),
+    (Role::Spline, "knots"),
+];
+
+/// How the surface classes name the roles of their requests.
+const SURFACE_NAMES: Names = &[
+    (Role::Net, "net"),
+    (Role::UKnots, "knots_u"),
+    (Role::VKnots, "knots_v"),
+    (Role::Degree, "degrees"),
+    (Role::Weights, "weights"),
+];
+
+/// A 1-D array of numbers (knots, weights, parameters) as a vector.
+fn values<T: Num>(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<T>> {
+    Ok(params::<T>(obj, what)?.1)
 }
 
 /// A B-spline curve `C(u) = Σ_{i=0}^{n−1} P_i N_{i,p}(u)`, `u ∈ [u_p, u_n]`, with `n + p + 1`
@@ -32,19 +57,82 @@ impl PyBSplineCurve {
     }
 }
 
+/// The curve of degree `degree` on `knots` (clamped uniform on `[0, 1]` without), built by
+/// the operation layer: the degree within the limit, the knots and the points checked by its
+/// one rule ([`cagd_ops::knots`]).
 fn new_bspline<T: Num>(
     degree: usize,
-    knots: &Bound<'_, PyAny>,
+    knots: Option<&Bound<'_, PyAny>>,
     points: &Bound<'_, PyAny>,
 ) -> PyResult<BSplineCurve<T>> {
-    check_degree(degree)?;
-    let (_, k) = params::<T>(knots, "knots")?;
-    BSplineCurve::new(degree, k, points_as_rows::<T>(points, "points")?).py()
+    let knots = knots.map(|k| values::<T>(k, "knots")).transpose()?;
+    let op = ops::BSpline {
+        degree: Degree::Degree(degree),
+        knots,
+        ..ops::BSpline::new(points_as_rows::<T>(points, "points")?)
+    };
+    with_context(points.py(), CURVE_NAMES, |cx| op.curve(cx))
 }
 
-fn clamped<T: Num>(degree: usize, points: &Bound<'_, PyAny>) -> PyResult<BSplineCurve<T>> {
-    check_degree(degree)?;
-    BSplineCurve::clamped(degree, points_as_rows::<T>(points, "points")?).py()
+/// The curve elevated `r` times by the request [`Elevate`] (clamped knots).
+fn elevate<T: Num>(py: Python<'_>, c: &BSplineCurve<T>, r: usize) -> PyResult<BSplineCurve<T>> {
+    let op = Elevate {
+        by: r,
+        bspline: Some(BSplineArg {
+            degree: SplineDegree::Degree(c.degree()),
+            knots: Some(c.knots().as_slice().to_vec()),
+        }),
+        ..Elevate::new(c.control().clone())
+    };
+    let report = execute(py, CURVE_NAMES, &op)?;
+    let knots = item(&report, "knots")?;
+    BSplineCurve::new(
+        c.degree().saturating_add(r),
+        knots.as_slice().to_vec(),
+        item(&report, "control")?,
+    )
+    .py()
+}
+
+/// The knots `u` inserted by the request [`InsertKnot`] (Boehm): the refined knots, control
+/// points and, for a NURBS curve, weights.
+fn insert<T: Num>(
+    u: &Bound<'_, PyAny>,
+    (degree, knots, control, weights): (usize, &[T], DMatrix<T>, Option<Vec<T>>),
+) -> PyResult<cagd_ops::Report<T>> {
+    let op = InsertKnot {
+        degree: Degree::Degree(degree),
+        knots: Some(knots.to_vec()),
+        weights,
+        ..InsertKnot::new(control, values::<T>(u, "u")?)
+    };
+    execute(u.py(), CURVE_NAMES, &op)
+}
+
+fn insert_bspline<T: Num>(c: &BSplineCurve<T>, u: &Bound<'_, PyAny>) -> PyResult<BSplineCurve<T>> {
+    let data = (c.degree(), c.knots().as_slice(), c.control().clone(), None);
+    let report = insert(u, data)?;
+    let knots = item(&report, "knots")?;
+    BSplineCurve::new(
+        c.degree(),
+        knots.as_slice().to_vec(),
+        item(&report, "control")?,
+    )
+    .py()
+}
+
+fn insert_nurbs<T: Num>(c: &NurbsCurve<T>, u: &Bound<'_, PyAny>) -> PyResult<NurbsCurve<T>> {
+    let data = (c.degree(), c.knots(), c.points(), Some(c.weights()));
+    let report = insert(u, data)?;
+    let (knots, weights) = (item(&report, "knots")?, item(&report, "weights")?);
+    let control = item(&report, "control")?;
+    NurbsCurve::new(
+        c.degree(),
+        knots.as_slice().to_vec(),
+        control,
+        weights.as_slice().to_vec(),
+    )
+    .py()
 }
 
 fn de_boor<T: Num>(py: Python<'_>, c: &BSplineCurve<T>, u: &Bound<'_, PyAny>) -> PyResult<Steps> {
@@ -75,7 +163,7 @@ impl PyBSplineCurve {
         let exact = exactness(exact, &[knots, points])?;
         Ok(Self::from_inner(build!(
             exact,
-            new_bspline(degree, knots, points)
+            new_bspline(degree, Some(knots), points)
         )))
     }
 
@@ -85,7 +173,10 @@ impl PyBSplineCurve {
     #[pyo3(signature = (degree, points, exact = None))]
     fn clamped(degree: usize, points: &Bound<'_, PyAny>, exact: Option<bool>) -> PyResult<Self> {
         let exact = exactness(exact, &[points])?;
-        Ok(Self::from_inner(build!(exact, clamped(degree, points))))
+        Ok(Self::from_inner(build!(
+            exact,
+            new_bspline(degree, None, points)
+        )))
     }
 
     /// The degree `p`.
@@ -130,18 +221,17 @@ impl PyBSplineCurve {
     /// A5.4).
     fn insert_knots(&self, u: &Bound<'_, PyAny>) -> PyResult<Self> {
         Ok(Self::from_inner(match &self.inner {
-            Ex::F(c) => Ex::F(c.insert_knots(&params::<f64>(u, "u")?.1).py()?),
-            Ex::E(c) => Ex::E(c.insert_knots(&params::<Exact>(u, "u")?.1).py()?),
+            Ex::F(c) => Ex::F(insert_bspline(c, u)?),
+            Ex::E(c) => Ex::E(insert_bspline(c, u)?),
         }))
     }
 
     /// The same curve of degree `p + r` (Piegl & Tiller A5.9).
     #[pyo3(signature = (r = 1))]
-    fn elevate(&self, r: usize) -> PyResult<Self> {
-        check_degree(self.degree().saturating_add(r))?;
+    fn elevate(&self, py: Python<'_>, r: usize) -> PyResult<Self> {
         Ok(Self::from_inner(match &self.inner {
-            Ex::F(c) => Ex::F(c.elevate(r).py()?),
-            Ex::E(c) => Ex::E(c.elevate(r).py()?),
+            Ex::F(c) => Ex::F(elevate(py, c, r)?),
+            Ex::E(c) => Ex::E(elevate(py, c, r)?),
         }))
     }
 
@@ -159,16 +249,23 @@ pub struct PyNurbsCurve {
     pub(crate) inner: Ex<NurbsCurve<f64>, NurbsCurve<Exact>>,
 }
 
+/// The curve built by the operation layer: the weights (one per point, finite, positive), the
+/// degree and the knots checked by its rules, as the request [`ops::Nurbs`] checks them.
 fn new_nurbs<T: Num>(
     degree: usize,
     knots: &Bound<'_, PyAny>,
     points: &Bound<'_, PyAny>,
     weights: &Bound<'_, PyAny>,
 ) -> PyResult<NurbsCurve<T>> {
-    check_degree(degree)?;
-    let (_, k) = params::<T>(knots, "knots")?;
-    let (_, w) = params::<T>(weights, "weights")?;
-    NurbsCurve::new(degree, k, points_as_rows::<T>(points, "points")?, w).py()
+    let op = ops::Nurbs {
+        degree: Degree::Degree(degree),
+        knots: Some(values::<T>(knots, "knots")?),
+        ..ops::Nurbs::new(
+            points_as_rows::<T>(points, "points")?,
+            values::<T>(weights, "weights")?,
+        )
+    };
+    with_context(points.py(), CURVE_NAMES, |cx| op.curve(cx))
 }
 
 #[pymethods]
@@ -240,8 +337,8 @@ impl PyNurbsCurve {
     fn insert_knots(&self, u: &Bound<'_, PyAny>) -> PyResult<Self> {
         Ok(PyNurbsCurve {
             inner: match &self.inner {
-                Ex::F(c) => Ex::F(c.insert_knots(&params::<f64>(u, "u")?.1).py()?),
-                Ex::E(c) => Ex::E(c.insert_knots(&params::<Exact>(u, "u")?.1).py()?),
+                Ex::F(c) => Ex::F(insert_nurbs(c, u)?),
+                Ex::E(c) => Ex::E(insert_nurbs(c, u)?),
             },
         })
     }
@@ -254,15 +351,32 @@ pub struct PyBSplineSurface {
     inner: Ex<BSplineSurface<f64>, BSplineSurface<Exact>>,
 }
 
-fn new_bspline_surface<T: Num>(
+/// The request [`ops::BSplineSurface`] of the arguments (its surface not yet built).
+fn surface_request<T: Num>(
     (p, q): (usize, usize),
     knots: (&Bound<'_, PyAny>, &Bound<'_, PyAny>),
     net: &Bound<'_, PyAny>,
+) -> PyResult<ops::BSplineSurface<T>> {
+    let net = grid_in::<T>(net, "net")?;
+    Ok(ops::BSplineSurface {
+        degrees: [Degree::Degree(p), Degree::Degree(q)],
+        knots: [
+            Some(values::<T>(knots.0, "knots_u")?),
+            Some(values::<T>(knots.1, "knots_v")?),
+        ],
+        ..ops::BSplineSurface::new(net)
+    })
+}
+
+/// The surface built by the operation layer: the degrees, the knots of both directions and
+/// the net checked by its rules.
+fn new_bspline_surface<T: Num>(
+    degrees: (usize, usize),
+    knots: (&Bound<'_, PyAny>, &Bound<'_, PyAny>),
+    net: &Bound<'_, PyAny>,
 ) -> PyResult<BSplineSurface<T>> {
-    check_degree(p.max(q))?;
-    let (_, ku) = params::<T>(knots.0, "knots_u")?;
-    let (_, kv) = params::<T>(knots.1, "knots_v")?;
-    BSplineSurface::new(p, q, ku, kv, net_in::<T>(net, "net")?).py()
+    let op = surface_request::<T>(degrees, knots, net)?;
+    with_context(net.py(), SURFACE_NAMES, |cx| op.surface(cx))
 }
 
 #[pymethods]
@@ -308,10 +422,7 @@ fn new_nurbs_surface<T: Num>(
     net: &Bound<'_, PyAny>,
     weights: &Bound<'_, PyAny>,
 ) -> PyResult<NurbsSurface<T>> {
-    check_degree(p.max(q))?;
-    let (_, ku) = params::<T>(knots.0, "knots_u")?;
-    let (_, kv) = params::<T>(knots.1, "knots_v")?;
-    let w = T::with_values(weights, "weights", |shape, v| match *shape {
+    let weights = T::with_values(weights, "weights", |shape, v| match *shape {
         [r, c] => Ok(DMatrix::from_row_slice(r, c, v)),
         _ => Err(crate::convert::rank_error(
             "weights",
@@ -319,7 +430,11 @@ fn new_nurbs_surface<T: Num>(
             shape,
         )),
     })?;
-    NurbsSurface::new(p, q, ku, kv, net_in::<T>(net, "net")?, w).py()
+    let op = ops::NurbsSurface {
+        spline: surface_request::<T>((p, q), knots, net)?,
+        weights,
+    };
+    with_context(net.py(), SURFACE_NAMES, |cx| op.surface(cx))
 }
 
 #[pymethods]

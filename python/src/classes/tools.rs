@@ -2,6 +2,8 @@
 //! cubics and their conversions, the continuity of a joint.
 
 use cagd::conversion::{conversion_matrix, convert, CubicForm};
+use cagd_ops::ops::Bernstein;
+use cagd_ops::{Params, Role};
 use nalgebra::DMatrix;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -9,17 +11,28 @@ use pyo3::types::PyDict;
 use super::shared::exactness;
 use crate::convert::{columns_out, params, points_as_rows, rows_out, Num};
 use crate::error::{conversion, IntoPy};
+use crate::ops::{execute, item, Names};
 
-/// `B_i^n(t) = C(n, i) t^i (1 − t)^{n−i}` at every `t` (same shape as `t`).
+/// `B_i^n(t) = C(n, i) t^i (1 − t)^{n−i}` at every `t` (same shape as `t`), by the request
+/// [`Bernstein`].
 #[pyfunction]
 fn bernstein<'py>(i: usize, n: usize, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
     fn run<'py, T: Num>(i: usize, n: usize, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
-        crate::limits::current().check_degree("n", n).py()?;
+        const NAMES: Names = &[(Role::Index, "i"), (Role::Degree, "n"), (Role::T, "t")];
         let (shape, ts) = params::<T>(t, "t")?;
-        let values: Vec<T> = ts
-            .into_iter()
-            .map(|x| cagd::bernstein::bernstein(i, n, x))
-            .collect();
+        // An empty array of parameters gives an empty array (the request wants values).
+        let values = if ts.is_empty() {
+            Vec::new()
+        } else {
+            let op = Bernstein {
+                index: Some(i),
+                t: Params::Given(ts),
+                ..Bernstein::new(n)
+            };
+            item(&execute(t.py(), NAMES, &op)?, "result")?
+                .as_slice()
+                .to_vec()
+        };
         if shape.is_empty() {
             return values[0].to_py(t.py());
         }

@@ -83,10 +83,9 @@ impl Run for DerivativeCommand {
             None => None::<Params<T>>,
         };
         let op = Derivative::<T> {
-            control,
-            order: self.order,
             t,
             drawing: self.plot.plot.is_some(),
+            ..Derivative::new(control, self.order)
         };
         let to = Destinations {
             output: &self.output,

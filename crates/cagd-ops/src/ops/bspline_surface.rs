@@ -91,16 +91,27 @@ impl<T: Scalar> BSplineSurface<T> {
     }
 }
 
+impl<T: Scalar> BSplineSurface<T> {
+    /// The surface: the degrees resolved, the knots of both directions checked (or clamped),
+    /// the net built (a front end that keeps the surface builds it here).
+    ///
+    /// # Errors
+    /// The rules of [`crate::knots`]; the library's errors about the net.
+    pub fn surface(&self, cx: &Context) -> Result<Surface<T>> {
+        let ((p, q), [ku, kv]) = self.knots(cx)?;
+        Surface::new(p, q, ku, kv, self.coordinates()).map_err(lib(Role::Net, NET_FORM))
+    }
+}
+
 impl<T: Scalar> Operation<T> for BSplineSurface<T> {
     fn run(&self, cx: &mut Context) -> Result<Answer<T>> {
-        let ((p, q), [ku, kv]) = self.knots(cx)?;
-        let surface = Surface::new(p, q, ku.clone(), kv.clone(), self.coordinates())
-            .map_err(lib(Role::Net, NET_FORM))?;
+        let surface = self.surface(cx)?;
+        let (ku, kv) = surface.knots();
         let evaluated = Evaluated {
             surface: &surface,
             cost: &|bu, bv| surface.point_cost(bu, bv),
-            degrees: (p, q),
-            knots: [&ku, &kv],
+            degrees: surface.degrees(),
+            knots: [ku.as_slice(), kv.as_slice()],
             title: "B-spline surface",
         };
         answer(self, evaluated, grid_f64(&self.net), cx)

@@ -247,10 +247,7 @@ impl<T: Scalar> Coons<T> {
             })
             .map(Patch::Blended),
         };
-        built.map_err(|e| match e {
-            cagd::Error::BlendingCondition { .. } => OpError::library(Role::Blend, e, BLEND_FORM),
-            _ => OpError::library(Role::Boundary, e, BOUNDARY_FORM),
-        })
+        built.map_err(boundary_error)
     }
 
     /// The picture of appendix C ([`boundary_picture`]), each boundary realised where the
@@ -275,6 +272,15 @@ impl<T: Scalar> Coons<T> {
             ));
         };
         boundary_picture(title, grid, [c1, c2, d1, d2], (us, vs))
+    }
+}
+
+/// The library's refusal of a Coons patch: its blending functions, or its boundary (curves
+/// that do not meet at the corners, of different dimensions).
+pub fn boundary_error(e: cagd::Error) -> OpError {
+    match e {
+        cagd::Error::BlendingCondition { .. } => OpError::library(Role::Blend, e, BLEND_FORM),
+        _ => OpError::library(Role::Boundary, e, BOUNDARY_FORM),
     }
 }
 

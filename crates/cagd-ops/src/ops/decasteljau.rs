@@ -60,16 +60,26 @@ impl<T: Scalar> DeCasteljau<T> {
     }
 }
 
+/// The Bézier curve of `control` on `interval` (default `[0, 1]`), with its interval: what
+/// every Bézier request with an interval builds first.
+///
+/// # Errors
+/// The library's errors about the control points (an empty interval among them).
+pub(crate) fn bezier_on<T: Scalar>(
+    control: &DMatrix<T>,
+    interval: Option<&(T, T)>,
+) -> Result<(BezierCurve<T>, (T, T))> {
+    let (a, b) = interval.cloned().unwrap_or_else(|| (T::zero(), T::one()));
+    let curve = BezierCurve::new_on_interval(control.clone(), a.clone(), b.clone())
+        .map_err(lib(Role::Control, CONTROL_FORM))?;
+    Ok((curve, (a, b)))
+}
+
 impl<T: Scalar> Operation<T> for DeCasteljau<T> {
     fn run(&self, cx: &mut Context) -> Result<Answer<T>> {
         crate::check::points(Role::Control, &self.control, 1, "control points")?;
         cx.check_degree(Role::Control, self.control.ncols().saturating_sub(1))?;
-        let (a, b) = self
-            .interval
-            .clone()
-            .unwrap_or_else(|| (T::zero(), T::one()));
-        let curve = BezierCurve::new_on_interval(self.control.clone(), a.clone(), b.clone())
-            .map_err(lib(Role::Control, CONTROL_FORM))?;
+        let (curve, (a, b)) = bezier_on(&self.control, self.interval.as_ref())?;
         let ts = self
             .t
             .resolve(Role::T, (&a, &b), "the curve is extrapolated there", cx)?;

@@ -17,22 +17,24 @@
 //! # Ok::<(), cagd_ops::OpError>(())
 //! ```
 
-use cagd::bezier::BezierCurve;
 use cagd::cost::max_bits;
 use cagd::Scalar;
 use nalgebra::DMatrix;
 
-use super::decasteljau::CONTROL_FORM;
+use super::decasteljau::bezier_on;
 use super::{eval_points, point_labels, to_f64};
 use crate::drawing::{Colour, Drawing};
 use crate::error::{lib, Result};
 use crate::{Answer, Context, Operation, Params, Report, Role, Value};
 
-/// The derivative of a Bézier curve on `[0, 1]`.
+/// The derivative of a Bézier curve on `[0, 1]` (or on an interval `[a, b]`: then
+/// `x^(r)(t) = n!/(n−r)! / (b − a)^r Σ Δ^r b_i B_i^{n−r}((t − a)/(b − a))`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Derivative<T> {
     /// Control points `b_0..b_n`, one per column.
     pub control: DMatrix<T>,
+    /// The parameter interval `[a, b]` of the curve (default `[0, 1]`).
+    pub interval: Option<(T, T)>,
     /// The order `r` (`r ≤ n`).
     pub order: usize,
     /// Where the derivative's values are wanted (none: its control points only).
@@ -46,6 +48,7 @@ impl<T> Derivative<T> {
     pub fn new(control: DMatrix<T>, order: usize) -> Self {
         Derivative {
             control,
+            interval: None,
             order,
             t: None,
             drawing: false,
@@ -57,18 +60,21 @@ impl<T: Scalar> Operation<T> for Derivative<T> {
     /// `control` (`d × (n−r+1)`), and with parameters `t` (`1 × k`) and `result` (`d × k`).
     fn run(&self, cx: &mut Context) -> Result<Answer<T>> {
         cx.check_degree(Role::Control, self.control.ncols().saturating_sub(1))?;
-        let curve =
-            BezierCurve::new(self.control.clone()).map_err(lib(Role::Control, CONTROL_FORM))?;
+        let (curve, (a, b)) = bezier_on(&self.control, self.interval.as_ref())?;
         let derivative = curve
             .derivative(self.order)
             .map_err(lib(Role::DerivativeOrder, "an order r ≤ the degree n"))?;
-        let unit = (&T::zero(), &T::one());
         let ts = match &self.t {
-            Some(t) => t.resolve(Role::T, unit, "the derivative is extrapolated there", cx)?,
+            Some(t) => t.resolve(
+                Role::T,
+                (&a, &b),
+                "the derivative is extrapolated there",
+                cx,
+            )?,
             None => Vec::new(),
         };
         let dense = if self.drawing {
-            cagd::linspace::linspace_in(unit.0, unit.1, 101).map_err(lib(Role::T, "a curve"))?
+            cagd::linspace::linspace_in(&a, &b, 101).map_err(lib(Role::T, "a curve"))?
         } else {
             Vec::new()
         };
@@ -106,5 +112,24 @@ impl<T: Scalar> Operation<T> for Derivative<T> {
             drawing,
             mesh: None,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn on_an_interval_the_derivative_scales_by_its_length() {
+        // x(t) = t on [0, 1/2] as the line from 0 to 1/2 on [0, 1/2]: x' = 1, so on the
+        // interval the derivative's control points are 2 · Δb = 2 · 1/2 = 1.
+        let op = Derivative {
+            interval: Some((0.0, 0.5)),
+            t: Some(Params::Given(vec![0.25])),
+            ..Derivative::new(DMatrix::from_row_slice(1, 2, &[0.0, 0.5]), 1)
+        };
+        let answer = crate::execute(&op, &mut Context::new(cagd::Limits::default())).unwrap();
+        assert_eq!(answer.report.matrix("control").unwrap().as_slice(), &[1.0]);
+        assert_eq!(answer.report.matrix("result").unwrap().as_slice(), &[1.0]);
     }
 }

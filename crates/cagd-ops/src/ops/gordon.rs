@@ -220,15 +220,7 @@ impl<T: Scalar> Gordon<T> {
             }
             None => GordonSurface::new(un, vn, at_u, at_v),
         }
-        .map_err(|e| {
-            let form = match e {
-                cagd::Error::UnsortedNodes { .. } | cagd::Error::DuplicateNodes { .. } => {
-                    NODES_FORM
-                }
-                _ => NETWORK_FORM,
-            };
-            OpError::library(Role::Network, e, form)
-        })
+        .map_err(network_error)
     }
 
     /// `u`, `v`, the parts with steps, the result, the conditioning.
@@ -287,6 +279,16 @@ fn picture<T: Scalar>(
 
 /// The nodes of a direction with `count` curves: given (finite), or equally spaced on
 /// `[0, 1]` (at least 2 curves).
+/// The library's refusal of a Gordon network, about the network: its nodes (unsorted,
+/// repeated) or its curves (too few, not crossing where they should).
+pub fn network_error(e: cagd::Error) -> OpError {
+    let form = match e {
+        cagd::Error::UnsortedNodes { .. } | cagd::Error::DuplicateNodes { .. } => NODES_FORM,
+        _ => NETWORK_FORM,
+    };
+    OpError::library(Role::Network, e, form)
+}
+
 fn nodes<T: Scalar>(cx: &Context, role: Role, given: Option<&[T]>, count: usize) -> Result<Vec<T>> {
     if let Some(values) = given {
         check_given(role, values, cx)?;

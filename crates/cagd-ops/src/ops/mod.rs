@@ -71,7 +71,9 @@ mod surface_samples;
 
 pub use bernstein::Bernstein;
 pub use bezier_patch::BezierPatchPoints;
+pub use bezier_patch::NET_FORM as BEZIER_NET_FORM;
 pub use bspline::BSpline;
+pub use bspline::CONTROL_FORM as BSPLINE_CONTROL_FORM;
 pub use bspline_basis::BSplineBasis;
 pub use bspline_surface::BSplineSurface;
 pub use circle::Circle;
@@ -82,6 +84,7 @@ pub use coons_bicubic::{CoonsBicubic, TwistChoice};
 pub use curvature::Curvature;
 pub use curve_samples::CurveSamples;
 pub use decasteljau::DeCasteljau;
+pub use decasteljau::CONTROL_FORM as BEZIER_CONTROL_FORM;
 pub use derivative::Derivative;
 pub use discrete_coons::DiscreteCoons;
 pub use elevate::Elevate;
@@ -90,7 +93,9 @@ pub use gordon::Gordon;
 pub use hermite::Hermite;
 pub use insert_knot::InsertKnot;
 pub use integrate::Integrate;
-pub use lagrange::Lagrange;
+pub use lagrange::{
+    Lagrange, NODES_FORM as LAGRANGE_NODES_FORM, VALUES_FORM as LAGRANGE_VALUES_FORM,
+};
 pub use nurbs::Nurbs;
 pub use nurbs_surface::NurbsSurface;
 pub use ruled::Ruled;

@@ -40,28 +40,40 @@ pub struct NurbsSurface<T> {
     pub weights: DMatrix<T>,
 }
 
-impl<T: Scalar> Operation<T> for NurbsSurface<T> {
-    fn run(&self, cx: &mut Context) -> Result<Answer<T>> {
+impl<T: Scalar> NurbsSurface<T> {
+    /// The surface: the degrees resolved, the knots of both directions checked (or clamped),
+    /// the weights and the net built (a front end that keeps the surface builds it here).
+    ///
+    /// # Errors
+    /// The rules of [`crate::knots`]; [`crate::Kind::Weights`] and the library's errors about
+    /// the weights; the library's errors about the net.
+    pub fn surface(&self, cx: &Context) -> Result<Surface<T>> {
         let ((p, q), [ku, kv]) = self.spline.knots(cx)?;
         let coords = self.spline.coordinates();
-        let surface = Surface::new(p, q, ku.clone(), kv.clone(), coords, self.weights.clone())
-            .map_err(|e| match &e {
-                cagd::Error::NonPositiveWeight { .. }
-                | cagd::Error::ShapeMismatch {
-                    what: "NURBS surface weights",
-                    ..
-                }
-                | cagd::Error::NonFinite {
-                    what: "NURBS surface weights",
-                    ..
-                } => OpError::library(Role::Weights, e, WEIGHTS_FORM),
-                _ => OpError::library(Role::Net, e, NET_FORM),
-            })?;
+        Surface::new(p, q, ku, kv, coords, self.weights.clone()).map_err(|e| match &e {
+            cagd::Error::NonPositiveWeight { .. }
+            | cagd::Error::ShapeMismatch {
+                what: "NURBS surface weights",
+                ..
+            }
+            | cagd::Error::NonFinite {
+                what: "NURBS surface weights",
+                ..
+            } => OpError::library(Role::Weights, e, WEIGHTS_FORM),
+            _ => OpError::library(Role::Net, e, NET_FORM),
+        })
+    }
+}
+
+impl<T: Scalar> Operation<T> for NurbsSurface<T> {
+    fn run(&self, cx: &mut Context) -> Result<Answer<T>> {
+        let surface = self.surface(cx)?;
+        let (ku, kv) = surface.homogeneous().knots();
         let evaluated = Evaluated {
             surface: &surface,
             cost: &|bu, bv| surface.point_cost(bu, bv),
-            degrees: (p, q),
-            knots: [&ku, &kv],
+            degrees: surface.homogeneous().degrees(),
+            knots: [ku.as_slice(), kv.as_slice()],
             title: "NURBS surface",
         };
         // The control net drawn as given: the points, not the homogeneous ones.

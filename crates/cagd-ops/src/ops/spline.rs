@@ -181,8 +181,15 @@ impl<T: Scalar> Spline<T> {
     }
 }
 
-impl<T: Scalar> Operation<T> for Spline<T> {
-    fn run(&self, cx: &mut Context) -> Result<Answer<T>> {
+impl<T: Scalar> Spline<T> {
+    /// The spline: the end condition and the parameters of the points checked, the work of
+    /// the interpolation (and of the given curve parameters) refused above the limit (a front
+    /// end that keeps the spline builds it here).
+    ///
+    /// # Errors
+    /// [`Kind::Usage`] about tangents the end condition needs or ignores; [`Kind::Shape`]
+    /// about the parameters of the points; [`Kind::Limit`]; the library's errors.
+    pub fn spline(&self, cx: &Context) -> Result<CubicSpline<T>> {
         let end = self.end_condition()?;
         let closed = matches!(end, EndCondition::Closed);
         let params = self.params(closed)?;
@@ -194,30 +201,35 @@ impl<T: Scalar> Operation<T> for Spline<T> {
             _ => None,
         };
         cx.check_work(Role::Points, work(&self.points, &end, given))?;
-        let s = CubicSpline::interpolate_with_params(self.points.clone(), params, end.clone())
-            .map_err(|e| {
-                let role = match &e {
-                    cagd::Error::InvalidArgument {
-                        what: "spline parameters",
-                        ..
-                    }
-                    | cagd::Error::ShapeMismatch {
-                        what: "spline parameters",
-                        ..
-                    } => Role::Nodes,
-                    cagd::Error::ShapeMismatch {
-                        what: "spline end tangents",
-                        ..
-                    } => Role::T0,
-                    _ => Role::Points,
-                };
-                OpError::library(role, e, POINTS_FORM)
-            })?;
+        CubicSpline::interpolate_with_params(self.points.clone(), params, end).map_err(|e| {
+            let role = match &e {
+                cagd::Error::InvalidArgument {
+                    what: "spline parameters",
+                    ..
+                }
+                | cagd::Error::ShapeMismatch {
+                    what: "spline parameters",
+                    ..
+                } => Role::Nodes,
+                cagd::Error::ShapeMismatch {
+                    what: "spline end tangents",
+                    ..
+                } => Role::T0,
+                _ => Role::Points,
+            };
+            OpError::library(role, e, POINTS_FORM)
+        })
+    }
+}
+
+impl<T: Scalar> Operation<T> for Spline<T> {
+    fn run(&self, cx: &mut Context) -> Result<Answer<T>> {
+        let s = self.spline(cx)?;
         let ts = self.parameters(&s, cx)?;
         let at: Vec<T> = ts.iter().map(|t| s.wrap(t)).collect();
         let mut report = Report::new();
         if self.steps {
-            let (a, rhs) = s.system(&end);
+            let (a, rhs) = s.system(&self.end_condition()?);
             report.push("params", Value::row(s.params()));
             report.push("system", Value::Matrix(a));
             report.push("rhs", Value::Matrix(rhs));

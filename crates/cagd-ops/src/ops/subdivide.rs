@@ -14,12 +14,11 @@
 //! # Ok::<(), cagd_ops::OpError>(())
 //! ```
 
-use cagd::bezier::BezierCurve;
 use cagd::cost::max_bits;
 use cagd::Scalar;
 use nalgebra::DMatrix;
 
-use super::decasteljau::CONTROL_FORM;
+use super::decasteljau::bezier_on;
 use super::{eval_points, point_labels, to_f64};
 use crate::drawing::{Colour, Drawing};
 use crate::error::{lib, Result};
@@ -61,12 +60,7 @@ impl<T: Scalar> Operation<T> for Subdivide<T> {
     /// `t` (`1 × 1`), `left` and `right` (`d × (n+1)`); with steps first `scheme`.
     fn run(&self, cx: &mut Context) -> Result<Answer<T>> {
         cx.check_degree(Role::Control, self.control.ncols().saturating_sub(1))?;
-        let (a, b) = self
-            .interval
-            .clone()
-            .unwrap_or_else(|| (T::zero(), T::one()));
-        let curve = BezierCurve::new_on_interval(self.control.clone(), a.clone(), b.clone())
-            .map_err(lib(Role::Control, CONTROL_FORM))?;
+        let (curve, (a, b)) = bezier_on(&self.control, self.interval.as_ref())?;
         let t = self
             .t
             .clone()
