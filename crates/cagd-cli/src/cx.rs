@@ -11,10 +11,11 @@ use crate::noticed::Noticed;
 /// as [`crate::load_matrix`] take one).
 ///
 /// ```
-/// let files = vec![("data.m".to_string(), "B = [0 0; 1 2]';".to_string())];
+/// // A numeric text file given in memory, read as a file of that name.
+/// let files = vec![("net.txt".to_string(), "0 1 2\n0 2 0\n".to_string())];
 /// let cx = cagd_cli::Cx::new(cagd::Limits::default()).with_files(files);
-/// let b = cagd_cli::load_matrix::<f64>(&cx, "CONTROL", "data.m:B", None).unwrap();
-/// assert_eq!(b.shape(), (2, 2));
+/// let b = cagd_cli::load_matrix::<f64>(&cx, "CONTROL", "net.txt", None).unwrap();
+/// assert_eq!(b.shape(), (2, 3));
 /// ```
 #[derive(Debug)]
 pub struct Cx {
