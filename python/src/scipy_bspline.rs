@@ -78,10 +78,25 @@ fn bspline_eval<'py>(
     let mode = extrapolation(extrapolate)?;
     let d = s.dim();
     f64::with_values(x, "x", |_, xs| {
+        // scipy's rule: NaN (or ±∞) in, NaN out. The core refuses a parameter that is not
+        // finite, so those are evaluated at the domain's start and then overwritten.
+        let bad: Vec<usize> = (0..xs.len()).filter(|&i| !xs[i].is_finite()).collect();
+        let start = s.domain().0;
+        let finite: std::borrow::Cow<'_, [f64]> = if bad.is_empty() {
+            std::borrow::Cow::Borrowed(xs)
+        } else {
+            xs.iter()
+                .map(|v| if v.is_finite() { *v } else { start })
+                .collect()
+        };
         f64::output(py, &[xs.len(), d], |py, out| {
             chunked(py, out, d, &|range, block| {
-                s.eval_derivative_many_into(nu, &xs[range], block, &mode)
-            })
+                s.eval_derivative_many_into(nu, &finite[range], block, &mode)
+            })?;
+            for i in &bad {
+                out[i * d..(i + 1) * d].fill(f64::NAN);
+            }
+            Ok(())
         })
     })
 }

@@ -41,7 +41,7 @@ impl<T: Scalar> BSplineCurve<T> {
     /// The derivative of order `r` at all parameters `us`, written into `out` (`us.len() × d`
     /// row-major), outside the domain as `extrapolation` says ([`eval_many_extrapolated_into`](Self::eval_many_extrapolated_into)
     /// of [`derivative_of_order`](Self::derivative_of_order)). Above the degree the
-    /// derivative is zero (NaN where the parameter or the extrapolated value is NaN).
+    /// derivative is zero (NaN where an extrapolated value is NaN).
     ///
     /// # Errors
     /// [`Error::ShapeMismatch`] unless `out.len() == us.len() · d`.

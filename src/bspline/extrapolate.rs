@@ -57,10 +57,12 @@ pub fn wrap_periodic<T: Scalar>(u: T, lo: &T, hi: &T) -> T {
 impl<T: Scalar> BSplineCurve<T> {
     /// The points at all parameters `us` written into `out` (`us.len() × d` row-major, as
     /// [`eval_many_into`](Self::eval_many_into)), outside the domain as `extrapolation` says.
-    /// NaN or ±∞ gives a point of NaNs in `f64`, as `eval_many_into`.
     ///
     /// # Errors
-    /// [`Error::ShapeMismatch`](crate::Error::ShapeMismatch) unless `out.len() == us.len() · d`.
+    /// [`Error::ShapeMismatch`](crate::Error::ShapeMismatch) unless `out.len() == us.len() · d`;
+    /// [`Error::NonFinite`](crate::Error::NonFinite) for a NaN or ±∞ parameter, as
+    /// [`eval_many_into`](Self::eval_many_into) (scipy's "NaN in, NaN out" is the Python
+    /// front end's translation).
     ///
     /// ```
     /// use cagd::bspline::{BSplineCurve, Extrapolation};
