@@ -43,6 +43,7 @@ const SUBCOMMANDS: &[&str] = &[
     "circle",
     "arc",
     "course",
+    "curvature",
 ];
 
 /// Every option of the subcommands above, except the limits (`--max-…`, which the target
@@ -116,6 +117,9 @@ const OPTIONS: &[&str] = &[
     "--x",
     "--y",
     "--z",
+    "--columns",
+    "-r",
+    "--lang",
 ];
 
 /// Typical values, and values at the edges: near the range of doubles, subnormal, deep
