@@ -10,7 +10,7 @@ use clap::Args;
 
 use super::answer::{respond, Destinations};
 use super::boundary::{boundary, script_corners, BoundaryArgs};
-use super::expr_curve::{env_warnings, ExprCurve};
+use super::expr_curve::{env_warnings, expression_env, ExprCurve};
 use super::read::surface_params;
 use super::run::{Names, Run};
 use crate::args::{
@@ -77,11 +77,7 @@ impl Run for CoonsCommand {
 
     fn run<T: LiteralScalar>(&self, cx: &mut Cx) -> Result<Outcome, CliError> {
         let script = cx.script::<T>(&self.script, self.params.n)?;
-        let env = Rc::new(RefCell::new(
-            script
-                .as_ref()
-                .map_or_else(|| Env::with_limits(cx.limits), |s| s.env().clone()),
-        ));
+        let env = expression_env(cx.limits, script.as_ref());
         let op = Coons {
             boundary: boundary(cx, &self.boundary, script.as_ref(), self.rows.rows, &env)?,
             corners: script_corners(&self.boundary, script.as_ref()),
