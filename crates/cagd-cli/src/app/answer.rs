@@ -10,7 +10,7 @@ use cagd_ops::{Answer, OpError, Operation};
 
 use super::common::{add_mesh, add_plot, finish};
 use super::run::Names;
-use crate::args::OutputArgs;
+use crate::args::{MeshArgs, OutputArgs, PlotArgs};
 use crate::cx::Cx;
 use crate::plot::Figure;
 use crate::{CliError, ErrorKind, Outcome, PendingWrites};
@@ -24,6 +24,17 @@ pub(crate) struct Destinations<'a> {
     pub plot: Option<&'a Path>,
     /// `--mesh FILE`.
     pub mesh: Option<&'a Path>,
+}
+
+impl<'a> Destinations<'a> {
+    /// A surface's destinations: the output, `--plot FILE` and `--mesh FILE`.
+    pub(crate) fn surface(output: &'a OutputArgs, plot: &'a PlotArgs, mesh: &'a MeshArgs) -> Self {
+        Destinations {
+            output,
+            plot: plot.plot.as_deref(),
+            mesh: mesh.mesh.as_deref(),
+        }
+    }
 }
 
 /// Runs `op` and turns its answer into the command's outcome.

@@ -104,11 +104,7 @@ impl Run for BezierPatchCommand {
             drawing: self.plot.plot.is_some(),
             mesh: self.mesh.mesh.is_some(),
         };
-        let to = Destinations {
-            output: &self.output,
-            plot: self.plot.plot.as_deref(),
-            mesh: self.mesh.mesh.as_deref(),
-        };
+        let to = Destinations::surface(&self.output, &self.plot, &self.mesh);
         respond(cx, &NAMES, &op, to).map(|o| o.with_script_warnings(&self.script, script.as_ref()))
     }
 }

@@ -82,11 +82,7 @@ impl Run for RuledCommand {
             drawing: self.plot.plot.is_some(),
             mesh: self.mesh.mesh.is_some(),
         };
-        let to = Destinations {
-            output: &self.output,
-            plot: self.plot.plot.as_deref(),
-            mesh: self.mesh.mesh.as_deref(),
-        };
+        let to = Destinations::surface(&self.output, &self.plot, &self.mesh);
         let outcome = respond(cx, &NAMES, &op, to)?;
         Ok(with_env_warnings(
             outcome.with_script_warnings(&self.script, script.as_ref()),

@@ -75,11 +75,7 @@ impl Run for SurfaceCommand {
             mesh: self.mesh.mesh.is_some(),
             ..SurfaceSamples::new(Box::new(surface), &self.expr)
         };
-        let to = Destinations {
-            output: &self.output,
-            plot: self.plot.plot.as_deref(),
-            mesh: self.mesh.mesh.as_deref(),
-        };
+        let to = Destinations::surface(&self.output, &self.plot, &self.mesh);
         let mut outcome =
             respond(cx, &NAMES, &op, to)?.with_script_warnings(&self.script, script.as_ref());
         outcome.warnings.extend(env_warnings("EXPR", &env));
