@@ -220,14 +220,18 @@ pub const STEP_LABELS: &[(&str, Words)] = &[
     ),
     (
         "span",
-        w("the knot span", "vozliščni interval", "uzlový interval"),
+        w(
+            "the knot span s: u_s ≤ t < u_(s+1), the knots numbered from 1",
+            "vozliščni interval s: u_s ≤ t < u_(s+1), vozli oštevilčeni od 1",
+            "uzlový interval s: u_s ≤ t < u_(s+1), uzly číslované od 1",
+        ),
     ),
     (
         "alpha",
         w(
-            "the factors α_i = (u − u_i)/(u_(i+p) − u_i)",
-            "faktorji α_i = (u − u_i)/(u_(i+p) − u_i)",
-            "koeficienty α_i = (u − u_i)/(u_(i+p) − u_i)",
+            "the factors α_i = (u − u_i)/(u_(i+p) − u_i), i = s−p+1 … s, the knots numbered from 1",
+            "faktorji α_i = (u − u_i)/(u_(i+p) − u_i), i = s−p+1 … s, vozli oštevilčeni od 1",
+            "koeficienty α_i = (u − u_i)/(u_(i+p) − u_i), i = s−p+1 … s, uzly číslované od 1",
         ),
     ),
     ("weights", w("the weights", "uteži", "váhy")),

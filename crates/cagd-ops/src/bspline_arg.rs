@@ -61,8 +61,10 @@ impl<T: Scalar> BSplineArg<T> {
     /// by the caller).
     ///
     /// # Errors
-    /// The library's errors about [`Role::Spline`] (counts that do not fit, decreasing knots,
-    /// non-finite values), worded with [`BSPLINE_FORM`].
+    /// Given knots are checked first by the one rule of [`crate::knots::check_knots`] (its
+    /// errors about [`Role::Knots`] or [`Role::Control`], as every request with knots words
+    /// them); then the library's errors about [`Role::Spline`] (non-finite control points,
+    /// too few of them for clamped knots), worded with [`BSPLINE_FORM`].
     ///
     /// ```
     /// use cagd_ops::bspline_arg::{BSplineArg, SplineDegree};
@@ -72,6 +74,9 @@ impl<T: Scalar> BSplineArg<T> {
     /// ```
     pub fn curve(&self, control: DMatrix<T>) -> Result<BSplineCurve<T>> {
         let p = self.degree.degree()?;
+        if let Some(knots) = &self.knots {
+            crate::knots::check_knots(knots, p, control.ncols(), crate::knots::CURVE)?;
+        }
         match &self.knots {
             Some(knots) => BSplineCurve::new(p, knots.clone(), control),
             None => BSplineCurve::clamped(p, control),

@@ -186,9 +186,29 @@ impl OpError {
 
     /// A library error about `role`, with the form that would have been accepted. A limit
     /// error keeps its [`Limit`]; its problem reads `WHAT: REQUESTED exceeds the limit of
-    /// LIMIT`.
+    /// LIMIT`. A knot is counted from 1, as every value in these words (the library's index
+    /// counts from 0).
+    ///
+    /// ```
+    /// use cagd_ops::{OpError, Role};
+    /// let e = cagd::Error::DecreasingKnots { what: "knot vector", index: 2, previous: 1.0, next: 0.5 };
+    /// assert_eq!(OpError::library(Role::Knots, e, "").problem,
+    ///     "knot vector: knot 3 (0.5) is below the knot before it (1); knots must be non-decreasing");
+    /// ```
     pub fn library(role: Role, error: cagd::Error, expected: &str) -> Self {
         let (problem, limit) = match &error {
+            cagd::Error::DecreasingKnots {
+                what,
+                index,
+                previous,
+                next,
+            } => (
+                format!(
+                    "{what}: knot {} ({next}) is below the knot before it ({previous}); knots must be non-decreasing",
+                    index + 1
+                ),
+                None,
+            ),
             cagd::Error::TooLarge {
                 what,
                 requested,

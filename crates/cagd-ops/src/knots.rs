@@ -3,9 +3,12 @@
 //! page's views), so that the same wrong knots get the same words everywhere.
 //!
 //! One convention, octave-nurbs' and the core's: a spline of degree `p` (the lecture notes'
-//! order `k = p + 1`) with `n` control points has `n + p + 1` non-decreasing knots
-//! `u_0 ≤ … ≤ u_{n+p}` and is defined on its domain `[u_p, u_n]` (the CAD notes §1.2); without
-//! knots it gets the clamped uniform vector on `[0, 1]`. Every check names the role at fault
+//! order `k = p + 1`) with `n` control points has `n + p + 1` non-decreasing knots and is
+//! defined between its knots number `p + 1` and `n + 1`; without knots it gets the clamped
+//! uniform vector on `[0, 1]`. The words number knots from 1, as the CAD notes do
+//! (`Ξ = (ξ_1, …, ξ_{n+p+1})`, §1.2) and as Octave indexes: `u_1 ≤ … ≤ u_(n+p+1)`, the domain
+//! `[u_(p+1), u_(n+1)]`, "knot 3" the third (in the code the slice `knots[0..n+p+1]`, the
+//! domain `[knots[p], knots[n]]`). Every check names the role at fault
 //! with the library's error underneath, in this order: the knots themselves (finite,
 //! non-decreasing), enough control points for the degree, the number of knots, a domain that
 //! is not a single point.
@@ -20,14 +23,14 @@ pub const DEFAULT_DEGREE: usize = 3;
 
 /// The form of a knot vector, in words.
 pub const KNOTS_FORM: &str =
-    "n + p + 1 non-decreasing knots for n control points of degree p (n ≥ p + 1), with u_p < u_n";
+    "n + p + 1 non-decreasing knots for n control points of degree p (n ≥ p + 1), with u_(p+1) < u_(n+1)";
 
 /// The form of a knot vector whose basis functions are asked for (no control points).
 pub const BASIS_KNOTS_FORM: &str =
     "n + p + 1 non-decreasing knots for n ≥ 1 basis functions of degree p, not all equal";
 
 /// The form of parameters of a spline, which is not defined outside its domain.
-pub const DOMAIN_FORM: &str = "parameters in the domain [u_p, u_n] of the knot vector";
+pub const DOMAIN_FORM: &str = "parameters in the domain [u_(p+1), u_(n+1)] of the knot vector";
 
 /// A degree as given: the degree `p`, the lecture notes' order `k = p + 1`, or neither
 /// ([`DEFAULT_DEGREE`]).
@@ -149,7 +152,7 @@ pub const SURFACE_V: KnotRoles = KnotRoles {
 /// assert_eq!(knots_or_clamped::<f64>(None, 2, 4, CURVE)?, [0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0]);
 /// let e = knots_or_clamped(Some(&[0.0, 0.0, 1.0, 1.0][..]), 2, 4, CURVE).unwrap_err();
 /// assert_eq!(e.to_string(), "knot vector: expected 7 knots (control points + degree + 1), got 4; \
-///     expected n + p + 1 non-decreasing knots for n control points of degree p (n ≥ p + 1), with u_p < u_n");
+///     expected n + p + 1 non-decreasing knots for n control points of degree p (n ≥ p + 1), with u_(p+1) < u_(n+1)");
 /// # Ok::<(), cagd_ops::OpError>(())
 /// ```
 pub fn knots_or_clamped<T: Scalar>(
@@ -191,7 +194,7 @@ pub fn check_knots<T: Scalar>(knots: &[T], p: usize, n: usize, roles: KnotRoles)
     let (a, b) = domain(knots, p);
     if a >= b {
         return Err(at_fault(cagd::Error::EmptyInterval {
-            what: "knot domain [u_p, u_n]",
+            what: "knot domain [u_(p+1), u_(n+1)]",
             a: a.to_f64(),
             b: b.to_f64(),
         }));
@@ -228,7 +231,8 @@ pub fn check_basis_knots<T: Scalar>(knots: &[T], p: usize) -> Result<usize> {
     Ok(knots.len() - p - 1)
 }
 
-/// The domain `[u_p, u_n]` of a spline of degree `p` on `knots` (checked).
+/// The domain `[u_(p+1), u_(n+1)]` (in the words' numbering from 1; `knots[p]` and
+/// `knots[n]` as a slice) of a spline of degree `p` on `knots` (checked).
 pub fn domain<T: Scalar>(knots: &[T], p: usize) -> (T, T) {
     (knots[p].clone(), knots[knots.len() - 1 - p].clone())
 }
@@ -311,7 +315,7 @@ mod tests {
         let e = check_knots(&[0.0, 1.0, 0.5, 1.0, 1.0], 1, 3, CURVE).unwrap_err();
         assert_eq!((e.role, e.kind), (Role::Knots, Kind::Knots));
         assert!(
-            e.problem.starts_with("knot vector: knot 2 (0.5) is below"),
+            e.problem.starts_with("knot vector: knot 3 (0.5) is below"),
             "{e}"
         );
         let e = check_knots(&[0.0, 0.0, 1.0, 1.0], 3, 2, CURVE).unwrap_err();

@@ -17,14 +17,15 @@ use crate::{CliError, Outcome};
 #[command(after_help = "\
 Input: n control points as columns (rows with --rows), --degree p (default 3, cubic) or
 --order k = p + 1 (as the lecture notes count), --knots: n + p + 1 non-decreasing values
-(default clamped uniform on [0, 1]). The curve is defined on [u_p, u_n]; --n samples it.
-Layout: result d×k at the parameters; --steps prints the basis functions N_i,p(t) (k×n) and
-the de Boor scheme of each t (span, α's and levels d0..dp). The span is k with
-u_k ≤ t < u_(k+1), the knots numbered from 1 as the notes number them (u_1, u_2, …).
+u_1..u_(n+p+1), numbered from 1 as the notes number them (default clamped uniform on
+[0, 1]). The curve is defined on its domain [u_(p+1), u_(n+1)]; --n samples it.
+Layout: t is 1×k, result d×k (one point per column); --steps prints the basis functions
+N_1,p(t)..N_n,p(t) (k×n, row = parameter) and the de Boor scheme of each t (span, α's and
+levels d0..dp). The span is s with u_s ≤ t < u_(s+1).
 
 Example:
   cagd bspline \"[0 0; 1 2; 3 2; 4 0]'\" --degree 2 --knots \"[0 0 0 0.5 1 1 1]\" --t 0.25 --steps --exact")]
-#[command(mut_arg("n", |a| a.help("Sample the knot domain [u_p, u_n] (not [0, 1]) at N equally spaced parameters")))]
+#[command(mut_arg("n", |a| a.help("Sample the knot domain [u_(p+1), u_(n+1)] (not [0, 1]) at N equally spaced parameters")))]
 pub struct BSplineCommand {
     /// Control points, one per column.
     #[arg(value_name = "CONTROL", allow_hyphen_values = true)]

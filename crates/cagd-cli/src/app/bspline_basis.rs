@@ -15,19 +15,21 @@ use crate::{load_params, CliError, Outcome};
 /// B-spline basis functions N_i,p(u) of a knot vector (Cox–de Boor).
 #[derive(Debug, Args)]
 #[command(after_help = "\
-Input: --knots u_0..u_m (n + p + 1 non-decreasing values for the n = m − p basis functions),
---degree p (default 3, cubic) or --order k = p + 1 (as the lecture notes count); --t in
-[u_0, u_m], or --n samples of it.
-Layout: t is k×1, result k×n (row = parameter, column = N_0,p..N_(n-1),p). --steps prints the
-Cox–de Boor triangle N_i,j(t) for j = 0..p (triangle.p0 … triangle.pP). --plot draws the
-functions.
+Input: --knots u_1..u_(n+p+1), numbered from 1 as the notes number them (n + p + 1
+non-decreasing values for n basis functions of degree p), --degree p (default 3, cubic) or
+--order k = p + 1 (as the lecture notes count); --t in the knot range [u_1, u_(n+p+1)], or --n
+samples of it.
+Layout: t is 1×k (one column per parameter), result k×n (row = parameter, column =
+N_1,p..N_n,p; N_i,p lives on [u_i, u_(i+p+1)]). --steps prints the Cox–de Boor triangle
+N_i,j(t) for j = 0..p (triangle.p0 … triangle.pP). --plot draws the functions N_i,p(t).
 
 Examples:
   cagd bspline-basis --knots \"[0 0 0 1 2 3 3 3]\" --degree 2 --t 1.5 --steps --exact
   cagd bspline-basis --knots 0:7 --order 4 --n 50 --plot basis.svg")]
-#[command(mut_arg("n", |a| a.help("Sample the whole knot range [u_0, u_m] at N equally spaced parameters")))]
+#[command(mut_arg("n", |a| a.help("Sample the whole knot range [u_1, u_(n+p+1)] at N equally spaced parameters")))]
 pub struct BSplineBasisCommand {
-    /// The knot vector u_0 ≤ … ≤ u_m.
+    /// The knot vector u_1 ≤ … ≤ u_(n+p+1): n + p + 1 non-decreasing values for n basis
+    /// functions of degree p.
     #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
     pub knots: String,
     /// The degree p (default 3).

@@ -16,11 +16,13 @@ use crate::{CliError, Outcome};
 #[command(after_help = "\
 Input: the control net packed (m+1)×3(n+1) as for bezier-patch, an Octave (m+1)×(n+1)×3 array
 file, or an Octave save -text file with an octave-nurbs nrbmak struct (weights all 1);
---degree P or P,Q (default 3, cubic; or --order K = P + 1), --uknots and --vknots (nu + p + 1
-and nv + q + 1 non-decreasing values; default clamped uniform on [0, 1]).
-Layout: single --u and --v give the 3×1 point; otherwise the grid nu×nv×3, or --list. Parameters
-default to --n samples of the domain; outside it the surface is not defined (an error). --steps
-prints the knots and the basis values N_i,p(u), N_j,q(v).
+--degree P or P,Q (default 3, cubic; or --order K = P + 1), --uknots and --vknots (in each
+direction n + p + 1 non-decreasing values for its n control points and its degree p, numbered
+from 1 as the notes number them; default clamped uniform on [0, 1]).
+Layout: single --u and --v give the 3×1 point; otherwise the grid nu×nv×3, or --list; u and v
+are 1×nu and 1×nv. Parameters default to --n samples of the domain ([u_(p+1), u_(n+1)] in each
+direction); outside it the surface is not defined (an error). --steps prints the knots and the
+basis values N_i,p(u), N_j,q(v).
 
 Example:
   cagd bspline-surface net.txt --degree 2 --n 20 --plot surface.png --mesh surface.stl")]

@@ -24,8 +24,10 @@ use cagd_octave::script::{Binding, Script};
 use cagd_ops::curves::CurveArg;
 use nalgebra::DMatrix;
 
+use super::answer::op_error;
 use super::common::{lib, shape};
 use super::expr_curve::{ExprCurve, CURVE_FORM};
+use super::run::Names;
 use crate::cx::Cx;
 use crate::{load_expression, load_matrix, load_params, CliError};
 
@@ -286,6 +288,12 @@ pub(crate) fn library_curve<T: LiteralScalar>(
         .map_err(lib(argument, "control points, one per column"))
 }
 
+/// The names of a call's roles (each error is then about the curve argument itself).
+const CALL_NAMES: Names = Names {
+    input: "CURVE",
+    special: &[],
+};
+
 /// `bezier(P)`, `bspline(P, U)` or `nurbs(P, W, U)`, if `text` is such a call.
 fn library_call<T: LiteralScalar>(
     cx: &mut Cx,
@@ -318,17 +326,29 @@ fn library_call<T: LiteralScalar>(
     let points = orient(points, how.rows);
     let list = |cx: &mut Cx, k: usize| load_params::<T>(cx, argument, args[k]);
     let degree = |knots: &[T]| {
-        knots.len().checked_sub(points.ncols() + 1).ok_or_else(|| {
-            shape(
-                argument,
-                format!(
-                    "{} knots for {} control points",
-                    knots.len(),
-                    points.ncols()
-                ),
-                "at least numel(P) + 1 knots: the degree is numel(U) − columns(P) − 1",
-            )
-        })
+        knots
+            .len()
+            .checked_sub(points.ncols() + 1)
+            .ok_or_else(|| {
+                shape(
+                    argument,
+                    format!(
+                        "{} knots for {} control points",
+                        knots.len(),
+                        points.ncols()
+                    ),
+                    "at least columns(P) + 1 knots: the degree is numel(U) − columns(P) − 1",
+                )
+            })
+            .and_then(|p| {
+                // The one knot rule, in the words every command with knots uses.
+                cagd_ops::knots::check_knots(knots, p, points.ncols(), cagd_ops::knots::CURVE)
+                    .map_err(|e| CliError {
+                        argument: argument.to_string(),
+                        ..op_error(&CALL_NAMES, e)
+                    })?;
+                Ok(p)
+            })
     };
     let curve = match name {
         "bezier" => BezierCurve::new(points.clone()).map(LibraryCurve::Bezier),

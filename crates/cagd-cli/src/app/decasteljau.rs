@@ -21,8 +21,9 @@ numeric variable), or - for standard input.
 Layout: result is d×k, one point per column (like T in deCasteljau); t is 1×k.
 --steps prints the whole scheme b_i^r(t) for each t, columns r = 0..n, as in Primer 2.4 (in
 json and octave formats as data: scheme.r0 … scheme.rn, level r a d×(n+1−r) matrix).
---interval a,b puts the curve on [a, b] (thesis §2.3.2). Points typed as rows (more rows than
-columns, or more than 3 rows) get a warning naming --rows.
+--interval a,b puts the curve on [a, b] (thesis §2.3.2). A matrix that reads both ways (both
+sizes at most 3) is read as columns with a note naming --rows; --rows or --columns states the
+reading.
 
 Examples:
   cagd decasteljau \"[0 0 0; 0 2 2; 8 2 0; 4 0 0]'\" --t 0.5 --steps --exact

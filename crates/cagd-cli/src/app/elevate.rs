@@ -17,13 +17,14 @@ use cagd_ops::bspline_arg::{BSplineArg, SplineDegree};
 /// Raise the degree of a Bézier curve (or of a clamped B-spline curve) without changing it.
 #[derive(Debug, Args)]
 #[command(after_help = "\
-Input: control points as columns (rows with --rows); --by R, or the degree after elevation
---degree P (the order after elevation --order K = P + 1; an error if it contradicts --by). A
-Bézier curve of degree n − 1 for n points, or with --knots a clamped B-spline (first and last
-knot p+1 times) of degree p = numel(knots) − n − 1.
-Layout: control is d×(n+R+1); for a B-spline also knots (each distinct knot R times more, as
-octave-nurbs nrbdegelev). --steps prints every intermediate Bézier polygon
-b'_i = i/(n+1)·b_(i-1) + (1 − i/(n+1))·b_i.
+Input: n control points as columns (rows with --rows); --by R, or the degree after elevation
+--degree P (the order after elevation --order K = P + 1; an error if it contradicts --by or lies
+below the degree). A Bézier curve of degree
+n − 1, or with --knots a clamped B-spline: n + p + 1 non-decreasing knots for n control points
+(the first and the last p + 1 times), so of degree p = numel(knots) − n − 1.
+Layout: control is d×(n+R) for a Bézier curve; for a B-spline also knots (each distinct knot R
+times more, as octave-nurbs nrbdegelev). --steps prints every intermediate Bézier polygon
+b'_i = i/(q+1)·b_(i-1) + (1 − i/(q+1))·b_i of each step from degree q to q + 1.
 
 Examples:
   cagd elevate \"[0 0; 1 2; 3 2; 4 0]\" --rows --by 1 --steps --exact

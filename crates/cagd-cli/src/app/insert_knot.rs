@@ -17,12 +17,13 @@ use crate::{load_params, CliError, Outcome};
 #[derive(Debug, Args)]
 #[command(after_help = "\
 Input: n control points as columns (rows with --rows), --degree p (default 3, cubic) or
---order k = p + 1, --knots: n + p + 1 non-decreasing values (default clamped uniform on
-[0, 1]), --insert the knots to add (strictly inside the domain [u_p, u_n]); --weights for a
-NURBS curve (the homogeneous points (w P, w) are refined).
-Layout: knots 1×(n+p+1+r) and control d×(n+r) (weights 1×(n+r) for NURBS). --steps prints each
-insertion: the span k (u_k ≤ u < u_(k+1), the knots numbered from 1 as the notes number them),
-α_i = (u − u_i)/(u_(i+p) − u_i) for i = k−p+1..k, and the new polygon.
+--order k = p + 1, --knots: n + p + 1 non-decreasing values u_1..u_(n+p+1), numbered from 1
+as the notes number them (default clamped uniform on [0, 1]), --insert the r knots to add
+(strictly inside the domain [u_(p+1), u_(n+1)]); --weights for a NURBS curve (the
+homogeneous points (w P, w) are refined).
+Layout: knots 1×(n + p + 1 + r) and control d×(n+r) (weights 1×(n+r) for NURBS). --steps prints each
+insertion: the span s (u_s ≤ u < u_(s+1)), α_i = (u − u_i)/(u_(i+p) − u_i) for
+i = s−p+1..s, and the new polygon.
 
 Example:
   cagd insert-knot \"[0 0; 1 2; 3 2; 4 0]\" --rows --degree 2 --knots \"[0 0 0 0.5 1 1 1]\" --insert 0.25 --steps --exact")]

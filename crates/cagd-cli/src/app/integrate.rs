@@ -17,11 +17,15 @@ use crate::{CliError, Outcome};
 #[derive(Debug, Args)]
 #[command(after_help = "\
 Input: Bézier control points as columns (rows with --rows) over [0, 1] or --interval a,b; with
---degree/--order and --knots a B-spline; or --bernstein N [--i I] alone.
-Layout: antiderivative holds the control points of ∫ (d×(n+2); a B-spline's with its knots,
-(u_0, u_0, …, u_m, u_m)); integral the definite integral over the domain (d×1); with --t, result
-holds ∫ from the start of the domain to t. Bernstein: rows of Bernstein coefficients of degree
-N+1 of ∫₀ᵗ B_i^N, and ∫₀¹ B_i^N = 1/(N+1).
+--degree p, --order k = p + 1 or --knots a B-spline of n control points: degree p (default 3,
+cubic), knots n + p + 1 non-decreasing values u_1..u_(n+p+1), numbered from 1 as the notes
+number them (default clamped uniform on [0, 1]); or --bernstein N [--i I] alone.
+Layout: antiderivative holds the control points of ∫ (d×(n+2) for a Bézier curve of degree n;
+d×(n+1) for a B-spline of n control points, with its knots (u_1, u_1, …, u_(n+p+1),
+u_(n+p+1))); integral the definite integral over the domain ([0, 1], --interval, or
+[u_(p+1), u_(n+1)]; d×1); with --t (t is 1×k), result holds ∫ from the start of the domain to
+t. Bernstein: rows of Bernstein coefficients of degree N+1 of ∫₀ᵗ B_i^N, and
+∫₀¹ B_i^N = 1/(N+1).
 
 Examples:
   cagd integrate \"[0 0; 1 2; 2 0]\" --rows --exact
@@ -44,7 +48,8 @@ pub struct IntegrateCommand {
     /// A B-spline curve of order K = P + 1.
     #[arg(long, value_name = "K", conflicts_with = "degree")]
     pub order: Option<usize>,
-    /// The knot vector of a B-spline curve.
+    /// The knot vector of a B-spline curve: n + p + 1 non-decreasing values for n control
+    /// points (with --degree or --order; default cubic).
     #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
     pub knots: Option<String>,
     /// The parameter interval [a, b] of a Bézier curve (default 0,1).

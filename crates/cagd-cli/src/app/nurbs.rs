@@ -17,12 +17,14 @@ use crate::{load_params, CliError, Outcome};
 #[command(after_help = "\
 Input: n control points as columns (rows with --rows), --weights (one per point, positive),
 --degree p (default 3, cubic) or --order k = p + 1, --knots: n + p + 1 non-decreasing values
-(default clamped uniform on [0, 1]).
-Layout: result d×k; --steps prints the rational basis functions R_i,p(t).
+u_1..u_(n+p+1), numbered from 1 as the notes number them (default clamped uniform on [0, 1]).
+The curve is defined on its domain [u_(p+1), u_(n+1)]; --n samples it.
+Layout: t is 1×k, result d×k (one point per column); --steps prints the rational basis
+functions R_1,p(t)..R_n,p(t) (k×n, row = parameter).
 
 Example (a quarter circle):
   cagd nurbs \"[1 0; 1 1; 0 1]'\" --weights \"[1 0.7071067811865476 1]\" --degree 2 --n 5")]
-#[command(mut_arg("n", |a| a.help("Sample the knot domain [u_p, u_n] (not [0, 1]) at N equally spaced parameters")))]
+#[command(mut_arg("n", |a| a.help("Sample the knot domain [u_(p+1), u_(n+1)] (not [0, 1]) at N equally spaced parameters")))]
 pub struct NurbsCommand {
     /// Control points, one per column.
     #[arg(value_name = "CONTROL", allow_hyphen_values = true)]

@@ -64,12 +64,12 @@ pub struct SplineSurfaceArgs {
     /// The orders K = P + 1 instead of the degrees: K or K,L.
     #[arg(long, value_name = "K[,L]", allow_hyphen_values = true)]
     pub order: Option<String>,
-    /// The knot vector along u (rows of the net): nu + p + 1 non-decreasing values; default
-    /// clamped uniform on [0, 1].
+    /// The knot vector along u (rows of the net): n + p + 1 non-decreasing values for the n
+    /// control points along u and the degree p along u; default clamped uniform on [0, 1].
     #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
     pub uknots: Option<String>,
-    /// The knot vector along v (columns of the net): nv + q + 1 non-decreasing values;
-    /// default clamped uniform on [0, 1].
+    /// The knot vector along v (columns of the net): n + q + 1 non-decreasing values for the n
+    /// control points along v and the degree q along v; default clamped uniform on [0, 1].
     #[arg(long, value_name = "VALUES", allow_hyphen_values = true)]
     pub vknots: Option<String>,
     #[command(flatten)]

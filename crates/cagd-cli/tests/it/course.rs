@@ -954,7 +954,8 @@ fn knot_insertion_matches_bspkntins_and_nrbkntins() {
             &octave_pts.into_dyn(),
         );
     }
-    // Boehm's α by hand: u = 1/4 into 0,0,0,½,1,1,1 (span 2): α = 1/2, 1/4.
+    // Boehm's α by hand: u = 1/4 into u_1..u_7 = 0,0,0,½,1,1,1 (span 3, u_3 ≤ u < u_4):
+    // α_i = (u − u_i)/(u_(i+2) − u_i), i = 2, 3: 1/2, 1/4.
     let out = json(&[
         "insert-knot",
         "[0 0; 1 2; 3 2; 4 0]",
@@ -994,7 +995,8 @@ fn bspline_basis_matches_basisfun_and_the_lecture_notes() {
             &row_lit(&u),
         ]);
         let ours = mat(&out["result"]);
-        // basisfun gives the p+1 non-zero functions N_(s−p)…N_s of the span s.
+        // basisfun gives the p+1 non-zero functions of its span s (octave-nurbs counts from 0):
+        // our columns s − p … s from 0, N_(s−p+1)…N_(s+1) as the help numbers them.
         let picked = Array2::from_shape_fn((u.len(), p + 1), |(i, j)| {
             ours[[i, spans[i] as usize - p + j]]
         });
@@ -1659,7 +1661,7 @@ fn bspline_order_and_the_de_boor_scheme() {
     by_order.extend(["--order", "3"]);
     let out = json(&by_degree);
     assert_eq!(out, json(&by_order));
-    // de Boor by hand: span 2, α = 1/2, 1/4, then 1/2; the point (1, 3/2).
+    // de Boor by hand: span 3 (u_3 ≤ 1/4 < u_4), α = 1/2, 1/4, then 1/2; the point (1, 3/2).
     assert_eq!(exact(&out["de_boor"]["alpha1"]), strs(&[&["1/2", "1/4"]]));
     assert_eq!(
         exact(&out["de_boor"]["d1"]),
@@ -1668,7 +1670,7 @@ fn bspline_order_and_the_de_boor_scheme() {
     assert_eq!(exact(&out["de_boor"]["d2"]), strs(&[&["1"], &["3/2"]]));
     let help = silent(&["bspline", "--help"]);
     assert!(
-        help.contains("Sample the knot domain [u_p, u_n] (not [0, 1])"),
+        help.contains("Sample the knot domain [u_(p+1), u_(n+1)] (not [0, 1])"),
         "{help}"
     );
 }

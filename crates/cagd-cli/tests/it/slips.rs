@@ -407,35 +407,139 @@ fn convention_order_is_a_bsplines_order_in_every_command() {
     );
 }
 
+/// A 4×4 control net packed as `bezier-patch` reads it (one bump at P_22).
+const NET_4X4: &str = "[0 0 0 1 0 0 2 0 0 3 0 0; 0 1 0 1 1 0 2 1 0 3 1 0; \
+    0 2 0 1 2 0 2 2 1 3 2 0; 0 3 0 1 3 0 2 3 0 3 3 0]";
+
 #[test]
-fn convention_default_degree_is_cubic_for_bspline_and_nurbs() {
+fn convention_default_degree_is_cubic_in_every_command_with_one() {
     let p = "[0 1 2 3 4; 0 2 0 2 0]";
-    for (command, extra) in [
-        ("bspline", vec![]),
-        ("nurbs", vec!["--weights", "[1 1 1 1 1]"]),
-    ] {
-        let mut default = vec![command, p, "--t", "0.3"];
-        default.extend(&extra);
-        let mut cubic = default.clone();
-        cubic.extend(["--degree", "3"]);
-        assert_eq!(exact_result(&default), exact_result(&cubic), "{command}");
+    // (command and arguments, the output compared): without --degree, as with --degree 3,
+    // and not as with --degree 2 (so that the default is seen to matter).
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (vec!["bspline", p, "--t", "0.3"], "result"),
+        (
+            vec!["nurbs", p, "--weights", "[1 2 1 2 1]", "--t", "0.3"],
+            "result",
+        ),
+        (vec!["insert-knot", p, "--insert", "0.3"], "control"),
+        (
+            vec![
+                "bspline-basis",
+                "--knots",
+                "[0 0 0 0 1 2 2 2 2]",
+                "--t",
+                "0.3",
+            ],
+            "result",
+        ),
+        (
+            vec!["bspline-surface", NET_4X4, "--u", "0.3", "--v", "0.6"],
+            "result",
+        ),
+        (
+            vec![
+                "nurbs-surface",
+                NET_4X4,
+                "--weights",
+                "[1 1 1 1; 1 2 2 1; 1 2 2 1; 1 1 1 1]",
+                "--u",
+                "0.3",
+                "--v",
+                "0.6",
+            ],
+            "result",
+        ),
+        (vec!["integrate", p, "--knots", "0:8"], "integral"),
+    ];
+    for (args, name) in cases {
+        let with = |degree: &'static str| {
+            let mut a = args.clone();
+            a.extend(["--degree", degree]);
+            a
+        };
+        let default = exact_named(&args, name);
+        assert_eq!(default, exact_named(&with("3"), name), "{args:?}");
+        if args[0] == "integrate" {
+            // 9 knots for 5 points fit the cubic only.
+            let e = error(&with("2"));
+            assert!(e.contains("expected 8 knots"), "{e}");
+        } else {
+            assert_ne!(default, exact_named(&with("2"), name), "{args:?}");
+        }
     }
+    // Without --knots, --degree or --order, integrate's CONTROL is a Bézier curve (degree 4
+    // for 5 points): ∫₀¹ = mean of the points = (2, 4/5).
+    assert_eq!(
+        exact_named(&["integrate", p], "integral"),
+        vec![vec!["2".to_string()], vec!["4/5".to_string()]]
+    );
 }
+
+/// The knot rule's form, the same for every command with control points and knots.
+const KNOTS_FORM: &str = "expected n + p + 1 non-decreasing knots for n control points of \
+    degree p (n ≥ p + 1), with u_(p+1) < u_(n+1)";
 
 #[test]
 fn convention_one_knot_count_rule_and_wording() {
-    let wrong = "[0 0 0 1 1 1]";
     let p = "[0 1 3 4; 0 2 2 0]";
-    for command in ["bspline", "insert-knot", "integrate"] {
-        let mut a = vec![command, p, "--degree", "2", "--knots", wrong];
-        if command == "insert-knot" {
-            a.extend(["--insert", "0.5"]);
+    // The count: 6 knots where the quadratic on 4 points has 7.
+    let wrong = "[0 0 0 1 1 1]";
+    let count = format!(
+        "--knots: knot vector: expected 7 knots (control points + degree + 1), got 6; {KNOTS_FORM}"
+    );
+    for command in ["bspline", "nurbs", "insert-knot", "integrate"] {
+        let mut a = vec![command, p, "--degree", "2", "--knots", wrong, "--columns"];
+        match command {
+            "insert-knot" => a.extend(["--insert", "0.5"]),
+            "nurbs" => a.extend(["--weights", "[1 1 1 1]"]),
+            _ => {}
+        }
+        assert_eq!(error(&a), count, "{command}");
+    }
+    // Decreasing knots: knot 5 (counted from 1) falls below knot 4, in every command that
+    // takes knots, the call forms of the curve arguments among them.
+    let decreasing = "[0 0 0 0.5 0.25 1 1]";
+    let problem = "knot 5 (0.25) is below the knot before it (0.5); knots must be non-decreasing";
+    let curve = format!("bspline({p}, {decreasing})");
+    let rational = format!("nurbs({p}, [1 1 1 1], {decreasing})");
+    let commands: Vec<(Vec<&str>, &str)> = vec![
+        (vec!["bspline", p], "--knots"),
+        (vec!["nurbs", p, "--weights", "[1 1 1 1]"], "--knots"),
+        (vec!["insert-knot", p, "--insert", "0.5"], "--knots"),
+        (vec!["integrate", p], "--knots"),
+        (vec!["elevate", p], "--knots"),
+        (vec!["curvature", &curve, "--t", "0.5"], "CURVE"),
+        (
+            vec!["ruled", "--first", &rational, "--second", "[0 4; 1 1]"],
+            "--first",
+        ),
+    ];
+    for (args, argument) in commands {
+        let mut a = args.clone();
+        if argument == "--knots" {
+            a.extend(["--knots", decreasing]);
+        }
+        a.push("--columns");
+        let e = error(&a);
+        let start = format!("{argument}: knot vector: {problem}");
+        assert!(e.starts_with(&start), "{args:?}: {e}");
+        assert!(e.ends_with(KNOTS_FORM), "{args:?}: {e}");
+    }
+    // The basis (no control points) and the surfaces: the same problem in the same words.
+    let e = error(&["bspline-basis", "--knots", decreasing, "--degree", "2"]);
+    assert!(
+        e.starts_with(&format!("--knots: knot vector: {problem}")),
+        "{e}"
+    );
+    for surface in ["bspline-surface", "nurbs-surface"] {
+        let mut a = vec![surface, NET_4X4, "--degree", "2", "--uknots", decreasing];
+        if surface == "nurbs-surface" {
+            a.extend(["--weights", "ones(4, 4)"]);
         }
         let e = error(&a);
-        assert!(
-            e.contains("n + p + 1") && !e.contains("n + p + 2"),
-            "{command}: {e}"
-        );
+        let start = format!("--uknots: knot vector along u: {problem}");
+        assert!(e.starts_with(&start) && e.ends_with(KNOTS_FORM), "{e}");
     }
 }
 
@@ -537,6 +641,149 @@ fn convention_de_boor_span_counts_knots_from_one() {
     let v: J = serde_json::from_str(&out).unwrap();
     let span = &v["insert_1"]["span"];
     assert_eq!(rows(span), vec![vec!["3.0"]], "{v}");
+}
+
+/// The conventions of docs/COURSE.md ("Conventions: one word, one meaning") that a text shown
+/// to a user breaks, one line each (empty when it keeps them all): parameter vectors are rows
+/// (`t is 1×k`); one knot-count rule (`n + p + 1`, for `n` control points of degree `p`);
+/// `--order` is a B-spline's order `k = p + 1`; knots are numbered from 1 (`u_1`, the domain
+/// `[u_(p+1), u_(n+1)]`, the functions `N_1,p … N_n,p`).
+fn conventions_broken(text: &str) -> Vec<String> {
+    let text = &text.split_whitespace().collect::<Vec<_>>().join(" ");
+    let mut broken = Vec::new();
+    for name in ["t", "u", "v"] {
+        let says = format!(" {name} is ");
+        for (at, _) in text.match_indices(&says) {
+            let shape = text[at + says.len()..]
+                .split_whitespace()
+                .next()
+                .unwrap_or("");
+            let is_shape = shape.contains('×') || shape.contains("x1");
+            if is_shape && !shape.starts_with("1×") {
+                broken.push(format!(
+                    "`{name} is {shape}`: parameter vectors are rows, 1×k"
+                ));
+            }
+        }
+    }
+    for plus in ["+ p + ", "+ q + "] {
+        for (at, _) in text.match_indices(plus) {
+            if !text[at + plus.len()..].starts_with('1') {
+                broken.push(format!(
+                    "`{}`: knots are n + p + 1",
+                    &text[at..at + plus.len() + 1]
+                ));
+            }
+        }
+    }
+    // The last knot's subscript u_(n+p+1) is the one place the rule is written tight.
+    let plain = text.replace("u_(n+p+1)", "u_last");
+    for other in [
+        "n+p+",
+        "n+q+",
+        "nu + p",
+        "nv + q",
+        "m − p",
+        "m - p",
+        "m + 1 knots",
+    ] {
+        if plain.contains(other) {
+            broken.push(format!("`{other}`: one knot-count rule, written n + p + 1"));
+        }
+    }
+    let order_defined = ["k = p + 1", "K = P + 1", "(degree + 1)"];
+    if text.contains("--order") && !order_defined.iter().any(|d| text.contains(d)) {
+        broken.push("--order without `k = p + 1`: the order is a B-spline's".into());
+    }
+    for zero in [
+        "u_0",
+        "u_p",
+        "u_n",
+        "u_m",
+        "v_q",
+        "v_n",
+        "N_0,",
+        "N_(n-1)",
+        "N_(n−1)",
+        "u_{",
+    ] {
+        if text.contains(zero) {
+            broken.push(format!(
+                "`{zero}`: knots and basis functions are numbered from 1"
+            ));
+        }
+    }
+    let subscript = ["u_1", "u_(", "u_s", "u_k"]
+        .iter()
+        .any(|k| text.contains(k));
+    if subscript && !text.contains("numbered from 1") {
+        broken.push("knot subscripts without `numbered from 1`".into());
+    }
+    if text.contains("domain [u_") && !text.contains("domain [u_(p+1), u_(n+1)]") {
+        broken.push("a B-spline domain other than [u_(p+1), u_(n+1)]".into());
+    }
+    broken
+}
+
+#[test]
+fn convention_checks_catch_each_broken_convention() {
+    let kept = "Input: --knots: n + p + 1 non-decreasing values u_1..u_(n+p+1), numbered from 1, \
+        --order k = p + 1; the domain [u_(p+1), u_(n+1)].\nLayout: t is 1×k, result k×n.";
+    assert_eq!(conventions_broken(kept), Vec::<String>::new());
+    // The texts the help had before, each caught.
+    for (planted, rule) in [
+        ("Layout: t is k×1, result k×(n+1)", "rows"),
+        (
+            "The knot vector: n + p + 2 non-decreasing values",
+            "n + p + 1",
+        ),
+        ("Layout: knots 1×(n+p+1+r)", "n + p + 1"),
+        ("--uknots and --vknots (nu + p + 1", "n + p + 1"),
+        ("--order K: the order of the derivative", "order"),
+        ("Sample the knot domain [u_p, u_n]", "numbered from 1"),
+        ("column = N_0,p..N_(n-1),p", "numbered from 1"),
+        ("The span is k with u_k ≤ t < u_(k+1).", "numbered from 1"),
+        ("--knots u_0..u_m, numbered from 1", "numbered from 1"),
+    ] {
+        let found = conventions_broken(planted);
+        assert!(
+            found.iter().any(|b| b.contains(rule)),
+            "{planted}: {found:?}"
+        );
+    }
+}
+
+#[test]
+fn convention_help_texts_agree_with_the_conventions() {
+    let all = cagd_cli::subcommands();
+    let mut takes_knots = 0;
+    for sub in all.iter().map(String::as_str) {
+        let help = silent(&[sub, "--help"]);
+        let broken = conventions_broken(&help);
+        assert!(broken.is_empty(), "cagd {sub} --help: {broken:?}");
+        // Every command that takes knots states the one rule in the same words.
+        if help.contains("--knots <") || help.contains("--uknots <") {
+            takes_knots += 1;
+            assert!(
+                help.contains("n + p + 1 non-decreasing"),
+                "cagd {sub} --help states no knot count"
+            );
+        }
+    }
+    assert!(takes_knots >= 8, "{takes_knots} commands take knots");
+    // The readable steps' labels, in every language (the words "numbered from 1" in English).
+    for (name, words) in cagd_cli::lang::STEP_LABELS {
+        for lang in cagd_cli::lang::Lang::ALL {
+            let broken: Vec<_> = conventions_broken(words.get(lang))
+                .into_iter()
+                .filter(|b| lang == cagd_cli::lang::Lang::En || !b.starts_with("knot subscripts"))
+                .collect();
+            assert!(
+                broken.is_empty(),
+                "step label {name} ({lang:?}): {broken:?}"
+            );
+        }
+    }
 }
 
 // ---------------------------------------------------------------------------------------

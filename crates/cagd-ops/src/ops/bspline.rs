@@ -1,7 +1,8 @@
 //! `bspline`: points of a B-spline curve (the CAD notes eq. (3), the lecture notes "B-spline
 //! křivky"), with the basis functions and de Boor's scheme as steps:
 //!
-//! `C(u) = Σ_{i=0}^{n−1} P_i N_{i,p}(u)`, `u ∈ [u_p, u_n]`; de Boor's levels
+//! `C(u) = Σ_{i=1}^{n} P_i N_{i,p}(u)`, `u ∈ [u_(p+1), u_(n+1)]` (knots and control points
+//! numbered from 1, as the CAD notes number them); de Boor's levels
 //! `d_i^r = (1 − α_i^r) d_{i−1}^{r−1} + α_i^r d_i^{r−1}`, `α_i^r = (u − u_i)/(u_{i+p+1−r} − u_i)`.
 //!
 //! The degree and the knots follow the one convention of [`crate::knots`].
@@ -47,7 +48,7 @@ pub struct BSpline<T> {
     pub degree: Degree,
     /// The knots (`n + p + 1`), or the clamped uniform vector on `[0, 1]`.
     pub knots: Option<Vec<T>>,
-    /// The parameters (samples cover the domain `[u_p, u_n]`; outside it an error).
+    /// The parameters (samples cover the domain `[u_(p+1), u_(n+1)]`; outside it an error).
     pub t: Params<T>,
     /// The basis functions at `t` as the item `basis` (`k × n`, row = parameter).
     pub basis: bool,

@@ -5,7 +5,8 @@
 //! `N_{i,j}(u) = (u − u_i)/(u_{i+j} − u_i) N_{i,j−1}(u) + (u_{i+j+1} − u)/(u_{i+j+1} − u_{i+1}) N_{i+1,j−1}(u)`.
 //!
 //! Every `N_{i,p}` lives on `[u_i, u_{i+p+1}]`: the values are taken over the whole knot range
-//! `[u_0, u_m]`, not only the domain `[u_p, u_n]` of a spline. The degree and the knots follow
+//! `[u_1, u_(n+p+1)]`, not only the domain `[u_(p+1), u_(n+1)]` of a spline (knots and functions
+//! numbered from 1 as in [`crate::knots`]: `N_1,p … N_n,p` for `n + p + 1` knots). The degree and the knots follow
 //! the one convention of [`crate::knots`].
 
 use cagd::bspline::{cox_de_boor_triangle, triangle_cost};
@@ -39,15 +40,15 @@ pub const RANGE_FORM: &str = "parameters between the first and the last knot";
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct BSplineBasis<T> {
-    /// The knots `u_0 ≤ … ≤ u_m`.
+    /// The knots `u_1 ≤ … ≤ u_(n+p+1)` (numbered from 1, as in the words).
     pub knots: Vec<T>,
     /// The degree (or order).
     pub degree: Degree,
-    /// The parameters (samples cover `[u_0, u_m]`; outside it an error).
+    /// The parameters (samples cover `[u_1, u_(n+p+1)]`; outside it an error).
     pub t: Params<T>,
     /// The Cox–de Boor triangle of every parameter (`triangle`: `t`, levels `p0..pP`).
     pub steps: bool,
-    /// A picture of the functions over `[u_0, u_m]`, with their values at `t` marked.
+    /// A picture of the functions over `[u_1, u_(n+p+1)]`, with their values at `t` marked.
     pub drawing: bool,
 }
 
@@ -174,8 +175,8 @@ fn picture<T: Scalar>(
             }
         });
         let label = match (n <= 6, i) {
-            (true, _) => format!("N_{i},{p}"),
-            (false, 0) => format!("N_i,{p}, i = 0..{}", n - 1),
+            (true, _) => format!("N_{},{p}", i + 1),
+            (false, 0) => format!("N_i,{p}, i = 1..{n}"),
             _ => String::new(),
         };
         drawing = drawing.curve(line, colours[i % colours.len()], label);

@@ -1,7 +1,8 @@
 //! `bspline-surface`: a tensor-product B-spline surface (the CAD notes §1.2–1.3, the lecture
 //! notes "B-spline plocha"),
 //!
-//! `S(u, v) = Σ_i Σ_j P_{i,j} N_{i,p}(u) N_{j,q}(v)` over `[u_p, u_{nu}] × [v_q, v_{nv}]`,
+//! `S(u, v) = Σ_i Σ_j P_{i,j} N_{i,p}(u) N_{j,q}(v)` over `[u_(p+1), u_(nu+1)] × [v_(q+1), v_(nv+1)]`
+//! (`nu × nv` control points, knots numbered from 1),
 //!
 //! with the knots and the basis values in each direction as steps. The degrees and the knots
 //! of each direction follow the one convention of [`crate::knots`]; the surface is not

@@ -23,7 +23,7 @@ use crate::{Answer, Context, Operation, Report, Role, Value};
 
 /// The form of the knots to insert.
 pub const INSERT_FORM: &str =
-    "knots strictly inside the domain [u_p, u_n], each at most p + 1 times in the result";
+    "knots strictly inside the domain [u_(p+1), u_(n+1)], each at most p + 1 times in the result";
 
 /// Knots inserted into a B-spline or NURBS curve.
 ///

@@ -132,7 +132,7 @@ impl<T: Scalar> Integrate<T> {
         if self.bspline.is_some() && self.interval.is_some() {
             return unused(
                 Role::Interval,
-                "has no effect on a B-spline (its domain is [u_p, u_n])",
+                "has no effect on a B-spline (its domain is [u_(p+1), u_(n+1)])",
                 "an interval with a Bézier curve only",
             );
         }
@@ -274,12 +274,14 @@ impl<T: Scalar> Integrate<T> {
         report.push("antiderivative", Value::Matrix(anti.control().clone()));
         report.push("integral", Value::column(&integral));
         if self.t.is_some() {
-            let values = bspline_integral_to(&anti, a.clone(), &ts)
-                .map_err(lib(Role::T, "parameters inside the domain [u_p, u_n]"))?;
+            let values = bspline_integral_to(&anti, a.clone(), &ts).map_err(lib(
+                Role::T,
+                "parameters inside the domain [u_(p+1), u_(n+1)]",
+            ))?;
             report.push("t", Value::row(&ts));
             report.push("result", Value::Matrix(values));
         }
-        // The antiderivative's domain [u_p, u_n] is the curve's (a knot more at each end).
+        // The antiderivative's domain [u_(p+1), u_(n+1)] is the curve's (a knot more at each end).
         let title = "antiderivative of a B-spline curve";
         let drawing = self.picture(cx, &anti, anti.control(), title, "∫ C")?;
         Ok(Answer {

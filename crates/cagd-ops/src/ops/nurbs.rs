@@ -48,7 +48,7 @@ pub struct Nurbs<T> {
     pub degree: Degree,
     /// The knots (`n + p + 1`), or the clamped uniform vector on `[0, 1]`.
     pub knots: Option<Vec<T>>,
-    /// The parameters (samples cover the domain `[u_p, u_n]`; outside it an error).
+    /// The parameters (samples cover the domain `[u_(p+1), u_(n+1)]`; outside it an error).
     pub t: Params<T>,
     /// The rational basis functions at `t` as the item `basis` (`k × n`).
     pub basis: bool,
