@@ -19,7 +19,7 @@ use cagd_ops::bspline_arg::{BSplineArg, SplineDegree};
 #[command(after_help = "\
 Input: n control points as columns (rows with --rows); --by R, or the degree after elevation
 --degree P (the order after elevation --order K = P + 1; an error if it contradicts --by or lies
-below the degree). A Bézier curve of degree
+below the degree, a warning if it is the degree: nothing to raise). A Bézier curve of degree
 n − 1, or with --knots a clamped B-spline: n + p + 1 non-decreasing knots for n control points
 (the first and the last p + 1 times), so of degree p = numel(knots) − n − 1.
 Layout: control is d×(n+R) for a Bézier curve; for a B-spline also knots (each distinct knot R
@@ -82,7 +82,7 @@ impl Run for ElevateCommand {
             Some(u) => u.len().checked_sub(n + 1),
             None => n.checked_sub(1),
         };
-        let by = self.by_for(before)?;
+        let by = self.by_for(cx, before)?;
         let op = Elevate::<T> {
             control,
             by,
@@ -104,8 +104,10 @@ impl Run for ElevateCommand {
 
 impl ElevateCommand {
     /// The elevation R: `--by`, or the target `--degree`/`--order` less the degree `before`;
-    /// an error when the target contradicts `--by` or lies below the degree before.
-    fn by_for(&self, before: Option<usize>) -> Result<usize, CliError> {
+    /// an error when the target contradicts `--by` or lies below the degree before, a warning
+    /// when it is the degree before (R = 0, the same curve: `--degree 3` on a cubic was likely
+    /// meant as `--by 3`).
+    fn by_for(&self, cx: &Cx, before: Option<usize>) -> Result<usize, CliError> {
         let (argument, target) = match (self.degree, self.order) {
             (Some(p), _) => ("--degree", p),
             (None, Some(k)) => ("--order", k.saturating_sub(1)),
@@ -116,6 +118,18 @@ impl ElevateCommand {
         };
         let expected = "the degree after elevation (the degree before plus --by), or --by alone";
         match (target.checked_sub(before), self.by) {
+            (Some(0), None) => {
+                let typed = self.degree.or(self.order).unwrap_or(target);
+                let word = if self.degree.is_some() { "degree" } else { "order" };
+                crate::slips::warn(
+                    cx,
+                    argument,
+                    format!(
+                        "the {word} after elevation {typed} is the curve's {word}: nothing is raised (R = 0); --by {typed} raises the degree by {typed}"
+                    ),
+                );
+                Ok(0)
+            }
             (Some(r), None) => Ok(r),
             (Some(r), Some(by)) if r == by => Ok(r),
             (Some(_), Some(by)) => Err(shape(

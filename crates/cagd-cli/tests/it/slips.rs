@@ -364,6 +364,53 @@ fn convention_elevate_degree_is_the_degree_after_elevation() {
 }
 
 #[test]
+fn elevate_to_the_curves_own_degree_warns_and_names_by() {
+    // `--degree 2` on a quadratic (meant: by 2) raises nothing: the same points, a warning
+    // naming the reading and --by.
+    let q = "[0 1 2; 0 1 0]";
+    let same = vec![
+        vec!["0".to_string(), "1".into(), "2".into()],
+        vec!["0".to_string(), "1".into(), "0".into()],
+    ];
+    for (option, value, word) in [("--degree", "2", "degree"), ("--order", "3", "order")] {
+        let args = ["elevate", q, "--columns", option, value];
+        let (_, warnings) = run_ok(&args);
+        assert_eq!(
+            warnings,
+            vec![format!(
+                "{option}: the {word} after elevation {value} is the curve's {word}: nothing is \
+                 raised (R = 0); --by {value} raises the degree by {value}"
+            )]
+        );
+        assert_eq!(exact_named(&args, "control"), same);
+    }
+    // The fix it names: by hand (degree 2 → 4), x = 0, 1/2, 1, 3/2, 2; y = 0, 1/2, 2/3, 1/2, 0.
+    let by = silent(&["elevate", q, "--columns", "--by", "2", "--exact"]);
+    assert!(by.contains("1/2  2/3  1/2"), "{by}");
+    // A B-spline of degree 2 (7 knots, 4 points) asked for degree 2: the same warning.
+    let (_, warnings) = run_ok(&[
+        "elevate",
+        "[0 1 3 4; 0 2 2 0]",
+        "--knots",
+        "[0 0 0 0.5 1 1 1]",
+        "--degree",
+        "2",
+    ]);
+    assert!(
+        warnings.len() == 1 && warnings[0].contains("--by 2 raises the degree by 2"),
+        "{warnings:?}"
+    );
+    // Stated: R = 0 typed as such is silent; a target below the degree is an error.
+    silent(&["elevate", q, "--columns", "--by", "0"]);
+    silent(&["elevate", q, "--columns", "--by", "0", "--degree", "2"]);
+    let e = error(&["elevate", q, "--columns", "--degree", "1"]);
+    assert!(
+        e.starts_with("--degree: the degree after elevation 1 is below"),
+        "{e}"
+    );
+}
+
+#[test]
 fn convention_order_is_a_bsplines_order_in_every_command() {
     let p = "[0 1 3 4; 0 2 2 0]";
     let u = "[0 0 0 0.5 1 1 1]";
