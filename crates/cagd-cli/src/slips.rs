@@ -6,8 +6,8 @@
 //!   the other way round — a note whenever both readings are plausible, a warning when the
 //!   reading gives points of dimension above 3;
 //! - [`decimal_commas`]: `--t "[0,2 0,4]"` is t = 0, 2, 0, 4 (a comma separates elements), not
-//!   the decimals 0,2 and 0,4 the sources write (and `0,5` is 0 and 5), in every list, matrix
-//!   and numeric file;
+//!   the decimals 0,2 and 0,4 the sources write (and `0,5` is 0 and 5, `[0,5;1,5]` a 2×2
+//!   matrix), in every list, matrix and numeric file;
 //!
 //! Warnings are collected in the command's context while it runs ([`warn`]) and handed out
 //! with its result ([`take`]), each distinct warning once; an error of the command adds how
@@ -132,51 +132,93 @@ pub fn explain(cx: &Cx, argument: &str, problem: &str) -> String {
 /// The decimal comma in `text`, if it looks written with them, as the sources write
 /// decimals: Octave — and so the command line — reads `0,5` as two numbers. Looks so: a
 /// piece `d,d` (digits, one comma, digits) among pieces separated by white space (`[0,2
-/// 0,4]`, `[1 0,5 1]`, a file's line `0,5 1,5`), or the whole list one such piece (`0,5`,
-/// `[2,5]`). A list separated by commas only (`[0,0,0,1,1,1]`, `[1,2;3,4]`) or with spaces
-/// after its commas (`[0, 0.5, 1]`) reads as written. `lone` says whether a single piece
-/// counts (not on a file's line, where `x,y` is a CSV row).
+/// 0,4]`, `[1 0,5 1]`, a file's line `0,5 1,5`), or every row of the list one such piece
+/// (`0,5`, `[2,5]`, `[0,5;1,5]`: a column of decimals; see [`pairs_only`]). A list separated
+/// by commas only with more than two numbers in a row (`[0,0,0,1,1,1]`, `[1,2,3;4,5,6]`) or
+/// with spaces after its commas (`[0, 0.5, 1]`, `[1, 2; 3, 4]`) reads as written. `lone` says
+/// whether rows of one piece count (not on a file's single line, where `x,y` may be a CSV
+/// row: [`decimal_commas_in_file`] looks at the whole file).
 ///
 /// ```
 /// use cagd_cli::slips::decimal_comma;
 /// assert_eq!(decimal_comma("[0,2 0,4]", true), Some(("0".into(), "2".into())));
 /// assert_eq!(decimal_comma("[2,5]", true), Some(("2".into(), "5".into())));
-/// for fine in ["[0, 0.5, 1]", "0:0.2:1", "[0,0,0,1,1,1]", "[0.2 0.4]", "[1,2;3,4]"] {
+/// assert_eq!(decimal_comma("[0,5;1,5]", true), Some(("0".into(), "5".into())));
+/// assert_eq!(decimal_comma("[1,2;3,4]", true), Some(("1".into(), "2".into())));
+/// for fine in ["[0, 0.5, 1]", "0:0.2:1", "[0,0,0,1,1,1]", "[0.2 0.4]", "[1,2,3;4,5,6]", "[1, 2; 3, 4]"] {
 ///     assert_eq!(decimal_comma(fine, true), None, "{fine}");
 /// }
 /// assert_eq!(decimal_comma("0,5", false), None);
 /// ```
 pub fn decimal_comma(text: &str, lone: bool) -> Option<(String, String)> {
-    let inner = text.trim().trim_start_matches('[');
-    let inner = inner.trim_end_matches('\'').trim_end_matches(']');
-    let pieces: Vec<&str> = inner
-        .split(|c: char| c.is_whitespace() || c == ';')
-        .filter(|t| !t.is_empty())
-        .collect();
-    let spaced = inner.trim().contains(char::is_whitespace);
-    if !(spaced || (lone && pieces.len() == 1)) {
+    let pieces = pieces(text);
+    let spaced = inner(text).trim().contains(char::is_whitespace);
+    if spaced {
+        return pieces.iter().find_map(|piece| pair(piece));
+    }
+    if lone {
+        return pairs_only(text);
+    }
+    None
+}
+
+/// The first pair when every row of `text` (rows separated by `;`) is one piece `d,d` and
+/// nothing else: `0,5`, `[2,5]`, `[0,5;1,5]` — what a column of decimals written with commas
+/// looks like, and also a two-column matrix of whole numbers typed without spaces (`[1,2;3,4]`),
+/// which a space after each comma (`[1, 2; 3, 4]`) or a space between (`[1 2; 3 4]`) states.
+pub fn pairs_only(text: &str) -> Option<(String, String)> {
+    let inner = inner(text);
+    if inner.trim().contains(char::is_whitespace) {
         return None;
     }
-    pieces.iter().find_map(|piece| {
-        let piece = piece.trim_matches(|c: char| "[]()'".contains(c));
-        let (before, after) = piece.split_once(',')?;
-        let number = |s: &str, lead: bool| {
-            let s = if lead {
-                s.trim_start_matches(['-', '+'])
-            } else {
-                s
-            };
-            !s.is_empty()
-                && s.chars().all(|c| c.is_ascii_digit())
-                && s.starts_with(|c: char| c.is_ascii_digit())
+    let pieces = pieces(text);
+    let first = pair(pieces.first()?)?;
+    pieces.iter().all(|p| pair(p).is_some()).then_some(first)
+}
+
+/// `text` without its brackets and a transposing quote.
+fn inner(text: &str) -> &str {
+    let inner = text.trim().trim_start_matches('[');
+    inner.trim_end_matches('\'').trim_end_matches(']')
+}
+
+/// The pieces of `text` between white space and semicolons.
+fn pieces(text: &str) -> Vec<&str> {
+    inner(text)
+        .split(|c: char| c.is_whitespace() || c == ';')
+        .filter(|t| !t.is_empty())
+        .collect()
+}
+
+/// `piece` as `before,after` if it is digits, one comma, digits (a sign before).
+fn pair(piece: &str) -> Option<(String, String)> {
+    let piece = piece.trim_matches(|c: char| "[]()'".contains(c));
+    let (before, after) = piece.split_once(',')?;
+    let number = |s: &str, lead: bool| {
+        let s = if lead {
+            s.trim_start_matches(['-', '+'])
+        } else {
+            s
         };
-        (number(before, true) && number(after, false)).then(|| (before.into(), after.into()))
-    })
+        !s.is_empty()
+            && s.chars().all(|c| c.is_ascii_digit())
+            && s.starts_with(|c: char| c.is_ascii_digit())
+    };
+    (number(before, true) && number(after, false)).then(|| (before.into(), after.into()))
 }
 
 /// The warning for a decimal comma `before,after`.
 fn comma_message(before: &str, after: &str) -> String {
     format!("`{before},{after}` read as two numbers {before} and {after}; a decimal point is `{before}.{after}`")
+}
+
+/// The warning for rows that are each one pair `before,after` ([`pairs_only`]): both readings
+/// are plausible, so it also says how to state the other.
+fn pairs_message(before: &str, after: &str) -> String {
+    format!(
+        "{}; `{before}, {after}` (a space after the comma) if two numbers are meant",
+        comma_message(before, after)
+    )
 }
 
 /// Warns when a list or matrix typed as `argument` looks written with decimal commas (see
@@ -197,19 +239,49 @@ fn comma_message(before: &str, after: &str) -> String {
 /// assert!(slips::take(&cx).is_empty());
 /// ```
 pub fn decimal_commas(cx: &Cx, argument: &str, text: &str) {
+    let multi_row = pieces(text).len() > 1;
     if let Some((before, after)) = decimal_comma(text, true) {
-        comma(cx, argument, comma_message(&before, &after));
+        let message = if multi_row && pairs_only(text).is_some() {
+            pairs_message(&before, &after)
+        } else {
+            comma_message(&before, &after)
+        };
+        comma(cx, argument, message);
     }
 }
 
-/// [`decimal_commas`] for the lines of a numeric text file (a line `x,y` alone is a CSV row).
+/// [`decimal_commas`] for the lines of a numeric text file: a line of several pieces with a
+/// decimal comma among them (`0,5 1,5`), or every line one pair `d,d` (`0,5` on each line: a
+/// column of decimals, as the same rows typed `[0,5;1,5]` are). A file whose lines hold more
+/// than two numbers between commas (`0,1,2`), a decimal point, or a space after each comma is
+/// a CSV file read as written.
+///
+/// ```
+/// use cagd_cli::{slips, Cx};
+/// let cx = Cx::new(cagd::Limits::default());
+/// slips::decimal_commas_in_file(&cx, "CONTROL", "0,5\n1,5\n2,5\n");
+/// assert_eq!(slips::take(&cx)[0].1.message,
+///     "`0,5` read as two numbers 0 and 5; a decimal point is `0.5`; `0, 5` (a space after the comma) if two numbers are meant");
+/// for csv in ["0,1,0\n1,2,0\n", "0, 1\n1, 2\n", "0.5,1\n1,2\n", "x,y\n0,1\n"] {
+///     slips::decimal_commas_in_file(&cx, "CONTROL", csv);
+///     assert!(slips::take(&cx).is_empty(), "{csv}");
+/// }
+/// ```
 pub fn decimal_commas_in_file(cx: &Cx, argument: &str, text: &str) {
-    let found = text
+    let lines: Vec<&str> = text
         .lines()
-        .map(|l| l.split(['#', '%']).next().unwrap_or(""))
-        .find_map(|l| decimal_comma(l, false));
-    if let Some((before, after)) = found {
+        .map(|l| l.split(['#', '%']).next().unwrap_or("").trim())
+        .filter(|l| !l.is_empty())
+        .collect();
+    if let Some((before, after)) = lines.iter().find_map(|l| decimal_comma(l, false)) {
         comma(cx, argument, comma_message(&before, &after));
+        return;
+    }
+    let pairs: Vec<_> = lines.iter().map(|l| pairs_only(l)).collect();
+    if let Some(Some((before, after))) = pairs.first() {
+        if pairs.iter().all(Option::is_some) {
+            comma(cx, argument, pairs_message(before, after));
+        }
     }
 }
 

@@ -235,15 +235,51 @@ fn decimal_commas_in_control_points_lists_and_files_warn() {
         "0.5",
     ]);
     assert_eq!(warnings[0], format!("CONTROL: {COMMA_05}"));
-    // A CSV file of x,y rows is read as written.
+    // Rows that are each one pair d,d, typed without a space or as the lines of a file: a
+    // column of decimals (0.5, 1.5) read as the 2×2 matrix [0 5; 1 5]. Both readings are
+    // plausible, so the warning also names the other.
+    let pairs =
+        format!("CONTROL: {COMMA_05}; `0, 5` (a space after the comma) if two numbers are meant");
+    let (_, warnings) = run_ok(&["decasteljau", "[0,5;1,5]", "--t", "0.5"]);
+    assert!(warnings.contains(&pairs), "{warnings:?}");
+    std::fs::write(&file, "0,5\n1,5\n2,5\n").unwrap();
+    for rows in [true, false] {
+        let mut a = vec!["decasteljau", file.to_str().unwrap(), "--t", "0.5"];
+        if rows {
+            a.push("--rows");
+        }
+        let (_, warnings) = run_ok(&a);
+        assert!(warnings.contains(&pairs), "{a:?}: {warnings:?}");
+    }
+    // A CSV file of x,y rows of whole numbers is such a file too: read as written (by hand,
+    // b(1/2) of (0,1), (1,2), (2,0) is (1, 5/4)), with the warning naming the space.
     std::fs::write(&file, "0,1\n1,2\n2,0\n").unwrap();
-    silent(&[
+    let csv = [
         "decasteljau",
         file.to_str().unwrap(),
         "--rows",
         "--t",
         "0.5",
-    ]);
+    ];
+    let (_, warnings) = run_ok(&csv);
+    assert_eq!(
+        warnings,
+        vec![
+            "CONTROL: `0,1` read as two numbers 0 and 1; a decimal point is `0.1`; `0, 1` (a \
+              space after the comma) if two numbers are meant"
+        ]
+    );
+    assert_eq!(exact_result(&csv), col(&["1", "5/4"]));
+    // A CSV file with a space after each comma, three numbers a line or a decimal point reads
+    // as written, silently.
+    for text in [
+        "0, 1\n1, 2\n2, 0\n",
+        "0,1,0\n1,2,0\n2,0,0\n",
+        "0,1\n1,2.5\n2,0\n",
+    ] {
+        std::fs::write(&file, text).unwrap();
+        silent(&csv);
+    }
 }
 
 #[test]
@@ -308,6 +344,20 @@ fn decimal_points_and_comma_separated_lists_stay_silent() {
         "[0,0,0,0.5,1,1,1]",
     ]);
     silent(&["decasteljau", "[0,1,3,4;0,2,2,0]", "--t", "0.5"]);
+    silent(&["decasteljau", "[0, 5; 1, 5]", "--columns", "--t", "0.5"]);
+    // The issue's control points written with decimal points: (0.5, 1.5), (1, 2.5), (2, 0.5);
+    // by hand b(1/2) = (b0 + 2 b1 + b2)/4 = (1.125, 1.75), silently.
+    let out = silent(&[
+        "decasteljau",
+        "[0.5 1 2; 1.5 2.5 0.5]",
+        "--columns",
+        "--t",
+        "0.5",
+        "--format",
+        "json",
+    ]);
+    let v: J = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["result"], serde_json::json!([[1.125], [1.75]]));
 }
 
 // ---------------------------------------------------------------------------------------
