@@ -1,5 +1,6 @@
-//! The 2-D chart of a [`Figure`]: equal scales for geometry, a band at the top kept free for
-//! the legend, surfaces as filled cells under their net.
+//! The 2-D chart of a [`Figure`]: equal scales for geometry with a band at the top kept free
+//! for the legend; a graph's axes fitted to its data with the legend beside them; surfaces as
+//! filled cells under their net.
 
 use std::ops::Range;
 
@@ -34,11 +35,13 @@ impl Figure {
         &self,
         root: &DrawingArea<DB, Shift>,
     ) -> Result<(), PlotError> {
-        let Window { x, y, half } = self.window(root.dim_in_pixel());
+        let side = self.legend_width();
+        let Window { x, y, half } = self.window(root.dim_in_pixel(), side);
         let (hx, hy) = half;
         let mut chart = ChartBuilder::on(root)
             .caption(&self.drawing.title, (FAMILY, 24))
             .margin(20)
+            .margin_right(20 + side)
             .x_label_area_size(40)
             .y_label_area_size(50)
             .build_cartesian_2d(x, y)
@@ -54,17 +57,29 @@ impl Figure {
             .axis_desc_style((FAMILY, 16))
             .draw()
             .map_err(drawing)?;
-        self.draw_layers(&mut chart, to2, false, surface_2d)
+        self.draw_layers(&mut chart, to2, false, surface_2d)?;
+        if side > 0 {
+            let (xs, ys) = chart.plotting_area().get_pixel_range();
+            self.legend_beside(root, (xs.end + 12, ys.start))?;
+        }
+        Ok(())
     }
 
-    /// The axes' ranges on a picture of `w × h` pixels.
+    /// The axes' ranges on a picture of `w × h` pixels, `side` of them right of the chart
+    /// for a graph's legend.
     ///
-    /// Equal scales on both axes, so that shapes are not distorted; the data keeps out of a
-    /// band at the top where the legend goes, so the legend never hides a point.
-    fn window(&self, (w, h): (u32, u32)) -> Window {
+    /// Geometry: equal scales on both axes, so that shapes are not distorted, and the data
+    /// keeps out of a band at the top where the legend goes, so the legend never hides a
+    /// point. A graph: each axis its data's range (padded), the legend beside it.
+    fn window(&self, (w, h): (u32, u32), side: u32) -> Window {
         let [bx, by, _] = self.bounds();
-        let (aw, ah) = ((w as f64 - 110.0).max(50.0), (h as f64 - 120.0).max(50.0));
-        let band = self.legend_height().min(ah / 2.0);
+        let aw = (w as f64 - 110.0 - side as f64).max(50.0);
+        let ah = (h as f64 - 120.0).max(50.0);
+        let band = if side > 0 {
+            0.0
+        } else {
+            self.legend_height().min(ah / 2.0)
+        };
         let (sx, sy) = ((bx.1 - bx.0) / aw, (by.1 - by.0) / (ah - band));
         // Geometry: one scale for both axes; a graph: each axis fitted to its data.
         let (sx, sy) = if self.drawing.equal_scales {

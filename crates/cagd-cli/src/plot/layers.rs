@@ -4,6 +4,7 @@
 use cagd::grid::PointGrid;
 use plotters::chart::SeriesAnno;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::model::{Colour, Figure, Layer};
 use super::render::{drawing, rgb, FAMILY};
@@ -53,7 +54,9 @@ impl Figure {
                 Layer::ControlPolygon { label, .. } => painter.control_polygon(layer, label)?,
             }
         }
-        if self.has_legend() {
+        // A graph's legend stands beside the chart, drawn on the whole picture
+        // ([`Figure::legend_beside`]).
+        if self.has_legend() && self.legend_width() == 0 {
             painter.legend()?;
         }
         Ok(())
@@ -187,6 +190,69 @@ where
             .draw()
             .map_err(drawing)
     }
+}
+
+impl Figure {
+    /// The legend of a graph beside its chart, its upper left corner at `(x, y)` of `root`
+    /// (plotters draws a chart's own legend inside the plotting area, which clamps anything
+    /// beyond it to its edge): a box with one line per labelled layer, the layer's mark (as
+    /// on the chart) and its label.
+    pub(super) fn legend_beside<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, plotters::coord::Shift>,
+        (x, y): (i32, i32),
+    ) -> Result<(), PlotError> {
+        let labelled: Vec<&Layer> = self
+            .ordered()
+            .into_iter()
+            .filter(|l| !l.label().is_empty())
+            .collect();
+        let (w, h) = (
+            self.legend_width() as i32 - 24,
+            12 + 22 * labelled.len() as i32,
+        );
+        let corners = [(x, y), (x + w, y + h)];
+        root.draw(&Rectangle::new(corners, WHITE.mix(0.85).filled()))
+            .map_err(drawing)?;
+        root.draw(&Rectangle::new(corners, BLACK.mix(0.5)))
+            .map_err(drawing)?;
+        let font = (FAMILY, 15)
+            .into_font()
+            .color(&BLACK)
+            .pos(Pos::new(HPos::Left, VPos::Center));
+        for (k, layer) in labelled.into_iter().enumerate() {
+            let at = (x + 8, y + 17 + 22 * k as i32);
+            legend_mark(root, layer, at)?;
+            let text = Text::new(layer.label().to_string(), (at.0 + 30, at.1), font.clone());
+            root.draw(&text).map_err(drawing)?;
+        }
+        Ok(())
+    }
+}
+
+/// Draws the mark of `layer` in a legend on `root`, its left end at `(x, y)`: as the layer is
+/// drawn on the chart.
+fn legend_mark<DB: DrawingBackend>(
+    root: &DrawingArea<DB, plotters::coord::Shift>,
+    layer: &Layer,
+    (x, y): (i32, i32),
+) -> Result<(), PlotError> {
+    let line = |style: ShapeStyle| PathElement::new(vec![(x, y), (x + 20, y)], style);
+    match layer {
+        Layer::Curve { colour, width, .. } => root.draw(&line(rgb(*colour).stroke_width(*width))),
+        Layer::Net { colour, .. } => root.draw(&line(rgb(*colour).stroke_width(1))),
+        Layer::Points { .. } => root.draw(&Circle::new((x + 10, y), 5, BLACK.filled())),
+        Layer::ControlPolygon { .. } => {
+            let red = rgb(Colour::Red);
+            root.draw(&line(red.stroke_width(1)))
+                .and_then(|()| root.draw(&Circle::new((x + 10, y), 4, red.stroke_width(2))))
+        }
+        Layer::Surface { .. } => root.draw(&Rectangle::new(
+            [(x, y - 6), (x + 20, y + 6)],
+            super::render::viridis(0.6).filled(),
+        )),
+    }
+    .map_err(drawing)
 }
 
 /// The legend entry of a line drawn in `style`: a short stretch of it (none without a label).

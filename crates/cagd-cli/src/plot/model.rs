@@ -219,6 +219,24 @@ impl Figure {
         }
     }
 
+    /// The width in pixels of the legend beside a graph (0 for geometry, or without a
+    /// legend): a graph's axes fit its data (`t` over its domain, basis values over
+    /// `[0, 1]`), so its legend stands right of the plotting area instead of taking a band
+    /// of the data's range; about 8 pixels a character of the longest label, the sample line
+    /// and the margins of its box.
+    pub(super) fn legend_width(&self) -> u32 {
+        if self.drawing.equal_scales || !self.has_legend() {
+            return 0;
+        }
+        let longest = self
+            .layers()
+            .iter()
+            .map(|l| l.label().chars().count())
+            .max()
+            .unwrap_or(0);
+        (60 + 8 * longest as u32).min(300)
+    }
+
     /// Layers in drawing order: surfaces, nets, curves, control polygons, marked points.
     pub(super) fn ordered(&self) -> Vec<&Layer> {
         self.drawing.ordered()

@@ -1072,3 +1072,230 @@ fn every_plotting_command_marks_its_evaluated_points() {
         assert_eq!(markers, 1, "{name}: the evaluated point is marked once");
     }
 }
+
+#[test]
+fn the_thesis_picture_of_primer_2_4_marks_b_one_half_where_it_is() {
+    // Primer 2.4: b0 = (0,0,0), b1 = (0,2,2), b2 = (8,2,0), b3 = (4,0,0); at t = 1/2 the
+    // Bernstein weights are (1, 3, 3, 1)/8. The picture is a 3-D view, an affine map of the
+    // points to pixels, which keeps affine combinations: the mark of b(1/2) lies at
+    // (p0 + 3 p1 + 3 p2 + p3)/8 of the control points' pixels p0..p3.
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("thesis");
+    binary(&["thesis", "--out", out.to_str().unwrap()]);
+    let text = std::fs::read_to_string(out.join("primer_2_4.svg")).unwrap();
+    let all = circles(&text);
+    let control: Vec<_> = all
+        .iter()
+        .filter(|c| c.2 == 5.0 && c.3.contains("fill=\"none\""))
+        .collect();
+    assert_eq!(control.len(), 4, "{all:?}");
+    let weights = [1.0, 3.0, 3.0, 1.0];
+    let at = |k: usize| -> f64 {
+        control
+            .iter()
+            .zip(weights)
+            .map(|(c, w)| w * if k == 0 { c.0 } else { c.1 })
+            .sum::<f64>()
+            / 8.0
+    };
+    let markers: Vec<_> = all.iter().filter(|c| c.2 == 6.0).collect();
+    assert_eq!(markers.len(), 1, "one mark for the one point: {all:?}");
+    let (x, y) = (at(0), at(1));
+    // Each pixel is rounded to a whole pixel: half a pixel for the mark, at most half a pixel
+    // for the weighted mean of the control points.
+    assert!(
+        (markers[0].0 - x).abs() <= 1.0 && (markers[0].1 - y).abs() <= 1.0,
+        "mark at ({}, {}), b(1/2) at ({x}, {y})",
+        markers[0].0,
+        markers[0].1
+    );
+}
+
+/// The pixels of a PNG file (RGB, 8 bits), with its width.
+fn png_pixels(path: &Path) -> (Vec<[u8; 3]>, usize) {
+    let decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(path).unwrap()));
+    let mut reader = decoder.read_info().unwrap();
+    let mut buf = vec![0; reader.output_buffer_size().unwrap()];
+    let frame = reader.next_frame(&mut buf).unwrap();
+    assert_eq!(frame.color_type, png::ColorType::Rgb);
+    let pixels = buf[..frame.buffer_size()]
+        .chunks_exact(3)
+        .map(|p| [p[0], p[1], p[2]])
+        .collect();
+    (pixels, frame.width as usize)
+}
+
+/// The share `a` of `colour` in `pixel` if the pixel is `colour` laid over white with
+/// coverage `a` (`pixel = white + a (colour − white)` in each channel, within 4 levels).
+fn coverage(pixel: [u8; 3], colour: [u8; 3]) -> Option<f64> {
+    let shares: Vec<f64> = (0..3)
+        .filter(|&k| colour[k] < 200)
+        .map(|k| (255.0 - pixel[k] as f64) / (255.0 - colour[k] as f64))
+        .collect();
+    let a = shares.iter().sum::<f64>() / shares.len() as f64;
+    (0..3)
+        .all(|k| {
+            let expected = 255.0 - a * (255.0 - colour[k] as f64);
+            (pixel[k] as f64 - expected).abs() <= 4.0
+        })
+        .then_some(a)
+}
+
+#[test]
+fn png_pictures_are_anti_aliased() {
+    // The curve is drawn in the blue (0, 114, 189) on white. A rasterizer without
+    // anti-aliasing gives each pixel the line's colour or the background's; an anti-aliased
+    // one gives the pixels a line partly covers the tones between, all along the curve.
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("c.png");
+    binary(&[
+        "decasteljau",
+        "[0 1 3 4; 0 2 2 0]",
+        "--plot",
+        path.to_str().unwrap(),
+    ]);
+    let (pixels, width) = png_pixels(&path);
+    let blue = [0, 114, 189];
+    let partly: Vec<usize> = (0..pixels.len())
+        .filter(|&k| coverage(pixels[k], blue).is_some_and(|a| (0.15..=0.85).contains(&a)))
+        .collect();
+    let full = pixels
+        .iter()
+        .filter(|&&p| coverage(p, blue).is_some_and(|a| a > 0.95))
+        .count();
+    assert!(full > 100, "the curve is drawn in blue ({full} pixels)");
+    assert!(
+        partly.len() > 200,
+        "{} pixels of intermediate blue tones: no anti-aliasing",
+        partly.len()
+    );
+    // All along the curve, not in one spot: partly covered pixels in most of the columns
+    // the curve crosses (where it runs level along a pixel row a stretch may be covered
+    // whole).
+    let columns = |ks: &[usize]| {
+        let mut c: Vec<usize> = ks.iter().map(|k| k % width).collect();
+        c.sort_unstable();
+        c.dedup();
+        c.len()
+    };
+    let crossed: Vec<usize> = (0..pixels.len())
+        .filter(|&k| coverage(pixels[k], blue).is_some_and(|a| a > 0.15))
+        .collect();
+    assert!(
+        columns(&partly) * 2 >= columns(&crossed),
+        "intermediate tones in {} of the {} columns the curve crosses",
+        columns(&partly),
+        columns(&crossed)
+    );
+}
+
+/// The text elements of an SVG: (x, y, text).
+fn svg_texts(svg: &str) -> Vec<(f64, f64, String)> {
+    let doc = roxmltree::Document::parse(svg).unwrap();
+    doc.descendants()
+        .filter(|n| n.has_tag_name("text"))
+        .map(|n| {
+            let at = |a: &str| n.attribute(a).unwrap().parse::<f64>().unwrap();
+            let text: String = n
+                .descendants()
+                .filter(|d| d.is_text())
+                .filter_map(|d| d.text())
+                .collect();
+            (at("x"), at("y"), text.trim().to_string())
+        })
+        .collect()
+}
+
+/// The axis names and the tick values of a 2-D chart's SVG: (x name, y name, x ticks, y
+/// ticks). Ticks are the numbers in a row under the chart (one y) and in a column left of it
+/// (one x); the names are the texts beside them.
+fn axes(svg: &str) -> (String, String, Vec<f64>, Vec<f64>) {
+    let texts = svg_texts(svg);
+    let numbers: Vec<(f64, f64, f64)> = texts
+        .iter()
+        .filter_map(|(x, y, t)| t.parse::<f64>().ok().map(|v| (*x, *y, v)))
+        .collect();
+    let most = |key: &dyn Fn(&(f64, f64, f64)) -> f64| {
+        let keys: Vec<f64> = numbers.iter().map(key).collect();
+        *keys
+            .iter()
+            .max_by_key(|k| keys.iter().filter(|j| j == k).count())
+            .unwrap()
+    };
+    let column = most(&|n| n.0);
+    let row = most(&|n| n.1);
+    let y_ticks: Vec<f64> = numbers
+        .iter()
+        .filter(|n| n.0 == column)
+        .map(|n| n.2)
+        .collect();
+    let x_ticks: Vec<f64> = numbers.iter().filter(|n| n.1 == row).map(|n| n.2).collect();
+    // The names: the text below the x ticks, and the text left of the y ticks.
+    let x_name = texts
+        .iter()
+        .filter(|(_, y, _)| *y > row)
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .unwrap()
+        .2
+        .clone();
+    let y_name = texts
+        .iter()
+        .filter(|(x, _, _)| *x < column)
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .unwrap()
+        .2
+        .clone();
+    (x_name, y_name, x_ticks, y_ticks)
+}
+
+#[test]
+fn basis_plots_name_their_axes_and_fit_their_data() {
+    let dir = tempfile::tempdir().unwrap();
+    let svg = |name: &str| dir.path().join(name).to_str().unwrap().to_string();
+    // (command, its picture, the y axis's name, the knot range t covers)
+    let basis = svg("basis.svg");
+    let bernstein = svg("bernstein.svg");
+    let cases: [(Vec<&str>, &str, &str, (f64, f64)); 2] = [
+        (
+            vec![
+                "bspline-basis",
+                "--knots",
+                "[0 0 0 1 2 3 3 3]",
+                "--degree",
+                "2",
+                "--t",
+                "1.5",
+                "--plot",
+                &basis,
+            ],
+            &basis,
+            "N_i,2(t)",
+            (0.0, 3.0),
+        ),
+        (
+            vec!["bernstein", "--degree", "3", "--plot", &bernstein],
+            &bernstein,
+            "B_i^3(t)",
+            (0.0, 1.0),
+        ),
+    ];
+    for (args, path, y_name, (a, b)) in cases {
+        binary(&args);
+        let (x_name, name, x_ticks, y_ticks) = axes(&std::fs::read_to_string(path).unwrap());
+        assert_eq!((x_name.as_str(), name.as_str()), ("t", y_name), "{args:?}");
+        let range = |v: &[f64]| {
+            (
+                v.iter().copied().fold(f64::INFINITY, f64::min),
+                v.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+            )
+        };
+        // t over the knot range (padded by 5 %, so no tick beyond its ends).
+        assert_eq!(range(&x_ticks), (a, b), "{args:?}: t ticks {x_ticks:?}");
+        // Basis values over [0, 1]: no tick beyond.
+        assert_eq!(
+            range(&y_ticks),
+            (0.0, 1.0),
+            "{args:?}: value ticks {y_ticks:?}"
+        );
+    }
+}
