@@ -1,9 +1,9 @@
 //! Any curve of the library as a boundary, network curve or ruling on the command line:
-//! `bezier(P)`, `bspline(P, U)` and `nurbs(P, W, U)` in `gordon`, `ruled`, `coons-bicubic` and
-//! `ferguson`, exact where rational. The expected values are computed independently of the
+//! `bezier(P)`, `bspline(P, U)` and `nurbs(P, W, U)` in `gordon`, `ruled`, `coons`,
+//! `coons-bicubic` and `ferguson`, exact where rational. The expected values are computed independently of the
 //! library, with Python's `fractions` from the textbook formulas (Cox–de Boor for the
-//! B-splines, the rational Bézier form for the NURBS, thesis (4.5) and Gregory's square for
-//! the bicubic patch); the derivations are in the comments, the computation in
+//! B-splines, the rational Bézier form for the NURBS, thesis (4.1) for the bilinear patch,
+//! thesis (4.5) and Gregory's square for the bicubic patch); the derivations are in the comments, the computation in
 //! `any_curve_oracle.py` beside this file.
 
 use cagd_cli::run;
@@ -278,4 +278,109 @@ fn plane_boundaries_give_a_plane_patch_on_a_grid() {
     // With the parts: each is a plane grid too.
     let out = json(&[&args[..], &["--n", "3", "--steps", "--exact"]].concat());
     assert_eq!(out["rc"][1][1], serde_json::json!(["1/2", "5/8"]));
+}
+
+/// The issue's Coons example: `c1` the quadratic B-spline of the points (0,0,0), (1,0,1),
+/// (2,0,0), (3,0,1), (4,0,0) on the knots [0 0 0 1 2 3 3 3] (degree 8 − 5 − 1 = 2, domain
+/// [0, 3] mapped onto u ∈ [0, 1]), the other sides lines meeting it at the corners.
+const ISSUE_COONS: [&str; 9] = [
+    "coons",
+    "--c1",
+    "bspline([0 1 2 3 4; 0 0 0 0 0; 0 1 0 1 0], [0 0 0 1 2 3 3 3])",
+    "--c2",
+    "[4*u; 1; 0]",
+    "--d1",
+    "[0; v; 0]",
+    "--d2",
+    "[4; v; 0]",
+];
+
+#[test]
+fn coons_with_a_b_spline_boundary_prints_the_issues_value() {
+    // On the side v = 0 the patch is c1: u = 1/2 is t = 3/2 in [1, 2), where de Boor (Cox–de
+    // Boor by hand) gives the weights 1/8, 3/4, 1/8 of (1,0,1), (2,0,0), (3,0,1):
+    // x(1/2, 0) = (1/8 + 3/2 + 3/8, 0, 1/8 + 1/8) = (2, 0, 1/4).
+    let args = [&ISSUE_COONS[..], &["--u", "0.5", "--v", "0", "--exact"]].concat();
+    let full: Vec<String> = std::iter::once("cagd")
+        .chain(args.iter().copied())
+        .map(String::from)
+        .collect();
+    let out = run(&full).unwrap();
+    assert!(out.warnings.is_empty(), "{:?}", out.warnings);
+    assert!(
+        out.stdout
+            .ends_with("result =\n\n      2\n      0\n    1/4\n\n"),
+        "{}",
+        out.stdout
+    );
+    assert_eq!(column(&json(&args)["result"]), ["2", "0", "1/4"]);
+    // Inside: rc = ((2,0,1/4) + (2,1,0))/2, and rd = rcd = (4u, v, 0) (the sides are the
+    // bilinear patch of the corners), so x(1/2, 1/2) = (2, 1/2, 1/8).
+    let inside = [&ISSUE_COONS[..], &["--u", "0.5", "--v", "0.5", "--exact"]].concat();
+    assert_eq!(column(&json(&inside)["result"]), ["2", "1/2", "1/8"]);
+}
+
+#[test]
+fn coons_with_b_spline_boundaries_on_a_grid_is_exact() {
+    // Every side a B-spline: c1 as in the issue; c2 the linear B-spline of (0,1,0), (2,1,0),
+    // (4,1,0) on [0 0 1 2 2] = (4u, 1, 0); d1, d2 linear on [0 0 1 1] = (0, v, 0), (4, v, 0).
+    // rd = rcd, so x = (1 − v) c1(u) + v c2(u): with c1(0), c1(1/2), c1(1) = (0,0,0),
+    // (2,0,1/4), (4,0,0), on the grid u, v ∈ {0, 1/2, 1} (the oracle's table).
+    let out = json(&[
+        "coons",
+        "--c1",
+        ISSUE_COONS[2],
+        "--c2",
+        "bspline([0 2 4; 1 1 1; 0 0 0], [0 0 1 2 2])",
+        "--d1",
+        "bspline([0 0; 0 1; 0 0], [0 0 1 1])",
+        "--d2",
+        "bspline([4 4; 0 1; 0 0], [0 0 1 1])",
+        "--u",
+        "[0 0.5 1]",
+        "--v",
+        "[0 0.5 1]",
+        "--exact",
+    ]);
+    let expected = [
+        [["0", "0", "0"], ["0", "1/2", "0"], ["0", "1", "0"]],
+        [["2", "0", "1/4"], ["2", "1/2", "1/8"], ["2", "1", "0"]],
+        [["4", "0", "0"], ["4", "1/2", "0"], ["4", "1", "0"]],
+    ];
+    assert_eq!(out["result"], serde_json::json!(expected));
+}
+
+#[test]
+fn coons_with_nurbs_boundaries_reproduces_the_cylinder() {
+    // c1 the quarter circle (1,0,0) → (0,1,0) with weights 1, 1, 2 (w1²/(w0 w2) = 1/2: a
+    // circular arc), c2 the same at z = 1, d1, d2 the vertical lines between their ends. The
+    // Coons patch is the piece of the unit cylinder they bound: at u = 1/2 the rational
+    // Bézier form gives ((1/4 + 1/2)/(5/4), (1/2 + 1/2)/(5/4)) = (3/5, 4/5); at u = 1/4,
+    // (15/17, 8/17); and rd = rcd, so x(u, v) = (c1(u)_x, c1(u)_y, v).
+    let args = [
+        "coons",
+        "--c1",
+        "nurbs([1 1 0; 0 1 1; 0 0 0], [1 1 2], [0 0 0 1 1 1])",
+        "--c2",
+        "nurbs([1 1 0; 0 1 1; 1 1 1], [1 1 2], [0 0 0 1 1 1])",
+        "--d1",
+        "[1; 0; v]",
+        "--d2",
+        "[0; 1; v]",
+    ];
+    for (u, v, want) in [
+        ("0.5", "0.25", ["3/5", "4/5", "1/4"]),
+        ("0.25", "0.75", ["15/17", "8/17", "3/4"]),
+    ] {
+        let out = json(&[&args[..], &["--u", u, "--v", v, "--exact"]].concat());
+        assert_eq!(column(&out["result"]), want, "({u}, {v})");
+    }
+    // In doubles, every grid point on the cylinder x² + y² = 1.
+    let out = json(&[&args[..], &["--n", "5"]].concat());
+    for row in out["result"].as_array().unwrap() {
+        for p in row.as_array().unwrap() {
+            let (x, y) = (p[0].as_f64().unwrap(), p[1].as_f64().unwrap());
+            assert!((x.hypot(y) - 1.0).abs() < 1e-14, "{p}");
+        }
+    }
 }

@@ -95,3 +95,37 @@ first = rational([(1, 0, 0), (1, 1, 0), (0, 1, 0)], [1, 1, 2], F(1, 2))
 second = rational([(2, 0, 1), (2, 2, 1), (0, 2, 1)], [1, 1, 2], F(1, 2))  # on [0, 2], at 1
 v = F(1, 4)
 print("ruled x(1/2,1/4) =", [str((1 - v)*a + v*b) for a, b in zip(first, second)])
+
+# --- bilinear Coons patches x = rc + rd - rcd (thesis 4.1) with B-spline and NURBS boundaries
+def bilinear_coons(c1, c2, d1, d2, u, v):
+    rc = [(1 - v)*a + v*b for a, b in zip(c1(u), c2(u))]
+    rd = [(1 - u)*a + u*b for a, b in zip(d1(v), d2(v))]
+    x00, x10, x01, x11 = c1(F(0)), c1(F(1)), c2(F(0)), c2(F(1))
+    rcd = [(1-u)*(1-v)*a + u*(1-v)*b + (1-u)*v*c + u*v*d for a, b, c, d in zip(x00, x10, x01, x11)]
+    return [a + b - c for a, b, c in zip(rc, rd, rcd)]
+# the example: c1 the quadratic B-spline on [0 0 0 1 2 3 3 3] (domain [0, 3], t = 3u)
+K3 = [F(x) for x in [0, 0, 0, 1, 2, 3, 3, 3]]
+bP = [(F(0), F(0), F(0)), (F(1), F(0), F(1)), (F(2), F(0), F(0)), (F(3), F(0), F(1)), (F(4), F(0), F(0))]
+print("de Boor weights at t = 3/2:", [str(cox(j, 2, K3, F(3, 2))) for j in range(5)])
+e1 = lambda u: bspline(bP, K3, 3*u)
+e2 = lambda u: [4*u, F(1), F(0)]
+f1 = lambda v: [F(0), v, F(0)]
+f2 = lambda v: [F(4), v, F(0)]
+print("coons (1/2, 0) =", [str(t) for t in bilinear_coons(e1, e2, f1, f2, F(1, 2), F(0))])
+print("coons (1/2, 1/2) =", [str(t) for t in bilinear_coons(e1, e2, f1, f2, F(1, 2), F(1, 2))])
+# on the grid u, v in {0, 1/2, 1}, every boundary a B-spline: c2 of degree 1 on [0 0 1 2 2]
+# (points (0,1,0), (2,1,0), (4,1,0)), d1, d2 of degree 1 on [0 0 1 1]
+g2 = lambda u: bspline([(F(0), F(1), F(0)), (F(2), F(1), F(0)), (F(4), F(1), F(0))], [F(x) for x in [0, 0, 1, 2, 2]], 2*u)
+h1 = lambda v: bspline([(F(0), F(0), F(0)), (F(0), F(1), F(0))], [F(x) for x in [0, 0, 1, 1]], v)
+h2 = lambda v: bspline([(F(4), F(0), F(0)), (F(4), F(1), F(0))], [F(x) for x in [0, 0, 1, 1]], v)
+for u in [F(0), F(1, 2), F(1)]:
+    print("coons grid u =", u, [[str(t) for t in bilinear_coons(e1, g2, h1, h2, u, v)] for v in [F(0), F(1, 2), F(1)]])
+# a NURBS boundary: the quarter circle (1,0) -> (0,1), weights 1, 1, 2 (w1^2/(w0 w2) = 1/2, a
+# circle), at z = 0 and lifted to z = 1; the sides are lines: the patch is the unit cylinder
+n1 = lambda u: rational([(1, 0, 0), (1, 1, 0), (0, 1, 0)], [1, 1, 2], u)
+n2 = lambda u: rational([(1, 0, 1), (1, 1, 1), (0, 1, 1)], [1, 1, 2], u)
+s1 = lambda v: [F(1), F(0), v]
+s2 = lambda v: [F(0), F(1), v]
+for u, v in [(F(1, 2), F(1, 4)), (F(1, 4), F(3, 4))]:
+    x = bilinear_coons(n1, n2, s1, s2, u, v)
+    print("nurbs coons", (str(u), str(v)), [str(t) for t in x], "x^2 + y^2 =", x[0]**2 + x[1]**2)
