@@ -68,7 +68,7 @@ impl<T: LiteralScalar> Sampling<'_, T> {
             return nodes;
         };
         let param_bits: u128 = bindings.iter().map(|(_, x)| x.bits()).sum();
-        let by_nodes = weigh::<T>(Cost::new(nodes, param_bits));
+        let by_nodes = weigh::<T>(self.expr.point_cost(param_bits));
         match self.expr.eval_metered(env, &bindings) {
             Ok((_, measured)) => {
                 let scale = if T::EXACT { 8 } else { 1 };

@@ -65,6 +65,20 @@ impl ParamExpr {
             .fold(self.expr.node_count(), usize::saturating_add)
     }
 
+    /// The work of one evaluation estimated before any is done: an operation per node
+    /// ([`node_count`](Self::node_count)) on numbers of `param_bits` bits, the size of the
+    /// parameters bound. What [`eval_metered`](Self::eval_metered) measures may be more (powers
+    /// and products grow the numbers in exact arithmetic).
+    ///
+    /// ```
+    /// use cagd_octave::literal::ParamExpr;
+    /// let e = ParamExpr::parse("[u; 0; u-u^2]").unwrap();
+    /// assert_eq!(e.point_cost(53), cagd::cost::Cost::new(8, 53));
+    /// ```
+    pub fn point_cost(&self, param_bits: u128) -> cagd::cost::Cost {
+        cagd::cost::Cost::new(self.node_count() as u128, param_bits)
+    }
+
     /// The parameters (`u`, `v`, `t`) used but not bound in `env`, sorted.
     pub fn parameters<T: LiteralScalar>(&self, env: &Env<T>) -> Vec<&'static str> {
         let mut bound: BTreeSet<&str> = env.names().collect();

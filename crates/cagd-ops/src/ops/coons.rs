@@ -130,47 +130,36 @@ impl<T: Scalar> Operation<T> for Coons<T> {
             .collect();
         check_curves_work(cx, &parts)?;
         let curves = realise_all(&parts, false)?;
+        // x = rc + rd − rcd at every point (cagd::coons::coons_point_cost), each boundary at
+        // the cost of a point of it as the patch evaluates it (an evaluated curve: a look-up
+        // in its table).
+        let per_point = boundary_point_cost(&curves, &at_u, &at_v);
         let pair = self.pair(cx, &needed(&[&at_u, &at_v]))?;
         let patch = self.patch(curves, pair)?;
-        // x = rc + rd − rcd at every point (cagd::coons::coons_point_cost).
-        let bits = |xs: &[T]| cagd::cost::max_bits(xs);
-        let [c1, c2, d1, d2] = self.boundary_costs(&at_u, &at_v);
-        let d = self.dim()?;
-        let per_point = coons_point_cost([c1, c2, d1, d2], d, bits(&at_u), bits(&at_v));
         let points = evaluated_points((&us, &vs), pictures.then_some((&pus, &pvs)));
         cx.check_cost(Role::Grid, per_point.times(points), T::EXACT)?;
-        let mut report = Report::new();
-        report.push("u", Value::row(&us));
-        report.push("v", Value::row(&vs));
-        push_terms(
-            &mut report,
-            ["rc", "rd", "rcd"],
-            (self.steps, self.at.list, single),
-            (&us, &vs),
-            cx,
-            |u, v| {
-                let p = patch.parts(u, v);
-                [p.rc, p.rd, p.rcd, p.x]
-            },
-        )?;
         let mut answer = Answer {
-            report,
+            report: self.report(&patch, (&us, &vs), cx)?,
             drawing: None,
             mesh: None,
         };
         if pictures {
-            let grid = grid_f64(&patch.grid(&pus, &pvs));
-            if self.drawing {
-                let drawing = self.picture("Coons patch", grid.clone(), (&pus, &pvs))?;
-                let at = (us.as_slice(), vs.as_slice());
-                answer.drawing = Some(mark_result(drawing, &answer.report, at, single));
-            }
-            if self.mesh {
-                answer.mesh = Some(grid);
-            }
+            self.pictures(&mut answer, &patch, (&us, &vs), (&pus, &pvs))?;
         }
         Ok(answer)
     }
+}
+
+/// The work of one point `x = rc + rd − rcd` of the patch of the realised `curves`, each
+/// evaluated at parameters of the bits of `at_u` (`c1`, `c2`) or `at_v` (`d1`, `d2`).
+fn boundary_point_cost<T: Scalar>(
+    curves: &[Realised<'_, T>; 4],
+    at_u: &[T],
+    at_v: &[T],
+) -> cagd::cost::Cost {
+    let bits = [at_u, at_u, at_v, at_v].map(cagd::cost::max_bits);
+    let costs: [cagd::cost::Cost; 4] = std::array::from_fn(|k| curves[k].point_cost(bits[k]));
+    coons_point_cost(costs, curves[0].dim(), bits[0], bits[2])
 }
 
 impl<T: Scalar> Coons<T> {
@@ -187,32 +176,49 @@ impl<T: Scalar> Coons<T> {
         at.resolve((unit, unit), "the patch is extrapolated there", cx)
     }
 
-    /// The dimension of the boundary curves.
-    fn dim(&self) -> Result<usize> {
-        let dims: Vec<(Role, usize)> = BOUNDARY_ROLES
-            .into_iter()
-            .zip(&self.boundary)
-            .filter_map(|(r, c)| match c {
-                CurveArg::Curve(c) => Some((r, c.dim())),
-                CurveArg::Samples(s) => Some((r, s.dim())),
-                CurveArg::Evaluated(_) => None,
-            })
-            .collect();
-        Ok(dims.first().map_or(3, |d| d.1))
+    /// `u`, `v`, the parts `rc`, `rd`, `rcd` with steps, and the `result`.
+    fn report(
+        &self,
+        patch: &Patch<Realised<'_, T>, T>,
+        (us, vs): (&[T], &[T]),
+        cx: &Context,
+    ) -> Result<Report<T>> {
+        let mut report = Report::new();
+        report.push("u", Value::row(us));
+        report.push("v", Value::row(vs));
+        push_terms(
+            &mut report,
+            ["rc", "rd", "rcd"],
+            (self.steps, self.at.list, self.at.single()),
+            (us, vs),
+            cx,
+            |u, v| {
+                let p = patch.parts(u, v);
+                [p.rc, p.rd, p.rcd, p.x]
+            },
+        )?;
+        Ok(report)
     }
 
-    /// The cost of one evaluation of each boundary curve.
-    fn boundary_costs(&self, at_u: &[T], at_v: &[T]) -> [cagd::cost::Cost; 4] {
-        let ats = [at_u, at_u, at_v, at_v];
-        std::array::from_fn(|k| {
-            let bits = cagd::cost::max_bits(ats[k]);
-            match &self.boundary[k] {
-                CurveArg::Curve(c) => c.point_cost(bits),
-                CurveArg::Samples(s) => s.point_cost(bits),
-                // An evaluated curve is looked up in its table.
-                CurveArg::Evaluated(_) => cagd::cost::Cost::new(3, bits),
-            }
-        })
+    /// The picture (the evaluated points marked) and the mesh asked for, on the pictures'
+    /// grid `pus × pvs`.
+    fn pictures(
+        &self,
+        answer: &mut Answer<T>,
+        patch: &Patch<Realised<'_, T>, T>,
+        (us, vs): (&[T], &[T]),
+        (pus, pvs): (&[T], &[T]),
+    ) -> Result<()> {
+        let grid = grid_f64(&patch.grid(pus, pvs));
+        if self.drawing {
+            let drawing = self.picture("Coons patch", grid.clone(), (pus, pvs))?;
+            let single = self.at.single();
+            answer.drawing = Some(mark_result(drawing, &answer.report, (us, vs), single));
+        }
+        if self.mesh {
+            answer.mesh = Some(grid);
+        }
+        Ok(())
     }
 
     /// The blending pair (none: linear).
