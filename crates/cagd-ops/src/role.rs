@@ -135,76 +135,86 @@ pub enum Role {
     Result,
 }
 
-impl Role {
-    /// The role's key, as the page and Python name the argument (`"knots"`, `"c1v"`).
-    ///
-    /// ```
-    /// assert_eq!(cagd_ops::Role::Knots.key(), "knots");
-    /// assert_eq!(cagd_ops::Role::UCurves.key(), "u_curves");
-    /// ```
-    pub fn key(self) -> &'static str {
-        match self {
-            Role::Control => "control",
-            Role::Net => "net",
-            Role::Degree => "degree",
-            Role::Order => "order",
-            Role::Knots => "knots",
-            Role::UKnots => "u_knots",
-            Role::VKnots => "v_knots",
-            Role::Weights => "weights",
-            Role::Interval => "interval",
-            Role::T => "t",
-            Role::U => "u",
-            Role::V => "v",
-            Role::Grid => "grid",
-            Role::Samples => "n",
-            Role::DerivativeOrder => "derivative",
-            Role::DerivativeV => "dv",
-            Role::Nodes => "nodes",
-            Role::Points => "points",
-            Role::Ends => "ends",
-            Role::C1 => "c1",
-            Role::C2 => "c2",
-            Role::D1 => "d1",
-            Role::D2 => "d2",
-            Role::Boundary => "boundary",
-            Role::C1v => "c1v",
-            Role::C2v => "c2v",
-            Role::D1u => "d1u",
-            Role::D2u => "d2u",
-            Role::Twist => "twist",
-            Role::Twists => "twists",
-            Role::Blend => "blend",
-            Role::Mask => "mask",
-            Role::UCurves => "u_curves",
-            Role::VCurves => "v_curves",
-            Role::UNodes => "u_nodes",
-            Role::VNodes => "v_nodes",
-            Role::Network => "network",
-            Role::Cross => "cross",
-            Role::Du => "tangents_u",
-            Role::Dv => "tangents_v",
-            Role::Steps => "steps",
-            Role::First => "first",
-            Role::Second => "second",
-            Role::P0 => "p0",
-            Role::P1 => "p1",
-            Role::T0 => "t0",
-            Role::T1 => "t1",
-            Role::Hermite => "hermite",
-            Role::From => "from",
-            Role::To => "to",
-            Role::By => "by",
-            Role::At => "at",
-            Role::Radius => "radius",
-            Role::Center => "center",
-            Role::Angles => "angles",
-            Role::Tolerance => "tolerance",
-            Role::Index => "i",
-            Role::Spline => "spline",
-            Role::Factor => "k",
-            Role::Joint => "joint",
-            Role::Result => "result",
+/// Defines [`Role::key`] from one line per role (`Role => "key"`): a role without its key does
+/// not compile, as with a `match` written out.
+macro_rules! keys {
+    ($($role:ident => $key:literal,)*) => {
+        impl Role {
+            /// The role's key, as the page and Python name the argument (`"knots"`, `"c1v"`).
+            ///
+            /// ```
+            /// assert_eq!(cagd_ops::Role::Knots.key(), "knots");
+            /// assert_eq!(cagd_ops::Role::UCurves.key(), "u_curves");
+            /// ```
+            pub fn key(self) -> &'static str {
+                match self {
+                    $(Role::$role => $key,)*
+                }
+            }
         }
-    }
+    };
+}
+
+keys! {
+    Control => "control",
+    Net => "net",
+    Degree => "degree",
+    Order => "order",
+    Knots => "knots",
+    UKnots => "u_knots",
+    VKnots => "v_knots",
+    Weights => "weights",
+    Interval => "interval",
+    T => "t",
+    U => "u",
+    V => "v",
+    Grid => "grid",
+    Samples => "n",
+    DerivativeOrder => "derivative",
+    DerivativeV => "dv",
+    Nodes => "nodes",
+    Points => "points",
+    Ends => "ends",
+    C1 => "c1",
+    C2 => "c2",
+    D1 => "d1",
+    D2 => "d2",
+    Boundary => "boundary",
+    C1v => "c1v",
+    C2v => "c2v",
+    D1u => "d1u",
+    D2u => "d2u",
+    Twist => "twist",
+    Twists => "twists",
+    Blend => "blend",
+    Mask => "mask",
+    UCurves => "u_curves",
+    VCurves => "v_curves",
+    UNodes => "u_nodes",
+    VNodes => "v_nodes",
+    Network => "network",
+    Cross => "cross",
+    Du => "tangents_u",
+    Dv => "tangents_v",
+    Steps => "steps",
+    First => "first",
+    Second => "second",
+    P0 => "p0",
+    P1 => "p1",
+    T0 => "t0",
+    T1 => "t1",
+    Hermite => "hermite",
+    From => "from",
+    To => "to",
+    By => "by",
+    At => "at",
+    Radius => "radius",
+    Center => "center",
+    Angles => "angles",
+    Tolerance => "tolerance",
+    Index => "i",
+    Spline => "spline",
+    Factor => "k",
+    Joint => "joint",
+    Result => "result",
 }

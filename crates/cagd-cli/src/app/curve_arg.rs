@@ -325,31 +325,7 @@ fn library_call<T: LiteralScalar>(
     crate::slips::point_matrix_text(cx, argument, args[0], &points, how.rows);
     let points = orient(points, how.rows);
     let list = |cx: &mut Cx, k: usize| load_params::<T>(cx, argument, args[k]);
-    let degree = |knots: &[T]| {
-        knots
-            .len()
-            .checked_sub(points.ncols() + 1)
-            .ok_or_else(|| {
-                shape(
-                    argument,
-                    format!(
-                        "{} knots for {} control points",
-                        knots.len(),
-                        points.ncols()
-                    ),
-                    "at least columns(P) + 1 knots: the degree is numel(U) − columns(P) − 1",
-                )
-            })
-            .and_then(|p| {
-                // The one knot rule, in the words every command with knots uses.
-                cagd_ops::knots::check_knots(knots, p, points.ncols(), cagd_ops::knots::CURVE)
-                    .map_err(|e| CliError {
-                        argument: argument.to_string(),
-                        ..op_error(&CALL_NAMES, e)
-                    })?;
-                Ok(p)
-            })
-    };
+    let degree = |knots: &[T]| call_degree(argument, knots, points.ncols());
     let curve = match name {
         "bezier" => BezierCurve::new(points.clone()).map(LibraryCurve::Bezier),
         "bspline" => {
@@ -365,6 +341,23 @@ fn library_call<T: LiteralScalar>(
         }
     };
     curve.map(Some).map_err(lib(argument, form))
+}
+
+/// The degree `numel(U) − columns(P) − 1` of a call's `n` control points and `knots`, the
+/// knots checked by the one knot rule, in the words every command with knots uses.
+fn call_degree<T: LiteralScalar>(argument: &str, knots: &[T], n: usize) -> Result<usize, CliError> {
+    let p = knots.len().checked_sub(n + 1).ok_or_else(|| {
+        shape(
+            argument,
+            format!("{} knots for {n} control points", knots.len()),
+            "at least columns(P) + 1 knots: the degree is numel(U) − columns(P) − 1",
+        )
+    })?;
+    cagd_ops::knots::check_knots(knots, p, n, cagd_ops::knots::CURVE).map_err(|e| CliError {
+        argument: argument.to_string(),
+        ..op_error(&CALL_NAMES, e)
+    })?;
+    Ok(p)
 }
 
 /// `name(a, b, …)` split at its top-level commas (commas inside brackets and parentheses

@@ -9,6 +9,7 @@ mod course;
 mod curvature;
 mod error_catalogue;
 mod file_rules;
+mod function_length;
 mod hostile;
 mod lang;
 mod limits;

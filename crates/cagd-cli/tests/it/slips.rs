@@ -1255,7 +1255,8 @@ fn basis_plots_name_their_axes_and_fit_their_data() {
     // (command, its picture, the y axis's name, the knot range t covers)
     let basis = svg("basis.svg");
     let bernstein = svg("bernstein.svg");
-    let cases: [(Vec<&str>, &str, &str, (f64, f64)); 2] = [
+    type Case<'a> = (Vec<&'a str>, &'a str, &'a str, (f64, f64));
+    let cases: [Case; 2] = [
         (
             vec![
                 "bspline-basis",

@@ -24,6 +24,29 @@ pub fn curve_scheme<T: Scalar>(
     digits: usize,
     marks: Marks,
 ) -> Value<T> {
+    let text = triangle(scheme, &cells(scheme, digits, marks), digits, marks);
+    let levels = scheme
+        .levels()
+        .iter()
+        .enumerate()
+        .map(|(r, m)| Item {
+            name: format!("r{r}"),
+            value: Value::Matrix(m.clone()),
+        })
+        .collect();
+    Value::Shown {
+        text,
+        data: Box::new(Value::Record(levels)),
+    }
+}
+
+/// The points of the scheme as text, level by level (`cells[r][i]` is `b_i^r`), each with its
+/// mark.
+fn cells<T: Scalar>(
+    scheme: &DeCasteljauScheme<T>,
+    digits: usize,
+    marks: Marks,
+) -> Vec<Vec<String>> {
     let n = scheme.degree();
     let point = |r: usize, i: usize| {
         let level = &scheme.levels()[r];
@@ -43,9 +66,20 @@ pub fn curve_scheme<T: Scalar>(
         };
         format!("{tag}({})", coords.join(", "))
     };
-    let cells: Vec<Vec<String>> = (0..=n)
+    (0..=n)
         .map(|r| (0..=n - r).map(|i| point(r, i)).collect())
-        .collect();
+        .collect()
+}
+
+/// The triangle of the scheme's `cells`: row `k` lists `b_k^0, b_{k−1}^1, …, b_0^k`, each
+/// column as wide as its widest cell, under a title and the column heads `r = …`.
+fn triangle<T: Scalar>(
+    scheme: &DeCasteljauScheme<T>,
+    cells: &[Vec<String>],
+    digits: usize,
+    marks: Marks,
+) -> String {
+    let n = scheme.degree();
     let widths: Vec<usize> = (0..=n)
         .map(|r| {
             cells[r]
@@ -77,19 +111,7 @@ pub fn curve_scheme<T: Scalar>(
         text.push_str(row.join("   ").trim_end());
         text.push('\n');
     }
-    let levels = scheme
-        .levels()
-        .iter()
-        .enumerate()
-        .map(|(r, m)| Item {
-            name: format!("r{r}"),
-            value: Value::Matrix(m.clone()),
-        })
-        .collect();
-    Value::Shown {
-        text,
-        data: Box::new(Value::Record(levels)),
-    }
+    text
 }
 
 /// A patch scheme: its own text (thesis §3.2) and its nets, `level_0 …` as grids.

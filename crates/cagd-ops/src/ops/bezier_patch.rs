@@ -87,73 +87,99 @@ impl<T: Scalar> Operation<T> for BezierPatchPoints<T> {
         } else {
             (Vec::new(), Vec::new())
         };
-        let net = patch.to_grid();
-        let coefficients = max_bits(net.iter());
-        let per_point = |us: &[T], vs: &[T], steps: bool| {
-            let (u_bits, v_bits) = (max_bits(us), max_bits(vs));
-            let grid = patch.grid_cost(u_bits, v_bits, coefficients);
-            let scheme = patch.scheme_cost(u_bits, v_bits, coefficients);
-            let per = if steps {
-                grid.and(scheme.times(STEPS_FACTOR))
-            } else {
-                grid
-            };
-            per.times(evaluated_points((us, vs), None))
-        };
-        let cost: Cost = per_point(&us, &vs, self.steps).and(per_point(&pus, &pvs, false));
+        let cost = cost(&patch, (&us, &vs), self.steps).and(cost(&patch, (&pus, &pvs), false));
         cx.check_cost(Role::Grid, cost, T::EXACT)?;
         cx.check_interrupt()?;
         let grid = patch
             .try_eval_grid(&us, &vs)
             .map_err(lib(Role::Grid, "finite parameter values"))?;
-        let mut report = Report::new();
-        if self.steps {
-            self.push_schemes(&mut report, &patch, (&us, &vs), single, cx)?;
-        }
-        if self.du > 0 || self.dv > 0 {
-            report.push("net", Value::Grid(net.clone()));
-        }
-        report.push("u", Value::row(&us));
-        report.push("v", Value::row(&vs));
-        if single && !self.at.list {
-            let point = patch.eval(us[0].clone(), vs[0].clone());
-            report.push("result", Value::column(&point));
-        } else {
-            push_surface(
-                &mut report,
-                "result",
-                (&us, &vs),
-                grid.clone(),
-                self.at.list,
-            );
-        }
+        let report = self.report(&patch, (&us, &vs), &grid, cx)?;
         let mut answer = Answer {
             report,
             drawing: None,
             mesh: None,
         };
         if pictures {
-            let shown = if single {
-                grid_f64(
-                    &patch
-                        .try_eval_grid(&pus, &pvs)
-                        .map_err(lib(Role::Grid, "a patch"))?,
-                )
-            } else {
-                grid_f64(&grid)
-            };
-            if self.drawing {
-                answer.drawing = Some(self.picture(shown.clone(), &net, &answer.report, single));
-            }
-            if self.mesh {
-                answer.mesh = Some(shown);
-            }
+            self.pictures(&mut answer, &patch, &grid, (&pus, &pvs))?;
         }
         Ok(answer)
     }
 }
 
+/// The work of `patch` at the grid `us × vs`, with its schemes if `steps`.
+fn cost<T: Scalar>(patch: &BezierPatch<T>, (us, vs): (&[T], &[T]), steps: bool) -> Cost {
+    let coefficients = max_bits(patch.to_grid().iter());
+    let (u_bits, v_bits) = (max_bits(us), max_bits(vs));
+    let grid = patch.grid_cost(u_bits, v_bits, coefficients);
+    let per = if steps {
+        grid.and(
+            patch
+                .scheme_cost(u_bits, v_bits, coefficients)
+                .times(STEPS_FACTOR),
+        )
+    } else {
+        grid
+    };
+    per.times(evaluated_points((us, vs), None))
+}
+
 impl<T: Scalar> BezierPatchPoints<T> {
+    /// The schemes with steps, a derivative's net, `u`, `v` and the `result` on `grid`.
+    fn report(
+        &self,
+        patch: &BezierPatch<T>,
+        (us, vs): (&[T], &[T]),
+        grid: &PointGrid<T>,
+        cx: &Context,
+    ) -> Result<Report<T>> {
+        let single = self.at.single();
+        let mut report = Report::new();
+        if self.steps {
+            self.push_schemes(&mut report, patch, (us, vs), single, cx)?;
+        }
+        if self.du > 0 || self.dv > 0 {
+            report.push("net", Value::Grid(patch.to_grid()));
+        }
+        report.push("u", Value::row(us));
+        report.push("v", Value::row(vs));
+        if single && !self.at.list {
+            let point = patch.eval(us[0].clone(), vs[0].clone());
+            report.push("result", Value::column(&point));
+        } else {
+            push_surface(&mut report, "result", (us, vs), grid.clone(), self.at.list);
+        }
+        Ok(report)
+    }
+
+    /// The picture and the mesh asked for: the patch on `grid`, or for a single point on the
+    /// picture's own grid `pus × pvs`.
+    fn pictures(
+        &self,
+        answer: &mut Answer<T>,
+        patch: &BezierPatch<T>,
+        grid: &PointGrid<T>,
+        (pus, pvs): (&[T], &[T]),
+    ) -> Result<()> {
+        let single = self.at.single();
+        let shown = if single {
+            grid_f64(
+                &patch
+                    .try_eval_grid(pus, pvs)
+                    .map_err(lib(Role::Grid, "a patch"))?,
+            )
+        } else {
+            grid_f64(grid)
+        };
+        if self.drawing {
+            let net = patch.to_grid();
+            answer.drawing = Some(self.picture(shown.clone(), &net, &answer.report, single));
+        }
+        if self.mesh {
+            answer.mesh = Some(shown);
+        }
+        Ok(())
+    }
+
     /// The patch of the net, or its partial derivative.
     fn patch(&self) -> Result<BezierPatch<T>> {
         let patch = BezierPatch::from_grid(&self.net).map_err(lib(Role::Net, NET_FORM))?;

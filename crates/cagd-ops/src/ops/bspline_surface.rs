@@ -165,29 +165,7 @@ pub(crate) fn answer<T: Scalar>(
     let points = evaluated_points((&us, &vs), pictures.then_some((&pus, &pvs)));
     cx.check_cost(Role::Grid, per.times(points), T::EXACT)?;
     let grid = eval_grid(s.surface, &us, &vs)?;
-    let mut report = Report::new();
-    if args.steps {
-        let ((p, q), [ku, kv], (nu, nv, _)) = (s.degrees, s.knots, args.net.dim());
-        report.push("knots_u", Value::row(ku));
-        report.push("knots_v", Value::row(kv));
-        report.push("basis_u", basis(p, nu, ku, &us)?);
-        report.push("basis_v", basis(q, nv, kv, &vs)?);
-    }
-    report.push("u", Value::row(&us));
-    report.push("v", Value::row(&vs));
-    if single && !args.at.list {
-        let dim = grid.dim().2;
-        let point = DMatrix::from_fn(dim, 1, |k, _| grid[[0, 0, k]].clone());
-        report.push("result", Value::Matrix(point));
-    } else {
-        push_surface(
-            &mut report,
-            "result",
-            (&us, &vs),
-            grid.clone(),
-            args.at.list,
-        );
-    }
+    let report = report(args, &s, (&us, &vs), &grid)?;
     let mut answer = Answer {
         report,
         drawing: None,
@@ -212,6 +190,33 @@ pub(crate) fn answer<T: Scalar>(
         }
     }
     Ok(answer)
+}
+
+/// The knots and basis values with steps, `u`, `v` and the `result` on `grid`.
+fn report<T: Scalar>(
+    args: &BSplineSurface<T>,
+    s: &Evaluated<'_, T>,
+    (us, vs): (&[T], &[T]),
+    grid: &PointGrid<T>,
+) -> Result<Report<T>> {
+    let mut report = Report::new();
+    if args.steps {
+        let ((p, q), [ku, kv], (nu, nv, _)) = (s.degrees, s.knots, args.net.dim());
+        report.push("knots_u", Value::row(ku));
+        report.push("knots_v", Value::row(kv));
+        report.push("basis_u", basis(p, nu, ku, us)?);
+        report.push("basis_v", basis(q, nv, kv, vs)?);
+    }
+    report.push("u", Value::row(us));
+    report.push("v", Value::row(vs));
+    if args.at.single() && !args.at.list {
+        let dim = grid.dim().2;
+        let point = DMatrix::from_fn(dim, 1, |k, _| grid[[0, 0, k]].clone());
+        report.push("result", Value::Matrix(point));
+    } else {
+        push_surface(&mut report, "result", (us, vs), grid.clone(), args.at.list);
+    }
+    Ok(report)
 }
 
 /// The surface on the grid `us × vs` (parameters in the domain).

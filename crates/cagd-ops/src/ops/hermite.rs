@@ -96,17 +96,10 @@ impl<T: Scalar> Operation<T> for Hermite<T> {
         } else {
             Vec::new()
         };
-        let bezier_bits = max_bits(bezier.control().iter());
-        let at = |params: &[T], steps: bool| {
-            let mut per = h.eval_cost(max_bits(params), bezier_bits);
-            if steps {
-                per = per.and(basis_cost(max_bits(params)));
-            }
-            per.times(params.len() as u128)
-        };
+        let cost = |params: &[T], steps: bool| cost(&h, &bezier, params, steps);
         cx.check_cost(
             Role::T,
-            at(&ts, self.steps).and(at(&dense, false)),
+            cost(&ts, self.steps).and(cost(&dense, false)),
             T::EXACT,
         )?;
         let mut report = Report::new();
@@ -136,6 +129,21 @@ impl<T: Scalar> Operation<T> for Hermite<T> {
             mesh: None,
         })
     }
+}
+
+/// The work of the cubic `h` (whose Bézier form is `bezier`) at `params`, with the Hermite
+/// basis values if `steps`.
+fn cost<T: Scalar>(
+    h: &HermiteCubic<T>,
+    bezier: &cagd::bezier::BezierCurve<T>,
+    params: &[T],
+    steps: bool,
+) -> cagd::cost::Cost {
+    let mut per = h.eval_cost(max_bits(params), max_bits(bezier.control().iter()));
+    if steps {
+        per = per.and(basis_cost(max_bits(params)));
+    }
+    per.times(params.len() as u128)
 }
 
 /// A row or a column as a vector.
