@@ -127,3 +127,87 @@ fn a_singular_point_and_bad_curves_are_refused_naming_the_argument() {
     assert_eq!(e.argument, "CURVE", "{e}");
     assert!(e.problem.contains("4 coordinates"), "{e}");
 }
+
+/// The columns `k` of a JSON matrix as doubles.
+fn column(v: &J, k: usize) -> Vec<f64> {
+    v.as_array()
+        .unwrap()
+        .iter()
+        .map(|r| r[k].as_f64().unwrap())
+        .collect()
+}
+
+/// `v / |v|`.
+fn unit(v: [f64; 3]) -> Vec<f64> {
+    let n = v.iter().map(|x| x * x).sum::<f64>().sqrt();
+    v.iter().map(|x| x / n).collect()
+}
+
+fn close(got: &[f64], want: &[f64]) -> bool {
+    got.len() == want.len() && got.iter().zip(want).all(|(a, b)| (a - b).abs() < 1e-14)
+}
+
+#[test]
+fn a_space_b_spline_with_interior_knots_at_a_parameter_of_its_own_domain() {
+    // The quadratic B-spline of (0,0,0), (1,1,0), (2,0,1), (3,1,1), (4,0,0) on the knots
+    // [0 0 0 1 2 3 3 3] (domain [0, 3]; t is not mapped onto [0, 1]). On the span [1, 2) it is
+    // one quadratic; Cox–de Boor gives x(1) = (3/2, 1/2, 1/2), x(3/2) = (2, 1/4, 7/8),
+    // x(2) = (5/2, 1/2, 1), so with h = 1/2: x′(3/2) = (x(2) − x(1))/(2h) = (1, 0, 1/2) and
+    // x″ = (x(1) − 2 x(3/2) + x(2))/h² = (0, 2, −1). Then x′ × x″ = (−1, 1, 2), |x′|² = 5/4 and
+    // κ² = 6/(5/4)³ = 384/125; T = (2, 0, 1)/√5, B = (−1, 1, 2)/√6, N = B × T = (1, 5, −2)/√30.
+    let curve = "bspline([0 1 2 3 4; 0 1 0 1 0; 0 0 1 1 0], [0 0 0 1 2 3 3 3])";
+    let v = json(&[curve, "--t", "1.5", "--steps", "--exact"]);
+    assert_eq!(row(&v["result"]), ["384/125"]);
+    let exact_column = |name: &str| -> Vec<String> {
+        v[name]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|r| r[0].as_str().unwrap().to_string())
+            .collect()
+    };
+    assert_eq!(exact_column("d1"), ["1", "0", "1/2"]);
+    assert_eq!(exact_column("d2"), ["0", "2", "-1"]);
+    let v = json(&[curve, "--t", "1.5"]);
+    let kappa = v["result"][0][0].as_f64().unwrap();
+    assert!((kappa - (384.0f64 / 125.0).sqrt()).abs() < 1e-14, "{kappa}");
+    assert!(close(&column(&v["tangent"], 0), &unit([2.0, 0.0, 1.0])));
+    assert!(close(&column(&v["binormal"], 0), &unit([-1.0, 1.0, 2.0])));
+    assert!(close(&column(&v["normal"], 0), &unit([1.0, 5.0, -2.0])));
+}
+
+#[test]
+fn a_nurbs_half_circle_of_two_arcs_has_kappa_one_half_and_normals_to_the_centre() {
+    // Radius 2, two rational quadratic arcs meeting at a double knot: (2,0), (2,2), (0,2) with
+    // weights 1, 1, 2 and (0,2), (−2,2), (−2,0) with weights 2, 1, 1 (w1²/(w0 w2) = 1/2: arcs
+    // of a circle). κ = 1/2 everywhere, κ² = 1/4. At t = 1/2 the rational Bézier form gives
+    // ((1/4·2 + 1/2·2)/(5/4), (1/2·2)/(5/4)) = (6/5, 8/5), at t = 3/2 (−6/5, 8/5): the normal
+    // is −x/2 there, the tangent (counter-clockwise) the normal turned right, and κ > 0.
+    let curve = "nurbs([2 2 0 -2 -2; 0 2 2 2 0], [1 1 2 1 1], [0 0 0 1 1 2 2 2])";
+    let v = json(&[curve, "--t", "[0 1/2 1 3/2 2]", "--exact"]);
+    assert_eq!(row(&v["result"]), ["1/4"; 5]);
+    let v = json(&[curve, "--t", "[0.5 1.5]"]);
+    for k in 0..2 {
+        assert!((v["result"][0][k].as_f64().unwrap() - 0.5).abs() < 1e-14);
+    }
+    assert!(close(&column(&v["normal"], 0), &[-0.6, -0.8]));
+    assert!(close(&column(&v["tangent"], 0), &[-0.8, 0.6]));
+    assert!(close(&column(&v["normal"], 1), &[0.6, -0.8]));
+    assert!(close(&column(&v["tangent"], 1), &[-0.8, -0.6]));
+}
+
+#[test]
+fn the_twisted_cubic_as_a_bezier_curve_at_one_half() {
+    // (t, t², t³): x′(1/2) = (1, 1, 3/4), x″(1/2) = (0, 2, 3); x′ × x″ = (3/2, −3, 2) of
+    // squared length 61/4, |x′|² = 41/16: κ² = (61/4)/(41/16)³ = 62464/68921.
+    // T = (4, 4, 3)/√41, B = (3, −6, 4)/√61, N = B × T = (−34, 7, 36)/√2501.
+    let curve = "[0 1/3 2/3 1; 0 0 1/3 1; 0 0 0 1]";
+    let v = json(&[curve, "--t", "0.5", "--exact"]);
+    assert_eq!(row(&v["result"]), ["62464/68921"]);
+    let v = json(&[curve, "--t", "0.5"]);
+    let kappa = v["result"][0][0].as_f64().unwrap();
+    assert!((kappa - (62464.0f64 / 68921.0).sqrt()).abs() < 1e-14);
+    assert!(close(&column(&v["tangent"], 0), &unit([4.0, 4.0, 3.0])));
+    assert!(close(&column(&v["binormal"], 0), &unit([3.0, -6.0, 4.0])));
+    assert!(close(&column(&v["normal"], 0), &unit([-34.0, 7.0, 36.0])));
+}
