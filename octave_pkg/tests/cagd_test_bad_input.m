@@ -76,7 +76,7 @@ function cagd_test_bad_input ()
     "NURBS outside knots",      @() cagd_nrbeval (crv, 1.5),                "cagd:domain", "u: 1.5 is outside the knots [0, 1]"
     "span outside knots",       @() cagd_findspan (3, 2, -0.1, U),          "cagd:value", "u: a value is outside the knots"
     "B-spline outside domain",  @() cagd_bspline (2, [0 1 2], [], 2),       "cagd:domain", "outside the domain"
-    "decreasing knots",         @() cagd_bspline (1, [0 1], [0 1 0 1], 0.5), "cagd:knots", "knot 2 (0) is below the knot before it (1)"
+    "decreasing knots",         @() cagd_bspline (1, [0 1], [0 1 0 1], 0.5), "cagd:knots", "knot 3 (0) is below the knot before it (1)"
     "knot count",               @() cagd_bspline (2, [0 1 2], [0 0 0 1 1 1 1], 0.5), "cagd:knots", "expected 6 knots"
     "span beyond the knots",    @() cagd_findspan (3, 2, 0.5, [0 0 1 1]),   "cagd:shape", "index 5 is out of bound 4"
     "negative weight",          @() cagd_nurbs (2, [0 1 2], [1 -1 1], [], 0.5), "cagd:weights", "weight 1 is -1; weights must be positive"

@@ -98,7 +98,7 @@ def test_error_names_its_argument():
     with pytest.raises(cagd.CagdError) as info:
         cagd.BSplineCurve(1, [0, 1, 0.5, 2], [[0], [1]])
     assert info.value.argument == "knots"
-    assert str(info.value).startswith("knots: knot vector: knot 2 (0.5) is below")
+    assert str(info.value).startswith("knots: knot vector: knot 3 (0.5) is below")
     assert "non-decreasing" in str(info.value)
 
 

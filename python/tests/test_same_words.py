@@ -21,7 +21,7 @@ nan, inf = float("nan"), float("inf")
 
 KNOTS_FORM = (
     "expected n + p + 1 non-decreasing knots for n control points of degree p (n ≥ p + 1), "
-    "with u_p < u_n"
+    "with u_(p+1) < u_(n+1)"
 )
 FINITE = "expected finite numbers"
 WEIGHTS_FORM = "expected one positive weight per control point"
@@ -53,7 +53,7 @@ ROWS = [
         lambda: cagd.BSplineCurve(2, [0, 0, 0.5, 0.2, 1, 1, 1], four),
         "DecreasingKnots",
         "knots",
-        "knots: knot vector: knot 3 (0.2) is below the knot before it (0.5); knots must be "
+        "knots: knot vector: knot 4 (0.2) is below the knot before it (0.5); knots must be "
         f"non-decreasing; {KNOTS_FORM}",
     ),
     (
@@ -68,7 +68,7 @@ ROWS = [
         lambda: cagd.BSplineCurve(2, [0, 0, 1, 1, 1, 2, 2], four),
         "EmptyInterval",
         "knots",
-        f"knots: knot domain [u_p, u_n]: interval [1, 1] is empty (expected a < b); {KNOTS_FORM}",
+        f"knots: knot domain [u_(p+1), u_(n+1)]: interval [1, 1] is empty (expected a < b); {KNOTS_FORM}",
     ),
     (
         "too few control points for the degree",
