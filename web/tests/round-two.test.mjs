@@ -254,7 +254,9 @@ test("D10: the Gordon view shows no old numbers or picture after an error", asyn
   await page.fill("#gordon-ucurves", "[0;v;v]\n[0.5;v;0.25+v+]\n[1;v;v]");
   await page.click("#gordon-form button[type=submit]");
   await page.locator("#gordon-error:not([hidden])").waitFor();
-  assert.match(await text(page, "#gordon-error"), /^cagd: error: --u-curve/);
+  // Named by the view's own field (the command line calls it --u-curve).
+  assert.match(await text(page, "#gordon-error"), /^cagd: error: Curves g\(u_i, v\) in v, one per line: column \d+: /);
+  assert.doesNotMatch(await text(page, "#gordon-error"), /--/);
   assert.equal(await text(page, "#gordon-steps"), "");
   assert.equal(await page.evaluate(() => window.cagdApp.views.gordon.grids), null);
   assert.equal(await page.evaluate(() => window.cagdApp.views.gordon.view.scene.surfaces.length), 0);
