@@ -111,7 +111,7 @@ test("dragging a Bézier control point moves the curve and changes the scheme", 
   await page.fill("#bezier-t", "0.3");
   assert.equal(await page.inputValue("#bezier-t-text"), "0.3");
   assert.match(await scheme.textContent(), /t = 3\/10/);
-  await shot(page, "view-bezier");
+  await shot(page, "view-bezier-drag");
   // Reloading the link restores the state.
   const hash = await page.evaluate(() => location.hash);
   const again = await openPage(chrome.context, server.url, hash);

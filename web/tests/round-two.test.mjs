@@ -395,7 +395,7 @@ test("the seven homework tasks, each in a view and by a form: exact, with steps 
     const all = `${await text(p, `#${name}-answer`)}\n${await text(p, `#${name}-steps`)}`;
     for (const e of expect) assert.match(all, e, `${name}:\n${all}`);
     assert.ok((await p.locator(picture).count()) > 0, `${name}: ${picture}`);
-    await shot(p, `view-${name}`);
+    await shot(p, `task-view-${name}`);
     assert.deepEqual(p.errors, []);
     await p.close();
   };
