@@ -297,6 +297,10 @@ fn errors_caused_by_decimal_commas_say_so() {
             "{args:?}: {e}"
         );
     }
+}
+
+#[test]
+fn the_same_lists_with_decimal_points_are_silent() {
     // With decimal points: silent (five points for the nine knots of a cubic), and the NURBS
     // quadratic on [0 0 0 1 1 1] with weights 1, 1/2, 1 at t = 1/2: the weighted Bernstein
     // values 1/4·1, 1/2·1/2, 1/4·1 sum to 3/4, so x = (0 + 1/4 + 2/4)/(3/4) = 1 and
