@@ -3,6 +3,7 @@
 // j = 0 … p, exact with "exact fractions" — from the command line's own cagd bspline-basis
 // --steps. The cubic basis of [0 0 0 0 1 2 3 3 3 3] at t = 3/2 is 1/32, 15/32, 15/32, 1/32.
 
+import { viewMessage } from "./fields.js";
 import { t } from "./i18n.js";
 import { dragText, num, rowLiteral, splitRow, toNumber, valueOf } from "./numbers.js";
 import { Plane } from "./plane.js";
@@ -106,7 +107,7 @@ export default class BasisView {
     const text = this.app.runHere(this.app.localized(argv));
     this.parts.steps.textContent = text.ok ? text.stdout : "";
     this.parts.cmd.textContent = join(this.app.localized(argv));
-    showError(this.parts.error, text.ok ? null : text.error);
+    showError(this.parts.error, text.ok ? null : viewMessage("basis", text.error));
     const answer = text.ok ? this.app.data(argv) : null;
     this.data = answer?.ok ? answer.data : null;
     const values = this.data ? [this.data.result].flat(2) : [];

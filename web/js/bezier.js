@@ -6,6 +6,7 @@
 // language); the picture's curve is sampled by the library (bezier_view), its construction
 // drawn from the command's answer.
 
+import { viewMessage } from "./fields.js";
 import { t } from "./i18n.js";
 import { dragText, num, pointsLiteral, toNumber, valueOf } from "./numbers.js";
 import { Plane } from "./plane.js";
@@ -200,7 +201,7 @@ export class BezierFamily {
     const text = this.app.runHere(this.app.localized(argv));
     this.parts.steps.textContent = text.ok ? text.stdout : "";
     this.parts.cmd.textContent = join(this.app.localized(argv));
-    showError(this.parts.error, text.ok ? null : text.error);
+    showError(this.parts.error, text.ok ? null : viewMessage(this.name, text.error));
     const answer = text.ok ? this.app.data(argv) : null;
     this.data = answer?.ok ? answer.data : null;
     this.parts.answer.textContent = this.data ? this.summary(this.data) : "";

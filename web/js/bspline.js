@@ -7,6 +7,7 @@
 // bspline / nurbs / insert-knot, in the page's language); the picture's curve and basis are
 // sampled by the library (bspline_view, nurbs_view) and the point at t is the command's answer.
 
+import { viewMessage } from "./fields.js";
 import { t } from "./i18n.js";
 import { dragText, num, pointsLiteral, rowLiteral, splitRow, toNumber, uniformKnots, valueOf } from "./numbers.js";
 import { Plane } from "./plane.js";
@@ -303,7 +304,7 @@ export class SplineFamily {
     const text = this.app.runHere(this.app.localized(argv));
     this.parts.steps.textContent = text.ok ? text.stdout : "";
     this.parts.cmd.textContent = join(this.app.localized(argv));
-    showError(this.parts.error, text.ok ? null : text.error);
+    showError(this.parts.error, text.ok ? null : viewMessage(this.name, text.error));
     const answer = text.ok ? this.app.data(argv) : null;
     this.data = answer?.ok ? answer.data : null;
     this.parts.answer.textContent = this.data ? this.summary(this.data) : "";

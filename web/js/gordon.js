@@ -4,6 +4,7 @@
 // the worker (a network may be large).
 
 import { explainInto } from "./explain.js";
+import { viewMessage } from "./fields.js";
 import { t } from "./i18n.js";
 import { join, split } from "./shell.js";
 import { View3D } from "./view3d.js";
@@ -51,7 +52,7 @@ export default class GordonView {
   fail(answer) {
     const err = $("gordon-error");
     err.hidden = false;
-    err.textContent = answer.error;
+    err.textContent = viewMessage("gordon", answer.error);
     this.grids = null;
     this.network = [];
     $("gordon-steps").textContent = "";

@@ -66,14 +66,19 @@ const app = {
   firstAnswer: null,
   link,
   t,
-  /** Keeps the page's state in its address without a new history entry (drags, edits). */
+  /**
+   * Keeps the page's state in its address without a new history entry (drags, edits). Only
+   * the view shown writes it: a view built or updated while another is shown leaves it alone.
+   */
   setHash(state) {
+    if (state.view && state.view !== app.current) return;
     const h = link({ ...state, view: state.view ?? app.current });
     if (h !== location.hash) history.replaceState(null, "", h);
     routed = location.hash;
   },
   /** A new history entry for the state (a view opened, a command run): Back returns. */
   pushHash(state) {
+    if (state.view && state.view !== app.current) return;
     const h = link({ ...state, view: state.view ?? app.current });
     if (h !== location.hash) history.pushState(null, "", h);
     routed = location.hash;
@@ -103,12 +108,18 @@ const app = {
     if (!answer.ok) return answer;
     return { ok: true, data: JSON.parse(answer.stdout), warnings: answer.warnings };
   },
-  /** Called when a result is shown: the first one gives the page's answer time. */
+  /**
+   * Called when a result is shown: the first one gives the page's answer time, counted from
+   * the start of the navigation (performance.now()'s origin, the navigation entry's
+   * startTime 0), and, for the breakdown, from the start of this module.
+   */
   answered() {
     if (app.firstAnswer === null) {
-      app.firstAnswer = performance.now() - started;
+      app.firstAnswer = performance.now();
       document.documentElement.dataset.firstAnswerMs = app.firstAnswer.toFixed(1);
+      document.documentElement.dataset.scriptAnswerMs = (app.firstAnswer - started).toFixed(1);
       registerServiceWorker();
+      warmViews();
     }
   },
   /** The value of an Octave matrix literal, read by the library: rows of numbers, or null. */
@@ -132,14 +143,51 @@ const app = {
 };
 globalThis.cagdApp = app;
 
-async function viewOf(name) {
-  if (!app.views[name]) {
-    const module = await viewModules[name]();
-    app.views[name] = new module.default(app);
-  }
-  return app.views[name];
+/** Views being built: one construction per view, however often it is asked for meanwhile. */
+const building = {};
+
+/**
+ * The view `name`, built when first asked for: its module is imported (the service worker has
+ * it offline) and constructed once. Meanwhile its panel says so; a module that cannot be loaded
+ * leaves a message in the panel (asked again the next time the view is opened).
+ */
+function viewOf(name) {
+  if (app.views[name]) return Promise.resolve(app.views[name]);
+  if (building[name]) return building[name];
+  const panel = $(`view-${name}`);
+  // Panels built by their module are empty until then; the Coons and Gordon panels have markup.
+  const empty = !panel.querySelector(":scope > :not(.view-message)");
+  placeholder(panel, empty ? { role: "status", class: "loading" } : null, t("viewLoading"));
+  building[name] = viewModules[name]()
+    .then((module) => {
+      placeholder(panel, null);
+      app.views[name] = new module.default(app);
+      return app.views[name];
+    })
+    .catch((e) => {
+      placeholder(panel, { role: "alert", class: "error view-failed" }, t("viewFailed", { reason: e?.message ?? String(e) }));
+      return null;
+    })
+    .finally(() => delete building[name]);
+  return building[name];
 }
 
+/** The page's message at the top of a view's panel (`attrs` null: none), replacing the last. */
+function placeholder(panel, attrs, text = "") {
+  panel.querySelector(":scope > .view-message")?.remove();
+  if (!attrs) return;
+  const e = document.createElement("p");
+  for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
+  e.classList.add("view-message");
+  e.textContent = text;
+  panel.prepend(e);
+}
+
+/**
+ * Shows view `name` (its tab selected, its panel visible) and answers the view once it is
+ * built, or null when the user has moved on meanwhile (a newer show) or the view could not be
+ * loaded: a view no longer shown is neither activated nor loaded, and writes no link.
+ */
 async function show(name, state = {}) {
   if (!(name in viewModules) && name !== "command") name = "command";
   app.current = name;
@@ -151,6 +199,7 @@ async function show(name, state = {}) {
     if (on) tab.scrollIntoView?.({ block: "nearest", inline: "nearest" });
   }
   const view = name === "command" ? app.views.command : await viewOf(name);
+  if (!view || app.current !== name) return null;
   if (state.cmd && view.load) view.load(state.cmd);
   else if (view.activate) view.activate();
   return view;
@@ -167,7 +216,7 @@ async function route() {
     else app.views.command.runForm(false);
   } else {
     const view = await show(name, { cmd: h.cmd });
-    if (!h.cmd && view.state) app.setHash(view.state());
+    if (view && !h.cmd && view.state) app.setHash(view.state());
   }
 }
 
@@ -178,6 +227,8 @@ async function openTab(name) {
     routed = location.hash;
   }
   const view = await show(name);
+  // Another tab chosen meanwhile (fast arrow keys): that one writes the link.
+  if (!view) return;
   if (name === "command") app.setHash({ view: "command", ...app.views.command.linkState() });
   else app.setHash(view.state ? view.state() : { view: name });
 }
@@ -237,6 +288,19 @@ async function compile() {
   if (WebAssembly.compileStreaming && response.headers.get("content-type")?.startsWith("application/wasm"))
     return WebAssembly.compileStreaming(response);
   return WebAssembly.compile(await response.arrayBuffer());
+}
+
+/**
+ * The views' modules, fetched and evaluated once the first answer is on the screen (when the
+ * browser is idle), so that a tab opens at once without slowing the first answer (preloaded
+ * with the page, they compete with the page's own modules and the .wasm for the network and
+ * the parser). A module that fails here is asked for again when its tab is opened.
+ */
+function warmViews() {
+  const idle = globalThis.requestIdleCallback ?? ((f) => setTimeout(f, 200));
+  idle(() => {
+    for (const load of Object.values(viewModules)) load().catch(() => {});
+  });
 }
 
 function registerServiceWorker() {

@@ -17,6 +17,12 @@ export function el(name, attrs = {}, parent = null) {
   return e;
 }
 
+/** The centre attributes of a circle at (x, y); a point not known yet (NaN) is not shown. */
+function at(x, y) {
+  const known = Number.isFinite(x) && Number.isFinite(y);
+  return known ? { cx: x, cy: -y, display: "inline" } : { cx: 0, cy: 0, display: "none" };
+}
+
 export class Plane {
   /**
    * @param {SVGSVGElement} svg
@@ -72,12 +78,13 @@ export class Plane {
   /** A polyline through flat points (x0, y0, x1, y1, … with `dim` numbers per point). */
   polyline(layerName, flat, dim, attrs = {}) {
     const pts = [];
-    for (let i = 0; i + dim <= flat.length; i += dim) pts.push(`${flat[i]},${-flat[i + 1]}`);
+    // A point not known yet (a coordinate being typed) is left out, not drawn at NaN.
+    for (let i = 0; i + dim <= flat.length; i += dim) if (Number.isFinite(flat[i]) && Number.isFinite(flat[i + 1])) pts.push(`${flat[i]},${-flat[i + 1]}`);
     return el("polyline", { points: pts.join(" "), fill: "none", "vector-effect": "non-scaling-stroke", ...attrs }, this.layer(layerName));
   }
 
   dot(layerName, x, y, r, attrs = {}) {
-    return el("circle", { cx: x, cy: -y, r: r * this.unit * 900 * 0.012, "vector-effect": "non-scaling-stroke", ...attrs }, this.layer(layerName));
+    return el("circle", { ...at(x, y), r: r * this.unit * 900 * 0.012, "vector-effect": "non-scaling-stroke", ...attrs }, this.layer(layerName));
   }
 
   /** The point at a parameter: a filled circle with a ring, labelled for screen readers. */
@@ -127,7 +134,7 @@ export class Plane {
     g.replaceChildren();
     const hit = this.hitRadius();
     // The hit areas first, under every visible point: a point stays on top of its neighbours'.
-    const areas = points.map(([x, y], i) => el("circle", { class: "hit", cx: x, cy: -y, r: hit, fill: "transparent", "data-index": i, "aria-hidden": "true" }, g));
+    const areas = points.map(([x, y], i) => el("circle", { class: "hit", ...at(x, y), r: hit, fill: "transparent", "data-index": i, "aria-hidden": "true" }, g));
     points.forEach(([x, y], i) => {
       const area = areas[i];
       const c = this.dot(layerName, x, y, 1, {
@@ -180,8 +187,7 @@ export class Plane {
   /** Moves handle i (and its label) without rebuilding the handles, keeping focus. */
   moveHandle(layerName, i, [x, y], name) {
     for (const c of this.layer(layerName).querySelectorAll(`[data-index="${i}"]`)) {
-      c.setAttribute("cx", x);
-      c.setAttribute("cy", -y);
+      for (const [k, v] of Object.entries(at(x, y))) c.setAttribute(k, v);
       if (c.classList.contains("handle")) c.setAttribute("aria-label", this.label(name, x, y));
     }
   }

@@ -3,6 +3,7 @@
 // system of the tangents and its solution — from the command line's own cagd spline --steps.
 // The lecture notes' clamped example gives the y-tangents (15, 48, −27, 15)/15.
 
+import { viewMessage } from "./fields.js";
 import { t } from "./i18n.js";
 import { dragText, num, pointsLiteral, toNumber } from "./numbers.js";
 import { Plane } from "./plane.js";
@@ -125,7 +126,7 @@ export default class SplineView {
     const text = this.app.runHere(this.app.localized(argv));
     this.parts.steps.textContent = text.ok ? text.stdout : "";
     this.parts.cmd.textContent = join(this.app.localized(argv));
-    showError(this.parts.error, text.ok ? null : text.error);
+    showError(this.parts.error, text.ok ? null : viewMessage("spline", text.error));
     const answer = text.ok ? this.app.data(argv) : null;
     this.data = answer?.ok ? answer.data : null;
     const tangents = this.data?.tangents;

@@ -71,12 +71,29 @@ test("figures: bytes and .wasm downloads of a cold load, first answer over 5 col
     proxy.reset();
     const chrome = await browser();
     const page = await openPage(chrome.context, proxy.url, link(PRIMER_2_4));
-    const first = Number(await page.evaluate(() => document.documentElement.dataset.firstAnswerMs));
-    // The service worker keeps the page after the first answer: its fetches count too.
+    // From the start of the navigation (performance.now()'s origin), with the navigation
+    // entry's milestones for the breakdown.
+    const timing = await page.evaluate(() => {
+      const nav = performance.getEntriesByType("navigation")[0];
+      const d = document.documentElement.dataset;
+      return { first: Number(d.firstAnswerMs), script: Number(d.scriptAnswerMs), responseEnd: nav.responseEnd, domContentLoaded: nav.domContentLoadedEventEnd, navStart: nav.startTime };
+    });
+    assert.equal(timing.navStart, 0);
+    // The service worker keeps every file after the first answer (installed before it
+    // controls the page): its fetches count too.
     await page.waitForFunction(() => !!navigator.serviceWorker?.controller, null, { timeout: 30000 });
     await page.waitForTimeout(300);
     const wasmRequests = proxy.stats.requests.filter((r) => r.path.endsWith(".wasm"));
-    loads.push({ firstAnswerMs: first, bytes: proxy.stats.bytes, requests: proxy.stats.requests.length, wasmFetches: wasmRequests.length, wasm: wasmRequests });
+    loads.push({
+      firstAnswerMs: timing.first,
+      afterModuleStartMs: timing.script,
+      htmlResponseEndMs: Math.round(timing.responseEnd * 10) / 10,
+      domContentLoadedMs: Math.round(timing.domContentLoaded * 10) / 10,
+      bytes: proxy.stats.bytes,
+      requests: proxy.stats.requests.length,
+      wasmFetches: wasmRequests.length,
+      wasm: wasmRequests,
+    });
     await page.close();
     await chrome.close();
   }
@@ -135,9 +152,24 @@ test("figures: bytes and .wasm downloads of a cold load, first answer over 5 col
   }
   figures.machine = { loadAverage: (await import("node:os")).loadavg(), cpus: (await import("node:os")).cpus().length };
   writeFileSync(join(resultsDir, "figures-round-two.json"), JSON.stringify(figures, null, 2));
-  console.log(JSON.stringify(figures, null, 2));
+  // The figures in the test's output (timings are reported, never asserted: they depend on
+  // the machine's load).
+  const line = (xs) => xs.map((x) => x.toFixed(0)).join(", ");
+  console.log(
+    [
+      "figures (web/test-results/figures-round-two.json):",
+      `  bytes of a cold load: median ${figures.coldLoadBytes.median} (${figures.coldLoadBytes.all.join(", ")}); target <= 1200000`,
+      `  .wasm downloads per load: ${figures.wasmFetchesPerLoad.join(", ")}; ${figures.wasmResponse[0].encoding}, ${figures.wasmResponse[0].bytes} bytes sent`,
+      `  first answer after navigation start: median ${figures.firstAnswerMs.median.toFixed(0)} ms (${line(figures.firstAnswerMs.all)}); target <= 400 ms`,
+      `  of which after main.js started: ${line(loads.map((l) => l.afterModuleStartMs))} ms`,
+      `  3-D drag (Bézier, Primer 2.4 in space): frame to frame median ${figures.bezier3dDragFrames.median.toFixed(1)} ms, p95 ${figures.bezier3dDragFrames.p95.toFixed(1)} ms, max ${figures.bezier3dDragFrames.max.toFixed(1)} ms; work per pointer event median ${figures.bezier3dDragWork.median.toFixed(2)} ms, max ${figures.bezier3dDragWork.max.toFixed(2)} ms`,
+      `  warm reload: ${figures.warmReload.bytes} bytes; load average ${figures.machine.loadAverage.map((x) => x.toFixed(2)).join(" ")} on ${figures.machine.cpus} cores`,
+    ].join("\n"),
+  );
   await proxy.stop();
   await server.stop();
+  // The deterministic figures are asserted: what a cold load transfers, and one .wasm download.
+  for (const bytes of figures.coldLoadBytes.all) assert.ok(bytes <= 1_200_000, `a cold load transferred ${bytes} bytes (target 1.2 MB)`);
   assert.deepEqual(figures.wasmFetchesPerLoad, [1, 1, 1, 1, 1], "one .wasm download per load (page and workers share it)");
   assert.ok(figures.wasmResponse[0].cache.includes("immutable"), JSON.stringify(figures.wasmResponse[0]));
   assert.ok(figures.wasmResponse[0].encoding === "br" || figures.wasmResponse[0].encoding === "gzip");

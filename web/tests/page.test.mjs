@@ -111,7 +111,7 @@ test("dragging a Bézier control point moves the curve and changes the scheme", 
   await page.fill("#bezier-t", "0.3");
   assert.equal(await page.inputValue("#bezier-t-text"), "0.3");
   assert.match(await scheme.textContent(), /t = 3\/10/);
-  await shot(page, "view-bezier");
+  await shot(page, "view-bezier-drag");
   // Reloading the link restores the state.
   const hash = await page.evaluate(() => location.hash);
   const again = await openPage(chrome.context, server.url, hash);
@@ -208,9 +208,17 @@ test("keyboard use and labels for a screen reader (accessibility snapshot)", asy
   // Tabs by keyboard, then the whole form: choose a construction, type, run with Enter.
   await page.focus("#tab-command");
   await page.keyboard.press("ArrowRight");
-  assert.equal(await page.evaluate(() => document.activeElement.id), "tab-bezier");
-  assert.equal(await page.locator("#view-bezier").isVisible(), true);
+  // The tab is selected and its panel shown at once; the view's content follows when its
+  // module is loaded (asserting visibility before that would race with the import).
+  const selected = await page.evaluate(() => ({
+    focus: document.activeElement.id,
+    selected: document.getElementById("tab-bezier").getAttribute("aria-selected"),
+    hidden: document.getElementById("view-bezier").hidden,
+    others: [...document.querySelectorAll('[role="tab"]')].filter((t) => t.getAttribute("aria-selected") === "true").map((t) => t.id),
+  }));
+  assert.deepEqual(selected, { focus: "tab-bezier", selected: "true", hidden: false, others: ["tab-bezier"] });
   await page.locator("#bezier-plane circle.handle").first().waitFor();
+  assert.equal(await page.locator("#view-bezier").isVisible(), true);
   const views = await page.locator("#view-bezier").ariaSnapshot();
   writeFileSync(join(resultsDir, "aria-bezier.yaml"), views);
   assert.match(views, /button "b0 at \(0, 0\); arrow keys move it"/);
@@ -229,6 +237,68 @@ test("keyboard use and labels for a screen reader (accessibility snapshot)", asy
   await page.locator("#stdout").filter({ hasText: "1/16" }).waitFor();
   assert.match(await page.inputValue("#cmdline"), /^cagd bernstein --degree 4 .*--t 0\.5/);
   await page.close();
+});
+
+test("fast arrow keys over the tabs: the last tab chosen is the one shown and linked", async () => {
+  const page = await openPage(chrome.context, server.url);
+  await page.focus("#tab-command");
+  // Four tabs to the right before any of their modules has been built.
+  for (let k = 0; k < 4; k++) await page.keyboard.press("ArrowRight");
+  assert.equal(await page.evaluate(() => document.activeElement.id), "tab-coons");
+  // Every view passed over is built in the end; none of them takes over the page or its link.
+  await page.waitForFunction(() => ["bezier", "subdivide", "elevate", "coons"].every((v) => window.cagdApp.views[v]));
+  await page.locator("#coons-steps").filter({ hasText: "19/50" }).waitFor();
+  const state = await page.evaluate(() => ({
+    current: window.cagdApp.current,
+    hash: decodeURIComponent(location.hash),
+    shown: [...document.querySelectorAll('[role="tabpanel"]')].filter((p) => !p.hidden).map((p) => p.id),
+    selected: [...document.querySelectorAll('[role="tab"]')].filter((t) => t.getAttribute("aria-selected") === "true").map((t) => t.id),
+  }));
+  assert.equal(state.current, "coons");
+  assert.match(state.hash, /^#view=coons&cmd=cagd coons /);
+  assert.deepEqual(state.shown, ["view-coons"]);
+  assert.deepEqual(state.selected, ["tab-coons"]);
+  // Back leaves the Coons view for the last view entered before it (each tab is an entry).
+  await page.goBack();
+  await page.waitForFunction(() => window.cagdApp.current === "elevate");
+  await page.locator("#elevate-steps").filter({ hasText: "control" }).waitFor();
+  assert.match(await page.evaluate(() => decodeURIComponent(location.hash)), /^#view=elevate/);
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
+test("a view whose module cannot be loaded says so in its panel; the page stays usable", async () => {
+  // Without the service worker, so that the browser asks the server (and the route) for it.
+  const local = await browser({ serviceWorkers: "block" });
+  try {
+    let refused = 0;
+    await local.context.route(/\/js\/basis\.[0-9a-f]+\.js$/, (route) => {
+      refused++;
+      return route.abort("connectionfailed");
+    });
+    const page = await openPage(local.context, server.url);
+    await page.click("#tab-basis");
+    const message = page.locator("#view-basis .view-failed");
+    await message.waitFor();
+    assert.ok(refused >= 1);
+    assert.match(await message.textContent(), /^cagd: error: the view could not be loaded \(.+\); reload the page/);
+    assert.equal(await message.getAttribute("role"), "alert");
+    assert.equal(await page.evaluate(() => window.cagdApp.current), "basis");
+    // No unhandled rejection: only the refused download is reported by the browser.
+    assert.deepEqual(
+      page.errors.filter((e) => !/Failed to load resource|ERR_CONNECTION_FAILED|ERR_FAILED/.test(e)),
+      [],
+    );
+    // The other views and the command box still work.
+    await page.click("#tab-bezier");
+    await page.locator("#bezier-steps").filter({ hasText: "7/2" }).waitFor();
+    await page.click("#tab-command");
+    const ok = await runOnPage(page, "cagd bernstein --degree 2 --t 0.5 --exact");
+    assert.ok(ok.ok, ok.error);
+    await page.close();
+  } finally {
+    await local.close();
+  }
 });
 
 test("the Coons, Gordon, B-spline and NURBS views draw from the library and follow their controls", async () => {

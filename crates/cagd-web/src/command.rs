@@ -78,6 +78,9 @@ pub fn file_bytes(index: usize) -> Vec<u8> {
 }
 
 #[cfg(test)]
+mod slips;
+
+#[cfg(test)]
 mod tests {
     use super::*;
 

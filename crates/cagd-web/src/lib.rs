@@ -4,8 +4,9 @@
 //! - [`run`]: a whole command line through [`cagd_cli::run`], answering what the program
 //!   would print and the files it would write (pictures as SVG), staged in memory;
 //! - the interactive views' constructions ([`bezier_view`], [`coons_view`], [`bspline_view`],
-//!   [`nurbs_view`]): small typed calls into the core, cheap enough to repeat on every frame of
-//!   a drag;
+//!   [`nurbs_view`]): the operation layer's requests on the views' small inputs, cheap enough to
+//!   repeat on every frame of a drag, their messages naming each argument by its role's key
+//!   (the page shows it under the label of the view's field);
 //! - what the page builds itself from ([`schema`]: every subcommand's arguments, for the forms;
 //!   [`step_tables`]: the labels of the steps in English, Slovenian and Czech).
 //!
@@ -15,13 +16,15 @@
 //! command line's one-line message `cagd: error: ARG: PROBLEM; expected FORM`.
 
 mod command;
+mod coons_view;
 mod ops;
 mod tables;
 mod views;
 
 pub use command::{file_bytes, run};
+pub use coons_view::coons_view;
 pub use tables::{schema, step_tables};
-pub use views::{bezier_view, bspline_view, coons_view, nurbs_view};
+pub use views::{bezier_view, bspline_view, nurbs_view};
 
 /// Installs the panic hook: a fault is reported to the page (`globalThis.cagdPanic`) as the
 /// program reports it, `cagd: internal error: …; this is a bug in cagd`, before the

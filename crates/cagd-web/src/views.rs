@@ -6,8 +6,6 @@
 //! checked as the command line checks them (same limits, same one-line messages), so a view
 //! never panics on what a page can send.
 
-use cagd::bezier::BezierCurve;
-use cagd::coons::CoonsPatch;
 use cagd::limits::Limits;
 use cagd_cli::{CliError, ErrorKind};
 use cagd_ops::knots::Degree;
@@ -21,7 +19,7 @@ use wasm_bindgen::prelude::wasm_bindgen;
 use crate::ops;
 
 /// Most samples of a view's curve or grid side (a view's picture, not a computation).
-const MAX_VIEW_SAMPLES: usize = 2000;
+pub(crate) const MAX_VIEW_SAMPLES: usize = 2000;
 
 fn error_json(e: &CliError) -> String {
     json!({ "error": format!("cagd: error: {e}") }).to_string()
@@ -68,20 +66,6 @@ fn sample_count(samples: usize) -> Result<usize, CliError> {
 
 fn flat(m: &DMatrix<f64>) -> Value {
     json!(m.as_slice())
-}
-
-fn lib(argument: &str, expected: &str) -> impl Fn(cagd::Error) -> CliError {
-    let (argument, expected) = (argument.to_string(), expected.to_string());
-    move |e| CliError::library(argument.as_str(), e, &expected)
-}
-
-fn check_degree(degree: usize) -> Result<(), CliError> {
-    Limits::default()
-        .check_degree("degree", degree)
-        .map_err(lib(
-            "CONTROL",
-            "a lower degree (fewer control points), or a higher --max-degree",
-        ))
 }
 
 /// The Bézier curve of the `dim`-dimensional control points `control` (thesis algorithm 1),
@@ -163,67 +147,10 @@ fn levels(report: &cagd_ops::Report<f64>) -> Value {
         .collect()
 }
 
-/// The bilinearly blended Coons patch (thesis 4.1) of four cubic (or any degree) Bézier
-/// boundaries, 3-D control points flat: `c1 = x(·,0)`, `c2 = x(·,1)`, `d1 = x(0,·)`,
-/// `d2 = x(1,·)`, on the `n × n` grid of `linspace(0,1,n)²`.
-///
-/// The answer is the grid `x` (`n·n·3` numbers, `(a·n + b)·3 + c` for coordinate `c` at
-/// `(u_a, v_b)`), followed, if `parts`, by the grids of `r_c`, `r_d` and `r_cd` (4.1–4.3).
-///
-/// # Errors
-/// The command line's one-line message: boundaries whose corners differ, a grid above the
-/// limit.
-#[wasm_bindgen]
-pub fn coons_view(
-    c1: Vec<f64>,
-    c2: Vec<f64>,
-    d1: Vec<f64>,
-    d2: Vec<f64>,
-    n: usize,
-    parts: bool,
-) -> Result<Vec<f64>, String> {
-    let answer = || -> Result<Vec<f64>, CliError> {
-        let curve = |argument: &str, flat: &[f64]| -> Result<BezierCurve<f64>, CliError> {
-            let b = points(argument, flat, 3)?;
-            check_degree(b.ncols() - 1)?;
-            BezierCurve::new(b).map_err(lib(argument, "Bézier control points"))
-        };
-        let (c1, c2) = (curve("--c1", &c1)?, curve("--c2", &c2)?);
-        let (d1, d2) = (curve("--d1", &d1)?, curve("--d2", &d2)?);
-        let n = sample_count(n)?;
-        Limits::default()
-            .check_grid("surface grid", n, n)
-            .map_err(lib("--n", "a smaller grid"))?;
-        let patch = CoonsPatch::new(c1, c2, d1, d2).map_err(lib(
-            "--c1/--c2/--d1/--d2",
-            "boundary curves meeting at the four corners",
-        ))?;
-        let us = cagd::linspace(0.0, 1.0, n);
-        let len = n * n * 3;
-        let mut out = vec![0.0; if parts { 4 * len } else { len }];
-        patch
-            .eval_grid_into(&us, &us, &mut out[..len])
-            .map_err(lib("--n", "a grid"))?;
-        if parts {
-            for (a, u) in us.iter().enumerate() {
-                for (b, v) in us.iter().enumerate() {
-                    let p = patch.eval_parts(*u, *v);
-                    for (k, part) in [&p.rc, &p.rd, &p.rcd].into_iter().enumerate() {
-                        let at = (k + 1) * len + (a * n + b) * 3;
-                        out[at..at + 3].copy_from_slice(part.as_slice());
-                    }
-                }
-            }
-        }
-        Ok(out)
-    };
-    answer().map_err(|e| format!("cagd: error: {e}"))
-}
-
 /// An error of the operation layer as the page shows it: `cagd: error: NAME: PROBLEM;
 /// expected FORM`, the argument named as the view names it (the role's key, `samples` for the
 /// number of samples) and the words after it the operation's, as every front end has them.
-fn op_error_text(e: &OpError) -> String {
+pub(crate) fn op_error_text(e: &OpError) -> String {
     let name = match e.role {
         Role::Samples => "samples",
         role => role.key(),
@@ -422,49 +349,6 @@ mod tests {
             .as_str()
             .unwrap()
             .starts_with("cagd: error: weights: "));
-    }
-
-    #[test]
-    fn coons_parts_add_up_at_primer_4_3_corners() {
-        // Straight boundaries of the unit square with one lifted corner: x = r_c + r_d − r_cd.
-        let line = |p: [f64; 3], q: [f64; 3]| {
-            let mut v = Vec::new();
-            for k in 0..4 {
-                let s = k as f64 / 3.0;
-                v.extend((0..3).map(|c| p[c] + s * (q[c] - p[c])));
-            }
-            v
-        };
-        let (p1, p2, p3, p4) = ([0., 0., 0.], [1., 0., 0.], [0., 1., 0.], [1., 1., 1.]);
-        let n = 5;
-        let g = coons_view(
-            line(p1, p2),
-            line(p3, p4),
-            line(p1, p3),
-            line(p2, p4),
-            n,
-            true,
-        )
-        .unwrap();
-        let len = n * n * 3;
-        assert_eq!(g.len(), 4 * len);
-        for i in 0..len {
-            let sum = g[len + i] + g[2 * len + i] - g[3 * len + i];
-            assert!((g[i] - sum).abs() < 1e-14);
-        }
-        // x(1, 1) = P4.
-        assert_eq!(g[len - 3..len], [1., 1., 1.]);
-        let bad = coons_view(
-            line(p1, p2),
-            line(p3, p4),
-            line(p1, p4),
-            line(p2, p4),
-            n,
-            false,
-        );
-        assert!(bad
-            .unwrap_err()
-            .starts_with("cagd: error: --c1/--c2/--d1/--d2: "));
     }
 
     #[test]
