@@ -2,7 +2,7 @@
 // module), the NURBS curve with its weights and rational basis (nurbs.js) and knot insertion
 // by Boehm's algorithm (insert.js). Points, weights, knots and the parameter are kept as typed
 // ("1/3" stays 1/3, exact with "exact fractions"), on any knot interval: the slider covers the
-// curve's domain [u_p, u_(n+1)], the basis plot the whole knot vector. Interior knots can be
+// curve's domain [u_(p+1), u_(n+1)], the basis plot the whole knot vector. Interior knots can be
 // dragged (snapping is optional). The numbers and steps are the command line's own (cagd
 // bspline / nurbs / insert-knot, in the page's language); the picture's curve and basis are
 // sampled by the library (bspline_view, nurbs_view) and the point at t is the command's answer.
@@ -153,7 +153,7 @@ export class SplineFamily {
     return document.getElementById(`${this.name}-snap`).checked;
   }
 
-  /** The curve's domain [u_p, u_(n+1)] as typed texts and as doubles. */
+  /** The curve's domain [u_(p+1), u_(n+1)] as typed texts and as doubles. */
   domain() {
     const a = this.knots[this.p];
     const b = this.knots[this.points.length];

@@ -195,7 +195,7 @@ export default class CoonsView {
     this.boundaryFields();
   }
 
-  /** The domain [a, b] of a B-spline boundary as typed (the knots u_p and u_n). */
+  /** The domain [a, b] of a B-spline boundary as typed (the knots u_(p+1) and u_(n+1), counted from 1). */
   domain(name) {
     const knots = this.knots[name];
     const count = this.curveText(name).length;

@@ -100,9 +100,9 @@ const E = {
   bspline: {
     formula: "x(t) = Σ_i P_i N_(i,p)(t);   de Boor: d_i^r = (1 − α_i^r) d_(i−1)^(r−1) + α_i^r d_i^(r−1)",
     source: "CAD notes §1.2; lecture notes (B-spline curves)",
-    en: "A B-spline curve: the control points weighted by the basis functions of degree p over a knot vector, evaluated by de Boor's algorithm; the curve lives on [u_p, u_(n+1)], whatever the knots.",
-    sl: "B-zlepek: kontrolne točke, utežene z baznimi funkcijami stopnje p nad vozliščnim vektorjem, izračunan z de Boorovim algoritmom; krivulja je definirana na [u_p, u_(n+1)], ne glede na vozle.",
-    cs: "B-spline křivka: řídicí body vážené bázovými funkcemi stupně p nad uzlovým vektorem, počítaná de Boorovým algoritmem; křivka je definována na [u_p, u_(n+1)], ať jsou uzly jakékoli.",
+    en: "A B-spline curve: the control points weighted by the basis functions of degree p over a knot vector, evaluated by de Boor's algorithm; the curve lives on [u_(p+1), u_(n+1)], whatever the knots.",
+    sl: "B-zlepek: kontrolne točke, utežene z baznimi funkcijami stopnje p nad vozliščnim vektorjem, izračunan z de Boorovim algoritmom; krivulja je definirana na [u_(p+1), u_(n+1)], ne glede na vozle.",
+    cs: "B-spline křivka: řídicí body vážené bázovými funkcemi stupně p nad uzlovým vektorem, počítaná de Boorovým algoritmem; křivka je definována na [u_(p+1), u_(n+1)], ať jsou uzly jakékoli.",
   },
   "insert-knot": {
     formula: "P′_i = (1 − α_i) P_(i−1) + α_i P_i,   α_i = (u − u_i)/(u_(i+p) − u_i),   k − p + 1 ≤ i ≤ k",
