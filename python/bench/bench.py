@@ -134,7 +134,8 @@ def thesis(root):
     print("|---|---|---|---|")
     for name, f in ours.items():
         t = best(f, 5)
-        print(f"| {name} | {octave[name]:.4g} | {t:.4g} | {octave[name] / t:.0f}x |")
+        ratio = octave[name] / t
+        print(f"| {name} | {octave[name]:.4g} | {t:.4g} | {ratio:.0f}x |" if ratio >= 10 else f"| {name} | {octave[name]:.4g} | {t:.4g} | {ratio:.2g}x |")
 
 
 def overhead():
