@@ -39,6 +39,9 @@ type CurveEx = Ex<BezierCurve<f64>, BezierCurve<Exact>>;
 /// [[Fraction(7, 2), Fraction(3, 2), Fraction(3, 4)]]
 /// >>> c.elevate().control_points[1].tolist()
 /// [Fraction(0, 1), Fraction(3, 2), Fraction(3, 2)]
+// The doc comment is the class's Python docstring: its examples index arrays and print lists
+// (`[1]`, `[[0], [1]]`), which are no Rust links.
+#[allow(rustdoc::broken_intra_doc_links)]
 #[pyclass(module = "cagd", name = "BezierCurve", frozen)]
 #[derive(Clone)]
 pub struct PyBezierCurve {

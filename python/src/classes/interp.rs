@@ -260,6 +260,9 @@ impl PyCubicSpline {
 /// [Fraction(87, 32)]
 /// >>> cagd.Lagrange([0, 1, 2], [[0], [1], [4]], exact=True).steps["polynomial"].tolist()
 /// [[Fraction(1, 1)], [Fraction(0, 1)], [Fraction(0, 1)]]
+// The doc comment is the class's Python docstring: its examples index arrays and print lists
+// (`[1]`, `[[0], [1]]`), which are no Rust links.
+#[allow(rustdoc::broken_intra_doc_links)]
 #[pyclass(module = "cagd", name = "Lagrange", frozen)]
 #[derive(Clone)]
 pub struct PyLagrange {

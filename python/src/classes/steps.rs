@@ -30,6 +30,9 @@ use crate::ops::{execute, Names};
 /// ('de Casteljau scheme', 4, ['r = 0', 'r = 1', 'r = 2', 'point'])
 /// >>> s["r = 1"].tolist(), s["point"].tolist()
 /// ([[Fraction(1, 2)], [Fraction(2, 1)]], [Fraction(5, 4)])
+// The doc comment is the class's Python docstring: its examples index arrays and print lists
+// (`[1]`, `[[0], [1]]`), which are no Rust links.
+#[allow(rustdoc::broken_intra_doc_links)]
 #[pyclass(module = "cagd", name = "Steps", frozen)]
 pub struct Steps {
     title: String,
