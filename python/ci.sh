@@ -1,18 +1,23 @@
 #!/usr/bin/env bash
-# The Python package's CI (called by .ci/run): build and install it with the pinned install
-# line (`pip install ./python`) into a fresh virtual environment, then
+# The Python package's CI (called by .ci/run): in a fresh virtual environment, install the
+# pinned peers and tools (python/ci-requirements.txt), build the wheel as `pip install ./python`
+# builds it (maturin), check that it is an abi3 wheel and install it, then
 #   1. clippy on the extension crate;
-#   2. its pytest suite (python/tests: the thesis functions against octave_ref/expected, random
-#      cases against scipy, geomdl and dhermes/bezier, the sources' worked examples, bad input);
-#   3. scipy's own TestBSpline with scipy.interpolate.BSpline replaced by cagd.BSpline (the
-#      test file of the installed scipy, run in place): at least 30 must pass and every failure
-#      must be one listed in python/SCIPY_SUITE.md;
-#   4. the notebook's code cells (python/examples/run_notebook.py).
+#   2. mypy's stubtest: the stubs (cagd/*.pyi) match the installed package;
+#   3. its pytest suite (python/tests: the thesis functions against octave_ref/expected, random
+#      cases against scipy, geomdl and dhermes/bezier, the sources' worked examples, bad input,
+#      every docstring example); a peer library missing fails it (CI is set);
+#   4. scipy's own TestBSpline with scipy.interpolate.BSpline replaced by cagd.BSpline (the
+#      test file of the installed scipy, run in place): as many must pass as
+#      python/SCIPY_SUITE.md says, and every failure must be one listed there;
+#   5. the notebook's code cells (python/examples/run_notebook.py).
 # Environment: PYTHON (default python3), CAGD_PY_VENV (default: a new temporary directory).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root="$PWD"
 start=$SECONDS
+# The tests' peers (scipy, geomdl, bezier) are required, not skipped, in CI (tests/conftest.py).
+export CI="${CI:-true}"
 
 python="${PYTHON:-python3}"
 venv="${CAGD_PY_VENV:-$(mktemp -d)/venv}"
@@ -28,10 +33,24 @@ py="$venv/bin/python"
 echo "== clippy: the extension crate (cagd-python)"
 cargo clippy -p cagd-python --all-targets -- -D warnings
 
-echo "== pip install ./python (maturin builds the abi3 wheel)"
-"$py" -m pip install --quiet ./python
-"$py" -m pip install --quiet pytest scipy geomdl bezier
-"$py" -c "import cagd, numpy, scipy; print('cagd', cagd.__version__, '| numpy', numpy.__version__, '| scipy', scipy.__version__)"
+echo "== the pinned peers and tools (python/ci-requirements.txt)"
+"$py" -m pip install --quiet -r python/ci-requirements.txt
+
+echo "== the wheel of ./python (maturin), an abi3 wheel, installed"
+dist="$(mktemp -d)"
+"$py" -m pip wheel --quiet --no-deps ./python -w "$dist"
+wheel="$(ls "$dist"/cagd-*.whl)"
+echo "$(basename "$wheel")"
+case "$(basename "$wheel")" in
+    *-cp39-abi3-*.whl) ;;
+    *) echo "python/ci.sh: $(basename "$wheel") is not an abi3 wheel for CPython >= 3.9" >&2; exit 1 ;;
+esac
+"$py" -m pip install --quiet --force-reinstall --no-deps "$wheel"
+"$py" -c "import cagd, numpy, scipy, geomdl, bezier, pytest; print('cagd', cagd.__version__, '| numpy', numpy.__version__, '| scipy', scipy.__version__, '| geomdl', geomdl.__version__, '| bezier', bezier.__version__, '| pytest', pytest.__version__)"
+
+echo "== stubtest: the stubs match the installed package"
+# From an empty directory: `cagd` is the installed package, mypy's cache stays out of the tree.
+(cd "$(mktemp -d)" && "$py" -m mypy.stubtest cagd --allowlist "$root/python/stubtest-allowlist.txt")
 
 echo "== pytest python/tests"
 # Run from outside python/ so that `import cagd` is the installed package.

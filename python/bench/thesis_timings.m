@@ -49,8 +49,26 @@ for N = [30 100]
   printf('ploskevB_N%d\tploskevB\t%.6e\n', N, best_of(@() ploskevB(kontrolneT, N), 2));
 end
 printf('bilinearna\tbilinearna\t%.6e\n', best_of(@() bilinearna(kontrolneT, 0.3, 0.7, 10), 20));
+printf('tenzor_4x4\ttenzor\t%.6e\n', best_of(@() tenzor(kontrolneT), 20));
+% A packed net of 200 x 200 points: tenzor's loops over every point.
+bigT = zeros(200, 600);
+for i = 1:200
+  for j = 1:600
+    bigT(i, j) = mod(7*i + 3*j, 11) / 10;
+  end
+end
+printf('tenzor_200x200\ttenzor\t%.6e\n', best_of(@() tenzor(bigT), 2));
 P1 = squeeze(b(1,1,:)); P2 = squeeze(b(4,1,:)); P3 = squeeze(b(1,4,:)); P4 = squeeze(b(4,4,:));
-names = {'curve', 'kontrolneT', 'P1', 'P2', 'P3', 'P4'};
+names = {'curve', 'kontrolneT', 'bigT', 'P1', 'P2', 'P3', 'P4'};
+% vrednostCoons at (0.3, 0.7): the boundary curves of the patch b at u = 0.3 (c1, c2) and
+% v = 0.7 (d1, d2), 3 x 1 each.
+X0 = patch_grid(b, 0.3, [0 1]);
+Y0 = patch_grid(b, [0 1], 0.7);
+vc_c1 = squeeze(X0(1, 1, :)); vc_c2 = squeeze(X0(1, 2, :));
+vc_d1 = squeeze(Y0(1, 1, :)); vc_d2 = squeeze(Y0(2, 1, :));
+printf('vrednostCoons\tvrednostCoons\t%.6e\n', ...
+       best_of(@() vrednostCoons(0.3, 0.7, vc_c1, vc_c2, vc_d1, vc_d2, P1, P2, P3, P4), 20));
+names(end+1:end+4) = {'vc_c1', 'vc_c2', 'vc_d1', 'vc_d2'};
 for N = [100 300]
   t = linspace(0, 1, N);
   X0 = patch_grid(b, t, [0 1]);

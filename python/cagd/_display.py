@@ -121,9 +121,23 @@ def surface_svg(obj):
     return _svg(lines, points)
 
 
+def _steps_html(obj):
+    """The steps of the construction that made ``obj`` (none for an object given directly)."""
+    try:
+        steps = getattr(obj, "steps", None)
+    except ValueError as e:  # a limit the steps exceed: say so instead of failing the display
+        return f"<p>steps: {html.escape(str(e))}</p>"
+    return steps._repr_html_() if steps is not None else ""
+
+
 def object_html(obj):
-    """The object's description, its control points (fractions as written) and its picture."""
+    """The object's description, its control points (fractions as written), its picture and
+    the steps of the construction that made it."""
     control = getattr(obj, "control_points", None)
     table = _array_html(control) if control is not None else ""
     svg = obj._repr_svg_()
-    return f"<div><b>{html.escape(repr(obj))}</b><div style='display:flex;gap:1em'>{svg}<div>{table}</div></div></div>"
+    steps = _steps_html(obj)
+    return (
+        f"<div><b>{html.escape(repr(obj))}</b><div style='display:flex;gap:1em'>{svg}"
+        f"<div>{table}</div></div>{steps}</div>"
+    )

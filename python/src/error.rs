@@ -21,7 +21,7 @@ pyo3::create_exception!(
     cagd,
     CagdError,
     PyValueError,
-    "An input cagd cannot use, in the operation layer's words: `kind` names the library's error underneath or the operation layer's kind (as in docs/ERRORS.md), `argument` the Python name of the argument it concerns (or None)."
+    "An input cagd cannot use, in the operation layer's words: `kind` names the library's error underneath or the operation layer's kind (as in docs/ERRORS.md), `argument` the Python name of the argument it concerns (or None).\n\n>>> try:\n...     cagd.BezierCurve([[0, 0], [float('nan'), 1]])\n... except cagd.CagdError as e:\n...     print(e.kind, e.argument, isinstance(e, ValueError))\nNonFinite points True\n"
 );
 
 /// The name of the variant of `e` (the first word of its derived `Debug` form).

@@ -19,6 +19,9 @@ pub fn current() -> Limits {
 }
 
 /// The limits in force, by name (`max_samples`, `max_grid_points`, `max_degree`, `max_work`, …).
+///
+/// >>> cagd.limits()["max_degree"]
+/// 1000
 #[pyfunction]
 fn limits(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
     let l = current();
@@ -31,6 +34,15 @@ fn limits(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
 
 /// Sets the limit `name` (a key of `cagd.limits()`) to `value` (a positive integer); with no
 /// arguments, restores the defaults.
+///
+/// >>> cagd.set_limit("max_degree", 2)
+/// >>> cagd.BezierCurve([[0], [1], [2], [3]])
+/// Traceback (most recent call last):
+///     ...
+/// cagd.CagdError: points: degree: 3 exceeds the limit of 2 (raise it with cagd.set_limit("max_degree", VALUE)); expected ...
+/// >>> cagd.set_limit()
+/// >>> cagd.limits()["max_degree"]
+/// 1000
 #[pyfunction]
 #[pyo3(signature = (name = None, value = None))]
 fn set_limit(name: Option<&str>, value: Option<u64>) -> PyResult<()> {

@@ -136,10 +136,17 @@ fn net_degree(b: &ArrayView2<'_, impl Sized>) -> usize {
 
 /// `T = deCasteljau(kontrolneT, N)`: the Bézier curve with control points the columns of
 /// `kontrolneT` (`d × (n+1)`) at `t = linspace(0, 1, N)`, one point a column (`d × N`).
+///
+/// >>> B = np.array([[0, 0, 8, 4], [0, 2, 2, 0], [0, 2, 0, 0]])   # thesis Primer 2.4
+/// >>> cagd.octave.deCasteljau(B, 3)[:, 1].tolist()               # b(1/2)
+/// [3.5, 1.5, 0.75]
+/// >>> cagd.octave.deCasteljau(B.astype(object), 3)[:, 1].tolist()
+/// [Fraction(7, 2), Fraction(3, 2), Fraction(3, 4)]
 #[pyfunction]
 #[pyo3(name = "deCasteljau")]
-fn de_casteljau<'py>(kontrolne_t: &Bound<'py, PyAny>, n: usize) -> PyResult<Bound<'py, PyAny>> {
-    by_exactness!([kontrolne_t], de_casteljau_in(kontrolne_t, n))
+#[allow(non_snake_case)] // the thesis's argument names, for keyword calls
+fn de_casteljau<'py>(kontrolneT: &Bound<'py, PyAny>, N: usize) -> PyResult<Bound<'py, PyAny>> {
+    by_exactness!([kontrolneT], de_casteljau_in(kontrolneT, N))
 }
 
 fn de_casteljau_in<'py, T: Num>(p: &Bound<'py, PyAny>, n: usize) -> PyResult<Bound<'py, PyAny>> {
@@ -161,10 +168,16 @@ fn de_casteljau_in<'py, T: Num>(p: &Bound<'py, PyAny>, n: usize) -> PyResult<Bou
 
 /// `P = ploskevB(kontrolneT, N)`: the Bézier patch of the packed net `(m+1) × 3(n+1)` on
 /// `linspace(0, 1, N)²`, `P[i, j, :]` the point at `(t[i], t[j])` (`N × N × 3`).
+///
+/// >>> B = np.array([[0, 0, 0, 0, 1, 0], [1, 0, 0, 1, 1, 1]])    # b_00 b_01; b_10 b_11: (u, v, uv)
+/// >>> P = cagd.octave.ploskevB(B, 3)
+/// >>> P.shape, P[1, 2].tolist()                                 # x(1/2, 1)
+/// ((3, 3, 3), [0.5, 1.0, 0.5])
 #[pyfunction]
 #[pyo3(name = "ploskevB")]
-fn ploskev_b<'py>(kontrolne_t: &Bound<'py, PyAny>, n: usize) -> PyResult<Bound<'py, PyAny>> {
-    by_exactness!([kontrolne_t], ploskev_b_in(kontrolne_t, n))
+#[allow(non_snake_case)] // the thesis's argument names, for keyword calls
+fn ploskev_b<'py>(kontrolneT: &Bound<'py, PyAny>, N: usize) -> PyResult<Bound<'py, PyAny>> {
+    by_exactness!([kontrolneT], ploskev_b_in(kontrolneT, N))
 }
 
 fn ploskev_b_in<'py, T: Num>(b: &Bound<'py, PyAny>, n: usize) -> PyResult<Bound<'py, PyAny>> {
@@ -183,15 +196,21 @@ fn ploskev_b_in<'py, T: Num>(b: &Bound<'py, PyAny>, n: usize) -> PyResult<Bound<
 
 /// `L = bilinearna(B, u, v, N)`: the point `x(u, v)` of the Bézier patch of the packed net `B`
 /// as a `1 × 1 × 3` array (`N` is accepted and ignored, as in the fixed code).
+///
+/// >>> B = np.array([[0, 0, 0, 0, 1, 0], [1, 0, 0, 1, 1, 1]])    # (u, v, uv)
+/// >>> L = cagd.octave.bilinearna(B, 0.5, 0.25, 3)
+/// >>> L.shape, L.ravel().tolist()
+/// ((1, 1, 3), [0.5, 0.25, 0.125])
 #[pyfunction]
 #[pyo3(name = "bilinearna")]
+#[allow(non_snake_case)] // the thesis's argument names, for keyword calls
 fn bilinearna<'py>(
-    b: &Bound<'py, PyAny>,
+    B: &Bound<'py, PyAny>,
     u: &Bound<'py, PyAny>,
     v: &Bound<'py, PyAny>,
-    n: usize,
+    N: usize,
 ) -> PyResult<Bound<'py, PyAny>> {
-    by_exactness!([b, u, v], bilinearna_in(b, u, v, n))
+    by_exactness!([B, u, v], bilinearna_in(B, u, v, N))
 }
 
 fn bilinearna_in<'py, T: Num>(
@@ -217,10 +236,16 @@ fn bilinearna_in<'py, T: Num>(
 
 /// `A = tenzor(B)`: the packed net `(m+1) × 3(n+1)` as the array `(m+1) × (n+1) × 3`,
 /// `A[i, j, :] = b_ij`.
+///
+/// >>> B = np.array([[0, 0, 0, 0, 1, 0], [1, 0, 0, 1, 1, 1]])
+/// >>> A = cagd.octave.tenzor(B)
+/// >>> A.shape, A[0, 1].tolist(), A[1, 1].tolist()
+/// ((2, 2, 3), [0.0, 1.0, 0.0], [1.0, 1.0, 1.0])
 #[pyfunction]
 #[pyo3(name = "tenzor")]
-fn tenzor<'py>(b: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
-    by_exactness!([b], tenzor_in(b))
+#[allow(non_snake_case)] // the thesis's argument name, for keyword calls
+fn tenzor<'py>(B: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+    by_exactness!([B], tenzor_in(B))
 }
 
 fn tenzor_in<'py, T: Num>(b: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
@@ -230,23 +255,34 @@ fn tenzor_in<'py, T: Num>(b: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> 
 }
 
 /// `R, P = krpaCoons(c1, c2, d1, d2, P1, P2, P3, P4)`: the bilinearly blended Coons patch of
-/// four boundary curves sampled at `linspace(0, 1, N)` (`3 × N` each) with corners `P1..P4`
-/// (`3 × 1`), on `linspace(0, 1, N)²`: `R` packed `N × 3N`, `P` `N × N × 3`.
+/// four boundary curves sampled at `linspace(0, 1, N)` (`3 × N` each: `c1 = x(u, 0)`,
+/// `c2 = x(u, 1)`, `d1 = x(0, v)`, `d2 = x(1, v)`) with the corners `P1..P4` = `x(0,0)`,
+/// `x(1,0)`, `x(0,1)`, `x(1,1)` (`3 × 1`), on `linspace(0, 1, N)²`: `R` packed `N × 3N`, `P`
+/// `N × N × 3`. Both outputs always come back (Octave's `R = krpaCoons(...)` is
+/// `R, _ = krpaCoons(...)` here).
+///
+/// >>> t, o, z = np.linspace(0, 1, 3), np.ones(3), np.zeros(3)  # the edges of (u, v, uv)
+/// >>> c1, c2 = np.array([t, z, z]), np.array([t, o, t])
+/// >>> d1, d2 = np.array([z, t, z]), np.array([o, t, t])
+/// >>> corners = [np.array([[x], [y], [x * y]]) for y in (0, 1) for x in (0, 1)]
+/// >>> R, P = cagd.octave.krpaCoons(c1, c2, d1, d2, *corners)
+/// >>> R.shape, P.shape, P[1, 2].tolist()                        # x(1/2, 1)
+/// ((3, 9), (3, 3, 3), [0.5, 1.0, 0.5])
 #[pyfunction]
 #[pyo3(name = "krpaCoons")]
-#[allow(clippy::too_many_arguments)] // the thesis signature, argument for argument
+#[allow(clippy::too_many_arguments, non_snake_case)] // the thesis signature, argument for argument
 fn krpa_coons<'py>(
     c1: &Bound<'py, PyAny>,
     c2: &Bound<'py, PyAny>,
     d1: &Bound<'py, PyAny>,
     d2: &Bound<'py, PyAny>,
-    p1: &Bound<'py, PyAny>,
-    p2: &Bound<'py, PyAny>,
-    p3: &Bound<'py, PyAny>,
-    p4: &Bound<'py, PyAny>,
+    P1: &Bound<'py, PyAny>,
+    P2: &Bound<'py, PyAny>,
+    P3: &Bound<'py, PyAny>,
+    P4: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyTuple>> {
-    let args = [c1, c2, d1, d2, p1, p2, p3, p4];
-    by_exactness!([c1, c2, d1, d2, p1, p2, p3, p4], krpa_coons_in(&args))
+    let args = [c1, c2, d1, d2, P1, P2, P3, P4];
+    by_exactness!([c1, c2, d1, d2, P1, P2, P3, P4], krpa_coons_in(&args))
 }
 
 fn krpa_coons_in<'py, T: Num>(args: &[&Bound<'py, PyAny>; 8]) -> PyResult<Bound<'py, PyTuple>> {
@@ -271,10 +307,20 @@ fn krpa_coons_in<'py, T: Num>(args: &[&Bound<'py, PyAny>; 8]) -> PyResult<Bound<
 /// `T, rc, rd, rcd = vrednostCoons(u, v, c1, c2, d1, d2, P1, P2, P3, P4)`: the point of the
 /// Coons patch at `(u, v)` from the boundary points `c1 = c_1(u)`, `c2 = c_2(u)`,
 /// `d1 = d_1(v)`, `d2 = d_2(v)` and the corners (`d × 1` columns), with its three parts
-/// `T = rc + rd − rcd`.
+/// `T = rc + rd − rcd`. All four outputs always come back (Octave's `T = vrednostCoons(...)`
+/// is `T, *_ = vrednostCoons(...)` here).
+///
+/// >>> col = lambda *x: np.array(x, dtype=object).reshape(-1, 1)
+/// >>> u, v = Fraction(1, 5), Fraction(1, 2)                    # thesis Primer 4.3
+/// >>> c1, c2 = col(u, 0, u - u * u), col(u, 1, u)
+/// >>> d1, d2 = col(0, v * v, v - v * v), col(1, v, v)
+/// >>> corners = col(0, 0, 0), col(1, 0, 0), col(0, 1, 0), col(1, 1, 1)
+/// >>> T, rc, rd, rcd = cagd.octave.vrednostCoons(u, v, c1, c2, d1, d2, *corners)
+/// >>> [str(x) for x in T.ravel()], [str(x) for x in rcd.ravel()]
+/// (['1/5', '3/10', '19/50'], ['1/5', '1/2', '1/10'])
 #[pyfunction]
 #[pyo3(name = "vrednostCoons")]
-#[allow(clippy::too_many_arguments)] // the thesis signature, argument for argument
+#[allow(clippy::too_many_arguments, non_snake_case)] // the thesis signature, argument for argument
 fn vrednost_coons<'py>(
     u: &Bound<'py, PyAny>,
     v: &Bound<'py, PyAny>,
@@ -282,14 +328,14 @@ fn vrednost_coons<'py>(
     c2: &Bound<'py, PyAny>,
     d1: &Bound<'py, PyAny>,
     d2: &Bound<'py, PyAny>,
-    p1: &Bound<'py, PyAny>,
-    p2: &Bound<'py, PyAny>,
-    p3: &Bound<'py, PyAny>,
-    p4: &Bound<'py, PyAny>,
+    P1: &Bound<'py, PyAny>,
+    P2: &Bound<'py, PyAny>,
+    P3: &Bound<'py, PyAny>,
+    P4: &Bound<'py, PyAny>,
 ) -> PyResult<Bound<'py, PyTuple>> {
-    let args = [u, v, c1, c2, d1, d2, p1, p2, p3, p4];
+    let args = [u, v, c1, c2, d1, d2, P1, P2, P3, P4];
     by_exactness!(
-        [u, v, c1, c2, d1, d2, p1, p2, p3, p4],
+        [u, v, c1, c2, d1, d2, P1, P2, P3, P4],
         vrednost_coons_in(&args)
     )
 }
@@ -324,21 +370,31 @@ fn vrednost_coons_in<'py, T: Num>(
 }
 
 /// `R, P = krpaGordon(g_u, g_v, g_uv, x_u, x_v, N)`: the Gordon surface of a curve network
-/// sampled at `linspace(0, 1, N')` (`g_u = [c_0 … c_n]`, `g_v = [d_0 … d_m]`, crossings
-/// `g_uv` packed `(m+1) × 3(n+1)`, nodes `x_u`, `x_v`) on `linspace(0, 1, N)²`: `R` packed
-/// `N × 3N`, `P` `N × N × 3`.
+/// sampled at `linspace(0, 1, N')` (`g_u = [c_0 … c_n]`, `c_j(u) = g(u, v_j)`;
+/// `g_v = [d_0 … d_m]`, `d_i(v) = g(u_i, v)`; the crossings `g_uv` packed `(m+1) × 3(n+1)`,
+/// `g_uv[i, 3j:3j+3] = g(u_i, v_j)`; nodes `x_u`, `x_v`) on `linspace(0, 1, N)²`: `R` packed
+/// `N × 3N`, `P` `N × N × 3`. Both outputs always come back.
+///
+/// >>> t, o, z = np.linspace(0, 1, 3), np.ones(3), np.zeros(3)  # the network of (u, v, uv)
+/// >>> g_u = np.hstack([np.array([t, z, z]), np.array([t, o, t])])   # g(u, 0), g(u, 1)
+/// >>> g_v = np.hstack([np.array([z, t, z]), np.array([o, t, t])])   # g(0, v), g(1, v)
+/// >>> g_uv = np.array([[0, 0, 0, 0, 1, 0], [1, 0, 0, 1, 1, 1]])
+/// >>> R, P = cagd.octave.krpaGordon(g_u, g_v, g_uv, [0, 1], [0, 1], 3)
+/// >>> P.shape, P[1, 2].tolist()                                 # x(1/2, 1)
+/// ((3, 3, 3), [0.5, 1.0, 0.5])
 #[pyfunction]
 #[pyo3(name = "krpaGordon")]
+#[allow(non_snake_case)] // the thesis's argument names, for keyword calls
 fn krpa_gordon<'py>(
     g_u: &Bound<'py, PyAny>,
     g_v: &Bound<'py, PyAny>,
     g_uv: &Bound<'py, PyAny>,
     x_u: &Bound<'py, PyAny>,
     x_v: &Bound<'py, PyAny>,
-    n: usize,
+    N: usize,
 ) -> PyResult<Bound<'py, PyTuple>> {
     let args = [g_u, g_v, g_uv, x_u, x_v];
-    by_exactness!([g_u, g_v, g_uv, x_u, x_v], krpa_gordon_in(&args, n))
+    by_exactness!([g_u, g_v, g_uv, x_u, x_v], krpa_gordon_in(&args, N))
 }
 
 fn krpa_gordon_in<'py, T: Num>(
@@ -395,6 +451,11 @@ const GORDON_NAMES: Names = &[
 
 /// `v = Lagrange(x, m, u)`: the `m`-th (from 1) Lagrange basis polynomial of the nodes `x` at
 /// every value of `u` (any shape; a number gives a number).
+///
+/// >>> cagd.octave.Lagrange([0, 1, 2], 2, 0.5)                 # L_1(1/2) = (1/2)(−3/2)/(−1)
+/// 0.75
+/// >>> cagd.octave.Lagrange([0, 1, 2], 1, [Fraction(1, 2), 3]).tolist()   # exact: L_0
+/// [Fraction(3, 8), Fraction(1, 1)]
 #[pyfunction]
 #[pyo3(name = "Lagrange")]
 fn lagrange<'py>(

@@ -1,6 +1,8 @@
 """Shared helpers: the Octave reference files of the repository and the comparison rule of
 octave_ref/compare.py (4 ULPs, or 1e-14 relative to the scale of the array)."""
 
+import importlib
+import os
 import pathlib
 
 import numpy as np
@@ -23,6 +25,20 @@ def expected():
         return cache[case]
 
     return load
+
+
+def in_ci():
+    """Whether this is a CI run (``CI`` set, as .ci/run and python/ci.sh set it)."""
+    return os.environ.get("CI", "").lower() not in ("", "0", "false", "no")
+
+
+def peer(module):
+    """The peer library ``module`` (scipy, geomdl, dhermes/bezier): in CI it must be there (a
+    missing peer fails the run: python/ci.sh installs every one, pinned); elsewhere the tests
+    that need it are skipped."""
+    if in_ci():
+        return importlib.import_module(module)
+    return pytest.importorskip(module)
 
 
 def assert_close(name, ours, octave):

@@ -5,11 +5,12 @@ import numpy as np
 import pytest
 
 import cagd
+from conftest import peer
 
-scipy_interpolate = pytest.importorskip("scipy.interpolate")
-bezier = pytest.importorskip("bezier")
-geomdl_bspline = pytest.importorskip("geomdl.BSpline")
-geomdl_nurbs = pytest.importorskip("geomdl.NURBS")
+scipy_interpolate = peer("scipy.interpolate")
+bezier = peer("bezier")
+geomdl_bspline = peer("geomdl.BSpline")
+geomdl_nurbs = peer("geomdl.NURBS")
 
 RNG = np.random.default_rng(2014)
 

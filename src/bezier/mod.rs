@@ -13,7 +13,11 @@
 //!   ([`BezierPatch::try_eval_grid`]). Partial derivatives are patches
 //!   ([`BezierPatch::derivative`]); the four boundary curves are [`BezierCurve`]s
 //!   ([`BezierPatch::boundary`], [`Edge`]). The bilinear patch (hyperbolic paraboloid) of thesis
-//!   §3.1 is [`BezierPatch::bilinear`].
+//!   §3.1 is [`BezierPatch::bilinear`]. Patches are raised in degree
+//!   ([`BezierPatch::elevate`]), split at `u = t` or `v = t` ([`BezierPatch::subdivide`],
+//!   [`Direction`]) and integrated ([`BezierPatch::integral`],
+//!   [`BezierPatch::antiderivative`]) through their control curves
+//!   ([`BezierPatch::control_curves`]).
 //!
 //! Layouts: a curve's control points are the **columns** of a `d × (n+1)` matrix (the thesis's
 //! `3 × (n+1)` control matrices); a patch keeps one `(m+1) × (n+1)` matrix per coordinate, entry
@@ -27,6 +31,9 @@ mod bilinear_patch;
 mod curve;
 mod matrix_form;
 mod patch;
+mod patch_elevate;
+mod patch_integral;
+mod patch_subdivide;
 mod scheme;
 
 /// The matrices of the matrix form, owned by [`crate::conversion`] and re-exported here beside
@@ -36,6 +43,7 @@ pub use bilinear::bilinear_interpolate;
 pub use curve::BezierCurve;
 pub use matrix_form::MatrixForm;
 pub use patch::{BezierPatch, Edge};
+pub use patch_subdivide::Direction;
 pub use scheme::{DeCasteljauScheme, PatchScheme, PatchStep};
 
 use nalgebra::DMatrix;

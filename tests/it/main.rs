@@ -16,6 +16,7 @@ mod hostile_library;
 mod layers;
 mod mixed_boundaries;
 mod octave_reference;
+mod patch_ops;
 mod properties;
 mod properties_coons;
 mod properties_course;

@@ -1,15 +1,15 @@
-//! `cagd.BezierCurve` and `cagd.BezierPatch` (thesis §2–3): the core's [`BezierCurve`] and
-//! [`BezierPatch`], points as rows.
+//! `cagd.BezierCurve` (thesis §2): the core's [`BezierCurve`], points as rows. The patch is in
+//! [`super::bezier_patch`].
 
-use cagd::bezier::{BezierCurve, BezierPatch, Edge};
+use cagd::bezier::BezierCurve;
 use cagd_ops::error::lib;
 use cagd_ops::ops::{Derivative, Elevate, Subdivide};
 use cagd_ops::Role;
 use pyo3::prelude::*;
 
 use super::shared::{build, exactness, on, point_out, Ex, Exact};
-use super::steps::Steps;
-use crate::convert::{net_in, net_out, points_as_rows, rows_out, Num};
+use super::steps::{request_steps, steps_getter, Steps, StepsOf};
+use crate::convert::{points_as_rows, rows_out, Num};
 use crate::error::IntoPy;
 use crate::ops::{execute, item, with_context, Names};
 
@@ -21,24 +21,47 @@ const CURVE_NAMES: Names = &[
     (Role::T, "t"),
 ];
 
-/// How `BezierPatch` names the roles of its checks.
-const PATCH_NAMES: Names = &[(Role::Net, "net")];
-
 type CurveEx = Ex<BezierCurve<f64>, BezierCurve<Exact>>;
-type PatchEx = Ex<BezierPatch<f64>, BezierPatch<Exact>>;
 
 /// A Bézier curve `b(t) = Σ_{i=0}^n b_i B_i^n(t)`, `t ∈ [0, 1]` (thesis (2.1)), with the control
 /// points `b_0 … b_n` as the rows of an `(n+1, d)` array.
 ///
-/// Exact with `exact=True` or `Fraction` entries; then every result is in `Fraction`s.
+/// Exact with `exact=True` or `Fraction` entries; then every result is in `Fraction`s. A curve
+/// made by `elevate` or `subdivide` keeps the steps of that construction (`steps`).
 ///
 /// >>> c = cagd.BezierCurve([[0, 0, 0], [0, 2, 2], [8, 2, 0], [4, 0, 0]], exact=True)
 /// >>> [str(x) for x in c(Fraction(1, 2))]          # thesis Primer 2.4
 /// ['7/2', '3/2', '3/4']
+/// >>> left, right = c.subdivide(Fraction(1, 2))
+/// >>> left.control_points[-1].tolist() == right.control_points[0].tolist()
+/// True
+/// >>> left.steps["scheme.r3"].tolist()               # the point on the curve, b_0^3
+/// [[Fraction(7, 2), Fraction(3, 2), Fraction(3, 4)]]
+/// >>> c.elevate().control_points[1].tolist()
+/// [Fraction(0, 1), Fraction(3, 2), Fraction(3, 2)]
+// The doc comment is the class's Python docstring: its examples index arrays and print lists
+// (`[1]`, `[[0], [1]]`), which are no Rust links.
+#[allow(rustdoc::broken_intra_doc_links)]
 #[pyclass(module = "cagd", name = "BezierCurve", frozen)]
 #[derive(Clone)]
 pub struct PyBezierCurve {
     pub(crate) inner: CurveEx,
+    /// The steps of the construction that made the curve.
+    pub(crate) steps: Option<StepsOf>,
+}
+
+impl PyBezierCurve {
+    /// The Python object of a core curve (given directly: no steps).
+    pub fn from_inner(inner: CurveEx) -> Self {
+        PyBezierCurve { inner, steps: None }
+    }
+
+    fn with_steps(inner: CurveEx, steps: StepsOf) -> Self {
+        PyBezierCurve {
+            inner,
+            steps: Some(steps),
+        }
+    }
 }
 
 /// The curve of the control points: the operation layer's checks of a Bézier curve's points
@@ -77,20 +100,28 @@ fn derivative<T: Num>(py: Python<'_>, c: &BezierCurve<T>, r: usize) -> PyResult<
 }
 
 /// The curve elevated `times` times by the request [`Elevate`] (on the curve's interval: the
-/// elevated control points do not depend on it).
-fn elevate<T: Num>(py: Python<'_>, c: &BezierCurve<T>, times: usize) -> PyResult<BezierCurve<T>> {
+/// elevated control points do not depend on it), with its steps: the polygon of every degree.
+fn elevate<T: Num>(
+    py: Python<'_>,
+    c: &BezierCurve<T>,
+    times: usize,
+) -> PyResult<(BezierCurve<T>, StepsOf)> {
     let op = Elevate {
         by: times,
         ..Elevate::new(c.control().clone())
     };
-    curve_item(&execute(py, CURVE_NAMES, &op)?, "control", c.interval())
+    let elevated = curve_item(&execute(py, CURVE_NAMES, &op)?, "control", c.interval())?;
+    let title = format!("degree elevation {} → {}", c.degree(), elevated.degree());
+    let steps = Elevate { steps: true, ..op };
+    Ok((elevated, request_steps(steps, CURVE_NAMES, title, &[])))
 }
 
-/// The two halves at `t` by the request [`Subdivide`], on `[a, t]` and `[t, b]`.
+/// The two halves at `t` by the request [`Subdivide`], on `[a, t]` and `[t, b]`, with the
+/// steps of both: the de Casteljau scheme at `t`, the halves' points marked on its edges.
 fn subdivide<T: Num>(
     c: &BezierCurve<T>,
     t: &Bound<'_, PyAny>,
-) -> PyResult<(BezierCurve<T>, BezierCurve<T>)> {
+) -> PyResult<(BezierCurve<T>, BezierCurve<T>, StepsOf)> {
     let at = T::scalar(t, "t")?;
     let op = Subdivide {
         interval: Some(interval(c)),
@@ -99,14 +130,12 @@ fn subdivide<T: Num>(
     };
     let report = execute(t.py(), CURVE_NAMES, &op)?;
     let (a, b) = c.interval();
+    let title = "subdivision by de Casteljau's scheme".to_string();
     Ok((
         curve_item(&report, "left", (a, &at))?,
         curve_item(&report, "right", (&at, b))?,
+        request_steps(Subdivide { steps: true, ..op }, CURVE_NAMES, title, &[]),
     ))
-}
-
-fn wrap_curve(inner: CurveEx) -> PyBezierCurve {
-    PyBezierCurve { inner }
 }
 
 #[pymethods]
@@ -115,7 +144,7 @@ impl PyBezierCurve {
     #[pyo3(signature = (points, exact = None))]
     fn new(points: &Bound<'_, PyAny>, exact: Option<bool>) -> PyResult<Self> {
         let exact = exactness(exact, &[points])?;
-        Ok(wrap_curve(build!(exact, new_curve(points))))
+        Ok(Self::from_inner(build!(exact, new_curve(points))))
     }
 
     /// The degree `n`.
@@ -140,38 +169,52 @@ impl PyBezierCurve {
     /// `b^{(r)}(t) = n!/(n−r)! Σ Δ^r b_i B_i^{n−r}(t)` (thesis (2.4)).
     #[pyo3(signature = (r = 1))]
     fn derivative(&self, py: Python<'_>, r: usize) -> PyResult<Self> {
-        Ok(wrap_curve(match &self.inner {
+        Ok(Self::from_inner(match &self.inner {
             Ex::F(c) => Ex::F(derivative(py, c, r)?),
             Ex::E(c) => Ex::E(derivative(py, c, r)?),
         }))
     }
 
-    /// The same curve of degree `n + times`: `b_i^{(1)} = i/(n+1) b_{i−1} + (1 − i/(n+1)) b_i`.
+    /// The same curve of degree `n + times`: `b_i^{(1)} = i/(n+1) b_{i−1} + (1 − i/(n+1)) b_i`;
+    /// its `steps` are the polygons of every degree on the way.
     #[pyo3(signature = (times = 1))]
     fn elevate(&self, py: Python<'_>, times: usize) -> PyResult<Self> {
-        Ok(wrap_curve(match &self.inner {
-            Ex::F(c) => Ex::F(elevate(py, c, times)?),
-            Ex::E(c) => Ex::E(elevate(py, c, times)?),
-        }))
+        Ok(match &self.inner {
+            Ex::F(c) => {
+                let (e, steps) = elevate(py, c, times)?;
+                Self::with_steps(Ex::F(e), steps)
+            }
+            Ex::E(c) => {
+                let (e, steps) = elevate(py, c, times)?;
+                Self::with_steps(Ex::E(e), steps)
+            }
+        })
     }
 
-    /// The two halves at `t`: their control points are the two edges of the scheme at `t`.
+    /// The two halves at `t`: their control points are the two edges of the scheme at `t`
+    /// (both halves' `steps`: that scheme, the diagonal marked `L`, the last row `R`).
     fn subdivide(&self, t: &Bound<'_, PyAny>) -> PyResult<(Self, Self)> {
         Ok(match &self.inner {
             Ex::F(c) => {
-                let (a, b) = subdivide(c, t)?;
-                (wrap_curve(Ex::F(a)), wrap_curve(Ex::F(b)))
+                let (a, b, steps) = subdivide(c, t)?;
+                (
+                    Self::with_steps(Ex::F(a), steps.clone()),
+                    Self::with_steps(Ex::F(b), steps),
+                )
             }
             Ex::E(c) => {
-                let (a, b) = subdivide(c, t)?;
-                (wrap_curve(Ex::E(a)), wrap_curve(Ex::E(b)))
+                let (a, b, steps) = subdivide(c, t)?;
+                (
+                    Self::with_steps(Ex::E(a), steps.clone()),
+                    Self::with_steps(Ex::E(b), steps),
+                )
             }
         })
     }
 
     /// The curve run backwards, `b(1 − t)`.
     fn reversed(&self) -> Self {
-        wrap_curve(match &self.inner {
+        Self::from_inner(match &self.inner {
             Ex::F(c) => Ex::F(c.reversed()),
             Ex::E(c) => Ex::E(c.reversed()),
         })
@@ -185,7 +228,7 @@ impl PyBezierCurve {
     /// The antiderivative `∫_0^t b`, degree `n + 1`, control points the partial sums
     /// `Σ_{j<i} b_j/(n+1)`.
     fn antiderivative(&self) -> PyResult<Self> {
-        Ok(wrap_curve(match &self.inner {
+        Ok(Self::from_inner(match &self.inner {
             Ex::F(c) => Ex::F(cagd::integral::bezier_antiderivative(c).py()?),
             Ex::E(c) => Ex::E(cagd::integral::bezier_antiderivative(c).py()?),
         }))
@@ -201,7 +244,7 @@ impl PyBezierCurve {
 }
 
 super::shared::curve_methods!(PyBezierCurve, "BezierCurve");
-super::shared::surface_methods!(PyBezierPatch, "BezierPatch");
+steps_getter!(PyBezierCurve);
 
 fn scheme_steps<T: Num>(
     py: Python<'_>,
@@ -221,124 +264,7 @@ fn scheme_steps<T: Num>(
     ))
 }
 
-/// A tensor-product Bézier patch `x(u, v) = Σ_i Σ_j b_ij B_i^m(u) B_j^n(v)` on `[0, 1]²`
-/// (thesis (3.1)), the control net an `(m+1, n+1, d)` array, `net[i, j] = b_ij`.
-///
-/// `patch(u, v)` evaluates on the grid `u × v`: shape `(len(u), len(v), d)` (numbers: `(d,)`).
-#[pyclass(module = "cagd", name = "BezierPatch", frozen)]
-#[derive(Clone)]
-pub struct PyBezierPatch {
-    pub(crate) inner: PatchEx,
-}
-
-/// The patch of the net: the operation layer's checks of a Bézier patch's net (finite, the
-/// degree within the limit), as its request makes them.
-fn new_patch<T: Num>(net: &Bound<'_, PyAny>) -> PyResult<BezierPatch<T>> {
-    let coords = net_in::<T>(net, "net")?;
-    let (m, n) = coords.first().map_or((0, 0), |c| (c.nrows(), c.ncols()));
-    with_context(net.py(), PATCH_NAMES, |cx| {
-        cagd_ops::check::finite(Role::Net, coords.iter().flat_map(|c| c.iter()))?;
-        cx.check_degree(Role::Net, m.max(n).saturating_sub(1))?;
-        BezierPatch::new(coords).map_err(lib(Role::Net, cagd_ops::ops::BEZIER_NET_FORM))
-    })
-}
-
-fn edge(name: &str) -> PyResult<Edge> {
-    match name {
-        "u0" => Ok(Edge::U0),
-        "u1" => Ok(Edge::U1),
-        "v0" => Ok(Edge::V0),
-        "v1" => Ok(Edge::V1),
-        _ => Err(crate::error::conversion(
-            "edge",
-            "expected 'u0', 'u1', 'v0' or 'v1'",
-        )),
-    }
-}
-
-#[pymethods]
-impl PyBezierPatch {
-    #[new]
-    #[pyo3(signature = (net, exact = None))]
-    fn new(net: &Bound<'_, PyAny>, exact: Option<bool>) -> PyResult<Self> {
-        let exact = exactness(exact, &[net])?;
-        Ok(PyBezierPatch {
-            inner: build!(exact, new_patch(net)),
-        })
-    }
-
-    /// The degrees `(m, n)`.
-    #[getter]
-    fn degree(&self) -> (usize, usize) {
-        on!(self.inner, p => p.degree())
-    }
-
-    /// The control net, `(m+1, n+1, d)`.
-    #[getter]
-    fn control_points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        on!(self.inner, p => net_out(py, p.coordinates()))
-    }
-
-    /// The tensor de Casteljau scheme at `(u, v)` (thesis Algoritem 3): `min(m, n)` bilinear
-    /// steps, then linear steps in the direction whose degree remains; level `k` is an array
-    /// `(rows, cols, d)`.
-    fn scheme(
-        &self,
-        py: Python<'_>,
-        u: &Bound<'_, PyAny>,
-        v: &Bound<'_, PyAny>,
-    ) -> PyResult<Steps> {
-        on!(self.inner, p => patch_scheme(py, p, u, v))
-    }
-
-    /// The partial derivative `∂^{r+s} x/∂u^r ∂v^s` as a Bézier patch.
-    #[pyo3(signature = (r = 1, s = 0))]
-    fn derivative(&self, r: usize, s: usize) -> PyResult<Self> {
-        Ok(PyBezierPatch {
-            inner: match &self.inner {
-                Ex::F(p) => Ex::F(p.derivative(r, s).py()?),
-                Ex::E(p) => Ex::E(p.derivative(r, s).py()?),
-            },
-        })
-    }
-
-    /// The boundary curve `'u0'` (`x(0, v)`), `'u1'`, `'v0'` (`x(u, 0)`) or `'v1'`.
-    fn boundary(&self, edge_name: &str) -> PyResult<PyBezierCurve> {
-        let e = edge(edge_name)?;
-        Ok(wrap_curve(match &self.inner {
-            Ex::F(p) => Ex::F(p.boundary(e)),
-            Ex::E(p) => Ex::E(p.boundary(e)),
-        }))
-    }
-}
-
-fn patch_scheme<T: Num>(
-    py: Python<'_>,
-    p: &BezierPatch<T>,
-    u: &Bound<'_, PyAny>,
-    v: &Bound<'_, PyAny>,
-) -> PyResult<Steps> {
-    let s = p.scheme(T::scalar(u, "u")?, T::scalar(v, "v")?);
-    let mut items = Vec::new();
-    for k in 0..s.level_count() {
-        if let Some(level) = s.level(k) {
-            items.push((format!("level {k}"), net_out(py, level)?.unbind()));
-        }
-    }
-    items.push((
-        "point".into(),
-        point_out(py, &s.point_on_surface())?.unbind(),
-    ));
-    Ok(Steps::new(
-        "tensor de Casteljau scheme",
-        Some(s.to_string()),
-        items,
-    ))
-}
-
-/// Registers the classes.
+/// Registers the class.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_class::<PyBezierCurve>()?;
-    m.add_class::<PyBezierPatch>()?;
-    Ok(())
+    m.add_class::<PyBezierCurve>()
 }

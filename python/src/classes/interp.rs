@@ -7,12 +7,13 @@ use cagd::lagrange::{Lagrange, LagrangeInterpolant};
 use cagd::spline::{CubicSpline, Parametrization};
 use cagd_ops::error::lib;
 use cagd_ops::ops::{self, spline::Ends, spline::Knots};
-use cagd_ops::Role;
+use cagd_ops::{Params, Role};
 use nalgebra::DMatrix;
 use pyo3::prelude::*;
 
 use super::bezier::PyBezierCurve;
-use super::shared::{build, exactness, on, point_out, Ex, Exact};
+use super::shared::{exactness, on, point_out, Ex, Exact};
+use super::steps::{request_steps, steps_getter, StepsOf};
 use crate::convert::{params, points_as_rows, rows_out, vector_out, Num};
 use crate::error::{conversion, IntoPy};
 use crate::ops::{with_context, Names};
@@ -44,16 +45,41 @@ fn column_in<T: Num>(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<DMatrix<T>>
     Ok(DMatrix::from_vec(v.len(), 1, v))
 }
 
+/// `Ex::F(…)` or `Ex::E(…)` of `$f::<T>(…)` by `exact`, with the steps it returns beside.
+macro_rules! build_with_steps {
+    ($exact:expr, $f:ident ( $($arg:expr),* )) => {
+        if $exact {
+            let (x, steps) = $f::<Exact>($($arg),*)?;
+            (Ex::E(x), steps)
+        } else {
+            let (x, steps) = $f::<f64>($($arg),*)?;
+            (Ex::F(x), steps)
+        }
+    };
+}
+
 /// The Ferguson (Hermite) cubic `x(u) = x1 H0(u) + x2 H3(u) + t1 H1(u) + t2 H2(u)`,
-/// `u ∈ [0, 1]`, through `x1`, `x2` with the tangents `t1`, `t2` (the lecture notes).
+/// `u ∈ [0, 1]`, through `x1`, `x2` with the tangents `t1`, `t2` (the lecture notes). Its
+/// `steps`: the Hermite basis at `u = 0, 1/2, 1` (a row per `u`, in the order of the geometry
+/// `[x1 x2 t1 t2]`: `H0, H3, H1, H2`), the Bézier points `x1, x1 + t1/3, x2 − t2/3, x2`, and the
+/// points at those `u`.
+///
+/// >>> h = cagd.HermiteCubic([0, 0], [3, 0], [3, 3], [3, -3], exact=True)
+/// >>> h(Fraction(1, 2)).tolist()
+/// [Fraction(3, 2), Fraction(3, 4)]
+/// >>> h.steps["bezier_control"].tolist() == [[0, 0], [1, 1], [2, 1], [3, 0]]
+/// True
 #[pyclass(module = "cagd", name = "HermiteCubic", frozen)]
 #[derive(Clone)]
 pub struct PyHermiteCubic {
     pub(crate) inner: Ex<HermiteCubic<f64>, HermiteCubic<Exact>>,
+    /// The steps of the construction (none for a spline's segment).
+    pub(crate) steps: Option<StepsOf>,
 }
 
-/// The cubic built by the request [`ops::Hermite`] (its checks of the four vectors).
-fn new_hermite<T: Num>(args: [&Bound<'_, PyAny>; 4]) -> PyResult<HermiteCubic<T>> {
+/// The cubic built by the request [`ops::Hermite`] (its checks of the four vectors), and its
+/// steps at `u = 0, 1/2, 1`.
+fn new_hermite<T: Num>(args: [&Bound<'_, PyAny>; 4]) -> PyResult<(HermiteCubic<T>, StepsOf)> {
     let [x1, x2, t1, t2] = args;
     let op = ops::Hermite::new([
         column_in(x1, "x1")?,
@@ -61,7 +87,15 @@ fn new_hermite<T: Num>(args: [&Bound<'_, PyAny>; 4]) -> PyResult<HermiteCubic<T>
         column_in(t1, "t1")?,
         column_in(t2, "t2")?,
     ]);
-    with_context(x1.py(), HERMITE_NAMES, |_| op.cubic())
+    let cubic = with_context(x1.py(), HERMITE_NAMES, |_| op.cubic())?;
+    let half = T::one() / T::from_usize(2);
+    let steps = ops::Hermite {
+        t: Params::Given(vec![T::zero(), half, T::one()]),
+        steps: true,
+        ..op
+    };
+    let title = "Hermite (Ferguson) cubic".to_string();
+    Ok((cubic, request_steps(steps, HERMITE_NAMES, title, &[])))
 }
 
 #[pymethods]
@@ -76,8 +110,10 @@ impl PyHermiteCubic {
         exact: Option<bool>,
     ) -> PyResult<Self> {
         let exact = exactness(exact, &[x1, x2, t1, t2])?;
+        let (inner, steps) = build_with_steps!(exact, new_hermite([x1, x2, t1, t2]));
         Ok(PyHermiteCubic {
-            inner: build!(exact, new_hermite([x1, x2, t1, t2])),
+            inner,
+            steps: Some(steps),
         })
     }
 
@@ -89,12 +125,10 @@ impl PyHermiteCubic {
     /// The same cubic as a Bézier curve: `b0 = x1`, `b1 = x1 + t1/3`, `b2 = x2 − t2/3`,
     /// `b3 = x2`.
     fn to_bezier(&self) -> PyResult<PyBezierCurve> {
-        Ok(PyBezierCurve {
-            inner: match &self.inner {
-                Ex::F(c) => Ex::F(c.to_bezier().py()?),
-                Ex::E(c) => Ex::E(c.to_bezier().py()?),
-            },
-        })
+        Ok(PyBezierCurve::from_inner(match &self.inner {
+            Ex::F(c) => Ex::F(c.to_bezier().py()?),
+            Ex::E(c) => Ex::E(c.to_bezier().py()?),
+        }))
     }
 
     /// The geometry `[x1 x2 t1 t2]` as rows, `(4, d)`.
@@ -107,21 +141,32 @@ impl PyHermiteCubic {
 /// The interpolating cubic spline through the points (rows, `(m, d)`), piecewise Ferguson
 /// cubics with continuous second derivative; `end='natural'` (`x'' = 0` at the ends),
 /// `'closed'` (periodic), or `'clamped'` with the end tangents `start`, `end_tangent`.
-/// `params` (optional): the parameter of each point (default `0, 1, …, m−1`).
+/// `params` (optional): the parameter of each point (default `0, 1, …, m−1`). Its `steps`:
+/// the parameters, the system `A · tangents = rhs` for the tangents, and every segment as a
+/// Hermite geometry and as Bézier points.
+///
+/// >>> s = cagd.CubicSpline([[0, 0], [1, 1], [2, 0]], exact=True)
+/// >>> s.tangents.tolist()
+/// [[Fraction(1, 1), Fraction(3, 2)], [Fraction(1, 1), Fraction(0, 1)], [Fraction(1, 1), Fraction(-3, 2)]]
+/// >>> s.steps["system"].tolist()
+/// [[Fraction(2, 1), Fraction(1, 1), Fraction(0, 1)], [Fraction(1, 1), Fraction(4, 1), Fraction(1, 1)], [Fraction(0, 1), Fraction(1, 1), Fraction(2, 1)]]
 #[pyclass(module = "cagd", name = "CubicSpline", frozen)]
 #[derive(Clone)]
 pub struct PyCubicSpline {
     pub(crate) inner: Ex<CubicSpline<f64>, CubicSpline<Exact>>,
+    /// The steps of the interpolation.
+    pub(crate) steps: Option<StepsOf>,
 }
 
 /// The spline built by the request [`ops::Spline`]: its end condition (the tangents it needs
-/// or ignores), the parameters of the points and the work checked by the operation layer.
+/// or ignores), the parameters of the points and the work checked by the operation layer; and
+/// the request's steps (at the first parameter, its points and samples left out).
 fn new_spline<T: Num>(
     points: &Bound<'_, PyAny>,
     end: &str,
     tangents: (Option<&Bound<'_, PyAny>>, Option<&Bound<'_, PyAny>>),
     ps: Option<&Bound<'_, PyAny>>,
-) -> PyResult<CubicSpline<T>> {
+) -> PyResult<(CubicSpline<T>, StepsOf)> {
     let ends = match end {
         "natural" => Ends::Natural,
         "closed" => Ends::Closed,
@@ -146,7 +191,15 @@ fn new_spline<T: Num>(
         },
         ..ops::Spline::new(points_as_rows::<T>(points, "points")?)
     };
-    with_context(points.py(), SPLINE_NAMES, |cx| op.spline(cx))
+    let spline = with_context(points.py(), SPLINE_NAMES, |cx| op.spline(cx))?;
+    let steps = ops::Spline {
+        t: Params::Given(spline.params()[..1].to_vec()),
+        steps: true,
+        ..op
+    };
+    let title = "interpolating cubic spline".to_string();
+    let steps = request_steps(steps, SPLINE_NAMES, title, &["t", "result"]);
+    Ok((spline, steps))
 }
 
 #[pymethods]
@@ -164,8 +217,11 @@ impl PyCubicSpline {
         let mut objs = vec![points];
         objs.extend(start.iter().copied().chain(end_tangent).chain(params));
         let exact = exactness(exact, &objs)?;
+        let (inner, steps) =
+            build_with_steps!(exact, new_spline(points, end, (start, end_tangent), params));
         Ok(PyCubicSpline {
-            inner: build!(exact, new_spline(points, end, (start, end_tangent), params)),
+            inner,
+            steps: Some(steps),
         })
     }
 
@@ -188,34 +244,59 @@ impl PyCubicSpline {
                 Ex::F(c) => Ex::F(c.segment(k).py()?),
                 Ex::E(c) => Ex::E(c.segment(k).py()?),
             },
+            steps: None,
         })
     }
 }
 
 /// The Lagrange interpolating polynomial curve through the points (rows, `(m+1, d)`) at the
 /// nodes `t_0 … t_m`: `x(t) = Σ_i L_i(t) x_i`, `L_i(t) = Π_{j≠i} (t − t_j)/(t_i − t_j)`,
-/// evaluated in barycentric form. `basis(t)` gives `L_0(t) … L_m(t)`.
+/// evaluated in barycentric form. `basis(t)` gives `L_0(t) … L_m(t)`. Its `steps`: the
+/// lecture notes' blending matrix `G` (`coefficients`, row `i` the powers of `L_i`, highest
+/// first) and the polynomial's coefficients `A = X G` (`polynomial`, one point a power).
+///
+/// >>> c = cagd.Lagrange([1, 2, 3, 4, 5], [[1], [2], [3], [2], [1]], exact=True)
+/// >>> c(Fraction(5, 2)).tolist()                        # the lecture notes: 87/32
+/// [Fraction(87, 32)]
+/// >>> cagd.Lagrange([0, 1, 2], [[0], [1], [4]], exact=True).steps["polynomial"].tolist()
+/// [[Fraction(1, 1)], [Fraction(0, 1)], [Fraction(0, 1)]]
+// The doc comment is the class's Python docstring: its examples index arrays and print lists
+// (`[1]`, `[[0], [1]]`), which are no Rust links.
+#[allow(rustdoc::broken_intra_doc_links)]
 #[pyclass(module = "cagd", name = "Lagrange", frozen)]
 #[derive(Clone)]
 pub struct PyLagrange {
     pub(crate) inner: Ex<LagrangeInterpolant<f64>, LagrangeInterpolant<Exact>>,
+    /// The steps of the interpolation.
+    pub(crate) steps: Option<StepsOf>,
 }
 
 fn new_lagrange<T: Num>(
     nodes: &Bound<'_, PyAny>,
     points: &Bound<'_, PyAny>,
-) -> PyResult<LagrangeInterpolant<T>> {
+) -> PyResult<(LagrangeInterpolant<T>, StepsOf)> {
     let (_, n) = params::<T>(nodes, "nodes")?;
     let values = points_as_rows::<T>(points, "points")?;
     // The checks of the request [`ops::Lagrange`]: the degree within the limit, the nodes
     // given and finite; the core's barycentric form keeps the nodes in the order given.
-    with_context(nodes.py(), LAGRANGE_NAMES, |cx| {
+    let curve = with_context(nodes.py(), LAGRANGE_NAMES, |cx| {
         cx.check_degree(Role::Nodes, n.len().saturating_sub(1))?;
         cagd_ops::params::check_given(Role::Nodes, &n, cx)?;
-        let basis = Lagrange::new(n).map_err(lib(Role::Nodes, ops::LAGRANGE_NODES_FORM))?;
-        LagrangeInterpolant::new(basis, values)
+        let basis = Lagrange::new(n.clone()).map_err(lib(Role::Nodes, ops::LAGRANGE_NODES_FORM))?;
+        LagrangeInterpolant::new(basis, values.clone())
             .map_err(lib(Role::Points, ops::LAGRANGE_VALUES_FORM))
-    })
+    })?;
+    let steps = ops::Lagrange {
+        values: Some(values),
+        coefficients: true,
+        t: Params::Given(n[..1].to_vec()),
+        ..ops::Lagrange::new(n)
+    };
+    let title = "Lagrange interpolation".to_string();
+    Ok((
+        curve,
+        request_steps(steps, LAGRANGE_NAMES, title, &["t", "result"]),
+    ))
 }
 
 #[pymethods]
@@ -228,8 +309,10 @@ impl PyLagrange {
         exact: Option<bool>,
     ) -> PyResult<Self> {
         let exact = exactness(exact, &[nodes, points])?;
+        let (inner, steps) = build_with_steps!(exact, new_lagrange(nodes, points));
         Ok(PyLagrange {
-            inner: build!(exact, new_lagrange(nodes, points)),
+            inner,
+            steps: Some(steps),
         })
     }
 
@@ -248,6 +331,9 @@ impl PyLagrange {
 super::shared::curve_methods!(PyHermiteCubic, "HermiteCubic");
 super::shared::curve_methods!(PyCubicSpline, "CubicSpline");
 super::shared::curve_methods!(PyLagrange, "Lagrange");
+steps_getter!(PyHermiteCubic);
+steps_getter!(PyCubicSpline);
+steps_getter!(PyLagrange);
 
 /// Registers the classes.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {

@@ -2,6 +2,8 @@
 //! cross-boundary derivatives), `cagd.GordonSurface` (§5) and `cagd.discrete_coons` (the CAD
 //! notes): the core's constructions over any of the package's curves.
 
+use cagd::bezier::BezierCurve;
+use cagd::bspline::BSplineCurve;
 use cagd::coons::{
     BicubicCoonsPatch, BlendingPair, CoonsBoundary, CoonsPatch, CrossDerivatives,
     GeneralizedCoonsPatch, Tolerance, Twist,
@@ -19,10 +21,11 @@ use nalgebra::DVector;
 use pyo3::prelude::*;
 
 use super::bezier::PyBezierCurve;
+use super::bezier_patch::PyBezierPatch;
 use super::interp::{PyCubicSpline, PyHermiteCubic, PyLagrange};
 use super::shared::mixed;
 use super::shared::{on, point_out, Ex, Exact};
-use super::splines::{PyBSplineCurve, PyNurbsCurve};
+use super::splines::{PyBSplineCurve, PyBSplineSurface, PyNurbsCurve};
 use super::steps::Steps;
 use crate::convert::{grid_in, grid_out, params, Num};
 use crate::error::{conversion, IntoPy};
@@ -77,6 +80,52 @@ fn any_curve(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Ex<AnyCurve<f64>, A
 
 /// Curves in doubles or in exact rationals.
 type Curves = Ex<Vec<AnyCurve<f64>>, Vec<AnyCurve<Exact>>>;
+
+/// The curves `objs` as the core's curves of the class `$class` (with the field `inner`), all
+/// in one arithmetic; `None` if one of them is of another class or arithmetic.
+macro_rules! typed_curves {
+    ($objs:expr, $class:ty) => {{
+        let (mut floats, mut exacts) = (Vec::new(), Vec::new());
+        let mut all = true;
+        for obj in $objs {
+            match obj.cast::<$class>().map(|c| c.get().inner.clone()) {
+                Ok(Ex::F(c)) => floats.push(c),
+                Ok(Ex::E(c)) => exacts.push(c),
+                Err(_) => all = false,
+            }
+        }
+        match (all, floats.is_empty(), exacts.is_empty()) {
+            (true, false, true) => Some(Ex::F(floats)),
+            (true, true, false) => Some(Ex::E(exacts)),
+            _ => None,
+        }
+    }};
+}
+
+/// A bilinearly blended Coons patch of four curves of one type `C` (in `f64` or exact).
+type TypedCoons<C, D> = Ex<CoonsPatch<C, f64>, CoonsPatch<D, Exact>>;
+
+/// The bilinear Coons patch of four curves of one type, for the conversions of that type.
+fn typed_coons<C: Curve<f64>, D: Curve<Exact>>(
+    curves: Option<Ex<Vec<C>, Vec<D>>>,
+) -> PyResult<Option<TypedCoons<C, D>>> {
+    fn four<C, T: cagd::Scalar>(c: Vec<C>) -> PyResult<CoonsPatch<C, T>>
+    where
+        C: Curve<T>,
+    {
+        let [c1, c2, d1, d2]: [C; 4] = c
+            .try_into()
+            .map_err(|_| conversion("curves", "expected four curves"))?;
+        CoonsPatch::new(c1, c2, d1, d2)
+            .map_err(boundary_error)
+            .named(COONS_NAMES)
+    }
+    Ok(match curves {
+        None => None,
+        Some(Ex::F(c)) => Some(Ex::F(four(c)?)),
+        Some(Ex::E(c)) => Some(Ex::E(four(c)?)),
+    })
+}
 
 /// The curves `objs`, all in one arithmetic.
 fn curves(objs: &[(&Bound<'_, PyAny>, &str)]) -> PyResult<Curves> {
@@ -160,10 +209,28 @@ impl<T: cagd::Scalar> Surface<T> for Coons<T> {
 /// `blend='linear'` (bilinearly blended, the thesis's `krpaCoons`) or `'hermite'` (the cubic
 /// Hermite pair `(H0, H3)` of the partially bicubic patch, §4.2); `CoonsPatch.bicubic(…)` adds
 /// the cross-boundary derivatives (§4.3). `patch(u, v)` evaluates on the grid `u × v`;
-/// `patch.parts(u, v)` gives `r_c`, `r_d`, `r_cd` and `x` (thesis `vrednostCoons`).
+/// `patch.parts(u, v)` gives `r_c`, `r_d`, `r_cd` and `x` (thesis `vrednostCoons`). A
+/// bilinear patch of four `BezierCurve`s converts to one Bézier patch (`to_bezier`), of four
+/// `BSplineCurve`s to one B-spline surface (`to_bspline`).
+///
+/// >>> line = lambda a, b: cagd.BezierCurve([a, b], exact=True)
+/// >>> c1 = cagd.BezierCurve([[0, 0, 0], [Fraction(1, 2), 0, 1], [1, 0, 0]], exact=True)
+/// >>> p = cagd.CoonsPatch(c1, line([0, 1, 0], [1, 1, 0]), line([0, 0, 0], [0, 1, 0]), line([1, 0, 0], [1, 1, 0]))
+/// >>> half = Fraction(1, 2)
+/// >>> p(half, half).tolist()
+/// [Fraction(1, 2), Fraction(1, 2), Fraction(1, 4)]
+/// >>> p.parts(half, half)["rc"].tolist()
+/// [Fraction(1, 2), Fraction(1, 2), Fraction(1, 4)]
+/// >>> b = p.to_bezier()
+/// >>> b.degree, b(half, half).tolist() == p(half, half).tolist()
+/// ((2, 1), True)
 #[pyclass(module = "cagd", name = "CoonsPatch", frozen)]
 pub struct PyCoonsPatch {
     inner: Ex<Coons<f64>, Coons<Exact>>,
+    /// The same bilinear patch of four Bézier curves, for `to_bezier`.
+    bezier: Option<TypedCoons<BezierCurve<f64>, BezierCurve<Exact>>>,
+    /// The same bilinear patch of four B-spline curves, for `to_bspline`.
+    bspline: Option<TypedCoons<BSplineCurve<f64>, BSplineCurve<Exact>>>,
 }
 
 fn coons_of<T: cagd::Scalar>(c: Vec<AnyCurve<T>>, blend: &str) -> PyResult<Coons<T>> {
@@ -241,11 +308,22 @@ impl PyCoonsPatch {
         blend: &str,
     ) -> PyResult<Self> {
         let objs = [(c1, "c1"), (c2, "c2"), (d1, "d1"), (d2, "d2")];
+        let inner = match curves(&objs)? {
+            Ex::F(c) => Ex::F(coons_of(c, blend)?),
+            Ex::E(c) => Ex::E(coons_of(c, blend)?),
+        };
+        let linear = blend == "linear";
+        let given = [c1, c2, d1, d2];
         Ok(PyCoonsPatch {
-            inner: match curves(&objs)? {
-                Ex::F(c) => Ex::F(coons_of(c, blend)?),
-                Ex::E(c) => Ex::E(coons_of(c, blend)?),
-            },
+            inner,
+            bezier: typed_coons(typed_curves!(
+                given.iter().filter(|_| linear),
+                PyBezierCurve
+            ))?,
+            bspline: typed_coons(typed_curves!(
+                given.iter().filter(|_| linear),
+                PyBSplineCurve
+            ))?,
         })
     }
 
@@ -281,6 +359,8 @@ impl PyCoonsPatch {
                 Ex::F(c) => Ex::F(bicubic_of(c, twist)?),
                 Ex::E(c) => Ex::E(bicubic_of(c, twist)?),
             },
+            bezier: None,
+            bspline: None,
         })
     }
 
@@ -289,6 +369,34 @@ impl PyCoonsPatch {
     fn parts(&self, py: Python<'_>, u: &Bound<'_, PyAny>, v: &Bound<'_, PyAny>) -> PyResult<Steps> {
         on!(self.inner, p => parts_steps(py, p.parts(Num::scalar(u, "u")?, Num::scalar(v, "v")?), "Coons patch point"))
     }
+
+    /// The same surface as one Bézier patch (the bilinearly blended patch of four Bézier
+    /// curves: the Gordon net of the nodes `{0, 1}`); degree `(max deg c, max deg d)` raised to
+    /// at least 1.
+    fn to_bezier(&self) -> PyResult<PyBezierPatch> {
+        Ok(PyBezierPatch::from_inner(match &self.bezier {
+            Some(Ex::F(c)) => Ex::F(c.to_bezier().py()?),
+            Some(Ex::E(c)) => Ex::E(c.to_bezier().py()?),
+            None => return Err(conversion(
+                "c1, c2, d1, d2",
+                "to_bezier needs four BezierCurve boundaries (all exact or all floats) and blend='linear'",
+            )),
+        }))
+    }
+
+    /// The same surface as one B-spline surface (the bilinearly blended patch of four
+    /// B-spline curves with clamped knots, each reparametrised onto `[0, 1]`: octave-nurbs'
+    /// `nrbcoons`, the boolean sum of three B-spline surfaces made compatible).
+    fn to_bspline(&self) -> PyResult<PyBSplineSurface> {
+        Ok(PyBSplineSurface::from_inner(match &self.bspline {
+            Some(Ex::F(c)) => Ex::F(c.to_bspline().py()?),
+            Some(Ex::E(c)) => Ex::E(c.to_bspline().py()?),
+            None => return Err(conversion(
+                "c1, c2, d1, d2",
+                "to_bspline needs four BSplineCurve boundaries (all exact or all floats) and blend='linear'",
+            )),
+        }))
+    }
 }
 
 /// A Gordon surface through a network of curves (thesis §5, (5.3)):
@@ -296,18 +404,35 @@ impl PyCoonsPatch {
 /// `g12 = Σ_i Σ_j L_i(u) L_j(v) g(u_i, v_j)` with Lagrange polynomials over the nodes.
 ///
 /// `curves_at_u[i]` is the curve `g(u_i, ·)`, `curves_at_v[j]` the curve `g(·, v_j)`; they must
-/// cross at `g(u_i, v_j)`.
+/// cross at `g(u_i, v_j)`. A network of `BezierCurve`s converts to one Bézier patch
+/// (`to_bezier`).
+///
+/// >>> L = lambda a, b: cagd.BezierCurve([a, b], exact=True)
+/// >>> g = cagd.GordonSurface([0, 1], [0, 1], [L([0, 0], [0, 1]), L([1, 0], [1, 1])],
+/// ...                        [L([0, 0], [1, 0]), L([0, 1], [1, 1])])
+/// >>> g(Fraction(1, 4), Fraction(1, 2)).tolist()
+/// [Fraction(1, 4), Fraction(1, 2)]
+/// >>> g.parts(Fraction(1, 4), Fraction(1, 2))["g12"].tolist()
+/// [Fraction(1, 4), Fraction(1, 2)]
+/// >>> g.to_bezier().degree
+/// (1, 1)
 #[pyclass(module = "cagd", name = "GordonSurface", frozen)]
 pub struct PyGordonSurface {
     inner: Ex<GordonSurface<AnyCurve<f64>, f64>, GordonSurface<AnyCurve<Exact>, Exact>>,
+    /// The same surface of a network of Bézier curves, for `to_bezier`.
+    bezier: Option<BezierGordon>,
 }
 
-fn gordon_of<T: Num>(
+/// A Gordon surface of Bézier curves, in `f64` or exact.
+type BezierGordon =
+    Ex<GordonSurface<BezierCurve<f64>, f64>, GordonSurface<BezierCurve<Exact>, Exact>>;
+
+fn gordon_of<T: Num, C: Curve<T> + Send>(
     u: &Bound<'_, PyAny>,
     v: &Bound<'_, PyAny>,
-    mut c: Vec<AnyCurve<T>>,
+    mut c: Vec<C>,
     split: usize,
-) -> PyResult<GordonSurface<AnyCurve<T>, T>> {
+) -> PyResult<GordonSurface<C, T>> {
     let (_, un) = params::<T>(u, "u_nodes")?;
     let (_, vn) = params::<T>(v, "v_nodes")?;
     let at_v = c.split_off(split);
@@ -335,12 +460,32 @@ impl PyGordonSurface {
             curves_at_u.iter().map(|c| (c, "curves_at_u")).collect();
         objs.extend(curves_at_v.iter().map(|c| (c, "curves_at_v")));
         let split = curves_at_u.len();
-        Ok(PyGordonSurface {
-            inner: match curves(&objs)? {
-                Ex::F(c) => Ex::F(gordon_of(u_nodes, v_nodes, c, split)?),
-                Ex::E(c) => Ex::E(gordon_of(u_nodes, v_nodes, c, split)?),
-            },
-        })
+        let inner = match curves(&objs)? {
+            Ex::F(c) => Ex::F(gordon_of(u_nodes, v_nodes, c, split)?),
+            Ex::E(c) => Ex::E(gordon_of(u_nodes, v_nodes, c, split)?),
+        };
+        let all = curves_at_u.iter().chain(&curves_at_v);
+        let bezier = match typed_curves!(all, PyBezierCurve) {
+            None => None,
+            Some(Ex::F(c)) => Some(Ex::F(gordon_of(u_nodes, v_nodes, c, split)?)),
+            Some(Ex::E(c)) => Some(Ex::E(gordon_of(u_nodes, v_nodes, c, split)?)),
+        };
+        Ok(PyGordonSurface { inner, bezier })
+    }
+
+    /// The same surface as one Bézier patch, for a network of Bézier curves: the Lagrange
+    /// blends written in Bernstein form (degree `(max(deg, k_u − 1), max(deg, k_v − 1))`).
+    fn to_bezier(&self) -> PyResult<PyBezierPatch> {
+        Ok(PyBezierPatch::from_inner(match &self.bezier {
+            Some(Ex::F(g)) => Ex::F(g.to_bezier().py()?),
+            Some(Ex::E(g)) => Ex::E(g.to_bezier().py()?),
+            None => {
+                return Err(conversion(
+                    "curves_at_u, curves_at_v",
+                    "to_bezier needs a network of BezierCurve curves (all exact or all floats)",
+                ))
+            }
+        }))
     }
 
     /// The point at `(u, v)` with its parts `g1`, `g2`, `g12`, `g`.
@@ -355,6 +500,11 @@ impl PyGordonSurface {
 /// The discrete Coons patch of the CAD notes: the inner points of a control net `(m+1, n+1, d)`
 /// from its boundary rows and columns, `b_ij = (1−i/m) b_0j + (i/m) b_mj + (1−j/n) b_i0 +
 /// (j/n) b_in − (bilinear blend of the corners)`. The inner points given are ignored.
+///
+/// >>> net = np.array([[[Fraction(j, 2)] for j in range(3)] for i in range(3)])   # b_ij = j/2
+/// >>> net[1, 1, 0] = 7                                          # an inner point: ignored
+/// >>> cagd.discrete_coons(net)[1, 1].tolist()
+/// [Fraction(1, 2)]
 #[pyfunction]
 #[pyo3(signature = (net, exact = None))]
 fn discrete_coons<'py>(

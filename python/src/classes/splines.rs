@@ -6,12 +6,12 @@ use cagd::nurbs::{NurbsCurve, NurbsSurface};
 use cagd_ops::bspline_arg::{BSplineArg, SplineDegree};
 use cagd_ops::knots::Degree;
 use cagd_ops::ops::{self, Elevate, InsertKnot};
-use cagd_ops::Role;
+use cagd_ops::{Params, Role};
 use nalgebra::DMatrix;
 use pyo3::prelude::*;
 
 use super::shared::{build, exactness, on, point_out, Ex, Exact};
-use super::steps::Steps;
+use super::steps::{from_record, request_steps, steps_getter, Steps, StepsOf};
 use crate::convert::{grid_in, net_out, params, points_as_rows, rows_out, vector_out, Num};
 use crate::error::IntoPy;
 use crate::ops::{execute, item, with_context, Names};
@@ -42,18 +42,39 @@ fn values<T: Num>(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<T>> {
 }
 
 /// A B-spline curve `C(u) = Σ_{i=0}^{n−1} P_i N_{i,p}(u)`, `u ∈ [u_p, u_n]`, with `n + p + 1`
-/// knots and the control points as the rows of an `(n, d)` array (octave-nurbs' conventions:
-/// degree `p`, spans from 0). Outside the domain the end pieces continue.
+/// knots `u_0 … u_{n+p}` and the control points as the rows of an `(n, d)` array (degree `p`;
+/// in steps, spans are counted from 1 as the CAD notes count the knots). Outside the domain
+/// the end pieces continue. A curve made by `insert_knots` or `elevate` keeps the steps of
+/// that construction (`steps`).
+///
+/// >>> c = cagd.BSplineCurve(2, [0, 0, 0, 1, 2, 2, 2], [[0, 0], [1, 2], [3, 2], [4, 0]], exact=True)
+/// >>> c(1).tolist()
+/// [Fraction(2, 1), Fraction(2, 1)]
+/// >>> s = c.de_boor(Fraction(1, 2))
+/// >>> s["span"], s["alpha1"].tolist()
+/// (3, [Fraction(1, 2), Fraction(1, 4)])
+/// >>> r = c.insert_knots(1)
+/// >>> r.knots.tolist() == [0, 0, 0, 1, 1, 2, 2, 2], r.steps["insert_1.alpha"].tolist()
+/// (True, [Fraction(1, 2), Fraction(0, 1)])
 #[pyclass(module = "cagd", name = "BSplineCurve", frozen)]
 #[derive(Clone)]
 pub struct PyBSplineCurve {
     pub(crate) inner: Ex<BSplineCurve<f64>, BSplineCurve<Exact>>,
+    /// The steps of the construction that made the curve.
+    pub(crate) steps: Option<StepsOf>,
 }
 
 impl PyBSplineCurve {
-    /// The Python object of a core curve.
+    /// The Python object of a core curve (given directly: no steps).
     pub fn from_inner(inner: Ex<BSplineCurve<f64>, BSplineCurve<Exact>>) -> Self {
-        PyBSplineCurve { inner }
+        PyBSplineCurve { inner, steps: None }
+    }
+
+    fn with_steps(inner: Ex<BSplineCurve<f64>, BSplineCurve<Exact>>, steps: StepsOf) -> Self {
+        PyBSplineCurve {
+            inner,
+            steps: Some(steps),
+        }
     }
 }
 
@@ -74,8 +95,13 @@ fn new_bspline<T: Num>(
     with_context(points.py(), CURVE_NAMES, |cx| op.curve(cx))
 }
 
-/// The curve elevated `r` times by the request [`Elevate`] (clamped knots).
-fn elevate<T: Num>(py: Python<'_>, c: &BSplineCurve<T>, r: usize) -> PyResult<BSplineCurve<T>> {
+/// The curve elevated `r` times by the request [`Elevate`] (clamped knots), with its steps
+/// (the knots before, the new degree).
+fn elevate<T: Num>(
+    py: Python<'_>,
+    c: &BSplineCurve<T>,
+    r: usize,
+) -> PyResult<(BSplineCurve<T>, StepsOf)> {
     let op = Elevate {
         by: r,
         bspline: Some(BSplineArg {
@@ -86,68 +112,95 @@ fn elevate<T: Num>(py: Python<'_>, c: &BSplineCurve<T>, r: usize) -> PyResult<BS
     };
     let report = execute(py, CURVE_NAMES, &op)?;
     let knots = item(&report, "knots")?;
-    BSplineCurve::new(
+    let elevated = BSplineCurve::new(
         c.degree().saturating_add(r),
         knots.as_slice().to_vec(),
         item(&report, "control")?,
     )
-    .py()
+    .py()?;
+    let title = format!(
+        "B-spline degree elevation {} → {}",
+        c.degree(),
+        elevated.degree()
+    );
+    let steps = request_steps(Elevate { steps: true, ..op }, CURVE_NAMES, title, &[]);
+    Ok((elevated, steps))
 }
 
-/// The knots `u` inserted by the request [`InsertKnot`] (Boehm): the refined knots, control
-/// points and, for a NURBS curve, weights.
+/// The knots `u` inserted by the request [`InsertKnot`] (Boehm): its report (the refined
+/// knots, control points and, for a NURBS curve, weights) and its steps (each insertion's
+/// span, `α` and polygon).
 fn insert<T: Num>(
     u: &Bound<'_, PyAny>,
     (degree, knots, control, weights): (usize, &[T], DMatrix<T>, Option<Vec<T>>),
-) -> PyResult<cagd_ops::Report<T>> {
+) -> PyResult<(cagd_ops::Report<T>, StepsOf)> {
     let op = InsertKnot {
         degree: Degree::Degree(degree),
         knots: Some(knots.to_vec()),
         weights,
         ..InsertKnot::new(control, values::<T>(u, "u")?)
     };
-    execute(u.py(), CURVE_NAMES, &op)
+    let report = execute(u.py(), CURVE_NAMES, &op)?;
+    let title = "knot insertion (Boehm)".to_string();
+    Ok((
+        report,
+        request_steps(InsertKnot { steps: true, ..op }, CURVE_NAMES, title, &[]),
+    ))
 }
 
-fn insert_bspline<T: Num>(c: &BSplineCurve<T>, u: &Bound<'_, PyAny>) -> PyResult<BSplineCurve<T>> {
+fn insert_bspline<T: Num>(
+    c: &BSplineCurve<T>,
+    u: &Bound<'_, PyAny>,
+) -> PyResult<(BSplineCurve<T>, StepsOf)> {
     let data = (c.degree(), c.knots().as_slice(), c.control().clone(), None);
-    let report = insert(u, data)?;
+    let (report, steps) = insert(u, data)?;
     let knots = item(&report, "knots")?;
-    BSplineCurve::new(
+    let curve = BSplineCurve::new(
         c.degree(),
         knots.as_slice().to_vec(),
         item(&report, "control")?,
     )
-    .py()
+    .py()?;
+    Ok((curve, steps))
 }
 
-fn insert_nurbs<T: Num>(c: &NurbsCurve<T>, u: &Bound<'_, PyAny>) -> PyResult<NurbsCurve<T>> {
+fn insert_nurbs<T: Num>(
+    c: &NurbsCurve<T>,
+    u: &Bound<'_, PyAny>,
+) -> PyResult<(NurbsCurve<T>, StepsOf)> {
     let data = (c.degree(), c.knots(), c.points(), Some(c.weights()));
-    let report = insert(u, data)?;
+    let (report, steps) = insert(u, data)?;
     let (knots, weights) = (item(&report, "knots")?, item(&report, "weights")?);
     let control = item(&report, "control")?;
-    NurbsCurve::new(
+    let curve = NurbsCurve::new(
         c.degree(),
         knots.as_slice().to_vec(),
         control,
         weights.as_slice().to_vec(),
     )
-    .py()
+    .py()?;
+    Ok((curve, steps))
 }
 
+/// de Boor's scheme at `u` by the request [`ops::BSpline`] with its steps, as
+/// `cagd bspline --steps` prints it: `t`, `span` (the `k` of `u_k ≤ u < u_(k+1)`, knots
+/// counted from 1), `d0`, then `alpha{r}` and `d{r}` per level; then the basis and the point.
 fn de_boor<T: Num>(py: Python<'_>, c: &BSplineCurve<T>, u: &Bound<'_, PyAny>) -> PyResult<Steps> {
-    let s = c.de_boor_scheme(T::scalar(u, "u")?).py()?;
-    let mut items = vec![(
-        "span".to_string(),
-        s.span.into_pyobject(py)?.into_any().unbind(),
-    )];
-    for (r, level) in s.levels.iter().enumerate() {
-        items.push((format!("r = {r}"), rows_out(py, level)?.unbind()));
-    }
-    for (r, a) in s.alphas.iter().enumerate() {
-        items.push((format!("alpha r = {}", r + 1), vector_out(py, a)?.unbind()));
-    }
-    Ok(Steps::new("de Boor scheme", None, items))
+    let op = ops::BSpline {
+        degree: Degree::Degree(c.degree()),
+        knots: Some(c.knots().as_slice().to_vec()),
+        t: Params::Given(vec![T::scalar(u, "u")?]),
+        steps: true,
+        ..ops::BSpline::new(c.control().clone())
+    };
+    let report = execute(py, CURVE_NAMES, &op)?;
+    from_record(
+        py,
+        "de Boor scheme",
+        &report,
+        "de_boor",
+        &["basis", "result"],
+    )
 }
 
 #[pymethods]
@@ -202,8 +255,10 @@ impl PyBSplineCurve {
         on!(self.inner, c => vector_out(py, &c.basis(&Num::scalar(u, "u")?).py()?))
     }
 
-    /// de Boor's scheme at `u`: `d_i^r = (1 − α_i^r) d_{i−1}^{r−1} + α_i^r d_i^{r−1}`,
-    /// `α_i^r = (u − u_i)/(u_{i+p+1−r} − u_i)`; level `r` as rows, the last is `C(u)`.
+    /// de Boor's scheme at `u` (in the domain): `d_i^r = (1 − α_i^r) d_{i−1}^{r−1} + α_i^r
+    /// d_i^{r−1}`, `α_i^r = (u − u_i)/(u_{i+p+1−r} − u_i)`; items `t`, `span` (counted from 1,
+    /// as `cagd bspline --steps` prints it), `d0`, `alpha1`, `d1`, …, `basis` and `result`
+    /// (`C(u)`), levels as rows.
     fn de_boor(&self, py: Python<'_>, u: &Bound<'_, PyAny>) -> PyResult<Steps> {
         on!(self.inner, c => de_boor(py, c, u))
     }
@@ -218,21 +273,33 @@ impl PyBSplineCurve {
     }
 
     /// The same curve with the knots `u` (a number or a list) inserted (Boehm; Piegl & Tiller
-    /// A5.4).
+    /// A5.4); its `steps` give each insertion's span, `α` and polygon.
     fn insert_knots(&self, u: &Bound<'_, PyAny>) -> PyResult<Self> {
-        Ok(Self::from_inner(match &self.inner {
-            Ex::F(c) => Ex::F(insert_bspline(c, u)?),
-            Ex::E(c) => Ex::E(insert_bspline(c, u)?),
-        }))
+        Ok(match &self.inner {
+            Ex::F(c) => {
+                let (r, steps) = insert_bspline(c, u)?;
+                Self::with_steps(Ex::F(r), steps)
+            }
+            Ex::E(c) => {
+                let (r, steps) = insert_bspline(c, u)?;
+                Self::with_steps(Ex::E(r), steps)
+            }
+        })
     }
 
-    /// The same curve of degree `p + r` (Piegl & Tiller A5.9).
+    /// The same curve of degree `p + r` (Piegl & Tiller A5.9; clamped knots).
     #[pyo3(signature = (r = 1))]
     fn elevate(&self, py: Python<'_>, r: usize) -> PyResult<Self> {
-        Ok(Self::from_inner(match &self.inner {
-            Ex::F(c) => Ex::F(elevate(py, c, r)?),
-            Ex::E(c) => Ex::E(elevate(py, c, r)?),
-        }))
+        Ok(match &self.inner {
+            Ex::F(c) => {
+                let (e, steps) = elevate(py, c, r)?;
+                Self::with_steps(Ex::F(e), steps)
+            }
+            Ex::E(c) => {
+                let (e, steps) = elevate(py, c, r)?;
+                Self::with_steps(Ex::E(e), steps)
+            }
+        })
     }
 
     /// `∫_{u_p}^{u_n} C(u) du`, a point.
@@ -243,10 +310,26 @@ impl PyBSplineCurve {
 
 /// A NURBS curve `C(u) = Σ w_i P_i N_{i,p}(u) / Σ w_i N_{i,p}(u)` (the CAD notes (5)): a
 /// B-spline in homogeneous coordinates `(w_i P_i, w_i)`. Points as rows `(n, d)`, weights `(n,)`.
+/// A curve made by `insert_knots` keeps Boehm's steps (`steps`, the polygons homogeneous).
+///
+/// >>> arc = cagd.NurbsCurve(2, [0, 0, 0, 1, 1, 1], [[1, 0], [1, 1], [0, 1]], [1, 1, 2], exact=True)
+/// >>> arc(Fraction(1, 2)).tolist()                    # ((1−t²), 2t)/(1+t²): a quarter circle
+/// [Fraction(3, 5), Fraction(4, 5)]
+/// >>> arc.insert_knots(Fraction(1, 2)).weights.tolist()
+/// [Fraction(1, 1), Fraction(1, 1), Fraction(3, 2), Fraction(2, 1)]
 #[pyclass(module = "cagd", name = "NurbsCurve", frozen)]
 #[derive(Clone)]
 pub struct PyNurbsCurve {
     pub(crate) inner: Ex<NurbsCurve<f64>, NurbsCurve<Exact>>,
+    /// The steps of the construction that made the curve.
+    pub(crate) steps: Option<StepsOf>,
+}
+
+impl PyNurbsCurve {
+    /// The Python object of a core curve (given directly: no steps).
+    pub fn from_inner(inner: Ex<NurbsCurve<f64>, NurbsCurve<Exact>>) -> Self {
+        PyNurbsCurve { inner, steps: None }
+    }
 }
 
 /// The curve built by the operation layer: the weights (one per point, finite, positive), the
@@ -280,9 +363,10 @@ impl PyNurbsCurve {
         exact: Option<bool>,
     ) -> PyResult<Self> {
         let exact = exactness(exact, &[knots, points, weights])?;
-        Ok(PyNurbsCurve {
-            inner: build!(exact, new_nurbs(degree, knots, points, weights)),
-        })
+        Ok(Self::from_inner(build!(
+            exact,
+            new_nurbs(degree, knots, points, weights)
+        )))
     }
 
     /// The full circle of radius `radius` about `center` (octave-nurbs `nrbcirc`; in doubles:
@@ -291,17 +375,17 @@ impl PyNurbsCurve {
     #[pyo3(signature = (radius = 1.0, center = None))]
     fn circle(radius: f64, center: Option<Vec<f64>>) -> PyResult<Self> {
         let center = center.unwrap_or_else(|| vec![0.0, 0.0]);
-        Ok(PyNurbsCurve {
-            inner: Ex::F(NurbsCurve::circle(radius, &center).py()?),
-        })
+        Ok(Self::from_inner(Ex::F(
+            NurbsCurve::circle(radius, &center).py()?,
+        )))
     }
 
     /// The arc of radius `radius` about `center` from angle `start` to `end` (radians).
     #[staticmethod]
     fn arc(radius: f64, center: Vec<f64>, start: f64, end: f64) -> PyResult<Self> {
-        Ok(PyNurbsCurve {
-            inner: Ex::F(NurbsCurve::arc(radius, &center, start, end).py()?),
-        })
+        Ok(Self::from_inner(Ex::F(
+            NurbsCurve::arc(radius, &center, start, end).py()?,
+        )))
     }
 
     /// The first derivative `C'(u)` (in the domain).
@@ -333,22 +417,45 @@ impl PyNurbsCurve {
         on!(self.inner, c => vector_out(py, &c.weights()))
     }
 
-    /// The same curve with the knots `u` inserted.
+    /// The same curve with the knots `u` inserted (Boehm on the homogeneous B-spline); its
+    /// `steps` give each insertion's span, `α` and homogeneous polygon `(w P, w)`.
     fn insert_knots(&self, u: &Bound<'_, PyAny>) -> PyResult<Self> {
+        let (inner, steps) = match &self.inner {
+            Ex::F(c) => {
+                let (r, steps) = insert_nurbs(c, u)?;
+                (Ex::F(r), steps)
+            }
+            Ex::E(c) => {
+                let (r, steps) = insert_nurbs(c, u)?;
+                (Ex::E(r), steps)
+            }
+        };
         Ok(PyNurbsCurve {
-            inner: match &self.inner {
-                Ex::F(c) => Ex::F(insert_nurbs(c, u)?),
-                Ex::E(c) => Ex::E(insert_nurbs(c, u)?),
-            },
+            inner,
+            steps: Some(steps),
         })
     }
 }
 
 /// A tensor-product B-spline surface `S(u, v) = Σ_i Σ_j P_ij N_{i,p}(u) N_{j,q}(v)`; the net
 /// an `(nu, nv, d)` array. `surface(u, v)` evaluates on the grid `u × v`.
+///
+/// >>> net = [[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]]      # bilinear: (u, v, uv)
+/// >>> s = cagd.BSplineSurface((1, 1), [0, 0, 1, 1], [0, 0, 1, 1], net, exact=True)
+/// >>> s(Fraction(1, 2), Fraction(1, 3)).tolist()
+/// [Fraction(1, 2), Fraction(1, 3), Fraction(1, 6)]
+/// >>> s([0, 1], [0, 1]).shape
+/// (2, 2, 3)
 #[pyclass(module = "cagd", name = "BSplineSurface", frozen)]
 pub struct PyBSplineSurface {
     inner: Ex<BSplineSurface<f64>, BSplineSurface<Exact>>,
+}
+
+impl PyBSplineSurface {
+    /// The Python object of a core surface.
+    pub fn from_inner(inner: Ex<BSplineSurface<f64>, BSplineSurface<Exact>>) -> Self {
+        PyBSplineSurface { inner }
+    }
 }
 
 /// The request [`ops::BSplineSurface`] of the arguments (its surface not yet built).
@@ -411,6 +518,12 @@ impl PyBSplineSurface {
 
 /// A NURBS surface `S(u, v) = Σ w_ij P_ij N_i N_j / Σ w_ij N_i N_j`; net `(nu, nv, d)`,
 /// weights `(nu, nv)`.
+///
+/// >>> net = [[[1, 0, 0], [1, 0, 1]], [[1, 1, 0], [1, 1, 1]], [[0, 1, 0], [0, 1, 1]]]
+/// >>> w = [[1, 1], [1, 1], [2, 2]]                     # a quarter cylinder of radius 1
+/// >>> s = cagd.NurbsSurface((2, 1), [0, 0, 0, 1, 1, 1], [0, 0, 1, 1], net, w, exact=True)
+/// >>> s(Fraction(1, 2), Fraction(1, 4)).tolist()
+/// [Fraction(3, 5), Fraction(4, 5), Fraction(1, 4)]
 #[pyclass(module = "cagd", name = "NurbsSurface", frozen)]
 pub struct PyNurbsSurface {
     inner: Ex<NurbsSurface<f64>, NurbsSurface<Exact>>,
@@ -472,6 +585,8 @@ impl PyNurbsSurface {
 
 super::shared::curve_methods!(PyBSplineCurve, "BSplineCurve");
 super::shared::curve_methods!(PyNurbsCurve, "NurbsCurve");
+steps_getter!(PyBSplineCurve);
+steps_getter!(PyNurbsCurve);
 super::shared::surface_methods!(PyBSplineSurface, "BSplineSurface");
 super::shared::surface_methods!(PyNurbsSurface, "NurbsSurface");
 

@@ -15,6 +15,9 @@ use crate::ops::{execute, item, Names};
 
 /// `B_i^n(t) = C(n, i) t^i (1 − t)^{n−i}` at every `t` (same shape as `t`), by the request
 /// [`Bernstein`].
+///
+/// >>> cagd.bernstein(1, 3, Fraction(1, 2)), cagd.bernstein(0, 2, [0, 0.5, 1]).tolist()
+/// (Fraction(3, 8), [1.0, 0.25, 0.0])
 #[pyfunction]
 fn bernstein<'py>(i: usize, n: usize, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
     fn run<'py, T: Num>(i: usize, n: usize, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
@@ -63,6 +66,9 @@ fn form(name: &str) -> PyResult<CubicForm> {
 /// The 4 × 4 matrix that turns the geometry of a cubic in the form `source` into the form
 /// `target` (`'hermite'`, `'bezier'`, `'bspline'`; the lecture notes' matrix forms
 /// `x(u) = G M u`): `G_target = G_source · M_source · M_target⁻¹`. Exact with `exact=True`.
+///
+/// >>> cagd.conversion_matrix("bezier", "hermite", exact=True).tolist()
+/// [[Fraction(1, 1), Fraction(0, 1), Fraction(-3, 1), Fraction(0, 1)], [Fraction(0, 1), Fraction(0, 1), Fraction(3, 1), Fraction(0, 1)], [Fraction(0, 1), Fraction(0, 1), Fraction(0, 1), Fraction(-3, 1)], [Fraction(0, 1), Fraction(1, 1), Fraction(0, 1), Fraction(3, 1)]]
 #[pyfunction]
 #[pyo3(signature = (source, target, exact = false))]
 fn conversion_matrix_of<'py>(
@@ -81,6 +87,9 @@ fn conversion_matrix_of<'py>(
 
 /// The geometry of a cubic (4 points or tangents as rows, `(4, d)`) converted from the form
 /// `source` to `target`.
+///
+/// >>> cagd.convert_cubic([[0, 0], [1, 1], [2, 1], [3, 0]], "bezier", "hermite").tolist()
+/// [[0.0, 0.0], [3.0, 0.0], [3.0, 3.0], [3.0, -3.0]]
 #[pyfunction]
 #[pyo3(signature = (geometry, source, target, exact = None))]
 fn convert_cubic<'py>(
@@ -108,6 +117,11 @@ fn convert_cubic<'py>(
 /// The continuity of the joint of two curves, `first` at its end and `second` at its start:
 /// `{'c0': …, 'c1': …, 'g1': …}` (positions agree; and first derivatives; or derivatives
 /// parallel with the same orientation), within `tol` (relative).
+///
+/// >>> a = cagd.BezierCurve([[0, 0], [1, 1], [2, 1]])
+/// >>> b = cagd.BezierCurve([[2, 1], [4, 1], [5, 0]])              # the same direction, twice as fast
+/// >>> cagd.continuity(a, b)
+/// {'c0': True, 'c1': False, 'g1': True}
 #[pyfunction]
 #[pyo3(signature = (first, second, tol = 1e-12))]
 fn continuity<'py>(
