@@ -36,6 +36,7 @@ pub mod layout;
 pub mod ops;
 pub mod output;
 pub mod params;
+pub mod picture;
 mod role;
 
 pub use context::{Context, Warning};

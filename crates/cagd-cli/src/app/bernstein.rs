@@ -15,7 +15,8 @@ use crate::{CliError, Outcome};
 #[derive(Debug, Args)]
 #[command(after_help = "\
 Layout: t is 1×k (one column per parameter), result k×(n+1) (row = parameter, column =
-B_0^n..B_n^n), or k×1 with --i. --plot draws the polynomials B_i^n(t) over [0, 1].
+B_0^n..B_n^n), or k×1 with --i. --plot draws the polynomials B_i^n(t) over [0, 1] and
+marks their values at each t.
 
 Examples:
   cagd bernstein --degree 3 --t 0.5 --exact

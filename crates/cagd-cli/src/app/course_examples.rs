@@ -20,7 +20,7 @@ use crate::{CliError, PendingWrites, Report, Value};
 
 use super::common::*;
 use super::run::Run;
-use super::worked::{heading, q, text, Files, Q};
+use super::worked::{curve_line, dense_line, heading, q, text, Files, Q};
 use super::Outcome;
 use crate::cx::Cx;
 use cagd_octave::literal::LiteralScalar;
@@ -123,17 +123,13 @@ fn matrix_form_table(out: &mut String, files: &mut Files) -> Result<(), CliError
          (0,392 = 49/125). Their parametric form p(t) = 0p_0B_0^3(t) + … has a stray 0 in\n\
          front of p_0; the matrix form is printed correctly.\n\n",
     );
-    let dense = curve
-        .eval_many(&(0..=100).map(|k| q(k, 100)).collect::<Vec<_>>())
-        .map_err(lib("course", INTERNAL))?;
+    let dense = curve_line(&curve, (&q(0, 1), &q(1, 1)), 101)?;
     let figure = Figure::new("Matrix-form notes: the cubic and its table of points")
-        .curve(f64m(&dense), Colour::Blue, "p(t)")
+        .curve(dense, Colour::Blue, "p(t)")
         .control_polygon(f64m(&p), "control polygon")
-        .net(
-            cagd::grid::PointGrid::from_shape_fn((1, 6, 2), |(_, j, k)| {
-                table[(k, j)].to_f64_value()
-            }),
-            Colour::Green,
+        .points(
+            f64m(&table),
+            (0..=5).map(|k| format!("t = {}", k as f64 / 5.0)).collect(),
             "p(0), p(0.2), …, p(1)",
         );
     files.picture("matrix_form", &figure)
@@ -250,9 +246,9 @@ fn splines(out: &mut String, files: &mut Files) -> Result<(), CliError> {
         spline_system(out, &s, title, &end, k == 0)?;
         out.push_str(note);
         let segs = s.segment_count();
-        let dense: Vec<Q> = (0..=20 * segs as i64).map(|j| q(j, 20)).collect();
+        let ends = (&q(0, 1), &q(segs as i64, 1));
         figure = figure.curve(
-            f64m(&s.eval_many(&dense)),
+            curve_line(&s, ends, 20 * segs + 1)?,
             colours[k],
             title.split(',').next().unwrap_or(title),
         );
@@ -352,7 +348,7 @@ fn lagrange(out: &mut String, files: &mut Files) -> Result<(), CliError> {
          constant; the Lagrange basis is right.\n\n",
     );
     blending_example(out)?;
-    files.picture("lagrange", &lagrange_figure(&f, &xs, &ys))
+    files.picture("lagrange", &lagrange_figure(&f, &xs, &ys)?)
 }
 
 /// Příklad 1 of the lecture notes: the blending matrix for parameters out of order, and for
@@ -381,15 +377,16 @@ fn blending_example(out: &mut String) -> Result<(), CliError> {
 }
 
 /// The Lagrange polynomial `f` over [1, 5] and the piecewise-linear interpolant of its data.
-fn lagrange_figure(f: &LagrangePolynomial<Q>, xs: &[Q], ys: &[Q]) -> Figure {
-    let dense: Vec<Q> = (0..=80).map(|k| q(20 + k, 20)).collect();
-    let poly = DMatrix::from_fn(2, dense.len(), |r, k| {
-        if r == 0 {
-            dense[k].to_f64_value()
-        } else {
-            f.eval(dense[k].clone()).to_f64_value()
-        }
-    });
+fn lagrange_figure(f: &LagrangePolynomial<Q>, xs: &[Q], ys: &[Q]) -> Result<Figure, CliError> {
+    let poly = dense_line((&q(1, 1), &q(5, 1)), 81, |dense| {
+        DMatrix::from_fn(2, dense.len(), |r, k| {
+            if r == 0 {
+                dense[k].to_f64_value()
+            } else {
+                f.eval(dense[k].clone()).to_f64_value()
+            }
+        })
+    })?;
     let data = DMatrix::from_fn(2, 5, |r, k| {
         if r == 0 {
             xs[k].to_f64_value()
@@ -397,10 +394,12 @@ fn lagrange_figure(f: &LagrangePolynomial<Q>, xs: &[Q], ys: &[Q]) -> Figure {
             ys[k].to_f64_value()
         }
     });
-    Figure::new("Lecture notes: Lagrange polynomial and piecewise-linear interpolant")
-        .curve(poly, Colour::Blue, "Lagrange polynomial")
-        .boundary(data.clone(), Colour::Green, "piecewise linear")
-        .control_polygon(data, "data points")
+    Ok(
+        Figure::new("Lecture notes: Lagrange polynomial and piecewise-linear interpolant")
+            .curve(poly, Colour::Blue, "Lagrange polynomial")
+            .boundary(data.clone(), Colour::Green, "piecewise linear")
+            .control_polygon(data, "data points"),
+    )
 }
 
 /// The lecture notes' C1 example: the free point of two cubic Bézier segments.
@@ -438,12 +437,10 @@ fn c1_joint(out: &mut String, files: &mut Files) -> Result<(), CliError> {
         j.c1,
         j.g1
     );
-    let dense: Vec<Q> = (0..=50).map(|k| q(k, 50)).collect();
-    let la = a.eval_many(&dense).map_err(lib("course", INTERNAL))?;
-    let lb = b.eval_many(&dense).map_err(lib("course", INTERNAL))?;
+    let unit = (&q(0, 1), &q(1, 1));
     let figure = Figure::new("Lecture notes: two cubics joined C1 (k = 1)")
-        .curve(f64m(&la), Colour::Blue, "x(u)")
-        .curve(f64m(&lb), Colour::Green, "¹x(u)")
+        .curve(curve_line(&a, unit, 51)?, Colour::Blue, "x(u)")
+        .curve(curve_line(&b, unit, 51)?, Colour::Green, "¹x(u)")
         .control_polygon(f64m(&first), "control polygons")
         .control_polygon(f64m(&second), "");
     files.picture("c1_joint", &figure)

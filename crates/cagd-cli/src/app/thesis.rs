@@ -17,7 +17,7 @@ use cagd_octave::literal::{Env, LiteralScalar, ParamExpr};
 
 use super::common::*;
 use super::run::Run;
-use super::worked::{coons_figure, heading, q, text, Files, Q};
+use super::worked::{coons_figure, curve_line, heading, q, text, Files, Q};
 use super::Outcome;
 use crate::cx::Cx;
 
@@ -147,9 +147,7 @@ fn primer_2_4(out: &mut String, files: &mut Files) -> Result<(), CliError> {
     let mut r = Report::<f64>::new();
     r.push("T", Value::Matrix(points));
     out.push_str(&text(&r));
-    let dense = curve
-        .eval_many(&cagd::linspace(0.0, 1.0, 101))
-        .map_err(lib("thesis", INTERNAL))?;
+    let dense = curve_line(&curve, (&0.0, &1.0), 101)?;
     let s = curve.scheme(0.5);
     let mut figure =
         Figure::new("Primer 2.4: Bézier curve and de Casteljau construction at t = 0.5")

@@ -7,11 +7,12 @@ use std::path::Path;
 use cagd::grid::PointGrid;
 use cagd::Curve;
 use cagd_octave::literal::LiteralScalar;
+use nalgebra::DMatrix;
 use num_rational::BigRational;
 
 use super::common::{add_mesh, add_plot, sample, to_f64};
 use crate::plot::{Colour, Figure};
-use crate::{render, CliError, Format, PendingWrites, Report};
+use crate::{render, CliError, ErrorKind, Format, PendingWrites, Report};
 
 /// The exact numbers of the examples.
 pub(super) type Q = BigRational;
@@ -61,6 +62,35 @@ impl Files<'_> {
         }
         Ok(())
     }
+}
+
+/// The polyline a picture draws of a curve (its points at parameters by `eval`, in doubles)
+/// over `[a, b]`: from `first` uniform samples, as many more as keep its chords a few pixels
+/// long and close to the curve ([`cagd_ops::picture`]).
+pub(super) fn dense_line<T: LiteralScalar>(
+    (a, b): (&T, &T),
+    first: usize,
+    eval: impl Fn(&[T]) -> DMatrix<f64>,
+) -> Result<DMatrix<f64>, CliError> {
+    cagd_ops::picture::picture_line((a, b), first, false, |ts| Ok(eval(ts)), |_| true).map_err(
+        |e| {
+            CliError::new(
+                "picture",
+                e.to_string(),
+                "a valid built-in example",
+                ErrorKind::Internal,
+            )
+        },
+    )
+}
+
+/// The polyline a picture draws of `curve` over `[a, b]` ([`dense_line`]).
+pub(super) fn curve_line<T: LiteralScalar, C: Curve<T>>(
+    curve: &C,
+    (a, b): (&T, &T),
+    first: usize,
+) -> Result<DMatrix<f64>, CliError> {
+    dense_line((a, b), first, |ts| to_f64(&sample(curve, ts)))
 }
 
 /// The picture of appendix C: the surface, c1 and c2 in red, d1 and d2 in green. Each curve

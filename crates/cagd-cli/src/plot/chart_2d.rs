@@ -9,9 +9,10 @@ use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
+use super::canvas::{font, px, titled};
 use super::layers::net_lines;
 use super::model::Figure;
-use super::render::{drawing, tick_text, viridis, FAMILY};
+use super::render::{drawing, tick_text, viridis};
 use super::PlotError;
 
 /// Plotters' 2-D coordinates over `f64` ranges.
@@ -36,49 +37,58 @@ impl Figure {
         root: &DrawingArea<DB, Shift>,
     ) -> Result<(), PlotError> {
         let side = self.legend_width();
-        let Window { x, y, half } = self.window(root.dim_in_pixel(), side);
+        let right = px(20 + side as i32);
+        let area = titled(root, &self.drawing.title, (px(20), right))?;
+        // The plotting area: the area below the title less the margins (20 pixels left and
+        // below, `right` on the right) and the label areas (50 pixels left, 40 below).
+        let (w, h) = area.dim_in_pixel();
+        let plot = (
+            f64::from((w as i32 - px(20) - right - px(50)).max(px(50))),
+            f64::from((h as i32 - px(20) - px(40)).max(px(50))),
+        );
+        let Window { x, y, half } = self.window(plot, side > 0);
         let (hx, hy) = half;
-        let mut chart = ChartBuilder::on(root)
-            .caption(&self.drawing.title, (FAMILY, 24))
-            .margin(20)
-            .margin_right(20 + side)
-            .x_label_area_size(40)
-            .y_label_area_size(50)
+        let mut chart = ChartBuilder::on(&area)
+            .margin(px(20))
+            .margin_top(0)
+            .margin_right(right)
+            .x_label_area_size(px(40))
+            .y_label_area_size(px(50))
             .build_cartesian_2d(x, y)
             .map_err(drawing)?;
         chart
             .configure_mesh()
             .light_line_style(BLACK.mix(0.08))
+            .set_tick_mark_size(LabelAreaPosition::Left, px(5))
+            .set_tick_mark_size(LabelAreaPosition::Bottom, px(5))
             .x_label_formatter(&|x| tick_text(*x, 2.0 * hx))
             .y_label_formatter(&|y| tick_text(*y, 2.0 * hy))
             .x_desc(self.drawing.axes[0].as_str())
             .y_desc(self.drawing.axes[1].as_str())
-            .label_style((FAMILY, 13))
-            .axis_desc_style((FAMILY, 16))
+            .label_style(font(13.0))
+            .axis_desc_style(font(16.0))
             .draw()
             .map_err(drawing)?;
         self.draw_layers(&mut chart, to2, false, surface_2d)?;
         if side > 0 {
             let (xs, ys) = chart.plotting_area().get_pixel_range();
-            self.legend_beside(root, (xs.end + 12, ys.start))?;
+            self.legend_beside(root, (xs.end + px(12), ys.start))?;
         }
         Ok(())
     }
 
-    /// The axes' ranges on a picture of `w × h` pixels, `side` of them right of the chart
-    /// for a graph's legend.
+    /// The axes' ranges on a plotting area of `aw × ah` canvas units, the legend beside it
+    /// (`side`) or in it.
     ///
     /// Geometry: equal scales on both axes, so that shapes are not distorted, and the data
     /// keeps out of a band at the top where the legend goes, so the legend never hides a
     /// point. A graph: each axis its data's range (padded), the legend beside it.
-    fn window(&self, (w, h): (u32, u32), side: u32) -> Window {
+    fn window(&self, (aw, ah): (f64, f64), side: bool) -> Window {
         let [bx, by, _] = self.bounds();
-        let aw = (w as f64 - 110.0 - side as f64).max(50.0);
-        let ah = (h as f64 - 120.0).max(50.0);
-        let band = if side > 0 {
+        let band = if side {
             0.0
         } else {
-            self.legend_height().min(ah / 2.0)
+            (f64::from(px(1)) * self.legend_height()).min(ah / 2.0)
         };
         let (sx, sy) = ((bx.1 - bx.0) / aw, (by.1 - by.0) / (ah - band));
         // Geometry: one scale for both axes; a graph: each axis fitted to its data.
@@ -121,8 +131,9 @@ fn surface_2d<'a, DB: DrawingBackend + 'a>(
         )
         .map_err(drawing)?;
     if !label.is_empty() {
-        anno.label(label)
-            .legend(move |(x, y)| Rectangle::new([(x, y - 6), (x + 20, y + 6)], fill.filled()));
+        anno.label(label).legend(move |(x, y)| {
+            Rectangle::new([(x, y - px(6)), (x + px(20), y + px(6))], fill.filled())
+        });
     }
     chart
         .draw_series(

@@ -8,8 +8,9 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
+use super::canvas::{font, px, titled};
 use super::model::Figure;
-use super::render::{drawing, tick_text, viridis, FAMILY};
+use super::render::{drawing, tick_text, viridis};
 use super::PlotError;
 
 /// Plotters' 3-D coordinates over `f64` ranges.
@@ -37,7 +38,7 @@ impl Figure {
             root.draw(&Text::new(
                 name.to_string(),
                 (x, y),
-                (FAMILY, 18)
+                font(18.0)
                     .into_font()
                     .into_text_style(root)
                     .pos(Pos::new(HPos::Center, VPos::Center)),
@@ -59,9 +60,10 @@ fn chart_3d<'a, DB: DrawingBackend>(
     bounds: [(f64, f64); 3],
 ) -> Result<ChartContext<'a, DB, Coord3>, PlotError> {
     let [b0, b1, b2] = bounds;
-    let mut chart = ChartBuilder::on(root)
-        .caption(title, (FAMILY, 24))
-        .margin(20)
+    let area = titled(root, title, (px(20), px(20)))?;
+    let mut chart = ChartBuilder::on(&area)
+        .margin(px(20))
+        .margin_top(0)
         .build_cartesian_3d(b0.0..b0.1, b1.0..b1.1, b2.0..b2.1)
         .map_err(drawing)?;
     chart.with_projection(|mut pb| {
@@ -77,10 +79,11 @@ fn chart_3d<'a, DB: DrawingBackend>(
         .configure_axes()
         .light_grid_style(BLACK.mix(0.12))
         .max_light_lines(4)
+        .tick_size(px(5))
         .x_formatter(&|x| tick_text(*x, b0.1 - b0.0))
         .y_formatter(&|y| tick_text(*y, b1.1 - b1.0))
         .z_formatter(&|z| tick_text(*z, b2.1 - b2.0))
-        .label_style((FAMILY, 13))
+        .label_style(font(13.0))
         .draw()
         .map_err(drawing)?;
     Ok(chart)
@@ -106,8 +109,12 @@ fn surface_3d<'a, DB: DrawingBackend + 'a>(
         }))
         .map_err(drawing)?;
     if !label.is_empty() {
-        anno.label(label)
-            .legend(|(x, y)| Rectangle::new([(x, y - 6), (x + 20, y + 6)], viridis(0.6).filled()));
+        anno.label(label).legend(|(x, y)| {
+            Rectangle::new(
+                [(x, y - px(6)), (x + px(20), y + px(6))],
+                viridis(0.6).filled(),
+            )
+        });
     }
     chart
         .draw_series(cells.iter().map(|(_, _, quad)| {
@@ -231,9 +238,9 @@ fn name_position(coord: &Coord3, s: [f64; 3], e: [f64; 3], centre: (i32, i32)) -
     let horizontal = dx.abs() < dy.abs();
     if horizontal {
         let sign = if bx < centre.0 { -1 } else { 1 };
-        (mx + sign * 55, my)
+        (mx + sign * px(55), my)
     } else {
         let sign = if by < centre.1 { -1 } else { 1 };
-        (mx, my + sign * 38)
+        (mx, my + sign * px(38))
     }
 }

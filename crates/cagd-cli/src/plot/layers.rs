@@ -6,8 +6,9 @@ use plotters::chart::SeriesAnno;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
+use super::canvas::{font, px};
 use super::model::{Colour, Figure, Layer};
-use super::render::{drawing, rgb, FAMILY};
+use super::render::{drawing, rgb};
 use super::PlotError;
 
 impl Figure {
@@ -30,7 +31,15 @@ impl Figure {
         CT: CoordTranslate<From = P>,
         P: Clone + 'static,
     {
-        let mut painter = Painter { chart, project };
+        let mut painter = Painter {
+            chart,
+            project,
+            // Labels over a surface's dark cells stand on light boxes.
+            label_boxes: self
+                .layers()
+                .iter()
+                .any(|l| matches!(l, Layer::Surface { .. })),
+        };
         for layer in self.ordered() {
             match layer {
                 Layer::Surface { grid, label } => surface(&mut *painter.chart, grid, label)?,
@@ -57,16 +66,27 @@ impl Figure {
         // A graph's legend stands beside the chart, drawn on the whole picture
         // ([`Figure::legend_beside`]).
         if self.has_legend() && self.legend_width() == 0 {
-            painter.legend()?;
+            painter.legend(&self.legend_labels())?;
         }
         Ok(())
     }
+
+    /// The labels of the legend, in drawing order.
+    fn legend_labels(&self) -> Vec<&str> {
+        self.ordered()
+            .into_iter()
+            .map(Layer::label)
+            .filter(|l| !l.is_empty())
+            .collect()
+    }
 }
 
-/// A chart to draw layers on, and where a point (padded to 3-D) goes on it.
+/// A chart to draw layers on, where a point (padded to 3-D) goes on it, and whether labels
+/// stand on light boxes.
 struct Painter<'c, 'a, DB: DrawingBackend, CT: CoordTranslate, F> {
     chart: &'c mut ChartContext<'a, DB, CT>,
     project: F,
+    label_boxes: bool,
 }
 
 impl<'a, DB, CT, P, F> Painter<'_, 'a, DB, CT, F>
@@ -98,7 +118,7 @@ where
                 layer
                     .points()
                     .into_iter()
-                    .map(|p| Circle::new(project(p), 3, rgb(colour).filled())),
+                    .map(|p| Circle::new(project(p), px(3), rgb(colour).filled())),
             )
             .map_err(drawing)?;
         Ok(())
@@ -124,7 +144,8 @@ where
         Ok(())
     }
 
-    /// Marked points: black discs, each with its text beside it.
+    /// Marked points: black discs, each with its text beside it (on a light box over a
+    /// surface).
     fn points(&mut self, layer: &Layer, labels: &[String], label: &str) -> Result<(), PlotError> {
         let project = self.project;
         let black = rgb(Colour::Black);
@@ -134,19 +155,36 @@ where
                 layer
                     .points()
                     .into_iter()
-                    .map(|p| Circle::new(project(p), 6, black.filled())),
+                    .map(|p| Circle::new(project(p), px(6), black.filled())),
             )
             .map_err(drawing)?;
         if !label.is_empty() {
             anno.label(label)
-                .legend(move |(x, y)| Circle::new((x + 10, y), 5, black.filled()));
+                .legend(move |(x, y)| Circle::new((x + px(10), y), px(5), black.filled()));
         }
-        let font = (FAMILY, 14).into_font().color(&black);
-        self.chart
-            .draw_series(layer.points().into_iter().zip(labels).map(|(p, text)| {
-                EmptyElement::at(project(p)) + Text::new(text.clone(), (9, -18), font.clone())
-            }))
-            .map_err(drawing)?;
+        let desc = font(14.0).into_font();
+        let style = desc.color(&black);
+        // On a surface each label stands on a light box, legible over the dark cells.
+        let shade = if self.label_boxes {
+            WHITE.mix(0.7)
+        } else {
+            WHITE.mix(0.0)
+        };
+        let mut marks = Vec::with_capacity(labels.len());
+        for (p, text) in layer.points().into_iter().zip(labels) {
+            let (w, h) = desc.box_size(text).map_err(drawing)?;
+            let (x, y) = (px(9), px(-18));
+            let corners = [
+                (x - px(2), y - px(1)),
+                (x + w as i32 + px(2), y + h as i32 + px(1)),
+            ];
+            marks.push(
+                EmptyElement::at(project(p))
+                    + Rectangle::new(corners, shade.filled())
+                    + Text::new(text.clone(), (x, y), style.clone()),
+            );
+        }
+        self.chart.draw_series(marks).map_err(drawing)?;
         Ok(())
     }
 
@@ -164,8 +202,8 @@ where
         if !label.is_empty() {
             anno.label(label).legend(move |(x, y)| {
                 EmptyElement::at((x, y))
-                    + PathElement::new(vec![(0, 0), (20, 0)], red.stroke_width(1))
-                    + Circle::new((10, 0), 4, red.stroke_width(2))
+                    + PathElement::new(vec![(0, 0), (px(20), 0)], red.stroke_width(1))
+                    + Circle::new((px(10), 0), px(4), red.stroke_width(2))
             });
         }
         self.chart
@@ -173,20 +211,33 @@ where
                 layer
                     .points()
                     .into_iter()
-                    .map(|p| Circle::new(project(p), 5, red.stroke_width(2))),
+                    .map(|p| Circle::new(project(p), px(5), red.stroke_width(2))),
             )
             .map_err(drawing)?;
         Ok(())
     }
 
-    /// The legend, in the upper right corner on a light background.
-    fn legend(&mut self) -> Result<(), PlotError> {
+    /// The legend of the layers labelled `labels`, in the upper right corner on a light
+    /// background, 5 pixels in from the corner. (Plotters' own corner positions keep 5 canvas
+    /// units, half a pixel here: the box is placed at that corner from the width plotters gives
+    /// it, the widest label and the margins and sample lines.)
+    fn legend(&mut self, labels: &[&str]) -> Result<(), PlotError> {
+        let text = font(15.0).into_font();
+        let widest = labels
+            .iter()
+            .map(|l| text.box_size(l).map(|(w, _)| w as i32))
+            .try_fold(0, |m, w| w.map(|w| m.max(w)))
+            .map_err(drawing)?;
+        let (area_w, _) = self.chart.plotting_area().dim_in_pixel();
+        let x = area_w as i32 - (widest + px(30) + 2 * px(10)) - px(5);
         self.chart
             .configure_series_labels()
-            .position(SeriesLabelPosition::UpperRight)
+            .position(SeriesLabelPosition::Coordinate(x, px(5)))
             .background_style(WHITE.mix(0.85))
             .border_style(BLACK.mix(0.5))
-            .label_font((FAMILY, 15))
+            .label_font(font(15.0))
+            .margin(px(10))
+            .legend_area_size(px(30))
             .draw()
             .map_err(drawing)
     }
@@ -208,22 +259,26 @@ impl Figure {
             .filter(|l| !l.label().is_empty())
             .collect();
         let (w, h) = (
-            self.legend_width() as i32 - 24,
-            12 + 22 * labelled.len() as i32,
+            px(self.legend_width() as i32 - 24),
+            px(12 + 22 * labelled.len() as i32),
         );
         let corners = [(x, y), (x + w, y + h)];
         root.draw(&Rectangle::new(corners, WHITE.mix(0.85).filled()))
             .map_err(drawing)?;
         root.draw(&Rectangle::new(corners, BLACK.mix(0.5)))
             .map_err(drawing)?;
-        let font = (FAMILY, 15)
+        let font = font(15.0)
             .into_font()
             .color(&BLACK)
             .pos(Pos::new(HPos::Left, VPos::Center));
         for (k, layer) in labelled.into_iter().enumerate() {
-            let at = (x + 8, y + 17 + 22 * k as i32);
+            let at = (x + px(8), y + px(17 + 22 * k as i32));
             legend_mark(root, layer, at)?;
-            let text = Text::new(layer.label().to_string(), (at.0 + 30, at.1), font.clone());
+            let text = Text::new(
+                layer.label().to_string(),
+                (at.0 + px(30), at.1),
+                font.clone(),
+            );
             root.draw(&text).map_err(drawing)?;
         }
         Ok(())
@@ -237,18 +292,18 @@ fn legend_mark<DB: DrawingBackend>(
     layer: &Layer,
     (x, y): (i32, i32),
 ) -> Result<(), PlotError> {
-    let line = |style: ShapeStyle| PathElement::new(vec![(x, y), (x + 20, y)], style);
+    let line = |style: ShapeStyle| PathElement::new(vec![(x, y), (x + px(20), y)], style);
     match layer {
         Layer::Curve { colour, width, .. } => root.draw(&line(rgb(*colour).stroke_width(*width))),
         Layer::Net { colour, .. } => root.draw(&line(rgb(*colour).stroke_width(1))),
-        Layer::Points { .. } => root.draw(&Circle::new((x + 10, y), 5, BLACK.filled())),
+        Layer::Points { .. } => root.draw(&Circle::new((x + px(10), y), px(5), BLACK.filled())),
         Layer::ControlPolygon { .. } => {
             let red = rgb(Colour::Red);
             root.draw(&line(red.stroke_width(1)))
-                .and_then(|()| root.draw(&Circle::new((x + 10, y), 4, red.stroke_width(2))))
+                .and_then(|()| root.draw(&Circle::new((x + px(10), y), px(4), red.stroke_width(2))))
         }
         Layer::Surface { .. } => root.draw(&Rectangle::new(
-            [(x, y - 6), (x + 20, y + 6)],
+            [(x, y - px(6)), (x + px(20), y + px(6))],
             super::render::viridis(0.6).filled(),
         )),
     }
@@ -263,7 +318,7 @@ fn line_legend<'a, DB: DrawingBackend + 'a>(
 ) {
     if !label.is_empty() {
         anno.label(label)
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style));
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + px(20), y)], style));
     }
 }
 

@@ -47,6 +47,7 @@ pub const PICTURE_EXTENSIONS: &[&str] = &["svg", "png"];
 #[cfg(target_arch = "wasm32")]
 pub const PICTURE_EXTENSIONS: &[&str] = &["svg"];
 
+mod canvas;
 mod chart_2d;
 mod chart_3d;
 mod layers;

@@ -1,5 +1,6 @@
-//! Drawing a [`Figure`] with plotters into SVG or PNG: the choice between the 2-D and 3-D
-//! charts, the colour map, the tick labels, the embedded font.
+//! Drawing a [`Figure`] with plotters into SVG or PNG: the fine canvas
+//! ([`super::canvas`]), the choice between the 2-D and 3-D charts, the colour map, the tick
+//! labels, the embedded font.
 
 use std::path::Path;
 use std::sync::Once;
@@ -7,6 +8,7 @@ use std::sync::Once;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
+use super::canvas::{picture_size, Fine, FAMILY, SCALE};
 use super::model::{drawable, has_points_too_far, validate, Colour, Figure, ImageKind};
 use super::PlotError;
 
@@ -14,7 +16,6 @@ use super::PlotError;
 #[cfg(not(target_arch = "wasm32"))]
 static FONT: &[u8] = include_bytes!("../../assets/DejaVuSans.ttf");
 static REGISTER_FONT: Once = Once::new();
-pub(super) const FAMILY: &str = "sans-serif";
 
 fn register_font() {
     REGISTER_FONT.call_once(|| {
@@ -68,10 +69,13 @@ impl Figure {
             ImageKind::Svg => {
                 let mut svg = String::new();
                 {
-                    let root = SVGBackend::with_string(&mut svg, (w, h)).into_drawing_area();
+                    let canvas = SVGBackend::with_string(&mut svg, (w * SCALE, h * SCALE));
+                    let root = Fine(canvas).into_drawing_area();
                     self.draw(&root)?;
                     root.present().map_err(drawing)?;
                 }
+                let svg = picture_size(svg, (w, h))
+                    .ok_or_else(|| PlotError::Drawing("an SVG without its size".into()))?;
                 Ok(svg.into_bytes())
             }
             #[cfg(target_arch = "wasm32")]

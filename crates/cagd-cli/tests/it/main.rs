@@ -16,6 +16,7 @@ mod limits;
 mod mesh;
 mod non_finite;
 mod packed_network;
+mod pictures;
 mod regressions;
 #[cfg(feature = "serve")]
 mod serve;

@@ -13,7 +13,7 @@ use serde_json::Value as J;
 use super::course::{error, run_ok, silent};
 
 /// Runs the `cagd` binary (which writes its pictures), requiring success.
-fn binary(args: &[&str]) {
+pub(super) fn binary(args: &[&str]) {
     let out = Command::cargo_bin("cagd")
         .unwrap()
         .args(args)
@@ -936,8 +936,25 @@ fn messages_name_what_was_typed_and_what_was_meant() {
 // ---------------------------------------------------------------------------------------
 // 5. Pictures that show the answer
 
-/// The circles of an SVG: (cx, cy, r, the element's text).
-fn circles(svg: &str) -> Vec<(f64, f64, f64, String)> {
+/// The canvas units of an SVG to a pixel of its picture: its viewBox's width over its width
+/// (the picture is drawn on a finer canvas than its pixels).
+pub(super) fn canvas_per_pixel(svg: &str) -> f64 {
+    let doc = roxmltree::Document::parse(svg).unwrap();
+    let root = doc.root_element();
+    let width: f64 = root.attribute("width").unwrap().parse().unwrap();
+    let view: Vec<f64> = root
+        .attribute("viewBox")
+        .unwrap()
+        .split_whitespace()
+        .map(|v| v.parse().unwrap())
+        .collect();
+    assert_eq!(view[0], 0.0, "the viewBox starts at the origin");
+    view[2] / width
+}
+
+/// The circles of an SVG, in pixels of the picture: (cx, cy, r, the element's text).
+pub(super) fn circles(svg: &str) -> Vec<(f64, f64, f64, String)> {
+    let scale = canvas_per_pixel(svg);
     svg.split("<circle")
         .skip(1)
         .map(|c| {
@@ -945,7 +962,7 @@ fn circles(svg: &str) -> Vec<(f64, f64, f64, String)> {
             let el = &c[..end];
             let attr = |name: &str| -> f64 {
                 let at = el.find(&format!(" {name}=\"")).unwrap() + name.len() + 3;
-                el[at..].split('"').next().unwrap().parse().unwrap()
+                el[at..].split('"').next().unwrap().parse::<f64>().unwrap() / scale
             };
             (attr("cx"), attr("cy"), attr("r"), el.to_string())
         })
@@ -1189,13 +1206,14 @@ fn png_pictures_are_anti_aliased() {
     );
 }
 
-/// The text elements of an SVG: (x, y, text).
-fn svg_texts(svg: &str) -> Vec<(f64, f64, String)> {
+/// The text elements of an SVG, in pixels of the picture: (x, y, text).
+pub(super) fn svg_texts(svg: &str) -> Vec<(f64, f64, String)> {
+    let scale = canvas_per_pixel(svg);
     let doc = roxmltree::Document::parse(svg).unwrap();
     doc.descendants()
         .filter(|n| n.has_tag_name("text"))
         .map(|n| {
-            let at = |a: &str| n.attribute(a).unwrap().parse::<f64>().unwrap();
+            let at = |a: &str| n.attribute(a).unwrap().parse::<f64>().unwrap() / scale;
             let text: String = n
                 .descendants()
                 .filter(|d| d.is_text())
@@ -1209,7 +1227,7 @@ fn svg_texts(svg: &str) -> Vec<(f64, f64, String)> {
 /// The axis names and the tick values of a 2-D chart's SVG: (x name, y name, x ticks, y
 /// ticks). Ticks are the numbers in a row under the chart (one y) and in a column left of it
 /// (one x); the names are the texts beside them.
-fn axes(svg: &str) -> (String, String, Vec<f64>, Vec<f64>) {
+pub(super) fn axes(svg: &str) -> (String, String, Vec<f64>, Vec<f64>) {
     let texts = svg_texts(svg);
     let numbers: Vec<(f64, f64, f64)> = texts
         .iter()

@@ -23,8 +23,9 @@ use cagd::cost::max_bits;
 use cagd::Scalar;
 use nalgebra::DMatrix;
 
+use super::point_labels;
 use crate::drawing::{Colour, Drawing};
-use crate::error::{lib, Kind, OpError, Result};
+use crate::error::{Kind, OpError, Result};
 use crate::{Answer, Context, Operation, Params, Report, Role, Value};
 
 /// Samples of `[0, 1]` in the picture of the polynomials.
@@ -85,9 +86,9 @@ impl<T: Scalar> Operation<T> for Bernstein<T> {
         let mut report = Report::new();
         // One layout for parameter vectors: t is a row, as linspace makes it.
         report.push("t", Value::row(&ts));
-        report.push("result", Value::Matrix(result));
+        report.push("result", Value::Matrix(result.clone()));
         let drawing = if self.drawing {
-            Some(self.picture()?)
+            Some(self.picture((&ts, &result), cx)?)
         } else {
             None
         };
@@ -100,30 +101,53 @@ impl<T: Scalar> Operation<T> for Bernstein<T> {
 }
 
 impl<T: Scalar> Bernstein<T> {
-    /// The polynomials over `[0, 1]`, each as the plane curve `(t, B_i^n(t))`.
-    fn picture(&self) -> Result<Drawing> {
+    /// The polynomials over `[0, 1]`, each as the plane curve `(t, B_i^n(t))`, and their values
+    /// `result` at `ts` marked.
+    fn picture(&self, (ts, result): (&[T], &DMatrix<T>), cx: &Context) -> Result<Drawing> {
         let n = self.degree;
-        let dense = cagd::linspace::linspace_in(&T::zero(), &T::one(), PICTURE_SAMPLES)
-            .map_err(lib(Role::T, "a picture"))?;
         let shown: Vec<usize> = match self.index {
             Some(i) => vec![i],
             None => (0..=n).collect(),
         };
-        let values = basis_matrix(n, &dense).select_columns(&shown);
+        let lines = crate::picture::picture_lines(
+            (&T::zero(), &T::one()),
+            PICTURE_SAMPLES,
+            true,
+            |dense| {
+                Ok(graph_lines(
+                    dense,
+                    &basis_matrix(n, dense).select_columns(&shown),
+                ))
+            },
+            |dense| crate::picture::allowed(cx, dense, |bits| basis_cost(n, bits)),
+        )?;
         let title = format!("Bernstein polynomials of degree {n}");
         let axes = Drawing::graph(title, "t", &format!("B_i^{n}(t)"));
-        Ok(graphs(axes, &dense, &values, &shown, |i| {
-            format!("B_{i}^{n}")
-        }))
+        let drawing = graphs(axes, lines, &shown, |i| format!("B_{i}^{n}"));
+        Ok(marked(drawing, ts, result))
     }
 }
 
-/// The graphs `(t, f_k(t))` of the columns of `values` (one per function, at `ts`), coloured in
-/// turn; up to six labelled `label(index)` one by one, more by one label for all.
-pub(super) fn graphs<T: Scalar>(
+/// The graphs `(t, f_k(t))` of the columns of `values` (one per function, at `ts`).
+pub(super) fn graph_lines<T: Scalar>(ts: &[T], values: &DMatrix<T>) -> Vec<DMatrix<f64>> {
+    (0..values.ncols())
+        .map(|k| {
+            DMatrix::from_fn(2, ts.len(), |r, c| {
+                if r == 0 {
+                    ts[c].to_f64()
+                } else {
+                    values[(c, k)].to_f64()
+                }
+            })
+        })
+        .collect()
+}
+
+/// The graphs `lines` of functions (their `indices`), coloured in turn; up to six labelled
+/// `label(index)` one by one, more by one label for all.
+pub(super) fn graphs(
     mut drawing: Drawing,
-    ts: &[T],
-    values: &DMatrix<T>,
+    lines: Vec<DMatrix<f64>>,
     indices: &[usize],
     label: impl Fn(&str) -> String,
 ) -> Drawing {
@@ -135,23 +159,41 @@ pub(super) fn graphs<T: Scalar>(
         Colour::Purple,
         Colour::Black,
     ];
+    let first = indices.first().copied().unwrap_or(0);
     let last = indices.last().copied().unwrap_or(0);
-    for (k, &i) in indices.iter().enumerate() {
-        let line = DMatrix::from_fn(2, ts.len(), |r, c| {
-            if r == 0 {
-                ts[c].to_f64()
-            } else {
-                values[(c, k)].to_f64()
-            }
-        });
+    for (k, (&i, line)) in indices.iter().zip(lines).enumerate() {
         let text = match (indices.len() <= 6, k) {
             (true, _) => label(&i.to_string()),
-            (false, 0) => format!("{}, i = 0..{last}", label("i")),
+            (false, 0) => format!("{}, i = {first}..{last}", label("i")),
             _ => String::new(),
         };
         drawing = drawing.curve(line, colours[k % colours.len()], text);
     }
     drawing
+}
+
+/// `drawing` with the values of the functions at each parameter marked: `values` is
+/// `k × m` (row = parameter, column = function), each value drawn at `(t, value)` and
+/// labelled with its parameter.
+pub(super) fn marked<T: Scalar>(drawing: Drawing, ts: &[T], values: &DMatrix<T>) -> Drawing {
+    if ts.is_empty() || values.ncols() == 0 {
+        return drawing;
+    }
+    let m = values.ncols();
+    let marks = DMatrix::from_fn(2, ts.len() * m, |r, c| {
+        let (k, i) = (c / m, c % m);
+        if r == 0 {
+            ts[k].to_f64()
+        } else {
+            values[(k, i)].to_f64()
+        }
+    });
+    let labels = ts
+        .iter()
+        .flat_map(|t| std::iter::repeat_n(point_labels("t", std::slice::from_ref(t)), m))
+        .flatten()
+        .collect();
+    drawing.points(marks, labels, "values at t")
 }
 
 #[cfg(test)]

@@ -128,7 +128,8 @@ impl<T: Scalar> Operation<T> for BSpline<T> {
         report.push("t", Value::row(&ts));
         report.push("result", Value::Matrix(values.clone()));
         let drawing = if self.drawing {
-            let line = points_in_order(curve.dim(), &dense, cx, &fill)?;
+            let point = |bits| curve.point_cost(bits);
+            let line = picture_line((&a, &b), &fill, curve.dim(), point, cx)?;
             Some(picture(
                 "B-spline curve",
                 line,
@@ -194,15 +195,35 @@ pub(crate) fn picture_params<T: Scalar>(drawn: bool, (a, b): (&T, &T)) -> Result
     cagd::linspace::linspace_in(a, b, PICTURE_SAMPLES).map_err(lib(Role::T, "a curve"))
 }
 
-/// A spline's picture: the curve, its control polygon, the points at `t`.
+/// The polyline of a spline's picture over `[a, b]`: from [`PICTURE_SAMPLES`] samples, as
+/// many as make its chords short ([`crate::picture::picture_line`]), a point costing
+/// `point(bits)`.
+pub(crate) fn picture_line<T: Scalar>(
+    (a, b): (&T, &T),
+    fill: &Fill<T>,
+    dim: usize,
+    point: impl Fn(u128) -> cagd::cost::Cost,
+    cx: &Context,
+) -> Result<DMatrix<f64>> {
+    crate::picture::picture_line(
+        (a, b),
+        PICTURE_SAMPLES,
+        false,
+        |ts| points_in_order(dim, ts, cx, fill).map(|m| to_f64(&m)),
+        |ts| crate::picture::allowed(cx, ts, &point),
+    )
+}
+
+/// A spline's picture: the curve (its polyline `line`), its control polygon, the points at
+/// `t`.
 pub(crate) fn picture<T: Scalar>(
     title: &str,
-    line: DMatrix<T>,
+    line: DMatrix<f64>,
     control: &DMatrix<T>,
     (values, ts): (&DMatrix<T>, &[T]),
 ) -> Drawing {
     Drawing::new(title)
-        .curve(to_f64(&line), Colour::Blue, "curve")
+        .curve(line, Colour::Blue, "curve")
         .control_polygon(to_f64(control), "control polygon")
         .points(to_f64(values), point_labels("t", ts), "points at t")
 }

@@ -14,9 +14,10 @@ use cagd::cost::max_bits;
 use cagd::Scalar;
 use nalgebra::DMatrix;
 
+use super::bernstein::{graph_lines, graphs, marked};
 use super::bspline::step_name;
-use super::{point_labels, WRITE_OPS};
-use crate::drawing::{Colour, Drawing};
+use super::WRITE_OPS;
+use crate::drawing::Drawing;
 use crate::error::Result;
 use crate::knots::{self, Degree};
 use crate::{Answer, Context, Item, Operation, Params, Report, Role, Value};
@@ -90,8 +91,18 @@ impl<T: Scalar> Operation<T> for BSplineBasis<T> {
         let result = DMatrix::from_fn(ts.len(), n, |i, j| rows[i][j].clone());
         report.push("result", Value::Matrix(result.clone()));
         let drawing = if self.drawing {
-            let values: Vec<Vec<T>> = dense.iter().map(top).collect();
-            Some(picture(p, (&dense, &values), (&ts, &result)))
+            let lines = crate::picture::picture_lines(
+                (a, b),
+                dense.len(),
+                true,
+                |us| {
+                    let rows: Vec<Vec<T>> = us.iter().map(top).collect();
+                    let values = DMatrix::from_fn(us.len(), n, |k, i| rows[k][i].clone());
+                    Ok(graph_lines(us, &values))
+                },
+                |us| self.check_cost(p, n, (&[], us), cx).is_ok(),
+            )?;
+            Some(picture(p, lines, (&ts, &result)))
         } else {
             None
         };
@@ -148,51 +159,17 @@ impl<T: Scalar> BSplineBasis<T> {
     }
 }
 
-/// The functions over `dense` (`values[k][i] = N_{i,p}(dense[k])`), six labelled at most, and
-/// the values at `ts` marked.
+/// The functions (their graphs `lines`), six labelled at most, and the values at `ts` marked.
 fn picture<T: Scalar>(
     p: usize,
-    (dense, values): (&[T], &[Vec<T>]),
+    lines: Vec<DMatrix<f64>>,
     (ts, result): (&[T], &DMatrix<T>),
 ) -> Drawing {
-    let colours = [
-        Colour::Blue,
-        Colour::Red,
-        Colour::Green,
-        Colour::Orange,
-        Colour::Purple,
-        Colour::Black,
-    ];
     let n = result.ncols();
     let title = format!("B-spline basis functions, degree {p}");
-    let mut drawing = Drawing::graph(title, "t", &format!("N_i,{p}(t)"));
-    for i in 0..n {
-        let line = DMatrix::from_fn(2, dense.len(), |r, k| {
-            if r == 0 {
-                dense[k].to_f64()
-            } else {
-                values[k][i].to_f64()
-            }
-        });
-        let label = match (n <= 6, i) {
-            (true, _) => format!("N_{},{p}", i + 1),
-            (false, 0) => format!("N_i,{p}, i = 1..{n}"),
-            _ => String::new(),
-        };
-        drawing = drawing.curve(line, colours[i % colours.len()], label);
-    }
-    let marks = DMatrix::from_fn(2, ts.len() * n, |r, c| {
-        let (k, i) = (c / n.max(1), c % n.max(1));
-        if r == 0 {
-            ts[k].to_f64()
-        } else {
-            result[(k, i)].to_f64()
-        }
-    });
-    let labels = ts
-        .iter()
-        .flat_map(|t| std::iter::repeat_n(point_labels("t", std::slice::from_ref(t)), n))
-        .flatten()
-        .collect();
-    drawing.points(marks, labels, "values at t")
+    let drawing = Drawing::graph(title, "t", &format!("N_i,{p}(t)"));
+    // Numbered from 1, as the CAD notes number them.
+    let numbers: Vec<usize> = (1..=n).collect();
+    let drawing = graphs(drawing, lines, &numbers, |i| format!("N_{i},{p}"));
+    marked(drawing, ts, result)
 }

@@ -8,9 +8,8 @@
 use cagd::cost::max_bits;
 use cagd::nurbs::NurbsCurve;
 use cagd::Curve;
-use nalgebra::DMatrix;
 
-use super::bspline::{picture, picture_params, points_in_order};
+use super::bspline::{picture, picture_line, picture_params, points_in_order};
 use crate::error::{lib, Result};
 use crate::knots::{self, DOMAIN_FORM};
 use crate::{Answer, Context, Operation, Params, Report, Role, Value};
@@ -105,7 +104,8 @@ impl Operation<f64> for Circle {
         report.push("t", Value::row(&ts));
         report.push("result", Value::Matrix(values.clone()));
         let drawing = if self.drawing {
-            let line: DMatrix<f64> = points_in_order(curve.dim(), &dense, cx, &fill)?;
+            let point = |bits| curve.point_cost(bits);
+            let line = picture_line((&0.0, &1.0), &fill, curve.dim(), point, cx)?;
             let title = if self.angles.is_some() {
                 "circular arc (NURBS)"
             } else {

@@ -28,7 +28,7 @@ use cagd::cost::max_bits;
 use cagd::Scalar;
 use nalgebra::{DMatrix, DVector};
 
-use super::{eval_points, to_f64};
+use super::to_f64;
 use crate::drawing::{Colour, Drawing};
 use crate::error::{lib, Kind, OpError, Result};
 use crate::{number_text_digits, Answer, Context, Operation, Report, Role, Value};
@@ -290,14 +290,13 @@ fn picture<T: Scalar>(
     second: &BezierCurve<T>,
     joint: &BezierJoint<T>,
 ) -> Result<Drawing> {
-    let dense = cagd::linspace::linspace_in(&T::zero(), &T::one(), 101)
-        .map_err(lib(Role::Joint, "a curve"))?;
-    let la = eval_points(first, &dense, Role::First, cx)?;
-    let lb = eval_points(second, &dense, Role::Second, cx)?;
+    let unit = (&T::zero(), &T::one());
+    let la = crate::picture::curve_line(first, unit, 101, Role::First, cx)?;
+    let lb = crate::picture::curve_line(second, unit, 101, Role::Second, cx)?;
     let ends = DMatrix::from_columns(&[joint.end.clone(), joint.start.clone()]);
     Ok(Drawing::new("the joint of two Bézier curves")
-        .curve(to_f64(&la), Colour::Blue, "x(u)")
-        .curve(to_f64(&lb), Colour::Green, "¹x(v)")
+        .curve(la, Colour::Blue, "x(u)")
+        .curve(lb, Colour::Green, "¹x(v)")
         .control_polygon(to_f64(first.control()), "control polygons")
         .control_polygon(to_f64(second.control()), "")
         .points(

@@ -24,7 +24,7 @@ use cagd::cost::max_bits;
 use cagd::Scalar;
 use nalgebra::DMatrix;
 
-use super::{eval_points, to_f64};
+use super::to_f64;
 use crate::drawing::{Colour, Drawing};
 use crate::error::{lib, Kind, OpError, Result};
 use crate::{Answer, Context, Operation, Report, Role, Value};
@@ -153,11 +153,10 @@ impl<T: Scalar> Convert<T> {
         bezier: &BezierCurve<T>,
         result: &DMatrix<T>,
     ) -> Result<Drawing> {
-        let dense = cagd::linspace::linspace_in(&T::zero(), &T::one(), 101)
-            .map_err(lib(Role::Control, "a curve"))?;
-        let line = eval_points(bezier, &dense, Role::Control, cx)?;
+        let unit = (&T::zero(), &T::one());
+        let line = crate::picture::curve_line(bezier, unit, 101, Role::Control, cx)?;
         let mut drawing = Drawing::new(format!("{} → {}", self.from.name(), self.to.name()))
-            .curve(to_f64(&line), Colour::Blue, "curve")
+            .curve(line, Colour::Blue, "curve")
             .control_polygon(to_f64(bezier.control()), "Bézier control polygon");
         for (form, geometry) in [(self.from, &self.geometry), (self.to, result)] {
             if form == GeometryForm::BSpline {

@@ -176,8 +176,7 @@ impl<T: Scalar> Curvature<T> {
     ) -> Result<Drawing> {
         let c = self.curve.as_ref();
         let (a, b) = c.domain();
-        let dense = cagd::linspace::linspace_in(&a, &b, 201).map_err(lib(Role::T, "a curve"))?;
-        let line = to_f64(&eval_points(c, &dense, Role::T, cx)?);
+        let line = crate::picture::curve_line(c, (&a, &b), 201, Role::T, cx)?;
         let points = to_f64(&eval_points(c, ts, Role::T, cx)?);
         let scale = 0.15 * extent(&line);
         let mut drawing = Drawing::new("curvature and Frenet frame")

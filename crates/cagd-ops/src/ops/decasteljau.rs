@@ -115,10 +115,10 @@ impl<T: Scalar> Operation<T> for DeCasteljau<T> {
         report.push("t", Value::row(&ts));
         report.push("result", Value::Matrix(values.clone()));
         let drawing = if self.drawing {
-            let line = eval_points(&curve, &dense, Role::T, cx)?;
+            let line = crate::picture::curve_line(&curve, (&a, &b), dense.len(), Role::T, cx)?;
             Some(
                 Drawing::new("Bézier curve (de Casteljau)")
-                    .curve(to_f64(&line), Colour::Blue, "curve")
+                    .curve(line, Colour::Blue, "curve")
                     .control_polygon(to_f64(curve.control()), "control polygon")
                     .points(to_f64(&values), point_labels("t", &ts), "points at t"),
             )

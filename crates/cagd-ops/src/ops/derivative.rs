@@ -96,9 +96,9 @@ impl<T: Scalar> Operation<T> for Derivative<T> {
             None
         };
         let drawing = if self.drawing {
-            let line = eval_points(&derivative, &dense, Role::T, cx)?;
+            let line = crate::picture::curve_line(&derivative, (&a, &b), dense.len(), Role::T, cx)?;
             let mut drawing = Drawing::new(format!("derivative of order {}", self.order))
-                .curve(to_f64(&line), Colour::Blue, "derivative curve")
+                .curve(line, Colour::Blue, "derivative curve")
                 .control_polygon(to_f64(derivative.control()), "its control polygon");
             if let Some(values) = values {
                 drawing = drawing.points(to_f64(&values), point_labels("t", &ts), "values at t");

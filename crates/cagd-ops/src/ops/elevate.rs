@@ -24,7 +24,7 @@ use cagd::{Curve, Scalar};
 use nalgebra::DMatrix;
 
 use super::decasteljau::CONTROL_FORM;
-use super::{eval_points, to_f64};
+use super::to_f64;
 use crate::bspline_arg::BSplineArg;
 use crate::drawing::{Colour, Drawing};
 use crate::error::{lib, Result};
@@ -149,19 +149,17 @@ impl<T: Scalar> Elevate<T> {
             return Ok(None);
         }
         let (a, b) = curve.domain();
-        let dense = cagd::linspace::linspace_in(&a, &b, PICTURE_SAMPLES)
-            .map_err(lib(Role::Control, "a curve"))?;
-        let line = eval_points(curve, &dense, Role::Control, cx)?;
+        let line = crate::picture::curve_line(curve, (&a, &b), PICTURE_SAMPLES, Role::Control, cx)?;
         Ok(Some(
             Drawing::new(title)
-                .curve(to_f64(&line), Colour::Blue, "curve")
+                .curve(line, Colour::Blue, "curve")
                 .boundary(to_f64(&self.control), Colour::Black, "original polygon")
                 .control_polygon(to_f64(elevated), "elevated polygon"),
         ))
     }
 }
 
-/// Samples of the curve in the picture.
+/// Samples of the curve in the picture, at first ([`crate::picture`]).
 const PICTURE_SAMPLES: usize = 201;
 
 /// The work of the picture's samples of `curve`, if one is drawn.

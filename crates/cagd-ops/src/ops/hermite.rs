@@ -113,10 +113,10 @@ impl<T: Scalar> Operation<T> for Hermite<T> {
         report.push("t", Value::row(&ts));
         report.push("result", Value::Matrix(values.clone()));
         let drawing = if self.drawing {
-            let line = eval_points(&h, &dense, Role::T, cx)?;
+            let line = crate::picture::curve_line(&h, (&zero, &one), PICTURE_SAMPLES, Role::T, cx)?;
             Some(
                 Drawing::new("Hermite cubic")
-                    .curve(to_f64(&line), Colour::Blue, "x(t)")
+                    .curve(line, Colour::Blue, "x(t)")
                     .control_polygon(to_f64(bezier.control()), "Bézier control polygon")
                     .points(to_f64(&values), point_labels("t", &ts), "points at t"),
             )

@@ -154,8 +154,16 @@ impl<T: Scalar> InsertKnot<T> {
                 })
             }
         };
+        let (a, b) = curve.domain();
+        let line = crate::picture::picture_line(
+            (&a, &b),
+            dense.len(),
+            false,
+            |us| eval(us).map(|m| to_f64(&m)),
+            |us| crate::picture::allowed(cx, us, |bits| curve.point_cost(bits)),
+        )?;
         Ok(Drawing::new("knot insertion (Boehm)")
-            .curve(to_f64(&eval(dense)?), Colour::Blue, "curve")
+            .curve(line, Colour::Blue, "curve")
             .boundary(to_f64(before), Colour::Black, "original polygon")
             .control_polygon(to_f64(after), "refined polygon")
             .points(

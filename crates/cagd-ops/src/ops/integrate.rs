@@ -30,7 +30,7 @@ use cagd::integral::{
 use cagd::{Curve, Scalar};
 use nalgebra::DMatrix;
 
-use super::bernstein::graphs;
+use super::bernstein::{graph_lines, graphs, marked};
 use super::decasteljau::CONTROL_FORM;
 use super::{eval_points, to_f64};
 use crate::bspline_arg::{BSplineArg, BSPLINE_FORM};
@@ -172,16 +172,22 @@ impl<T: Scalar> Integrate<T> {
         );
         let integral = DMatrix::from_element(rows.len(), 1, bernstein_integral::<T>(n));
         report.push("integral", Value::Matrix(integral));
+        let mut marks = None;
         if self.t.is_some() {
             let values = bernstein_antiderivative_values(n, &rows, &ts).map_err(lib(
                 Role::T,
                 "parameters whose integrals stay within the range of doubles",
             ))?;
             report.push("t", Value::row(&ts));
-            report.push("result", Value::Matrix(values));
+            report.push("result", Value::Matrix(values.clone()));
+            marks = Some(values);
         }
         let drawing = if self.drawing {
-            Some(bernstein_picture::<T>(n, &rows)?)
+            let picture = bernstein_picture::<T>(n, &rows, cx)?;
+            Some(match &marks {
+                Some(values) => marked(picture, &ts, values),
+                None => picture,
+            })
         } else {
             None
         };
@@ -320,12 +326,10 @@ impl<T: Scalar> Integrate<T> {
             return Ok(None);
         }
         let (a, b) = anti.domain();
-        let dense = cagd::linspace::linspace_in(&a, &b, PICTURE_SAMPLES)
-            .map_err(lib(Role::T, "a curve"))?;
-        let line = eval_points(anti, &dense, Role::T, cx)?;
+        let line = crate::picture::curve_line(anti, (&a, &b), PICTURE_SAMPLES, Role::T, cx)?;
         Ok(Some(
             Drawing::new(title)
-                .curve(to_f64(&line), Colour::Blue, label)
+                .curve(line, Colour::Blue, label)
                 .control_polygon(to_f64(control), "its control polygon"),
         ))
     }
@@ -335,16 +339,24 @@ impl<T: Scalar> Integrate<T> {
 const PICTURE_SAMPLES: usize = 201;
 
 /// Each `∫₀ᵗ B_i^N` over `[0, 1]` as the plane curve `(t, ∫₀ᵗ B_i^N)`.
-fn bernstein_picture<T: Scalar>(n: usize, rows: &[usize]) -> Result<Drawing> {
-    let dense = cagd::linspace::linspace_in(&T::zero(), &T::one(), PICTURE_SAMPLES)
-        .map_err(lib(Role::T, "a picture"))?;
-    let values =
-        bernstein_antiderivative_values(n, rows, &dense).map_err(lib(Role::Degree, "a picture"))?;
+fn bernstein_picture<T: Scalar>(n: usize, rows: &[usize], cx: &Context) -> Result<Drawing> {
+    let lines = crate::picture::picture_lines(
+        (&T::zero(), &T::one()),
+        PICTURE_SAMPLES,
+        true,
+        |dense| {
+            let values = bernstein_antiderivative_values(n, rows, dense)
+                .map_err(lib(Role::Degree, "a picture"))?;
+            Ok(graph_lines(dense, &values))
+        },
+        |dense| {
+            let cost = bernstein_antiderivative_cost(n, rows.len(), dense.len(), max_bits(dense));
+            cx.check_cost(Role::T, cost, T::EXACT).is_ok()
+        },
+    )?;
     let title = format!("integrals of the Bernstein polynomials of degree {n}");
     let axes = Drawing::graph(title, "t", &format!("∫₀ᵗ B_i^{n}"));
-    Ok(graphs(axes, &dense, &values, rows, |i| {
-        format!("∫ B_{i}^{n}")
-    }))
+    Ok(graphs(axes, lines, rows, |i| format!("∫ B_{i}^{n}")))
 }
 
 #[cfg(test)]

@@ -19,6 +19,9 @@ use crate::error::{lib, Kind, OpError, Result};
 use crate::params::check_given;
 use crate::{Answer, Context, Operation, Params, Report, Role, Value};
 
+/// Samples of the interpolant in its picture, at first ([`crate::picture`]).
+const PICTURE_SAMPLES: usize = 101;
+
 /// The form of the nodes.
 pub const NODES_FORM: &str = "distinct finite nodes, at least one";
 
@@ -90,7 +93,7 @@ impl<T: Scalar> Operation<T> for Lagrange<T> {
             let result = self.linear_values(&ts)?;
             report.push("t", Value::row(&ts));
             report.push("result", Value::Matrix(result.clone()));
-            return Ok(self.answer(report, &ts, &result));
+            return self.answer(report, &ts, &result, cx);
         }
         let basis =
             NodesInAnyOrder::new(self.nodes.clone()).map_err(lib(Role::Nodes, NODES_FORM))?;
@@ -127,7 +130,7 @@ impl<T: Scalar> Operation<T> for Lagrange<T> {
             }
         };
         report.push("result", Value::Matrix(result.clone()));
-        Ok(self.answer(report, &ts, &result))
+        self.answer(report, &ts, &result, cx)
     }
 }
 
@@ -204,14 +207,15 @@ impl<T: Scalar> Lagrange<T> {
 
     /// The answer with its picture: the interpolant through the data (numbers as `(t, p(t))`
     /// over `(x_i, y_i)`), the data, and the points at `t`.
-    fn answer(&self, report: Report<T>, ts: &[T], result: &DMatrix<T>) -> Answer<T> {
+    fn answer(
+        &self,
+        report: Report<T>,
+        ts: &[T],
+        result: &DMatrix<T>,
+        cx: &Context,
+    ) -> Result<Answer<T>> {
         let drawing = match (&self.values, self.drawing) {
             (Some(values), true) => {
-                let (line, data) = if result.nrows() == 1 {
-                    (graph(ts, result), graph(&self.nodes, values))
-                } else {
-                    (to_f64(result), to_f64(values))
-                };
                 let title = if self.linear {
                     "piecewise-linear interpolation"
                 } else {
@@ -219,18 +223,86 @@ impl<T: Scalar> Lagrange<T> {
                 };
                 Some(
                     Drawing::new(title)
-                        .curve(line.clone(), Colour::Blue, "interpolant")
-                        .control_polygon(data, "data")
-                        .points(line, super::point_labels("t", ts), "points at t"),
+                        .curve(
+                            self.line(values, (ts, result), cx)?,
+                            Colour::Blue,
+                            "interpolant",
+                        )
+                        .control_polygon(plane(&self.nodes, values), "data")
+                        .points(
+                            plane(ts, result),
+                            super::point_labels("t", ts),
+                            "points at t",
+                        ),
                 )
             }
             _ => None,
         };
-        Answer {
+        Ok(Answer {
             report,
             drawing,
             mesh: None,
+        })
+    }
+
+    /// The interpolant of `values` drawn over the nodes and the parameters `ts`, sampled
+    /// densely enough that it shows no corners it does not have; where the work of that is
+    /// not allowed, the polyline through its values `result` at `ts`.
+    fn line(
+        &self,
+        values: &DMatrix<T>,
+        (ts, result): (&[T], &DMatrix<T>),
+        cx: &Context,
+    ) -> Result<DMatrix<f64>> {
+        let (lo, hi) = ts.iter().fold(self.span(), |(lo, hi), t| {
+            (
+                if *t < lo { t.clone() } else { lo },
+                if *t > hi { t.clone() } else { hi },
+            )
+        });
+        if self.linear {
+            // Straight between the nodes: exactly the polyline through its values there.
+            let mut breaks: Vec<T> = self
+                .nodes
+                .iter()
+                .filter(|x| lo < **x && **x < hi)
+                .cloned()
+                .collect();
+            breaks.push(lo.clone());
+            breaks.push(hi.clone());
+            breaks.sort_by(|a, b| a.partial_cmp(b).unwrap_or(std::cmp::Ordering::Equal));
+            return Ok(plane(&breaks, &self.linear_values(&breaks)?));
         }
+        let basis =
+            NodesInAnyOrder::new(self.nodes.clone()).map_err(lib(Role::Nodes, NODES_FORM))?;
+        let eval = |us: &[T]| -> Result<DMatrix<f64>> {
+            let cols = us
+                .iter()
+                .map(|t| basis.interpolate(values, t))
+                .collect::<cagd::Result<Vec<_>>>()
+                .map_err(lib(Role::Points, VALUES_FORM))?;
+            Ok(plane(us, &DMatrix::from_columns(&cols)))
+        };
+        let (m1, d) = (self.nodes.len(), values.nrows());
+        let (node_bits, value_bits) = (max_bits(&self.nodes), max_bits(values.iter()));
+        let point = |bits| Barycentric::<T>::interpolation_cost(m1, d, bits, node_bits, value_bits);
+        let first = cagd::linspace::linspace_in(&lo, &hi, PICTURE_SAMPLES)
+            .map_err(lib(Role::T, "a curve"))?;
+        if !crate::picture::allowed(cx, &first, point) {
+            return Ok(plane(ts, result));
+        }
+        crate::picture::picture_line((&lo, &hi), PICTURE_SAMPLES, false, eval, |us| {
+            crate::picture::allowed(cx, us, point)
+        })
+    }
+}
+
+/// Points to draw: numbers `y` (1 × k) as the graph `(x_k, y_k)`, points as they are.
+fn plane<T: Scalar>(x: &[T], y: &DMatrix<T>) -> DMatrix<f64> {
+    if y.nrows() == 1 {
+        graph(x, y)
+    } else {
+        to_f64(y)
     }
 }
 

@@ -13,7 +13,9 @@ use cagd::nurbs::NurbsCurve;
 use cagd::{Curve, Scalar};
 use nalgebra::DMatrix;
 
-use super::bspline::{basis_matrix, picture, picture_params, points_in_order, CONTROL_FORM};
+use super::bspline::{
+    basis_matrix, picture, picture_line, picture_params, points_in_order, CONTROL_FORM,
+};
 use crate::error::{lib, Result};
 use crate::knots::{self, Degree, DOMAIN_FORM};
 use crate::{Answer, Context, Operation, Params, Report, Role, Value};
@@ -137,7 +139,8 @@ impl<T: Scalar> Operation<T> for Nurbs<T> {
         report.push("t", Value::row(&ts));
         report.push("result", Value::Matrix(values.clone()));
         let drawing = if self.drawing {
-            let line = points_in_order(curve.dim(), &dense, cx, &fill)?;
+            let point = |bits| curve.point_cost(bits);
+            let line = picture_line((&a, &b), &fill, curve.dim(), point, cx)?;
             Some(picture(
                 "NURBS curve",
                 line,

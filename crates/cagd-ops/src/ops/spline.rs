@@ -243,16 +243,11 @@ impl<T: Scalar> Operation<T> for Spline<T> {
         report.push("result", Value::Matrix(values.clone()));
         let drawing = if self.drawing {
             let (first, last) = ends_of(&s);
-            let dense = cagd::linspace::linspace_in(
-                &first,
-                &last,
-                SAMPLES_PER_SEGMENT * s.segment_count() + 1,
-            )
-            .map_err(lib(Role::T, "a curve"))?;
-            let line = eval_points(&s, &dense, Role::T, cx)?;
+            let samples = SAMPLES_PER_SEGMENT * s.segment_count() + 1;
+            let line = crate::picture::curve_line(&s, (&first, &last), samples, Role::T, cx)?;
             Some(
                 Drawing::new("interpolating cubic spline")
-                    .curve(to_f64(&line), Colour::Blue, "spline")
+                    .curve(line, Colour::Blue, "spline")
                     .control_polygon(to_f64(s.points()), "points")
                     .points(to_f64(&values), point_labels("t", &ts), "points at t"),
             )

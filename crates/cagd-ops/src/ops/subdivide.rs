@@ -88,13 +88,11 @@ impl<T: Scalar> Operation<T> for Subdivide<T> {
         report.push("left", Value::Matrix(left.control().clone()));
         report.push("right", Value::Matrix(right.control().clone()));
         let drawing = if self.drawing {
-            let dense = cagd::linspace::linspace_in(&a, &b, PICTURE_SAMPLES)
-                .map_err(lib(Role::T, "a curve"))?;
-            let line = eval_points(&curve, &dense, Role::T, cx)?;
+            let line = crate::picture::curve_line(&curve, (&a, &b), PICTURE_SAMPLES, Role::T, cx)?;
             let at = eval_points(&curve, std::slice::from_ref(&t), Role::T, cx)?;
             Some(
                 Drawing::new("subdivision (de Casteljau)")
-                    .curve(to_f64(&line), Colour::Blue, "curve")
+                    .curve(line, Colour::Blue, "curve")
                     .boundary(to_f64(curve.control()), Colour::Black, "control polygon")
                     .control_polygon(to_f64(left.control()), "left part")
                     .boundary(to_f64(right.control()), Colour::Green, "right part")
