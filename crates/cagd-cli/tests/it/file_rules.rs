@@ -365,48 +365,69 @@ fn read_only_outputs_are_refused_and_permissions_kept() {
 #[cfg(unix)]
 #[test]
 fn a_signal_during_a_write_leaves_no_temporary_file() {
-    use std::os::unix::process::ExitStatusExt;
     for signal in ["INT", "TERM"] {
-        let dir = tempfile::tempdir().unwrap();
-        let d = dir.path();
-        std::fs::write(d.join("big.csv"), "old").unwrap();
-        let mut child = cagd(
-            d,
-            &[
-                "bernstein",
-                "--degree",
-                "3",
-                "--n",
-                "400000",
-                "--format",
-                "csv",
-                "-o",
-                "big.csv",
-            ],
-        )
+        // On a busy machine the write may end before the signal lands: then the same command
+        // with a longer output is tried again (the rule is checked only on a write that was
+        // really interrupted).
+        let interrupted = [400_000, 1_000_000, 2_000_000]
+            .into_iter()
+            .any(|samples| interrupt_a_write(signal, samples));
+        assert!(
+            interrupted,
+            "SIG{signal}: every write ended before the signal"
+        );
+    }
+}
+
+/// Starts `bernstein --n SAMPLES -o big.csv` over an old `big.csv`, sends `SIGNAL` once the
+/// temporary file is there, and checks what an interrupted write must leave: the old file and
+/// no temporary. False when the command finished before the signal arrived.
+fn interrupt_a_write(signal: &str, samples: usize) -> bool {
+    use std::os::unix::process::ExitStatusExt;
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    std::fs::write(d.join("big.csv"), "old").unwrap();
+    let n = samples.to_string();
+    let args = [
+        "bernstein",
+        "--degree",
+        "3",
+        "--n",
+        &n,
+        "--format",
+        "csv",
+        "-o",
+        "big.csv",
+    ];
+    let mut child = cagd(d, &args)
+        .env("CAGD_MAX_SAMPLES", "2000000")
         .stderr(Stdio::null())
         .spawn()
         .unwrap();
-        // Wait for the temporary file to appear, then interrupt.
-        let started = std::time::Instant::now();
-        while !files_in(d).iter().any(|f| f.starts_with(".cagd-")) {
-            if child.try_wait().unwrap().is_some() {
-                panic!("the command ended before its temporary file was seen");
-            }
-            assert!(started.elapsed().as_secs() < 120, "no temporary file");
-            std::thread::sleep(std::time::Duration::from_micros(200));
+    // Wait for the temporary file to appear, then interrupt.
+    let started = std::time::Instant::now();
+    while !files_in(d).iter().any(|f| f.starts_with(".cagd-")) {
+        if child.try_wait().unwrap().is_some() {
+            panic!("the command ended before its temporary file was seen");
         }
-        let kill = Command::new("kill")
-            .args([format!("-{signal}"), child.id().to_string()])
-            .status()
-            .unwrap();
-        assert!(kill.success());
-        let status = child.wait().unwrap();
-        let expected = if signal == "INT" { 2 } else { 15 };
-        assert_eq!(status.signal(), Some(expected), "{status:?}");
-        no_temporaries(d);
-        assert_eq!(std::fs::read_to_string(d.join("big.csv")).unwrap(), "old");
+        assert!(started.elapsed().as_secs() < 120, "no temporary file");
+        std::thread::sleep(std::time::Duration::from_micros(200));
     }
+    let kill = Command::new("kill")
+        .args([format!("-{signal}"), child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(kill.success());
+    let status = child.wait().unwrap();
+    no_temporaries(d);
+    if status.success() {
+        assert_ne!(std::fs::read_to_string(d.join("big.csv")).unwrap(), "old");
+        return false;
+    }
+    let expected = if signal == "INT" { 2 } else { 15 };
+    assert_eq!(status.signal(), Some(expected), "{status:?}");
+    assert_eq!(std::fs::read_to_string(d.join("big.csv")).unwrap(), "old");
+    true
 }
 
 #[test]
