@@ -40,7 +40,10 @@ cargo build -p cagd-web --target wasm32-unknown-unknown --profile web
 dist=web/dist
 rm -rf "$dist"
 mkdir -p "$dist/pkg"
-wasm-bindgen --target web --no-typescript --out-dir "$dist/pkg" \
+# The `name` section (Rust function names for a browser's debugger, about 600 kB, a sixth of
+# the .wasm) is left out: nothing on the page reads it (a fault is reported by the panic hook
+# with the program's own message and source location), and every visitor would download it.
+wasm-bindgen --target web --no-typescript --remove-name-section --out-dir "$dist/pkg" \
     target/wasm32-unknown-unknown/web/cagd_web.wasm
 wasm="$dist/pkg/cagd_web_bg.wasm"
 if command -v wasm-opt >/dev/null 2>&1; then

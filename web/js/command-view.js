@@ -4,8 +4,8 @@
 // shows its own form and Octave code; the form's Run runs what the form shows.
 
 import { explainInto } from "./explain.js";
-import { argvOf, buildForm, examples, readForm, SCRIPT_FILE, valuesOf } from "./forms.js";
-import { t } from "./i18n.js";
+import { argvOf, buildForm, examples, readForm, SCRIPT_FILE, summaryOf, valuesOf } from "./forms.js";
+import { localMessage, t } from "./i18n.js";
 import { octaveCode } from "./octave.js";
 import { join, split } from "./shell.js";
 
@@ -20,7 +20,8 @@ export class CommandView {
     this.byName = Object.fromEntries(app.schema.map((c) => [c.name, c]));
     this.plotFile = null;
     const sel = $("construction");
-    for (const c of app.schema) sel.add(new Option(c.about ? `${c.name} — ${c.about.replace(/\.$/, "")}` : c.name, c.name));
+    for (const c of app.schema) sel.add(new Option(c.name, c.name));
+    this.nameConstructions();
     sel.addEventListener("change", () => this.choose(sel.value, this.example(sel.value), true));
     $("example").addEventListener("click", () => this.choose(this.c.name, this.example(this.c.name), true));
     $("command-form").addEventListener("submit", (e) => {
@@ -35,6 +36,15 @@ export class CommandView {
     });
     $("stop").addEventListener("click", () => app.cli.stop("command"));
     this.show({ name: "decasteljau", values: this.example("decasteljau") });
+  }
+
+  /** The construction list's entries, `name — summary` in the page's language. */
+  nameConstructions() {
+    for (const option of $("construction").options) {
+      const c = this.byName[option.value];
+      const about = c ? summaryOf(c).replace(/\.$/, "") : "";
+      option.textContent = about ? `${c.name} — ${about}` : option.value;
+    }
   }
 
   /** The form values of the first example of subcommand `name` (from its help). */
@@ -57,7 +67,7 @@ export class CommandView {
   show({ name, values }) {
     this.c = this.byName[name];
     $("construction").value = name;
-    $("construction-about").textContent = this.c.about ?? "";
+    $("construction-about").textContent = summaryOf(this.c);
     explainInto($("command-explain"), name);
     this.plotFile = values.plotFile ?? null;
     buildForm(this.c, values, $("fields"), $("switches"));
@@ -166,6 +176,7 @@ export class CommandView {
   }
 
   clear() {
+    this.shown = null;
     for (const url of this.urls) URL.revokeObjectURL(url);
     this.urls = [];
     $("error").hidden = true;
@@ -178,24 +189,30 @@ export class CommandView {
 
   answer(answer, line) {
     this.clear();
+    this.shown = answer;
     $("busy").textContent = answer.ok ? t("done") : "";
-    const error = $("error");
-    error.hidden = answer.ok;
-    error.textContent = answer.ok ? "" : answer.error;
+    $("error").hidden = answer.ok;
     $("stdout").textContent = answer.ok ? answer.stdout : "";
-    $("warnings").replaceChildren(
-      ...(answer.warnings ?? []).map((w) => {
-        const li = document.createElement("li");
-        li.textContent = w;
-        return li;
-      }),
-    );
+    this.showMessages();
     for (const f of answer.files ?? []) this.file(f);
     const result = $("result");
     result.dataset.run = String(++this.runs);
     result.dataset.ok = String(!!answer.ok);
     result.dataset.line = line;
     this.app.answered();
+  }
+
+  /** The answer's error and warnings, in the page's language. */
+  showMessages() {
+    const answer = this.shown ?? {};
+    $("error").textContent = answer.ok === false ? localMessage(answer.error) : "";
+    $("warnings").replaceChildren(
+      ...(answer.warnings ?? []).map((w) => {
+        const li = document.createElement("li");
+        li.textContent = localMessage(w);
+        return li;
+      }),
+    );
   }
 
   file(f) {
@@ -224,7 +241,10 @@ export class CommandView {
   }
 
   relabel() {
+    this.nameConstructions();
+    this.showMessages();
     if (this.c) {
+      $("construction-about").textContent = summaryOf(this.c);
       explainInto($("command-explain"), this.c.name);
       const v = this.values();
       buildForm(this.c, v, $("fields"), $("switches"));

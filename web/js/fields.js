@@ -4,7 +4,7 @@
 // field that holds it, in the page's language. A view shows every message through
 // viewMessage, so its messages speak of its own fields and never of an option it lacks.
 
-import { t } from "./i18n.js";
+import { localMessage, t } from "./i18n.js";
 
 const POINTS = { CONTROL: "points", control: "points", spline: "points" };
 const T = { "--t": "parameterT", t: "parameterT" };
@@ -67,16 +67,17 @@ const COMMAND_LINE_ONLY = [/ \(read as [^()]*\)/g, / \(raise it with [^()]*\)/g]
 /**
  * `message` (one line, `cagd: error: NAME: PROBLEM; expected FORM`, or a warning) as view
  * `view` shows it: NAME as the label of the view's field, without the command line's words
- * about options the view lacks. A name the view has no field for stays as it is.
+ * about options the view lacks, in the page's language (localMessage). A name the view has no
+ * field for stays as it is.
  */
 export function viewMessage(view, message) {
   if (!message) return message;
   const m = /^(cagd: [^:]+: )(.*?): (.*)$/s.exec(message);
-  if (!m) return message;
+  if (!m) return localMessage(message);
   const [, head, name, rest] = m;
   const key = FIELDS[view]?.[name];
   const tidy = COMMAND_LINE_ONLY.reduce((s, re) => s.replace(re, ""), rest);
-  return `${head}${key ? t(key) : name}: ${tidy}`;
+  return localMessage(`${head}${key ? t(key) : name}: ${tidy}`);
 }
 
 /** Every name of an argument `view` maps (for the tests). */

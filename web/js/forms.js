@@ -4,7 +4,7 @@
 // from its clap struct. The form's values map to arguments and back (argvOf, valuesOf) the way
 // the command line parses them.
 
-import { t } from "./i18n.js";
+import { lang, t } from "./i18n.js";
 import { join, split } from "./shell.js";
 
 /** The file name under which a script typed into the page is passed to the command line. */
@@ -162,7 +162,7 @@ function el(tag, attrs = {}, ...children) {
 
 function labelled(id, text, control, hint) {
   control.id = id;
-  const p = el("p", {}, el("label", { for: id }, text), control);
+  const p = el("p", {}, el("label", { for: id }, ...[text].flat()), control);
   if (hint) {
     const small = el("small", { id: `${id}-hint` }, hint);
     control.setAttribute("aria-describedby", small.id);
@@ -185,20 +185,39 @@ function hintOf(a, rest) {
 /** The page's own short words for the output options every subcommand shares. */
 const SHARED = { exact: "arg.exact", steps: "arg.steps", rows: "arg.rows", format: "arg.format", digits: "arg.digits", output: "arg.output" };
 
-/** One argument's control (its paragraph), filled from the values `v`. */
-function control(cmd, a, v) {
-  const kind = kindOf(cmd, a);
+/** A subcommand's summary in the page's language (clap's `about` in English). */
+export function summaryOf(cmd) {
+  return cmd.i18n?.[lang()] ?? cmd.about ?? "";
+}
+
+/**
+ * An argument's label and hint in the page's language: the command line's own translation
+ * (cagd_cli::lang::forms, handed over by the schema), or in English clap's help, its first
+ * sentence (up to a colon) the label and the rest the hint.
+ */
+export function wordsOf(a) {
+  const own = a.i18n?.[lang()];
+  const sentence = (s) => s.charAt(0).toUpperCase() + s.slice(1);
+  if (own) return SHARED[a.id] ? [t(SHARED[a.id]), `${own.label}. ${sentence(own.hint)}`] : [own.label, own.hint];
   let [first, rest] = sentences(a.help);
   // "Control points b_0..b_n: a matrix literal, …": the name is the label, the form a hint.
   const colon = first.indexOf(": ");
   if (colon > 0 && colon < 60) [first, rest] = [first.slice(0, colon), `${first.slice(colon + 2)}. ${rest}`.trim()];
   if (SHARED[a.id]) [first, rest] = [t(SHARED[a.id]), a.help ?? ""];
+  return [first, rest];
+}
+
+/** One argument's control (its paragraph), filled from the values `v`. */
+function control(cmd, a, v) {
+  const kind = kindOf(cmd, a);
+  const [first, rest] = wordsOf(a);
   const flag = a.positional ? a.value_name ?? a.id.toUpperCase() : flagOf(a);
   const id = `f-${a.id}`;
-  const name = `${first || a.id} (${flag})`;
+  // The option's name is kept whole on one line: "(--interval)", never "(--" and "interval)".
+  const name = () => [`${first || a.id} `, el("span", { class: "flag" }, `(${flag})`)];
   if (kind === "flag") {
     const box = el("input", { type: "checkbox", id, checked: v[a.id] === true, dataset: { arg: a.id } });
-    return el("p", { class: "switch" }, el("label", {}, box, ` ${name}`));
+    return el("p", { class: "switch" }, el("label", {}, box, " ", ...name()));
   }
   if (kind === "plot") {
     const box = el("input", { type: "checkbox", id, checked: v.plot === true, dataset: { arg: "plot" } });
@@ -207,7 +226,7 @@ function control(cmd, a, v) {
   if (kind === "mesh") {
     const s = el("select", { dataset: { arg: "mesh" } }, new Option(t("meshNone"), ""), ...MESHES.map((m) => new Option(`${cmd.name}.${m}`, m)));
     s.value = v.mesh ?? "";
-    return labelled(id, name, s);
+    return labelled(id, name(), s);
   }
   if (kind === "script") {
     const area = el("textarea", { rows: 5, spellcheck: "false", dataset: { arg: "script", of: a.id } });
@@ -218,17 +237,17 @@ function control(cmd, a, v) {
     const def = a.default ? t("defaultChoice", { value: a.default }) : t("defaultNone");
     const s = el("select", { dataset: { arg: a.id } }, new Option(def, ""), ...a.choices.map((c) => new Option(c, c)));
     s.value = a.choices.includes(v[a.id]) ? v[a.id] : "";
-    return labelled(id, name, s, hintOf({ ...a, default: null }, ""));
+    return labelled(id, name(), s, hintOf({ ...a, default: null }, ""));
   }
   if (kind === "lines") {
     const area = el("textarea", { rows: 3, spellcheck: "false", dataset: { arg: a.id } });
     area.value = v[a.id] ?? "";
-    return labelled(id, `${name}, ${t("oneLine")}`, area, hintOf(a, rest));
+    return labelled(id, [...name(), `, ${t("oneLine")}`], area, hintOf(a, rest));
   }
   const input = textInput(v[a.id]);
   input.dataset.arg = a.id;
   if (/^(N|P|K|Q|R)$/.test(a.value_name ?? "")) input.inputMode = "numeric";
-  return labelled(id, name, input, hintOf(a, rest));
+  return labelled(id, name(), input, hintOf(a, rest));
 }
 
 /**

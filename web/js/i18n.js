@@ -1,7 +1,8 @@
 // The page in English, Slovenian (the thesis and the CAD notes) and Czech (the lecture notes):
 // the words of the page itself. The labels of the steps come from the program's own table
 // (cagd_cli::lang, read through the WebAssembly's step_tables), the explanations of the
-// constructions from explain.js. The language is chosen from the browser's languages, or by
+// constructions from explain.js, the forms' labels from the command line's own table (in the
+// schema), and the program's messages from the catalogue of their phrases (localMessage). The language is chosen from the browser's languages, or by
 // the switch in the header (remembered in localStorage).
 
 export const LANGS = ["en", "sl", "cs"];
@@ -449,6 +450,27 @@ export function setLang(lang, remember = false) {
 
 export function lang() {
   return current;
+}
+
+let translator = null;
+
+/** Sets how the program's messages are put into a language (the WebAssembly's message_in). */
+export function setMessageTranslator(translate) {
+  translator = translate;
+}
+
+/**
+ * A message of the program (`cagd: error: NAME: PROBLEM; expected FORM`, a warning) in the
+ * page's language: from the catalogue of its phrases (cagd_web::messages) when every word of it
+ * is there, else as the program words it.
+ */
+export function localMessage(message) {
+  if (!message || current === "en" || !translator) return message;
+  try {
+    return translator(message, current);
+  } catch {
+    return message;
+  }
 }
 
 /** The page's words for `key` in the current language, `{name}` filled from `vars`. */

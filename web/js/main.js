@@ -6,7 +6,7 @@
 import init, * as wasm from "../pkg/cagd_web.js";
 import { CommandLine } from "./cli.js";
 import { CommandView } from "./command-view.js";
-import { applyStatic, chooseLang, lang, LANG_NAMES, LANGS, setLang, t } from "./i18n.js";
+import { applyStatic, chooseLang, lang, LANG_NAMES, LANGS, setLang, setMessageTranslator, t } from "./i18n.js";
 
 const $ = (id) => document.getElementById(id);
 const started = performance.now();
@@ -324,6 +324,7 @@ async function main() {
     $("loading").textContent = t("wasmFailed", { reason: e.message ?? e });
     return;
   }
+  setMessageTranslator((message, code) => wasm.message_in(message, code));
   app.schema = JSON.parse(wasm.schema());
   app.steps = JSON.parse(wasm.step_tables());
   app.cli = new CommandLine(module);

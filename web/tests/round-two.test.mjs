@@ -408,7 +408,34 @@ test("the seven homework tasks, each in a view and by a form: exact, with steps 
   await view("basis", null, [/1\/32, 15\/32, 15\/32, 1\/32/, /triangle/], "#basis-plane polyline[data-basis]");
 });
 
+/** The labels of the command form, in order (a checkbox's label is its text). */
+const formLabels = (page) => page.locator("#command-form label").evaluateAll((list) => list.map((l) => l.textContent.trim()));
+
+/** What the Slovenian and Czech decasteljau forms say: the command line's own translations. */
+const DECASTELJAU_FORM = {
+  sl: {
+    option: "decasteljau — Točke Bézierove krivulje z de Casteljaujevim algoritmom (zaključna naloga, algoritem 1)",
+    control: "Kontrolne točke b_0..b_n (CONTROL)",
+    t: "Parametri krivulje (--t)",
+    tHint: "število, seznam \"[0 0.25 0.5]\" ali razpon 0:0.1:1",
+    interval: "Parametrski interval [a, b] krivulje (zaključna naloga §2.3.2) (--interval)",
+    source: "Vir: zaključna naloga (thesis), algoritem 1 (Primer 2.4)",
+  },
+  cs: {
+    option: "decasteljau — Body Bézierovy křivky de Casteljauovým algoritmem (závěrečná práce, algoritmus 1)",
+    control: "Řídicí body b_0..b_n (CONTROL)",
+    t: "Parametry křivky (--t)",
+    tHint: "číslo, seznam \"[0 0.25 0.5]\" nebo rozsah 0:0.1:1",
+    interval: "Parametrický interval [a, b] křivky (závěrečná práce §2.3.2) (--interval)",
+    source: "Zdroj: závěrečná práce (thesis), algoritmus 1 (Primer 2.4)",
+  },
+};
+
 test("languages: Slovenian and Czech pages from the browser's language, the switch, and the steps' labels", async () => {
+  const english = await openPage(chrome.context, server.url, link(`cagd decasteljau "[0 0 0; 0 2 2; 8 2 0; 4 0 0]'" --t 0.5 --steps --exact`));
+  const englishLabels = await formLabels(english);
+  assert.equal(englishLabels.find((l) => l.endsWith("(--t)")), "Curve parameters (--t)");
+  await english.close();
   for (const [locale, tab, label] of [
     ["sl-SI", "Bézierova krivulja", "% de Casteljaujeva shema"],
     ["cs-CZ", "Bézierova křivka", "% de Casteljauovo schéma"],
@@ -417,6 +444,20 @@ test("languages: Slovenian and Czech pages from the browser's language, the swit
     const page = await openPage(local.context, server.url, link(`cagd decasteljau "[0 0 0; 0 2 2; 8 2 0; 4 0 0]'" --t 0.5 --steps --exact`));
     assert.equal(await text(page, "#tab-bezier"), tab);
     const lang = locale.slice(0, 2);
+    // The command form in the page's language: the construction list, its summary, every
+    // label (none as in English), the hints and the source, the option names kept.
+    const form = DECASTELJAU_FORM[lang];
+    const option = await page.locator('#construction option[value="decasteljau"]').textContent();
+    assert.equal(option, form.option);
+    assert.equal(await text(page, "#construction-about"), form.option.split(" — ")[1]);
+    assert.equal(await text(page, 'label[for="f-control"]'), form.control);
+    assert.equal(await text(page, 'label[for="f-t"]'), form.t);
+    assert.equal(await text(page, "#f-t-hint"), form.tHint);
+    assert.equal(await text(page, 'label[for="f-interval"]'), form.interval);
+    assert.equal(await text(page, "#command-explain .source"), form.source);
+    const labels = await formLabels(page);
+    assert.equal(labels.length, englishLabels.length);
+    labels.forEach((l, i) => assert.notEqual(l, englishLabels[i], `${lang}: a label as in English: ${l}`));
     assert.equal(await page.evaluate(() => document.documentElement.lang), lang);
     assert.match(await page.inputValue("#cmdline"), new RegExp(`--lang ${lang}$`));
     const steps = await text(page, "#stdout");
@@ -490,13 +531,29 @@ test("history: views and commands are entries, Back returns to them", async () =
 
 test("every page word exists in the three languages, every subcommand has an explanation", async () => {
   const page = await openPage(chrome.context, server.url);
-  const { keys, explained, names } = await page.evaluate(async () => {
+  const { keys, explained, names, sources } = await page.evaluate(async () => {
     const i18n = await import(document.querySelector('script[type="module"]').src.replace(/main\.[0-9a-f]+\.js$/, (m) => m.replace("main", "i18n")));
     const explain = await import(document.querySelector('script[type="module"]').src.replace(/main\.[0-9a-f]+\.js$/, (m) => m.replace("main", "explain")));
-    return { keys: i18n.keys(), explained: explain.explained, names: window.cagdApp.schema.map((c) => c.name) };
+    return { keys: i18n.keys(), explained: explain.explained, names: window.cagdApp.schema.map((c) => c.name), sources: explain.sources };
   });
   assert.deepEqual(keys.sl, keys.en);
   assert.deepEqual(keys.cs, keys.en);
+  // Every source in Slovenian and Czech, each short name of docs/SOURCES.md kept beside the
+  // source's own name: "zaključna naloga (thesis) §4.1".
+  const shortNames = ["matrix-form notes", "lecture notes", "CAD notes", "thesis"];
+  for (const [name, source] of Object.entries(sources)) {
+    for (const l of ["sl", "cs"]) {
+      assert.ok(source[l], `${name}: no ${l} source`);
+      let en = source.en;
+      for (const short of shortNames) {
+        if (!en.includes(short)) continue;
+        en = en.replaceAll(short, "");
+        assert.ok(source[l].includes(`(${short})`), `${name} ${l}: ${source[l]} lacks (${short})`);
+      }
+      const bare = source[l].replace(/\([^()]*\)/g, "");
+      for (const short of shortNames) assert.ok(!bare.includes(short), `${name} ${l}: ${source[l]}`);
+    }
+  }
   assert.deepEqual(
     names.filter((n) => !explained.includes(n)),
     [],

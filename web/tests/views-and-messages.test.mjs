@@ -126,12 +126,33 @@ test("every view's message names the view's own field (the page's label, in its 
     await page.fill(field, before);
     await error.waitFor({ state: "hidden" });
   }
-  // In Slovenian the field's Slovenian label.
+  // In Slovenian the field's Slovenian label, and the operation layer's words in Slovenian
+  // (the catalogue of cagd_web::messages), in the view and in the command box.
   await page.selectOption("#lang", "sl");
   await page.click("#tab-bspline");
   await page.fill("#bspline-knots", "[0 0 0 0 2/3 1/3 1 1 1 1]");
-  await page.locator("#bspline-error").filter({ hasText: "cagd: error: Vozliščni vektor: " }).waitFor();
+  const error = page.locator("#bspline-error");
+  await error.filter({ hasText: "cagd: napaka: Vozliščni vektor: " }).waitFor();
+  const knots = await error.textContent();
+  assert.match(knots, /^cagd: napaka: Vozliščni vektor: vozliščni vektor: vozel 6 \(\S+\) je manjši od vozla pred njim \(\S+\); vozli morajo biti nepadajoči; pričakovano: n \+ p \+ 1 nepadajočih vozlov za n kontrolnih točk stopnje p \(n ≥ p \+ 1\), pri čemer u_\(p\+1\) < u_\(n\+1\)$/);
+  await page.click("#tab-command");
+  const bad = `cagd bspline "[0 0; 1 1; 2 0; 3 1]'" --degree 2 --knots "[0 0 0 1 0.5 1 1]"`;
+  const sl = await runOnPage(page, bad);
+  assert.equal(
+    sl.error,
+    "cagd: napaka: --knots: vozliščni vektor: vozel 5 (0.5) je manjši od vozla pred njim (1); vozli morajo biti nepadajoči; pričakovano: n + p + 1 nepadajočih vozlov za n kontrolnih točk stopnje p (n ≥ p + 1), pri čemer u_(p+1) < u_(n+1)",
+  );
+  await shot(page, "command-error-sl");
+  await page.selectOption("#lang", "cs");
+  assert.equal(
+    await page.locator("#error").textContent(),
+    "cagd: chyba: --knots: uzlový vektor: uzel 5 (0.5) je menší než uzel před ním (1); uzly musí být neklesající; očekává se: n + p + 1 neklesajících uzlů pro n řídicích bodů stupně p (n ≥ p + 1), přičemž u_(p+1) < u_(n+1)",
+  );
+  // In English, the program's own line, as the cagd binary prints it.
   await page.selectOption("#lang", "en");
+  const en = await runOnPage(page, bad);
+  const binary = runBinary(["bspline", "[0 0; 1 1; 2 0; 3 1]'", "--degree", "2", "--knots", "[0 0 0 1 0.5 1 1]"]);
+  assert.equal(en.error, binary.stderr.trim());
   assert.deepEqual(page.errors, []);
   await page.close();
 });

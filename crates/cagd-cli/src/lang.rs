@@ -9,6 +9,11 @@
 //! `de_boor`), so the items themselves — what Octave's format, JSON and CSV write — keep their
 //! names in every language. Fixed English phrases inside the readable layouts (the title of a
 //! de Casteljau triangle) are translated by [`PHRASES`].
+//!
+//! The command line's own words — each subcommand's summary, each argument's label and hint —
+//! are translated beside them, in [`forms`], for the page's forms.
+
+pub mod forms;
 
 /// A language of the readable output.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Hash, clap::ValueEnum)]

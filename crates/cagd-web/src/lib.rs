@@ -7,8 +7,9 @@
 //!   [`nurbs_view`]): the operation layer's requests on the views' small inputs, cheap enough to
 //!   repeat on every frame of a drag, their messages naming each argument by its role's key
 //!   (the page shows it under the label of the view's field);
-//! - what the page builds itself from ([`schema`]: every subcommand's arguments, for the forms;
-//!   [`step_tables`]: the labels of the steps in English, Slovenian and Czech).
+//! - what the page builds itself from ([`schema`]: every subcommand's arguments, for the forms,
+//!   with their Slovenian and Czech labels; [`step_tables`]: the labels of the steps in
+//!   English, Slovenian and Czech) and [`message_in`]: a message in Slovenian or Czech.
 //!
 //! Everything is plain Rust that also builds natively (`cargo test -p cagd-web` checks the
 //! answers); `#[wasm_bindgen]` turns the functions into JavaScript exports when the target is
@@ -17,12 +18,14 @@
 
 mod command;
 mod coons_view;
+pub mod messages;
 mod ops;
 mod tables;
 mod views;
 
 pub use command::{file_bytes, run};
 pub use coons_view::coons_view;
+pub use messages::message_in;
 pub use tables::{schema, step_tables};
 pub use views::{bezier_view, bspline_view, nurbs_view};
 
