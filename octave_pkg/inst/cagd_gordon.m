@@ -2,7 +2,7 @@
 ## @deftypefn  {} {[@var{X}, @var{g1}, @var{g2}, @var{g12}] =} cagd_gordon (@var{cu}, @var{cv}, @var{un}, @var{vn}, @var{u}, @var{v})
 ## @deftypefnx {} {[@dots{}] =} cagd_gordon (@dots{}, "exact")
 ## The Gordon surface of a network of curves (Bézier or NURBS) on the grid @var{u} × @var{v},
-## with its three parts (thesis §4.4, Izrek 4.4):
+## with its three parts (thesis §4.5, Izrek 4.4):
 ##
 ## @example
 ## g = g1 + g2 - g12,   g1 = sum_i g(u_i, v) L_i(u),   g2 = sum_j g(u, v_j) L_j(v),

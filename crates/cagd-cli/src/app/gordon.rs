@@ -19,7 +19,7 @@ use crate::args::{
 use crate::cx::Cx;
 use crate::{load_params, CliError, Outcome};
 
-/// A Gordon surface g = g1 + g2 - g12 of a curve network (thesis 4.4, algorithm 7).
+/// A Gordon surface g = g1 + g2 - g12 of a curve network (thesis §4.5, algorithm 7).
 #[derive(Debug, Args)]
 #[command(after_help = "\
 Input: repeated --u-curve g(u_i, v) (expressions in v) and --v-curve g(u, v_j) (in u), in node

@@ -1,4 +1,4 @@
-//! `gordon`: the Gordon surface of a curve network (thesis §4.4, Izrek 4.4, algorithm 7):
+//! `gordon`: the Gordon surface of a curve network (thesis §4.5, Izrek 4.4, algorithm 7):
 //!
 //! `g = g1 + g2 − g12`, `g1(u,v) = Σ_i g(u_i, v) L_i(u)`, `g2(u,v) = Σ_j g(u, v_j) L_j(v)`,
 //! `g12(u,v) = Σ_i Σ_j g(u_i, v_j) L_i(u) L_j(v)`,
