@@ -29,7 +29,7 @@ endfunction
 %! assert (X(:, [1 end]), [1 0; 0 1]);
 %!assert (cagd_nurbs (2, [0 1 2], [1 2 1], [], 0.5, "exact"), {"1"})
 %!assert (cagd_nurbs (2, [0 1 2], [1 2 1], [], "1/3", "exact"), {"10/13"})
-%!error <weight 1 is 0> cagd_nurbs (2, [0 1 2], [1 0 1], [], 0.5)
+%!error <weight 2 is 0> cagd_nurbs (2, [0 1 2], [1 0 1], [], 0.5)
 %!error <expected 3 weights> cagd_nurbs (2, [0 1 2], [1 1], [], 0.5)
 
 %!demo

@@ -79,7 +79,7 @@ function cagd_test_bad_input ()
     "decreasing knots",         @() cagd_bspline (1, [0 1], [0 1 0 1], 0.5), "cagd:knots", "knot 3 (0) is below the knot before it (1)"
     "knot count",               @() cagd_bspline (2, [0 1 2], [0 0 0 1 1 1 1], 0.5), "cagd:knots", "expected 6 knots"
     "span beyond the knots",    @() cagd_findspan (3, 2, 0.5, [0 0 1 1]),   "cagd:shape", "index 5 is out of bound 4"
-    "negative weight",          @() cagd_nurbs (2, [0 1 2], [1 -1 1], [], 0.5), "cagd:weights", "weight 1 is -1; weights must be positive"
+    "negative weight",          @() cagd_nurbs (2, [0 1 2], [1 -1 1], [], 0.5), "cagd:weights", "weight 2 is -1; weights must be positive"
     "zero weight in NURBS",     @() cagd_nurbs (2, [1 0 0; 0 0 1], [1 0 1], [], 0.5), "cagd:weights", "weights must be positive"
     "repeated nodes",           @() Lagrange ([1 1], 1, 0.5),               "cagd:nodes", "nodes 0 and 1 are equal (1)"
     "unsorted nodes",           @() krpaGordon (g_u, g_v, g_uv, [0 1 0.5], x, N), "cagd:nodes", "nodes must increase"

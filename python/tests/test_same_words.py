@@ -99,14 +99,14 @@ ROWS = [
         lambda: cagd.NurbsCurve(2, [0, 0, 0, 1, 1, 1], three, [1, -1, 1]),
         "NonPositiveWeight",
         "weights",
-        f"weights: NURBS weights: weight 1 is -1; weights must be positive; {WEIGHTS_FORM}",
+        f"weights: NURBS weights: weight 2 is -1; weights must be positive; {WEIGHTS_FORM}",
     ),
     (
         "a zero weight",
         lambda: cagd.NurbsCurve(2, [0, 0, 0, 1, 1, 1], three, [1, 0, 1]),
         "NonPositiveWeight",
         "weights",
-        f"weights: NURBS weights: weight 1 is 0; weights must be positive; {WEIGHTS_FORM}",
+        f"weights: NURBS weights: weight 2 is 0; weights must be positive; {WEIGHTS_FORM}",
     ),
     (
         "one weight too few",

@@ -186,14 +186,21 @@ impl OpError {
 
     /// A library error about `role`, with the form that would have been accepted. A limit
     /// error keeps its [`Limit`]; its problem reads `WHAT: REQUESTED exceeds the limit of
-    /// LIMIT`. A knot is counted from 1, as every value in these words (the library's index
-    /// counts from 0).
+    /// LIMIT`. A knot, a value, a weight and a node are counted from 1 in these words, as the
+    /// notes and Octave count them (the library's index counts from 0).
     ///
     /// ```
     /// use cagd_ops::{OpError, Role};
     /// let e = cagd::Error::DecreasingKnots { what: "knot vector", index: 2, previous: 1.0, next: 0.5 };
     /// assert_eq!(OpError::library(Role::Knots, e, "").problem,
     ///     "knot vector: knot 3 (0.5) is below the knot before it (1); knots must be non-decreasing");
+    /// let e = cagd::Error::NonPositiveWeight { what: "NURBS weights", index: 1, value: -1.0 };
+    /// assert_eq!(OpError::library(Role::Weights, e, "").problem,
+    ///     "NURBS weights: weight 2 is -1; weights must be positive");
+    /// let e = cagd::Error::NonFinite { what: "points", index: 0, value: f64::NAN };
+    /// assert_eq!(OpError::library(Role::Control, e, "").problem, "points: value 1 is not finite (NaN)");
+    /// let e = cagd::Error::DuplicateNodes { what: "nodes", first: 0, second: 1, value: 1.0 };
+    /// assert_eq!(OpError::library(Role::Nodes, e, "").problem, "nodes: nodes 1 and 2 are equal (1)");
     /// ```
     pub fn library(role: Role, error: cagd::Error, expected: &str) -> Self {
         let (problem, limit) = match &error {
@@ -218,7 +225,7 @@ impl OpError {
                 format!("{what}: {requested} exceeds the limit of {limit}"),
                 Some(*which),
             ),
-            other => (other.to_string(), None),
+            other => (counted_from_one(other), None),
         };
         OpError {
             limit,
@@ -230,6 +237,41 @@ impl OpError {
     /// The same error about another role.
     pub fn about(self, role: Role) -> Self {
         OpError { role, ..self }
+    }
+}
+
+/// The words of a library error whose index counts from 0, counted from 1 as every index in
+/// these words is (a value, a weight, a node): the library's own `Display` otherwise.
+fn counted_from_one(error: &cagd::Error) -> String {
+    match error {
+        cagd::Error::NonFinite { what, index, value } => {
+            format!("{what}: value {} is not finite ({value})", index + 1)
+        }
+        cagd::Error::NonPositiveWeight { what, index, value } => format!(
+            "{what}: weight {} is {value}; weights must be positive",
+            index + 1
+        ),
+        cagd::Error::DuplicateNodes {
+            what,
+            first,
+            second,
+            value,
+        } => format!(
+            "{what}: nodes {} and {} are equal ({value})",
+            first + 1,
+            second + 1
+        ),
+        cagd::Error::UnsortedNodes {
+            what,
+            index,
+            value,
+            next,
+        } => format!(
+            "{what}: nodes must increase, but node {} ({value}) is above node {} ({next})",
+            index + 1,
+            index + 2
+        ),
+        other => other.to_string(),
     }
 }
 

@@ -342,7 +342,7 @@ mod tests {
         .unwrap_err();
         assert_eq!(e.identifier(), "cagd:weights");
         assert!(
-            e.message.starts_with("w: NURBS weights: weight 1 is 0"),
+            e.message.starts_with("w: NURBS weights: weight 2 is 0"),
             "{e}"
         );
     }

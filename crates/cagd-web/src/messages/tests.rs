@@ -210,7 +210,7 @@ fn bad_knots_and_weights_of_the_views_in_slovenian() {
     let e = v["error"].as_str().unwrap();
     assert_eq!(
         message_in(e, "cs"),
-        "cagd: chyba: weights: váhy NURBS: váha 1 je -1; váhy musí být kladné; očekává se: jedna \
+        "cagd: chyba: weights: váhy NURBS: váha 2 je -1; váhy musí být kladné; očekává se: jedna \
          kladná váha na řídicí bod"
     );
 }
