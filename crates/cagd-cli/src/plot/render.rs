@@ -8,7 +8,7 @@ use std::sync::Once;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::canvas::{picture_size, Fine, FAMILY, SCALE};
+use super::canvas::{picture_size, Fine, SCALE};
 use super::model::{drawable, has_points_too_far, validate, Colour, Figure, ImageKind};
 use super::PlotError;
 
@@ -22,7 +22,7 @@ fn register_font() {
         // The embedded font is a valid TrueType file; should registration ever fail, text is
         // simply not drawn. (In the browser plotters measures text with the page's fonts.)
         #[cfg(not(target_arch = "wasm32"))]
-        let _ = plotters::style::register_font(FAMILY, FontStyle::Normal, FONT);
+        let _ = plotters::style::register_font(super::canvas::FAMILY, FontStyle::Normal, FONT);
     });
 }
 
