@@ -439,6 +439,22 @@ pub fn check_finite<'a, T: Scalar>(
     Ok(())
 }
 
+/// [`check_finite`] for a slice, the same error; a list of parameters of a batch is checked a
+/// block of values at a time ([`Scalar::first_non_finite`]).
+///
+/// # Errors
+/// [`Error::NonFinite`] naming `what` and the first NaN or infinite value.
+pub fn check_finite_slice<T: Scalar>(what: &'static str, values: &[T]) -> Result<()> {
+    match T::first_non_finite(values) {
+        None => Ok(()),
+        Some(index) => Err(Error::NonFinite {
+            what,
+            index,
+            value: values[index].to_f64(),
+        }),
+    }
+}
+
 /// Checks that every value a computation produced is finite; reports the first one that is not.
 ///
 /// The one check behind the crate's promise "finite in, finite out": a value computed in `f64`

@@ -202,7 +202,7 @@ pub fn bernstein_antiderivative_values<T: Scalar>(
         });
     }
     crate::limits::Limits::DEFAULT.check_degree(what, n.saturating_add(1))?;
-    crate::error::check_finite(what, ts.iter())?;
+    crate::error::check_finite_slice(what, ts)?;
     crate::grid::grid_len(what, &[ts.len(), rows.len()])?;
     let coefficients: Vec<Vec<T>> = rows
         .iter()

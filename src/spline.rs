@@ -749,7 +749,7 @@ impl<T: Scalar> CubicSpline<T> {
     pub fn eval_many_into(&self, ts: &[T], out: &mut [T]) -> Result<()> {
         let len = crate::grid::grid_len("spline points", &[ts.len(), self.dim()])?;
         crate::grid::check_len("spline point buffer", len, out)?;
-        crate::error::check_finite("spline parameters", ts.iter())?;
+        crate::error::check_finite_slice("spline parameters", ts)?;
         self.fill_many(ts, out)
     }
 

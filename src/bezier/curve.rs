@@ -414,8 +414,19 @@ impl<T: Scalar> BezierCurve<T> {
         let d = self.dim();
         let len = crate::grid::grid_len("Bézier curve points", &[us.len(), d])?;
         crate::grid::check_len("Bézier curve point buffer", len, out)?;
-        check_finite("Bézier curve parameters", us.iter())?;
         self.check_point_work(crate::cost::max_bits(us))?;
+        // A NaN or infinite parameter gives a non-finite point, which the scan of its block
+        // finds: only then are the parameters looked at (one pass fewer over a large batch).
+        self.fill_many(us, out).map_err(|e| {
+            crate::error::check_finite_slice("Bézier curve parameters", us)
+                .err()
+                .unwrap_or(e)
+        })
+    }
+
+    /// [`eval_many_into`](Self::eval_many_into) after its checks of the lengths and the work.
+    fn fill_many(&self, us: &[T], out: &mut [T]) -> Result<()> {
+        let d = self.dim();
         let local = |u: &T| self.local_parameter(u.clone());
         if crate::grid::exact::bezier_points(self.control.as_slice(), d, local, us, out) {
             return Ok(());
@@ -431,13 +442,18 @@ impl<T: Scalar> BezierCurve<T> {
             let (a, b) = self.interval();
             a.is_zero() && b.is_one()
         };
+        // A block of points is finite, and is not scanned, when `Σ |B_i(t)| · max |b_i|` is
+        // ([`crate::grid::bounded_by`]): on the domain the basis is positive and sums to 1.
+        let small = T::EXACT || crate::grid::bounded_by::<T>(1.0, crate::grid::max_abs(control));
+        let (a, b) = self.interval();
+        let bounded = |ts: &[T]| T::EXACT || small && T::all_within(ts, a, b);
         macro_rules! fixed {
             ($l:literal, $d:literal) => {{
                 let c: [[T; $d]; $l] =
                     std::array::from_fn(|i| std::array::from_fn(|k| control[i * $d + k].clone()));
                 let binomials: [T; $l] =
                     std::array::from_fn(|i| crate::bernstein::binomial_scalar($l - 1, i));
-                return crate::grid::for_each_row(
+                return crate::grid::for_each_bounded_row(
                     "Bézier curve points",
                     out,
                     BLOCK * $d,
@@ -445,7 +461,8 @@ impl<T: Scalar> BezierCurve<T> {
                     || (),
                     |_, block, chunk| {
                         let ts = &us[block * BLOCK..];
-                        if unit {
+                        let ts = &ts[..(chunk.len() / $d).min(ts.len())];
+                        let inside = if unit {
                             T::vectorized(|| {
                                 points_fixed::<T, $l, $d>(&c, &binomials, ts, chunk, T::clone)
                             })
@@ -455,7 +472,8 @@ impl<T: Scalar> BezierCurve<T> {
                                     self.local_parameter(u.clone())
                                 })
                             })
-                        }
+                        };
+                        T::EXACT || inside && small
                     },
                 );
             }};
@@ -469,7 +487,7 @@ impl<T: Scalar> BezierCurve<T> {
             (4, 3) => fixed!(4, 3),
             _ => {}
         }
-        crate::grid::for_each_row(
+        crate::grid::for_each_bounded_row(
             "Bézier curve points",
             out,
             BLOCK * d,
@@ -478,13 +496,12 @@ impl<T: Scalar> BezierCurve<T> {
             |basis, block, chunk| {
                 let first = block * BLOCK;
                 let count = chunk.len() / d;
-                for (u, row) in us[first..first + count]
-                    .iter()
-                    .zip(basis.chunks_exact_mut(terms))
-                {
+                let ts = &us[first..first + count];
+                for (u, row) in ts.iter().zip(basis.chunks_exact_mut(terms)) {
                     bernstein_all_into(&self.local_parameter(u.clone()), row);
                 }
                 crate::grid::contract_row(&basis[..count * terms], terms, control, chunk);
+                bounded(ts)
             },
         )
     }
@@ -729,6 +746,10 @@ impl<T: Scalar> crate::param::CurveDeriv<T> for BezierCurve<T> {
 /// with control points `c` and binomials `C(L−1, i)`, `local` mapping a parameter to `[0, 1]`:
 /// `B_i^n(t) = C(n, i) t^i (1 − t)^(n−i)`, the powers built up by products (positive factors
 /// on `[0, 1]`: a few ULPs; exact in rationals), cheaper than the triangular recurrence.
+///
+/// Returns whether every local parameter was in `[0, 1]` (`t ≥ 0` and `1 − t ≥ 0`; not for a
+/// NaN): then every weight is in `[0, 1]`, they sum to 1, and each point is bounded by the
+/// largest control point.
 #[inline(always)]
 fn points_fixed<T: Scalar, const L: usize, const D: usize>(
     c: &[[T; D]; L],
@@ -736,10 +757,12 @@ fn points_fixed<T: Scalar, const L: usize, const D: usize>(
     ts: &[T],
     out: &mut [T],
     local: impl Fn(&T) -> T,
-) {
+) -> bool {
+    let mut inside = true;
     for (u, p) in ts.iter().zip(out.chunks_exact_mut(D)) {
         let t = local(u);
         let s = T::one() - t.clone();
+        inside &= (t >= T::zero()) & (s >= T::zero());
         let mut tp: [T; L] = std::array::from_fn(|_| T::one());
         let mut sp: [T; L] = std::array::from_fn(|_| T::one());
         for i in 1..L {
@@ -758,6 +781,7 @@ fn points_fixed<T: Scalar, const L: usize, const D: usize>(
             *o = a;
         }
     }
+    inside
 }
 
 /// A control matrix must have at least one point (column) and one coordinate (row), all finite.
@@ -797,6 +821,55 @@ pub(crate) fn check_interval<T: Scalar>(what: &'static str, a: &T, b: &T) -> Res
 mod tests {
     use super::*;
     use num_rational::BigRational;
+
+    #[test]
+    fn batches_skip_the_scan_only_where_points_are_bounded() {
+        // Every kernel (degree 3 in 3-D is a fixed one, degree 5 the general one), on the unit
+        // interval and on [2, 6]: inside the domain with small control points the blocks are
+        // not scanned; outside, with control points near the largest double, or with a NaN
+        // parameter they are, and the errors are those of the scan and of the parameters.
+        for degree in [3, 5] {
+            for (a, b) in [(0.0, 1.0), (2.0, 6.0)] {
+                let mut small = DMatrix::from_element(3, degree + 1, 1.0);
+                small[(0, 1)] = -2.0;
+                let c = BezierCurve::new_on_interval(small, a, b).unwrap();
+                let mut out = vec![0.0; 3 * 600];
+                let inside: Vec<f64> = (0..600).map(|k| a + (b - a) * k as f64 / 599.0).collect();
+                c.eval_many_into(&inside, &mut out).unwrap();
+                assert!((out[3] - c.eval(inside[1])[0]).abs() < 1e-12);
+                let mut far = inside.clone();
+                far[517] = 1e200;
+                assert!(matches!(
+                    c.eval_many_into(&far, &mut out),
+                    Err(Error::Overflow { index, .. }) if index / 3 == 517
+                ));
+                far[517] = f64::NAN;
+                assert!(matches!(
+                    c.eval_many_into(&far, &mut out),
+                    Err(Error::NonFinite { index: 517, .. })
+                ));
+                let huge =
+                    DMatrix::from_fn(
+                        3,
+                        degree + 1,
+                        |_, j| {
+                            if j % 2 == 0 {
+                                1.7e308
+                            } else {
+                                -1.7e308
+                            }
+                        },
+                    );
+                let c = BezierCurve::new_on_interval(huge, a, b).unwrap();
+                // Finite at the ends (the control points themselves), overflowing in between
+                // or not: never an infinite value in an `Ok`.
+                match c.eval_many_into(&inside, &mut out) {
+                    Ok(()) => assert!(out.iter().all(|x| x.is_finite())),
+                    Err(e) => assert!(matches!(e, Error::Overflow { .. }), "{e}"),
+                }
+            }
+        }
+    }
 
     fn q(n: i64, d: i64) -> BigRational {
         <BigRational as Scalar>::from_ratio(n, d)

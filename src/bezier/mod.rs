@@ -60,7 +60,7 @@ pub(crate) fn check_params<T: Scalar>(what: &'static str, ts: &[T]) -> Result<()
             found: 0,
         });
     }
-    check_finite(what, ts.iter())
+    crate::error::check_finite_slice(what, ts)
 }
 
 /// Checks one parameter value.

@@ -635,7 +635,15 @@ impl<T: Scalar> BezierPatch<T> {
             }
         }
         let work = out.len().saturating_mul(terms);
-        crate::grid::for_each_row(
+        // Every point is a sum `Σ_ij B_i(u) B_j(v) b_ij`, bounded by (m+1) max|B_i| ·
+        // (n+1) max|B_j| · max|b_ij|: when that is finite no row is scanned
+        // ([`crate::grid::bounded_by`]).
+        let bounded = T::EXACT || {
+            let weight = crate::grid::max_abs(&bu) * rows_u as f64;
+            let weight = weight * crate::grid::max_abs(&bv) * terms as f64;
+            crate::grid::bounded_by::<T>(weight, crate::grid::max_abs(&net))
+        };
+        crate::grid::for_each_bounded_row(
             "Bézier patch grid",
             out,
             vs.len() * d,
@@ -644,6 +652,7 @@ impl<T: Scalar> BezierPatch<T> {
             |coeffs, a, row| {
                 crate::grid::weighted_sum_into(&bu[a * rows_u..(a + 1) * rows_u], &net, coeffs);
                 crate::grid::contract_row_planar(&bv, vs.len(), 0, terms, coeffs, row);
+                bounded
             },
         )
     }

@@ -176,6 +176,20 @@ struct Curve<'a, T> {
     knots: &'a [T],
     control: &'a [T],
     project: bool,
+    /// The domain `[u_p, u_n]`, on which the basis is positive and sums to 1.
+    domain: (&'a T, &'a T),
+    /// Whether a point on the domain is bounded by a finite number without weights
+    /// ([`crate::grid::bounded_by`]): its blocks of points are then not scanned.
+    small: bool,
+}
+
+impl<T: Scalar> Curve<'_, T> {
+    /// Whether the points at `ts` are finite without looking at them: every parameter on the
+    /// domain, no weights, control points below `f64::MAX / 4`.
+    #[inline]
+    fn bounded(&self, ts: &[T]) -> bool {
+        T::EXACT || self.small && T::all_within(ts, self.domain.0, self.domain.1)
+    }
 }
 
 impl<T: Scalar> Curve<'_, T> {
@@ -219,7 +233,7 @@ impl<T: Scalar> Curve<'_, T> {
     fn run<const N: usize, const DH: usize>(&self, ts: &[T], out: &mut [T]) -> Result<()> {
         let d = DH - usize::from(self.project);
         let work = ts.len().saturating_mul(N * (N + DH));
-        for_each_row(
+        crate::grid::for_each_bounded_row(
             "spline curve points",
             out,
             BLOCK * d,
@@ -238,6 +252,7 @@ impl<T: Scalar> Curve<'_, T> {
                         || self.block::<N, DH, false>(sp, hint, ts, chunk),
                     );
                 }
+                self.bounded(ts)
             },
         )
     }
@@ -265,6 +280,13 @@ pub(crate) fn curve_points_fast_into<T: Scalar>(
         knots,
         control,
         project,
+        domain: (
+            &knots[p.min(knots.len() - 1)],
+            &knots[n.min(knots.len() - 1)],
+        ),
+        small: !T::EXACT
+            && !project
+            && crate::grid::bounded_by::<T>(1.0, crate::grid::max_abs(control)),
     };
     macro_rules! by_dim {
         ($n:literal) => {

@@ -318,10 +318,15 @@ impl<T: Scalar> BSplineCurve<T> {
         let d = self.dim();
         let len = crate::grid::grid_len("B-spline curve points", &[us.len(), d])?;
         crate::grid::check_len("B-spline curve point buffer", len, out)?;
-        check_finite("B-spline curve parameters", us.iter())?;
         self.check_point_work(crate::cost::max_bits(us))?;
         let (p, knots) = (self.degree, self.knots.as_slice());
-        curve_points_fast_into(p, knots, self.control.as_slice(), d, false, us, out)
+        // A NaN or infinite parameter gives a point of NaNs, which the scan of its block finds:
+        // only then are the parameters looked at (one pass fewer over a large batch).
+        curve_points_fast_into(p, knots, self.control.as_slice(), d, false, us, out).map_err(|e| {
+            crate::error::check_finite_slice("B-spline curve parameters", us)
+                .err()
+                .unwrap_or(e)
+        })
     }
 
     /// [`eval_many_into`](Self::eval_many_into) in the exact order of
@@ -352,7 +357,7 @@ impl<T: Scalar> BSplineCurve<T> {
         let d = self.dim();
         let len = crate::grid::grid_len("B-spline curve points", &[us.len(), d])?;
         crate::grid::check_len("B-spline curve point buffer", len, out)?;
-        check_finite("B-spline curve parameters", us.iter())?;
+        crate::error::check_finite_slice("B-spline curve parameters", us)?;
         self.check_point_work(crate::cost::max_bits(us))?;
         let (p, knots) = (self.degree, self.knots.as_slice());
         curve_points_into(p, knots, self.control.as_slice(), d, false, us, out)
@@ -595,6 +600,28 @@ impl<T: Scalar> crate::param::CurveDeriv<T> for BSplineCurve<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_fast_batch_names_a_bad_parameter_and_an_overflow() {
+        // A NaN parameter is found by the scan of its block and reported as the parameter it
+        // is; a point far outside the domain overflows; inside, nothing is scanned.
+        let p = DMatrix::from_column_slice(1, 5, &[0.0, 3.0, -1.0, 2.0, 1.0]);
+        let c = BSplineCurve::new(3, vec![0.0, 0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0, 1.0], p).unwrap();
+        let mut ts: Vec<f64> = (0..700).map(|k| k as f64 / 699.0).collect();
+        let mut out = vec![0.0; 700];
+        c.eval_many_into(&ts, &mut out).unwrap();
+        assert_eq!(out[699], 1.0);
+        ts[300] = f64::INFINITY;
+        assert!(matches!(
+            c.eval_many_into(&ts, &mut out),
+            Err(Error::NonFinite { index: 300, .. })
+        ));
+        ts[300] = 1e120;
+        assert!(matches!(
+            c.eval_many_into(&ts, &mut out),
+            Err(Error::Overflow { index: 300, .. })
+        ));
+    }
 
     #[test]
     fn de_boor_agrees_with_basis_sum() {

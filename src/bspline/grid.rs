@@ -395,7 +395,21 @@ pub(crate) fn surface_grid_into<T: Scalar>(
         let homogeneous = if s.project { vs.len() * dh } else { 0 };
         (vec![T::zero(); nv * dh], vec![T::zero(); homogeneous])
     };
-    for_each_row(
+    // Without weights every point is a sum `Σ_ij N_i(u) N_j(v) P_ij`, bounded by
+    // (p+1) max|N_i| · (q+1) max|N_j| · max|P_ij|: when that is finite no row is scanned
+    // ([`crate::grid::bounded_by`]). Points of NURBS are divided by their weights: scanned.
+    let bounded = T::EXACT
+        || !s.project
+            && no_nan_v
+            && su.iter().all(Option::is_some)
+            && crate::grid::bounded_by::<T>(
+                crate::grid::max_abs(&bu)
+                    * (p + 1) as f64
+                    * crate::grid::max_abs(&bv)
+                    * (q + 1) as f64,
+                crate::grid::max_abs(&s.net),
+            );
+    crate::grid::for_each_bounded_row(
         "spline surface grid",
         out,
         vs.len() * d,
@@ -405,7 +419,7 @@ pub(crate) fn surface_grid_into<T: Scalar>(
             let Some(span) = su[a] else {
                 row.iter_mut()
                     .for_each(|o| *o = us[a].clone() - us[a].clone());
-                return;
+                return false;
             };
             let block = nv * dh;
             weighted_sum_into(
@@ -433,6 +447,7 @@ pub(crate) fn surface_grid_into<T: Scalar>(
                     finish(h, true, x);
                 }
             }
+            bounded
         },
     )
 }

@@ -71,6 +71,26 @@ pub(crate) fn filled<T: Clone>(what: &'static str, len: Option<usize>, value: T)
     try_filled(what, len, value).unwrap_or_else(|e| panic!("{e}"))
 }
 
+/// Whether sums `Σ_i w_i x_i` with `Σ_i |w_i| ≤ weight` and `|x_i| ≤ size` are finite doubles
+/// whatever the order of the additions: `weight · size ≤ f64::MAX / 4` (a floating-point sum
+/// of `k` terms is within a factor `1 + k·ε` of the exact one, far below 2 for any sum that
+/// fits in memory). Sums of exact numbers are always finite.
+pub(crate) fn bounded_by<T: Scalar>(weight: f64, size: f64) -> bool {
+    T::EXACT || weight * size <= f64::MAX / 4.0
+}
+
+/// The largest `|x|` of `values` as a double (`∞` if one is not finite).
+pub(crate) fn max_abs<'a, T: Scalar>(values: impl IntoIterator<Item = &'a T>) -> f64 {
+    values.into_iter().fold(0.0, |m, x| {
+        let x = x.to_f64().abs();
+        if x.is_nan() {
+            f64::INFINITY
+        } else {
+            m.max(x)
+        }
+    })
+}
+
 /// `rows · row_len` without overflow (an overflowing request is a shape error, not a panic).
 pub(crate) fn grid_len(what: &'static str, sizes: &[usize]) -> Result<usize> {
     sizes
@@ -108,6 +128,32 @@ where
     I: Fn() -> S + Sync,
     F: Fn(&mut S, usize, &mut [T]) + Sync,
 {
+    for_each_bounded_row(what, out, row_len, work, init, |scratch, r, chunk| {
+        row(scratch, r, chunk);
+        false
+    })
+}
+
+/// [`for_each_row`] for kernels that can prove a row finite: `row` returns whether it
+/// did (`true`: the row is bounded by a finite number and is not scanned; `false`: it is). A
+/// Bézier point is bounded by `Σ |B_i(t)| · max |b_i|`, which the curve and the patch know
+/// before they write a row ([`bounded_by`]).
+///
+/// # Errors
+/// As [`for_each_row`].
+pub(crate) fn for_each_bounded_row<T, S, I, F>(
+    what: &'static str,
+    out: &mut [T],
+    row_len: usize,
+    work: usize,
+    init: I,
+    row: F,
+) -> Result<()>
+where
+    T: Scalar,
+    I: Fn() -> S + Sync,
+    F: Fn(&mut S, usize, &mut [T]) -> bool + Sync,
+{
     if row_len == 0 || out.is_empty() {
         return Ok(());
     }
@@ -116,12 +162,9 @@ where
         let mut scratch = init();
         let mut bad = None;
         for (r, chunk) in block.chunks_mut(row_len).enumerate() {
-            row(&mut scratch, first + r, chunk);
-            if scan && bad.is_none() {
-                bad = chunk
-                    .iter()
-                    .position(|x| !x.is_finite_value())
-                    .map(|k| r * row_len + k);
+            let bounded = row(&mut scratch, first + r, chunk);
+            if scan && !bounded && bad.is_none() {
+                bad = T::first_non_finite(chunk).map(|k| r * row_len + k);
             }
         }
         bad

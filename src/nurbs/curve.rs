@@ -215,7 +215,7 @@ impl<T: Scalar> NurbsCurve<T> {
         let d = self.dim();
         let len = crate::grid::grid_len("NURBS curve points", &[us.len(), d])?;
         crate::grid::check_len("NURBS curve point buffer", len, out)?;
-        crate::error::check_finite("NURBS curve parameters", us.iter())?;
+        crate::error::check_finite_slice("NURBS curve parameters", us)?;
         let h = &self.homogeneous;
         let knots = h.knots().as_slice();
         kernel(
