@@ -208,7 +208,7 @@ impl Scalar for f64 {
     }
 }
 
-/// The index of the first NaN or ±∞ of `values`, a block of 256 at a time: `x − x` is 0 for a
+/// The index of the first NaN or ±∞ of `values`, a block of 256 at a time: `0 · x` is ±0 for a
 /// finite `x` and NaN otherwise, and eight sums of it side by side (which the compiler turns into
 /// vector additions) are 0 unless the block holds one.
 #[inline(always)]
@@ -219,10 +219,10 @@ fn first_non_finite_f64(values: &[f64]) -> Option<usize> {
         let mut eights = block.chunks_exact(8);
         for eight in &mut eights {
             for (lane, x) in lanes.iter_mut().zip(eight) {
-                *lane += x - x;
+                *lane += x * 0.0;
             }
         }
-        let rest: f64 = eights.remainder().iter().map(|x| x - x).sum();
+        let rest: f64 = eights.remainder().iter().map(|x| x * 0.0).sum();
         if lanes.iter().sum::<f64>() + rest == 0.0 {
             return None;
         }
