@@ -143,8 +143,29 @@ fn extrapolation(rng: &Draws) -> Extrapolation<f64> {
     match rng.below(3) {
         0 => Extrapolation::Continue,
         1 => Extrapolation::Periodic,
-        _ => Extrapolation::Outside(finite(rng)),
+        // The fill value is the caller's: NaN is scipy's `extrapolate=False`.
+        _ => Extrapolation::Outside(mostly_finite(rng)),
     }
+}
+
+/// The entries of an extrapolated batch `out` (`us.len() × d`) that must be finite: all of
+/// them, but for the points outside the domain when the caller chose a non-finite fill value
+/// (written there as given).
+fn computed_entries(
+    out: &[f64],
+    us: &[f64],
+    c: &BSplineCurve,
+    extrapolation: &Extrapolation<f64>,
+) -> Vec<f64> {
+    let (lo, hi) = c.domain();
+    let filled_by_caller = |u: f64| {
+        matches!(extrapolation, Extrapolation::Outside(v) if !v.is_finite()) && (u < lo || u > hi)
+    };
+    us.iter()
+        .zip(out.chunks(c.dim().max(1)))
+        .filter(|(u, _)| !filled_by_caller(**u))
+        .flat_map(|(_, point)| point.iter().copied())
+        .collect()
 }
 
 /// Design matrices, basis elements, Boehm schemes, derivatives and extrapolation of B-splines;
@@ -213,7 +234,8 @@ pub fn bspline_extras(rng: &Draws) {
     )
     .is_some()
     {
-        ok("eval_many_extrapolated_into (buffer)", Ok(out.clone()));
+        let computed = computed_entries(&out, &us, &c, &extrapolation);
+        ok("eval_many_extrapolated_into (buffer)", Ok(computed));
     }
     if ok(
         "bspline::BSplineCurve::eval_derivative_many_into",
@@ -221,7 +243,8 @@ pub fn bspline_extras(rng: &Draws) {
     )
     .is_some()
     {
-        ok("eval_derivative_many_into (buffer)", Ok(out));
+        let computed = computed_entries(&out, &us, &c, &extrapolation);
+        ok("eval_derivative_many_into (buffer)", Ok(computed));
     }
     total(
         "bspline::BSplineCurve as CurveDeriv2::eval_second_derivative",
