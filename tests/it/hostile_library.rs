@@ -659,3 +659,29 @@ fn coons_patch_in_bspline_form_refuses_knots_that_collapse_or_overflow() {
         "{r:?}"
     );
 }
+
+#[test]
+fn geometry_form_matrices_beyond_the_degree_limit_are_refused_before_they_are_built() {
+    use cagd::conversion::{form_conversion, GeometryForm};
+    // The Bézier form's identity of k × k was built for any k: 10⁷ + 1 columns asked for
+    // 800 TB (an abort), usize::MAX overflowed.
+    for k in [1002, 10_000_001, 1 << 40, usize::MAX] {
+        assert!(too_large(GeometryForm::Bezier.to_bezier::<f64>(k)), "{k}");
+        assert!(
+            too_large(GeometryForm::Algebraic.from_bezier::<f64>(k)),
+            "{k}"
+        );
+        assert!(
+            too_large(form_conversion::<f64>(
+                GeometryForm::Bezier,
+                GeometryForm::Bezier,
+                k
+            )),
+            "{k}"
+        );
+    }
+    assert_eq!(
+        GeometryForm::Bezier.to_bezier::<f64>(1001).unwrap().nrows(),
+        1001
+    );
+}
