@@ -685,3 +685,12 @@ fn geometry_form_matrices_beyond_the_degree_limit_are_refused_before_they_are_bu
         1001
     );
 }
+
+#[test]
+fn design_matrices_of_any_degree_are_knot_count_errors() {
+    // p + 1 and 2p + 2 overflowed (a panic in a test build) for p near usize::MAX.
+    for p in [usize::MAX, usize::MAX / 2 + 1, 1 << 40] {
+        let r = cagd::bspline::design_matrix(p, &[0.0, 0.0, 1.0, 1.0], &[0.5], false);
+        assert!(matches!(r, Err(Error::KnotCount { .. })), "{p}: {r:?}");
+    }
+}

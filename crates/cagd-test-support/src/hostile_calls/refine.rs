@@ -87,7 +87,7 @@ fn clamped_over(
         control.set_column(0, from);
         control.set_column(n - 1, to);
     }
-    BSplineCurve::new(p, knots, control).ok()
+    BSplineCurve::new(degree(rng, p), knots, control).ok()
 }
 
 /// Several curves over shared breakpoints (sometimes one of another dimension) made
@@ -119,9 +119,15 @@ fn surface_refinement(rng: &Draws) {
     let (m, n) = (1 + small(rng), 1 + small(rng));
     let coords: Vec<DMatrix<f64>> = (0..d).map(|_| matrix(rng, m, n)).collect();
     let made = if rng.below(2) == 0 {
-        BSplineSurface::clamped(p, q, coords)
+        BSplineSurface::clamped(degree(rng, p), degree(rng, q), coords)
     } else {
-        BSplineSurface::new(p, q, knots(rng, m + p + 1), knots(rng, n + q + 1), coords)
+        BSplineSurface::new(
+            degree(rng, p),
+            degree(rng, q),
+            knots(rng, m + p + 1),
+            knots(rng, n + q + 1),
+            coords,
+        )
     };
     let Ok(s) = made else { return };
     let (ru, rv) = if rng.below(2) == 0 {
@@ -132,6 +138,7 @@ fn surface_refinement(rng: &Draws) {
     ok(
         "bspline::BSplineSurface::elevate",
         s.elevate(ru, rv).inspect(|e| {
+            let (p, q) = s.degrees();
             assert_eq!(e.degrees(), (p + ru, q + rv), "elevated degrees");
         }),
     );
