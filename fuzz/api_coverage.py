@@ -5,7 +5,11 @@ Reads the public API of the crate `cagd` from rustdoc's JSON output (argument 1)
 the calls check under (the string literals given to `ok`, `any`, `total`, `grid_into` and the
 type names given to `curve_methods`, `deriv_methods` / `surface_methods` in
 crates/cagd-test-support/src/hostile_calls/), and prints how many of the public functions are
-called, and the list of those that are not. Run it through fuzz/api_coverage.sh.
+called, by which check (`ok`: an `Ok` must hold finite numbers only; `any`: it must return;
+`total`: an infallible function, it must return), and the list of those that are not called.
+Exits with status 1 when a public function is not called or a name in the calls is not a
+public function, so that CI (fuzz/smoke.sh) catches a new function left out. Run it through
+fuzz/api_coverage.sh.
 """
 import json
 import re
@@ -82,29 +86,54 @@ walk(doc["root"], "")
 api = sorted((max(sorted(paths), key=len), paths) for paths in found.values() if paths)
 
 source = "".join(p.read_text() for p in sorted(Path(sys.argv[2]).glob("*.rs")))
-called = set()
+called = {}  # name -> the strongest check it is called under
+STRENGTH = {"ok": 3, "any": 2, "total": 1}
+
+
+def note(name, kind):
+    if STRENGTH[kind] > STRENGTH.get(called.get(name), 0):
+        called[name] = kind
+
+
 # Every string literal naming a function: the checks' names (`ok("bezier::BezierCurve::new",
-# …)`) and the names in tables of functions checked in a loop.
-for m in re.finditer(r'"([a-z_]+::[A-Za-z0-9_:]+(?: as (?:Curve|CurveDeriv|CurveDeriv2|Surface)::[a-z0-9_]+)?)(?: \([^"]*\))?"', source):
-    called.add(m.group(1))
+# …)`, the check being the call it is the first argument of) and the names in tables of
+# functions checked in a loop (through `ok`).
+NAME = r'"([a-z_]+::[A-Za-z0-9_:]+(?: as (?:Curve|CurveDeriv|CurveDeriv2|Surface)::[a-z0-9_]+)?)(?: \([^"]*\))?"'
+for m in re.finditer(NAME, source):
+    before = re.search(r'\b(ok_with|ok|any|total|grid_into)\(\s*(?:rng,\s*)?$', source[: m.start()])
+    kind = before.group(1) if before else "ok"
+    note(m.group(1), "ok" if kind in ("grid_into", "ok_with") else kind)
 types = set()
-CURVE = ["dim", "domain", "eval", "try_eval", "point_cost", "eval_many_into"]
+CURVE = [("dim", "total"), ("domain", "total"), ("eval", "total"), ("try_eval", "ok"),
+         ("point_cost", "total"), ("eval_many_into", "ok")]
 METHODS = {
-    "curve": [("Curve", m) for m in CURVE],
-    "deriv": [("Curve", m) for m in CURVE]
-    + [("CurveDeriv", "eval_derivative"), ("CurveDeriv", "try_eval_derivative")],
-    "surface": [("Surface", m)
-                for m in ["dim", "domain", "eval", "try_eval", "eval_grid", "eval_grid_into"]],
+    "curve": [("Curve", m, k) for m, k in CURVE],
+    "deriv": [("Curve", m, k) for m, k in CURVE]
+    + [("CurveDeriv", "eval_derivative", "total"), ("CurveDeriv", "try_eval_derivative", "ok")],
+    "surface": [("Surface", m, k)
+                for m, k in [("dim", "total"), ("domain", "total"), ("eval", "total"),
+                             ("try_eval", "ok"), ("eval_grid", "total"),
+                             ("eval_grid_into", "ok")]],
 }
 for m in re.finditer(r'\b(curve|deriv|surface)_methods\(\s*rng,\s*"([^"]+)"', source):
     types.add(m.group(2))
-    for trait, method in METHODS[m.group(1)]:
-        called.add(f"{m.group(2)} as {trait}::{method}")
+    for trait, method, kind in METHODS[m.group(1)]:
+        note(f"{m.group(2)} as {trait}::{method}", kind)
 
-covered = [name for name, paths in api if paths & called]
-missing = [name for name, paths in api if not paths & called]
+
+def check_of(paths):
+    kinds = [called[p] for p in paths if p in called]
+    return max(kinds, key=STRENGTH.get) if kinds else None
+
+
+covered = [(name, check_of(paths)) for name, paths in api if check_of(paths)]
+missing = [name for name, paths in api if not check_of(paths)]
 print(f"public functions and methods of cagd: {len(api)}")
 print(f"called by the hostile calls: {len(covered)}")
+for kind, what in [("ok", "Result-returning, an Ok must hold finite numbers only"),
+                   ("any", "Result-returning, no numbers of its own to read, checked through its evaluations"),
+                   ("total", "infallible, must return")]:
+    print(f"  through check::{kind} ({what}): {sum(1 for _, k in covered if k == kind)}")
 print(f"not called: {len(missing)}")
 for f in missing:
     print(f"  {f}")
@@ -114,3 +143,4 @@ if unknown:
     print("names in the hostile calls that are not public functions (typos?):")
     for c in unknown:
         print(f"  {c}")
+sys.exit(1 if missing or unknown else 0)

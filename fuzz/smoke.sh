@@ -1,5 +1,8 @@
 #!/usr/bin/env bash
-# A short fuzzing run for CI: builds the five targets (cargo-fuzz, installed if missing) and
+# A short fuzzing run for CI: first checks that the hostile calls (the `library` target's and
+# the property test's) name every public function of the core (fuzz/api_coverage.sh: rustdoc's
+# JSON of the core into target/api-coverage, a few seconds once built; it fails on a function
+# left out), then builds the five targets (cargo-fuzz, installed if missing) and
 # runs each through fuzz/run_fuzz.sh (the same options as the long runs: default limits, 30 s
 # per input, 180 s for literal) for SECONDS_PER_TARGET seconds (default 20) from its seeds,
 # into a throw-away corpus. Any crash, panic, timeout or out-of-memory input fails it, with the
@@ -9,6 +12,12 @@ set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")"
 seconds="${SECONDS_PER_TARGET:-20}"
 targets=(text_format literal script cli library)
+
+echo "-- every public function of the core in the hostile calls (fuzz/api_coverage.sh)"
+if ! (cd .. && bash fuzz/api_coverage.sh); then
+    echo "fuzz smoke: a public function of the core is not called by crates/cagd-test-support/src/hostile_calls (or a name there is not a public function)" >&2
+    exit 1
+fi
 
 if ! cargo fuzz --version >/dev/null 2>&1; then
     echo "-- cargo install cargo-fuzz"

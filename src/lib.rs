@@ -31,12 +31,17 @@
 //! reparametrise each curve's domain affinely onto `[0, 1]` (or refuse one that is not a finite
 //! interval). See [`param`].
 //!
-//! **NaN and infinity** are rejected, once and for all: every entry point (constructors,
-//! evaluations taking parameters, tolerances, the parsers of literals, expressions and data
-//! scripts, every command-line input) answers a non-finite number with a typed error
-//! ([`Error::NonFinite`]; in the Octave layer `LiteralError::NonFinite`) instead of propagating
-//! it. Only the Octave layer's text-format reader keeps the `Inf`, `NaN` and `NA` that Octave
-//! wrote, as data. Finite input can still leave the range of doubles (control points near
+//! **NaN and infinity** are rejected, once and for all: every `Result`-returning entry point
+//! (constructors, the checked evaluations taking parameters — `try_eval`, the batches —,
+//! tolerances, the parsers of literals, expressions and data scripts, every command-line input)
+//! answers a non-finite number with a typed error ([`Error::NonFinite`]; in the Octave layer
+//! `LiteralError::NonFinite`) instead of propagating it, and none panics on its arguments. The
+//! infallible evaluations (`eval`, `eval_grid`, a basis at a parameter, [`linspace()`]) are total
+//! functions, NaN in, NaN out, as in Octave; a fill value the caller chooses
+//! ([`bspline::Extrapolation::Outside`]) is written as given; an infallible function that can
+//! fail on its arguments documents it in a `# Panics` section (a panic naming the size, never an
+//! abort). Only the Octave layer's text-format reader keeps the `Inf`, `NaN` and `NA` that
+//! Octave wrote, as data. Finite input can still leave the range of doubles (control points near
 //! ±1.7·10³⁰⁸, an interval `[−10³⁰⁸, 10³⁰⁸]`, knots 5·10⁻³²⁴ apart, a thousand equally spaced
 //! Lagrange nodes): every `Result`-returning function checks what it computes and answers
 //! [`Error::Overflow`], naming the quantity, instead of an `Ok` holding `inf` or NaN (the

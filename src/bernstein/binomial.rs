@@ -41,6 +41,11 @@ fn binomial_u128(n: usize, k: usize) -> Option<u128> {
 /// bits — quadratic in that size: the crate asks for it at degrees its limits bound (at most
 /// `Limits::max_degree`); a caller passing `n = 10⁹, k = n/2` waits for hours.
 ///
+/// # Panics
+/// Never on its arguments; the big integer it builds is allocated as it grows, so a size no
+/// machine holds would end the process — long after the hours above. Bound `n` first (the
+/// front ends check the degree against their limits).
+///
 /// ```
 /// use cagd::bernstein::binomial;
 /// use num_bigint::BigUint;
@@ -75,6 +80,10 @@ pub fn binomial(n: usize, k: usize) -> BigUint {
 /// let c: BigRational = binomial_scalar(100, 50);
 /// assert_eq!(c.to_string(), "100891344545564193334812497256");
 /// ```
+///
+/// # Panics
+/// Never on its arguments; in exact arithmetic its work and memory are those of [`binomial`]
+/// (a double is answered at once: infinite beyond about `n = 1030`).
 pub fn binomial_scalar<T: Scalar>(n: usize, k: usize) -> T {
     if !crate::grid::exact::is_rational::<T>() && k <= n && k.min(n - k) > 1030 {
         // Above f64::MAX (as binomial_f64), at once rather than after min(k, n − k) big
@@ -121,6 +130,11 @@ pub fn binomial_f64(n: usize, k: usize) -> f64 {
 /// assert_eq!(falling_factorial::<f64>(5, 2), 20.0);
 /// assert_eq!(falling_factorial::<f64>(3, 0), 1.0);
 /// ```
+///
+/// # Panics
+/// Never on its arguments. A double stops at the first infinite product (at most a few hundred
+/// factors); in exact arithmetic it is `r` products of a number growing to about `r log₂ n`
+/// bits: bound `r` first (the front ends check the degree against their limits).
 pub fn falling_factorial<T: Scalar>(n: usize, r: usize) -> T {
     if r > n {
         // One of the factors is n − n = 0.
@@ -142,6 +156,11 @@ pub fn falling_factorial<T: Scalar>(n: usize, r: usize) -> T {
 /// ```
 /// assert_eq!(cagd::bernstein::power(&0.5, 3), 0.125);
 /// ```
+///
+/// # Panics
+/// Never on its arguments. A double takes `log₂ k` squarings; an exact `x` of `b` bits gives a
+/// number of `k·b` bits, allocated as it grows: bound `k` first (the crate calls it with
+/// degrees its limits bound).
 pub fn power<T: Scalar>(x: &T, k: usize) -> T {
     num_traits::pow(x.clone(), k)
 }

@@ -50,6 +50,13 @@ pub use elevation::{elevate, elevate_cost, elevate_once, product};
 /// assert_eq!(bernstein(4, 3, 0.5), 0.0);   // i > n
 /// assert_eq!(bernstein(0, 0, 0.7), 1.0);   // B_0^0 ≡ 1
 /// ```
+///
+/// # Panics
+/// As [`bernstein_all`], when `C(n, i)` does not fit in a double and the `n + 1` values of the
+/// recurrence cannot be held (`n` near `usize::MAX`): a panic naming the size, never an abort.
+/// The work is `min(i, n − i)` products for the binomial, `(n+1)²` when the recurrence is
+/// needed; in exact arithmetic the numbers grow with `n` (`t^i (1 − t)^(n−i)`): the front ends
+/// check the degree against their limits first.
 pub fn bernstein<T: Scalar>(i: usize, n: usize, t: T) -> T {
     if i > n {
         return T::zero();
@@ -181,6 +188,11 @@ pub fn basis_cost(n: usize, param_bits: u128) -> Cost {
 /// // r = 0 is the polynomial itself.
 /// assert_eq!(bernstein_derivative(1, 2, 0, 0.25), 0.375);
 /// ```
+///
+/// # Panics
+/// As [`bernstein_all`] of degree `n − r`: if its `n − r + 1` values cannot be held, a panic
+/// naming the size, never an abort. The work is `(n − r + 1)² + r` operations: the front ends
+/// check the degree against their limits first.
 pub fn bernstein_derivative<T: Scalar>(i: usize, n: usize, r: usize, t: T) -> T {
     if i > n || r > n {
         return T::zero();
@@ -211,6 +223,11 @@ pub fn bernstein_derivative<T: Scalar>(i: usize, n: usize, r: usize, t: T) -> T 
 /// let d = bernstein_derivative_all(4, 2, 0.3);
 /// assert!(d.iter().sum::<f64>().abs() < 1e-12);
 /// ```
+///
+/// # Panics
+/// If the `n + 1` values cannot be held (`n` near `usize::MAX`): a panic naming the size,
+/// never an abort. The work is `(n + 1)(r + 1) + (n − r + 1)²` operations: the front ends check
+/// the degree against their limits first.
 pub fn bernstein_derivative_all<T: Scalar>(n: usize, r: usize, t: T) -> Vec<T> {
     if r > n {
         return crate::grid::filled("Bernstein derivatives", n.checked_add(1), T::zero());
@@ -227,18 +244,18 @@ pub fn bernstein_derivative_all<T: Scalar>(n: usize, r: usize, t: T) -> Vec<T> {
             }
         })
         .collect();
-    (0..=n)
-        .map(|i| {
-            let mut sum = T::zero();
-            for (j, c) in signed.iter().enumerate().take(i + 1) {
-                let k = i - j;
-                if k <= n - r {
-                    sum = sum + c.clone() * lower[k].clone();
-                }
+    let mut out = crate::grid::filled("Bernstein derivatives", n.checked_add(1), T::zero());
+    for (i, slot) in out.iter_mut().enumerate() {
+        let mut sum = T::zero();
+        for (j, c) in signed.iter().enumerate().take(i + 1) {
+            let k = i - j;
+            if k <= n - r {
+                sum = sum + c.clone() * lower[k].clone();
             }
-            factor.clone() * sum
-        })
-        .collect()
+        }
+        *slot = factor.clone() * sum;
+    }
+    out
 }
 
 /// The Bernstein basis matrix: row `k` is `[B_0^n(ts[k]), …, B_n^n(ts[k])]`, so the result is
@@ -259,7 +276,9 @@ pub fn bernstein_derivative_all<T: Scalar>(n: usize, r: usize, t: T) -> Vec<T> {
 /// # Panics
 /// If the `ts.len() × (n + 1)` values cannot be held: a panic naming the size, never an abort.
 pub fn basis_matrix<T: Scalar>(n: usize, ts: &[T]) -> DMatrix<T> {
-    let cols = n.checked_add(1).expect("n + 1 basis functions");
+    let cols = n
+        .checked_add(1)
+        .expect("Bernstein basis matrix: n + 1 basis functions overflow usize");
     let data = crate::grid::filled(
         "Bernstein basis matrix",
         ts.len().checked_mul(cols),
@@ -282,8 +301,13 @@ pub fn basis_matrix<T: Scalar>(n: usize, ts: &[T]) -> DMatrix<T> {
 /// let d = basis_derivative_matrix(1, 1, &[0.2]);
 /// assert_eq!((d[(0, 0)], d[(0, 1)]), (-1.0, 1.0));
 /// ```
+///
+/// # Panics
+/// If the `ts.len() × (n + 1)` values cannot be held: a panic naming the size, never an abort.
 pub fn basis_derivative_matrix<T: Scalar>(n: usize, r: usize, ts: &[T]) -> DMatrix<T> {
-    let cols = n.checked_add(1).expect("n + 1 basis functions");
+    let cols = n
+        .checked_add(1)
+        .expect("Bernstein derivative matrix: n + 1 basis functions overflow usize");
     let data = crate::grid::filled(
         "Bernstein derivative matrix",
         ts.len().checked_mul(cols),

@@ -14,7 +14,8 @@ use crate::scalar::Scalar;
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] for no curve, curves of different dimensions or domains, or a
-/// knot vector that is not clamped (degree elevation and the shared end knots need it).
+/// knot vector that is not clamped, its first and last knots exactly degree + 1 times each
+/// (degree elevation and the shared end knots need it).
 ///
 /// ```
 /// use cagd::bspline::{make_compatible, BSplineCurve};
@@ -41,12 +42,13 @@ pub fn make_compatible<T: Scalar>(curves: &[BSplineCurve<T>]) -> Result<Vec<BSpl
                 message: format!("curve {k} has another dimension or domain than curve 0"),
             });
         }
-        if !c.knots().is_clamped(c.degree()) {
-            return Err(Error::InvalidArgument {
+        super::knots::check_clamped(what, c.degree(), c.knots()).map_err(|e| match e {
+            Error::InvalidArgument { what, message } => Error::InvalidArgument {
                 what,
-                message: format!("the knot vector of curve {k} is not clamped"),
-            });
-        }
+                message: format!("curve {k}: {message}"),
+            },
+            other => other,
+        })?;
     }
     let p = curves.iter().map(BSplineCurve::degree).max().unwrap_or(0);
     let raised: Vec<BSplineCurve<T>> = curves

@@ -66,13 +66,14 @@ pub fn design_matrix<T: Scalar>(
     extrapolate: bool,
 ) -> Result<DesignMatrix<T>> {
     let what = "design matrix knots";
-    let n = knots
-        .len()
-        .checked_sub(p + 1)
+    // n = len − p − 1 control points, at least p + 1 (checked: p may be any size).
+    let n = p
+        .checked_add(1)
+        .and_then(|q| knots.len().checked_sub(q))
         .filter(|n| *n > p)
         .ok_or(Error::KnotCount {
             what,
-            expected: 2 * p + 2,
+            expected: p.saturating_add(1).saturating_mul(2),
             found: knots.len(),
         })?;
     super::knots::KnotVector::new(knots.to_vec())?;

@@ -36,7 +36,7 @@ impl<T: Scalar> BSplineCurve<T> {
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] unless the knot vector is clamped (first and last knot
-    /// `p + 1` times: the domain is then the whole knot range); [`Error::TooLarge`] for a
+    /// exactly `p + 1` times: the domain is then the whole knot range); [`Error::TooLarge`] for a
     /// degree `p + r` above [`Limits::DEFAULT`](crate::limits::Limits::DEFAULT)`.max_degree`,
     /// or when the estimated work ([`elevate_cost`](Self::elevate_cost), weighed by the size
     /// of exact numbers) exceeds its `max_work` — before anything is computed;
@@ -58,15 +58,7 @@ impl<T: Scalar> BSplineCurve<T> {
     pub fn elevate(&self, r: usize) -> Result<Self> {
         let p = self.degree();
         let knots = self.knots().as_slice();
-        if !self.knots().is_clamped(p) {
-            return Err(Error::InvalidArgument {
-                what: "B-spline degree elevation",
-                message: format!(
-                    "the knot vector must be clamped (its first and last knots {} times each)",
-                    p + 1
-                ),
-            });
-        }
+        super::knots::check_clamped("B-spline degree elevation", p, self.knots())?;
         if r == 0 {
             return Ok(self.clone());
         }

@@ -203,6 +203,36 @@ pub(crate) fn check_knot_slice<T: Scalar>(
     Ok(())
 }
 
+/// Refuses a knot vector that is not clamped for degree `p` exactly: its first and its last
+/// knot must occur `p + 1` times each, no fewer (the curve would not start and end at its end
+/// control points) and no more (the control point at that end would have no non-empty span;
+/// degree elevation and a shared knot vector cannot be built for it).
+pub(crate) fn check_clamped<T: Scalar>(
+    what: &'static str,
+    p: usize,
+    knots: &KnotVector<T>,
+) -> Result<()> {
+    let k = knots.as_slice();
+    let (first, last) = (
+        knots.multiplicity(&k[0]),
+        knots.multiplicity(&k[k.len() - 1]),
+    );
+    let times = p.saturating_add(1);
+    if knots.is_clamped(p) && first == times && last == times {
+        return Ok(());
+    }
+    let message = if first > times || last > times {
+        format!(
+            "the first knot occurs {first} times and the last {last}, more than degree + 1 = {times}: a control point at the end has no non-empty span"
+        )
+    } else {
+        format!(
+            "the knot vector must be clamped (its first and last knots {times} times each; they occur {first} and {last} times)"
+        )
+    };
+    Err(Error::InvalidArgument { what, message })
+}
+
 /// The knot vector of a degree-`p` spline with `n_control` control points: the right length
 /// and a domain `[u_p, u_n]` that is not a single point.
 pub(crate) fn check_knots<T: Scalar>(

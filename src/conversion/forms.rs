@@ -72,7 +72,10 @@ impl GeometryForm {
     /// cubic-only forms).
     ///
     /// # Errors
-    /// [`Error::ShapeMismatch`] for `k = 0`, or `k ≠ 4` in a cubic-only form.
+    /// [`Error::ShapeMismatch`] for `k = 0`, or `k ≠ 4` in a cubic-only form;
+    /// [`Error::TooLarge`] for a degree `k − 1` above
+    /// [`Limits::DEFAULT`](crate::limits::Limits::DEFAULT)`.max_degree` (the matrix has `k²`
+    /// entries).
     ///
     /// ```
     /// use cagd::conversion::GeometryForm;
@@ -124,6 +127,10 @@ impl GeometryForm {
     }
 
     fn check_columns(self, k: usize) -> Result<()> {
+        if k > 0 {
+            // k × k matrices of a polynomial of degree k − 1: bounded before they are built.
+            crate::limits::Limits::DEFAULT.check_degree("geometry form conversion", k - 1)?;
+        }
         if k == 0 || (self.is_cubic_only() && k != 4) {
             return Err(Error::ShapeMismatch {
                 what: "geometry",
@@ -143,7 +150,8 @@ impl GeometryForm {
 /// `T = T_{from→Bézier} · T_{Bézier→to}`, with the two factors. Exact in rationals.
 ///
 /// # Errors
-/// [`Error::ShapeMismatch`] for `k = 0` or `k ≠ 4` with a cubic-only form.
+/// [`Error::ShapeMismatch`] for `k = 0` or `k ≠ 4` with a cubic-only form; [`Error::TooLarge`]
+/// for a degree `k − 1` above [`Limits::DEFAULT`](crate::limits::Limits::DEFAULT)`.max_degree`.
 ///
 /// ```
 /// use cagd::conversion::{form_conversion, GeometryForm};

@@ -334,7 +334,7 @@ impl<T: Scalar, C: CurveDeriv<T>, D: CurveDeriv<T>> BicubicCoonsPatch<C, D, T> {
                     deriv(&dv1, "x_v(u,1)", zero.clone())?,
                     deriv(&dv1, "x_v(u,1)", one)?,
                 ];
-                TwistData::Gregory(GregoryTwist::new(along_v, along_u))
+                TwistData::Gregory(GregoryTwist::new(along_v, along_u)?)
             }
         };
         Ok(BicubicCoonsPatch {

@@ -28,8 +28,11 @@ use crate::scalar::Scalar;
 /// [`CoonsPatch::to_bspline`] takes the checked corners of a [`CoonsPatch`]).
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] for a knot vector that is not clamped;
-/// [`Error::ShapeMismatch`] for curves or corners of different dimensions.
+/// [`Error::InvalidArgument`] for a knot vector that is not clamped (its end knots exactly
+/// degree + 1 times), or whose distinct knots become one double on `[0, 1]`;
+/// [`Error::ShapeMismatch`] for curves or corners of different dimensions;
+/// [`Error::Overflow`] for a control point of the sum whose double overflows; as
+/// [`make_compatible`] (degree elevation, knot insertion) otherwise.
 pub fn coons_bspline_net<T: Scalar>(
     c1: &BSplineCurve<T>,
     c2: &BSplineCurve<T>,
@@ -48,8 +51,8 @@ pub fn coons_bspline_net<T: Scalar>(
             found: "another dimension".into(),
         });
     }
-    let cs = make_compatible(&[on_unit_interval(c1)?, on_unit_interval(c2)?])?;
-    let ds = make_compatible(&[on_unit_interval(d1)?, on_unit_interval(d2)?])?;
+    let cs = make_compatible(&[on_unit_interval("c1", c1)?, on_unit_interval("c2", c2)?])?;
+    let ds = make_compatible(&[on_unit_interval("d1", d1)?, on_unit_interval("d2", d2)?])?;
     let linear = vec![T::zero(), T::zero(), T::one(), T::one()];
     let (p, q) = (cs[0].degree(), ds[0].degree());
     let rc = BSplineSurface::new(
@@ -114,7 +117,11 @@ pub fn coons_bspline_net<T: Scalar>(
                 a[(i, j)].clone() + b[(i, j)].clone() - c[(i, j)].clone()
             })
         })
-        .collect();
+        .collect::<Vec<DMatrix<T>>>();
+    crate::error::check_overflow(
+        "Coons patch in B-spline form control points",
+        coords.iter().flat_map(|m| m.iter()),
+    )?;
     BSplineSurface::new(
         du,
         dv,
@@ -124,19 +131,33 @@ pub fn coons_bspline_net<T: Scalar>(
     )
 }
 
-/// The curve with its knots mapped affinely onto `[0, 1]` (unchanged when its domain is
-/// `[0, 1]`).
-fn on_unit_interval<T: Scalar>(c: &BSplineCurve<T>) -> Result<BSplineCurve<T>> {
+/// The curve `name` with its knots mapped affinely onto `[0, 1]` (unchanged when its domain is
+/// `[0, 1]`). In doubles the map rounds: two distinct knots that become one double (an interior
+/// knot of a domain like `[−1.5·10³⁰⁸, 3]` becomes 1) would change the curve, and are refused.
+fn on_unit_interval<T: Scalar>(name: &str, c: &BSplineCurve<T>) -> Result<BSplineCurve<T>> {
     let (a, b) = c.domain();
     if a == T::zero() && b == T::one() {
         return Ok(c.clone());
     }
-    let knots = c
-        .knots()
-        .as_slice()
+    let given = c.knots().as_slice();
+    let knots: Vec<T> = given
         .iter()
         .map(|k| (k.clone() - a.clone()) / (b.clone() - a.clone()))
         .collect();
+    if let Some(i) = (1..given.len()).find(|&i| given[i - 1] < given[i] && knots[i - 1] >= knots[i])
+    {
+        return Err(Error::InvalidArgument {
+            what: "Coons patch in B-spline form",
+            message: format!(
+                "boundary {name}: the knots {:?} and {:?} become the same double {:?} when its domain [{:?}, {:?}] is mapped onto [0, 1]",
+                given[i - 1].to_f64(),
+                given[i].to_f64(),
+                knots[i].to_f64(),
+                a.to_f64(),
+                b.to_f64()
+            ),
+        });
+    }
     BSplineCurve::new(c.degree(), knots, c.control().clone())
 }
 
@@ -146,7 +167,8 @@ impl<T: Scalar> CoonsPatch<BSplineCurve<T>, T> {
     /// `nrbcoons` builds it.
     ///
     /// # Errors
-    /// As [`coons_bspline_net`]: a boundary whose knot vector is not clamped.
+    /// As [`coons_bspline_net`]: a boundary whose knot vector is not clamped, whose knots
+    /// cannot be mapped onto `[0, 1]` in doubles, or a control point that overflows.
     ///
     /// ```
     /// use cagd::bspline::BSplineCurve;

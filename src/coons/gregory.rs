@@ -3,6 +3,7 @@
 use nalgebra::DVector;
 
 use super::Corner;
+use crate::error::{check_finite, Error, Result};
 use crate::scalar::Scalar;
 
 /// The variable twists of Gregory's square (thesis §4.4).
@@ -35,11 +36,12 @@ use crate::scalar::Scalar;
 /// use nalgebra::dvector;
 /// let a = dvector![1.0];
 /// let b = dvector![3.0];
-/// let g = GregoryTwist::new([a.clone(), a.clone(), a.clone(), a], [b.clone(), b.clone(), b.clone(), b]);
+/// let g = GregoryTwist::new([a.clone(), a.clone(), a.clone(), a], [b.clone(), b.clone(), b.clone(), b])?;
 /// assert_eq!(g.eval(Corner::U0V0, &0.0, &0.5), dvector![3.0]); // on u = 0: b
 /// assert_eq!(g.eval(Corner::U0V0, &0.5, &0.0), dvector![1.0]); // on v = 0: a
 /// assert_eq!(g.eval(Corner::U0V0, &0.0, &0.0), dvector![2.0]); // the corner: (a + b)/2
 /// assert_eq!(g.eval(Corner::U1V1, &1.0, &0.5), dvector![3.0]); // on u = 1: b
+/// # Ok::<(), cagd::Error>(())
 /// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct GregoryTwist<T: Scalar = f64> {
@@ -50,8 +52,28 @@ pub struct GregoryTwist<T: Scalar = f64> {
 impl<T: Scalar> GregoryTwist<T> {
     /// The Gregory twists from `a = ∂/∂v x_u` and `b = ∂/∂u x_v` at the corners, each array in
     /// the order `P1..P4` = `(0,0), (1,0), (0,1), (1,1)` (see [`Corner`]).
-    pub fn new(along_v: [DVector<T>; 4], along_u: [DVector<T>; 4]) -> Self {
-        GregoryTwist { along_v, along_u }
+    ///
+    /// # Errors
+    /// [`Error::ShapeMismatch`] unless the eight vectors have one dimension (the blend combines
+    /// `a` and `b` coordinate by coordinate); [`Error::NonFinite`] for a NaN or infinite
+    /// coordinate.
+    pub fn new(along_v: [DVector<T>; 4], along_u: [DVector<T>; 4]) -> Result<Self> {
+        let dim = along_v[0].len();
+        let all = along_v.iter().chain(along_u.iter());
+        if let Some((k, v)) = all.clone().enumerate().find(|(_, v)| v.len() != dim) {
+            return Err(Error::ShapeMismatch {
+                what: "Gregory twists",
+                expected: format!("vectors of dimension {dim} (that of a at P1)"),
+                found: format!(
+                    "dimension {} for {} at P{}",
+                    v.len(),
+                    if k < 4 { "a" } else { "b" },
+                    k % 4 + 1
+                ),
+            });
+        }
+        check_finite("Gregory twists", all.flat_map(|v| v.iter()))?;
+        Ok(GregoryTwist { along_v, along_u })
     }
 
     /// `a = ∂/∂v x_u` at the corners (order `P1..P4`).

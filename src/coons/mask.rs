@@ -179,8 +179,9 @@ impl<T: Scalar> Mask<T> {
     /// - **every other mask** (the Laplace mask `α = 0`, `β = 1/4` among them) builds numbers of
     ///   about 3 bits per unknown (at most 192 bits for `n = 10`, 1 032 for `n = 20`: the
     ///   determinants of the leading blocks), so the operations are weighed at `3N` bits: the
-    ///   estimate is then 1.0–1.2 times the run time in nanoseconds, and ones(30, 90) — 70 s
-    ///   before, estimated at 1.3·10⁸ — is 1.2·10¹¹, refused at once.
+    ///   estimate is then 1.0–1.4 times the run time in nanoseconds for n = 12…40 (both grow
+    ///   as n⁷: fitted exponents 6.95 and 6.87), and ones(30, 90) — 70 s before, estimated at
+    ///   1.3·10⁸ — is 1.2·10¹¹, refused at once.
     ///
     /// [`solve_mask`] refuses the estimate above `limits.max_work` before it starts, and in
     /// exact arithmetic meters the elimination as it runs as well (every operation weighed by

@@ -316,9 +316,89 @@ fn infallible_functions_have_fallible_twins_and_documented_panics() {
             "triangle",
             Box::new(|| drop(cagd::bspline::cox_de_boor_triangle(3, &[0.0, 1.0], &0.5))),
         ),
+        (
+            "bernstein_all",
+            Box::new(|| drop(cagd::bernstein::bernstein_all(usize::MAX, 0.5))),
+        ),
+        (
+            "bernstein of a coefficient beyond doubles, 2^41 + 1 values",
+            Box::new(|| {
+                std::hint::black_box(cagd::bernstein::bernstein(1 << 40, 1 << 41, 0.5));
+            }),
+        ),
+        (
+            "bernstein_derivative",
+            Box::new(|| {
+                std::hint::black_box(cagd::bernstein::bernstein_derivative(0, 1 << 40, 1, 0.5));
+            }),
+        ),
+        (
+            "bernstein_derivative_all, r > n",
+            Box::new(|| {
+                drop(cagd::bernstein::bernstein_derivative_all(
+                    1 << 40,
+                    usize::MAX,
+                    0.5,
+                ))
+            }),
+        ),
+        (
+            "basis_matrix",
+            Box::new(|| drop(cagd::bernstein::basis_matrix(usize::MAX, &[0.5]))),
+        ),
+        (
+            "basis_derivative_matrix",
+            Box::new(|| drop(cagd::bernstein::basis_derivative_matrix(1 << 40, 1, &[0.5]))),
+        ),
+        (
+            "bernstein_antiderivative",
+            Box::new(|| {
+                drop(cagd::integral::bernstein_antiderivative::<f64>(
+                    usize::MAX,
+                    0,
+                ))
+            }),
+        ),
     ] {
         assert!(catch_unwind(AssertUnwindSafe(f)).is_err(), "{what}");
     }
+}
+
+#[test]
+fn gregory_twists_of_different_dimensions_or_not_finite_are_refused() {
+    use cagd::coons::GregoryTwist;
+    let v = |x: &[f64]| DVector::from_vec(x.to_vec());
+    let a = [
+        v(&[1.0, 0.0]),
+        v(&[1.0, 0.0]),
+        v(&[1.0, 0.0]),
+        v(&[1.0, 0.0]),
+    ];
+    // b at P3 of dimension 3: the blend used to panic in eval (zip_map of 2 and 3 entries).
+    let b = [
+        v(&[0.0, 1.0]),
+        v(&[0.0, 1.0]),
+        v(&[0.0, 1.0, 2.0]),
+        v(&[0.0, 1.0]),
+    ];
+    let r = GregoryTwist::new(a.clone(), b);
+    assert!(
+        matches!(&r, Err(Error::ShapeMismatch { what: "Gregory twists", found, .. })
+            if found == "dimension 3 for b at P3"),
+        "{r:?}"
+    );
+    let b = [
+        v(&[0.0, 1.0]),
+        v(&[0.0, f64::NAN]),
+        v(&[0.0, 1.0]),
+        v(&[0.0, 1.0]),
+    ];
+    assert!(non_finite(GregoryTwist::new(a.clone(), b)));
+    let g = GregoryTwist::new(a.clone(), a).unwrap();
+    assert_eq!(
+        g.eval(cagd::coons::Corner::U0V0, &0.5, &0.5),
+        v(&[1.0, 0.0])
+    );
 }
 
 #[test]
@@ -360,20 +440,25 @@ fn replay_one_call() {
     );
 }
 
-/// Many calls of every group, reporting each failure (group, seed, message) and the slowest
-/// call of each group instead of stopping at the first: `CAGD_HOSTILE_SCAN=SEEDS cargo test -p
-/// cagd --test it scan_every_group -- --nocapture`.
+/// Many calls of every group (or of one: `SEEDS,GROUP`), reporting each failure (group, seed,
+/// message) and the slowest call of each group instead of stopping at the first:
+/// `CAGD_HOSTILE_SCAN=SEEDS cargo test -p cagd --test it scan_every_group -- --nocapture`.
 #[test]
 fn scan_every_group() {
-    let Some(seeds) = std::env::var("CAGD_HOSTILE_SCAN")
-        .ok()
-        .and_then(|s| s.parse::<u64>().ok())
-    else {
+    let Ok(spec) = std::env::var("CAGD_HOSTILE_SCAN") else {
         return;
     };
+    let (seeds, only) = match spec.split_once(',') {
+        Some((s, g)) => (s, Some(g.parse::<usize>().expect("GROUP"))),
+        None => (spec.as_str(), None),
+    };
+    let seeds: u64 = seeds.parse().expect("SEEDS");
     std::panic::set_hook(Box::new(|_| {}));
     let mut failures = 0;
     for (op, (name, _)) in GROUPS.iter().enumerate() {
+        if only.is_some_and(|g| g != op) {
+            continue;
+        }
         let mut slowest = (std::time::Duration::ZERO, 0);
         let mut seen = std::collections::BTreeSet::new();
         for seed in 0..seeds {
@@ -406,8 +491,17 @@ fn scan_every_group() {
     assert_eq!(failures, 0);
 }
 
+/// The number of cases of the property test below: 3000, or `CAGD_HOSTILE_CASES` (a longer
+/// local run: `CAGD_HOSTILE_CASES=200000 cargo test -p cagd --test it no_public_function`).
+fn hostile_cases() -> u32 {
+    std::env::var("CAGD_HOSTILE_CASES")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(3000)
+}
+
 proptest::proptest! {
-    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(3000))]
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(hostile_cases()))]
 
     /// Every call returns (an `Err` is fine) within a bounded time; none panics, and no `Ok`
     /// holds a non-finite number (`hostile_calls::check::ok` panics on one). The calls are those
@@ -470,4 +564,133 @@ fn bernstein_integrals_of_any_degree_and_values_of_bad_indices() {
     assert!(matches!(r, Err(Error::InvalidArgument { .. })), "{r:?}");
     let r = cagd::integral::bernstein_antiderivative_values::<f64>(usize::MAX, &[0], &[0.5]);
     assert!(too_large(r));
+}
+
+#[test]
+fn end_knots_beyond_degree_plus_one_are_named_before_elevation_or_merging() {
+    use cagd::bspline::make_compatible;
+    // Degree 1 with the last knot three times: control point 2 has no non-empty span.
+    let over = BSplineCurve::new(
+        1,
+        vec![0.0, 0.0, 1.0, 1.0, 1.0],
+        DMatrix::from_row_slice(1, 3, &[0.0, 1.0, 2.0]),
+    )
+    .unwrap();
+    let line = BSplineCurve::new(
+        1,
+        vec![0.0, 0.0, 1.0, 1.0],
+        DMatrix::from_row_slice(1, 2, &[0.0, 1.0]),
+    )
+    .unwrap();
+    let more_than = |r: Option<&Error>| {
+        matches!(r, Some(Error::InvalidArgument { message, .. })
+            if message.contains("occurs 2 times and the last 3, more than degree + 1 = 2"))
+    };
+    let r = over.elevate(1);
+    assert!(more_than(r.as_ref().err()), "{r:?}");
+    let r = make_compatible(&[line.clone(), over]);
+    assert!(more_than(r.as_ref().err()), "{r:?}");
+    // Too few end knots: not clamped, with the counts.
+    let open = BSplineCurve::new(1, vec![-1.0, 0.0, 1.0, 2.0], DMatrix::zeros(1, 2)).unwrap();
+    let r = make_compatible(&[line, open]);
+    assert!(
+        matches!(&r, Err(Error::InvalidArgument { message, .. })
+            if message.contains("curve 1: the knot vector must be clamped") && message.contains("occur 1 and 1 times")),
+        "{r:?}"
+    );
+}
+
+#[test]
+fn coons_patch_in_bspline_form_refuses_knots_that_collapse_or_overflow() {
+    use cagd::coons::{coons_bspline_net, CoonsPatch};
+    let line = |a: [f64; 2], b: [f64; 2]| {
+        BSplineCurve::new(
+            1,
+            vec![0.0, 0.0, 1.0, 1.0],
+            DMatrix::from_column_slice(2, 2, &[a[0], a[1], b[0], b[1]]),
+        )
+        .unwrap()
+    };
+    // d1 on [−1.5·10³⁰⁸, 3] with an interior knot at 1: on [0, 1] it becomes 1.0, the end.
+    let d1 = BSplineCurve::new(
+        1,
+        vec![-1.5e308, -1.5e308, 1.0, 3.0, 3.0],
+        DMatrix::from_column_slice(2, 3, &[0.0, 0.0, 0.0, 0.5, 0.0, 1.0]),
+    )
+    .unwrap();
+    let patch = CoonsPatch::new(
+        line([0.0, 0.0], [1.0, 0.0]),
+        line([0.0, 1.0], [1.0, 1.0]),
+        d1,
+        line([1.0, 0.0], [1.0, 1.0]),
+    )
+    .unwrap();
+    let r = patch.to_bspline();
+    assert!(
+        matches!(&r, Err(Error::InvalidArgument { what: "Coons patch in B-spline form", message })
+            if message.starts_with("boundary d1: the knots 1.0 and 3.0 become the same double 1.0")),
+        "{r:?}"
+    );
+    // Corners ±1.7·10³⁰⁸: each part is finite, their sum r_c + r_d overflows before − r_cd.
+    let big = 1.7e308;
+    let corners = [
+        DVector::from_vec(vec![big, 0.0]),
+        DVector::from_vec(vec![-big, 0.0]),
+        DVector::from_vec(vec![-big, 1.0]),
+        DVector::from_vec(vec![big, 1.0]),
+    ];
+    let edge = |a: &DVector<f64>, b: &DVector<f64>| line([a[0], a[1]], [b[0], b[1]]);
+    let [p00, p10, p01, p11] = &corners;
+    let r = coons_bspline_net(
+        &edge(p00, p10),
+        &edge(p01, p11),
+        &edge(p00, p01),
+        &edge(p10, p11),
+        &corners,
+    );
+    assert!(
+        matches!(
+            r,
+            Err(Error::Overflow {
+                what: "Coons patch in B-spline form control points",
+                ..
+            })
+        ),
+        "{r:?}"
+    );
+}
+
+#[test]
+fn geometry_form_matrices_beyond_the_degree_limit_are_refused_before_they_are_built() {
+    use cagd::conversion::{form_conversion, GeometryForm};
+    // The Bézier form's identity of k × k was built for any k: 10⁷ + 1 columns asked for
+    // 800 TB (an abort), usize::MAX overflowed.
+    for k in [1002, 10_000_001, 1 << 40, usize::MAX] {
+        assert!(too_large(GeometryForm::Bezier.to_bezier::<f64>(k)), "{k}");
+        assert!(
+            too_large(GeometryForm::Algebraic.from_bezier::<f64>(k)),
+            "{k}"
+        );
+        assert!(
+            too_large(form_conversion::<f64>(
+                GeometryForm::Bezier,
+                GeometryForm::Bezier,
+                k
+            )),
+            "{k}"
+        );
+    }
+    assert_eq!(
+        GeometryForm::Bezier.to_bezier::<f64>(1001).unwrap().nrows(),
+        1001
+    );
+}
+
+#[test]
+fn design_matrices_of_any_degree_are_knot_count_errors() {
+    // p + 1 and 2p + 2 overflowed (a panic in a test build) for p near usize::MAX.
+    for p in [usize::MAX, usize::MAX / 2 + 1, 1 << 40] {
+        let r = cagd::bspline::design_matrix(p, &[0.0, 0.0, 1.0, 1.0], &[0.5], false);
+        assert!(matches!(r, Err(Error::KnotCount { .. })), "{p}: {r:?}");
+    }
 }

@@ -53,7 +53,7 @@ pub fn bases(rng: &Draws) {
     ok("bspline::cox_de_boor", cox_de_boor(size(rng), p, &k, &u));
     ok(
         "bspline::try_cox_de_boor_triangle",
-        try_cox_de_boor_triangle(p, &k, &u),
+        try_cox_de_boor_triangle(degree(rng, p), &k, &u),
     );
     if p < 6 && k.len() >= p + 2 {
         total(
@@ -75,7 +75,7 @@ fn bspline(rng: &Draws) -> Option<BSplineCurve> {
     match rng.below(4) {
         0 => ok(
             "bspline::BSplineCurve::clamped",
-            BSplineCurve::clamped(p, matrix(rng, d, n)),
+            BSplineCurve::clamped(degree(rng, p), matrix(rng, d, n)),
         ),
         1 => ok(
             "bspline::BSplineCurve::uniform_cubic",
@@ -90,7 +90,7 @@ fn bspline(rng: &Draws) -> Option<BSplineCurve> {
         _ => ok(
             "bspline::BSplineCurve::new",
             BSplineCurve::new(
-                p,
+                degree(rng, p),
                 knots(rng, n + p + 1 - rng.below(2).min(n + p)),
                 matrix(rng, d, n),
             ),
@@ -188,7 +188,7 @@ pub fn nurbs_curves(rng: &Draws) {
     let k = knots(rng, n + p + 1 - rng.below(2).min(n + p));
     let made = ok(
         "nurbs::NurbsCurve::new",
-        NurbsCurve::new(p, k, matrix(rng, d, n), weights(rng, n)),
+        NurbsCurve::new(degree(rng, p), k, matrix(rng, d, n), weights(rng, n)),
     );
     total(
         "nurbs::ConicKind::of_weight",
@@ -269,18 +269,24 @@ pub fn surfaces(rng: &Draws) {
     let made = if rng.below(2) == 0 {
         ok(
             "bspline::BSplineSurface::clamped",
-            BSplineSurface::clamped(p, q, coords.clone()),
+            BSplineSurface::clamped(degree(rng, p), degree(rng, q), coords.clone()),
         )
     } else {
         ok(
             "bspline::BSplineSurface::new",
-            BSplineSurface::new(p, q, ku.clone(), kv.clone(), coords.clone()),
+            BSplineSurface::new(
+                degree(rng, p),
+                degree(rng, q),
+                ku.clone(),
+                kv.clone(),
+                coords.clone(),
+            ),
         )
     };
     let w = DMatrix::from_vec(m, n, weights(rng, m * n));
     if let Some(s) = ok(
         "nurbs::NurbsSurface::new",
-        NurbsSurface::new(p, q, ku, kv, coords, w),
+        NurbsSurface::new(degree(rng, p), degree(rng, q), ku, kv, coords, w),
     ) {
         let (u, v) = (parameter(rng), parameter(rng));
         total("nurbs::NurbsSurface::homogeneous", s.homogeneous());

@@ -45,6 +45,12 @@ impl<T: Finite> Finite for Vec<T> {
     }
 }
 
+impl<T: Finite + ?Sized> Finite for &T {
+    fn all_finite(&self) -> bool {
+        (**self).all_finite()
+    }
+}
+
 impl<T: Finite, const N: usize> Finite for [T; N] {
     fn all_finite(&self) -> bool {
         self.iter().all(Finite::all_finite)
@@ -195,6 +201,12 @@ impl Finite for Mask<f64> {
     }
 }
 
+impl Finite for cagd::coons::GregoryTwist<f64> {
+    fn all_finite(&self) -> bool {
+        self.along_v().all_finite() && self.along_u().all_finite()
+    }
+}
+
 impl Finite for CoonsPoint<f64> {
     fn all_finite(&self) -> bool {
         [&self.x, &self.rc, &self.rd, &self.rcd]
@@ -218,8 +230,30 @@ pub fn ok<V: Finite + Debug>(name: &str, result: cagd::Result<V>) -> Option<V> {
     }
 }
 
-/// The result of an `Ok`-only check on a value without numbers to check (a curve over
-/// arbitrary boundary curves, say): only that it returned.
+/// The result of the `Result`-returning function `name` whose value holds arbitrary curves
+/// (a Coons patch over closures, say), and numbers of its own that `numbers` reads (its
+/// corners, nodes, coefficients): an `Err` is fine, an `Ok` must hold finite numbers only (else
+/// this panics, naming the function and the numbers). The curves' values are checked through
+/// the evaluations of the surface.
+#[track_caller]
+pub fn ok_with<V, N: Finite + Debug>(
+    name: &str,
+    result: cagd::Result<V>,
+    numbers: impl FnOnce(&V) -> N,
+) -> Option<V> {
+    let v = result.ok()?;
+    let held = numbers(&v);
+    if !held.all_finite() {
+        let shown: String = format!("{held:?}").chars().take(400).collect();
+        panic!("{name}: Ok holds a non-finite value: {shown}")
+    }
+    Some(v)
+}
+
+/// The result of an `Ok`-only check on a value without numbers of its own to read (a ruled
+/// surface of two arbitrary curves, the Lagrange polynomial, whose nodes and values are
+/// private, an exact rational): only that it returned; its numbers are checked through its
+/// evaluations.
 pub fn any<V>(_name: &str, result: cagd::Result<V>) -> Option<V> {
     result.ok()
 }

@@ -16,7 +16,7 @@ use cagd::{Curve, CurveDeriv, FnCurve, OnUnitInterval, SampledCurve, Tolerance};
 use nalgebra::{DMatrix, DVector};
 
 use super::bezier::{curve_methods, deriv_methods, surface_methods};
-use super::check::{any, ok, total};
+use super::check::{any, ok, ok_with, total};
 use super::draws::*;
 
 /// A boundary curve of dimension `d`: Bézier (on `[0, 1]` or another interval), sampled, or a
@@ -78,6 +78,25 @@ fn line(p: DVector<f64>, q: DVector<f64>, bad: usize) -> impl CurveDeriv + Send 
     )
 }
 
+/// The numbers a Gordon surface holds of its own: its nodes, the points of the network, the
+/// Lagrange bases (their barycentric weights).
+#[allow(clippy::type_complexity)]
+fn gordon_numbers<C>(
+    g: &GordonSurface<C>,
+) -> (
+    (Vec<f64>, Vec<f64>),
+    (
+        Vec<Vec<DVector<f64>>>,
+        (cagd::lagrange::Lagrange, cagd::lagrange::Lagrange),
+    ),
+) {
+    let (bu, bv) = g.bases();
+    (
+        (g.u_nodes().to_vec(), g.v_nodes().to_vec()),
+        (g.points().to_vec(), (bu.clone(), bv.clone())),
+    )
+}
+
 /// Four corners and the four boundary curves through them.
 fn four(rng: &Draws) -> (usize, [DVector<f64>; 4], [Boundary; 4]) {
     let d = 1 + small(rng) % 3;
@@ -111,9 +130,10 @@ pub fn coons(rng: &Draws) {
     let (u, v) = (parameter(rng), parameter(rng));
     match rng.below(4) {
         0 => {
-            if let Some(p) = any(
+            if let Some(p) = ok_with(
                 "coons::CoonsPatch::with_tolerance",
                 CoonsPatch::with_tolerance(c1, c2, d1, d2, tolerance),
+                |p| p.corners().to_vec(),
             ) {
                 ok("coons::CoonsPatch::corners", Ok(p.corners().to_vec()));
                 total("coons::CoonsPatch::boundary", p.boundary());
@@ -135,9 +155,10 @@ pub fn coons(rng: &Draws) {
                     c
                 }
             });
-            if let Some(p) = any(
+            if let Some(p) = ok_with(
                 "coons::CoonsPatch::with_corners",
                 CoonsPatch::with_corners(c1, c2, d1, d2, corners, tolerance),
+                |p| p.corners().to_vec(),
             ) {
                 surface_methods(rng, "coons::CoonsPatch", &p);
             }
@@ -157,20 +178,23 @@ pub fn coons(rng: &Draws) {
             total("coons::BlendingPair::eval", f.eval(u));
             total("coons::BlendingPair::name", f.name());
             let made = match rng.below(3) {
-                0 => any(
+                0 => ok_with(
                     "coons::GeneralizedCoonsPatch::new",
                     GeneralizedCoonsPatch::new(c1, c2, d1, d2, f, BlendingPair::linear()),
+                    |p| p.boundary().corners().to_vec(),
                 ),
-                1 => any(
+                1 => ok_with(
                     "coons::GeneralizedCoonsPatch::partially_bicubic",
                     GeneralizedCoonsPatch::partially_bicubic(c1, c2, d1, d2),
+                    |p| p.boundary().corners().to_vec(),
                 ),
-                _ => any(
+                _ => ok_with(
                     "coons::CoonsBoundary::with_corners",
                     CoonsBoundary::with_corners(c1, c2, d1, d2, corners, tolerance),
+                    |p| p.corners().to_vec(),
                 )
                 .and_then(|b| {
-                    any(
+                    ok_with(
                         "coons::GeneralizedCoonsPatch::from_boundary",
                         GeneralizedCoonsPatch::from_boundary(
                             b,
@@ -178,6 +202,7 @@ pub fn coons(rng: &Draws) {
                             BlendingPair::hermite_cubic(),
                             value(rng),
                         ),
+                        |p| p.boundary().corners().to_vec(),
                     )
                 }),
             };
@@ -197,9 +222,10 @@ pub fn coons(rng: &Draws) {
 
 /// A bicubic Coons patch over the curves, with closures (and Bézier curves) across the edges.
 fn bicubic(rng: &Draws, d: usize, [c1, c2, d1, d2]: [Boundary; 4], tolerance: Tolerance) {
-    let Some(b) = any(
+    let Some(b) = ok_with(
         "coons::CoonsBoundary::new",
         CoonsBoundary::new(c1, c2, d1, d2, tolerance),
+        |p| p.corners().to_vec(),
     ) else {
         return;
     };
@@ -221,9 +247,10 @@ fn bicubic(rng: &Draws, d: usize, [c1, c2, d1, d2]: [Boundary; 4], tolerance: To
         1 => Twist::Given(std::array::from_fn(|_| vector(rng, d + rng.below(4) / 3))),
         _ => Twist::Gregory,
     };
-    let Some(p) = any(
+    let Some(p) = ok_with(
         "coons::BicubicCoonsPatch::new",
         BicubicCoonsPatch::new(b, cross, twist),
+        |p| p.boundary().corners().to_vec(),
     ) else {
         return;
     };
@@ -266,9 +293,10 @@ pub fn bezier_networks(rng: &Draws) {
     ) else {
         return;
     };
-    if let Some(p) = any(
+    if let Some(p) = ok_with(
         "coons::CoonsPatch::new",
         CoonsPatch::new(c1.clone(), c2.clone(), d1.clone(), d2.clone()),
+        |p| p.corners().to_vec(),
     ) {
         ok("coons::CoonsPatch::to_bezier", p.to_bezier());
         let again = total(
@@ -284,31 +312,37 @@ pub fn bezier_networks(rng: &Draws) {
     ];
     let at_u = vec![d1, d2];
     let at_v = vec![c1, c2];
-    if let Some(g) = any(
+    if let Some(g) = ok_with(
         "gordon::GordonSurface::new",
         GordonSurface::new(nodes.clone(), nodes.clone(), at_u.clone(), at_v.clone()),
+        gordon_numbers,
     ) {
         ok("gordon::GordonSurface::to_bezier", g.to_bezier());
         let c = total("gordon::GordonSurface::conditioning", g.conditioning());
         total("gordon::Conditioning::amplification", c.amplification());
     }
     let tolerance = rng.pick(&[Tolerance::default(), Tolerance::Absolute(value(rng))]);
-    any(
+    ok_with(
         "gordon::GordonSurface::with_points",
         GordonSurface::with_points(nodes.clone(), nodes, at_u, at_v, points, tolerance),
+        gordon_numbers,
     );
 }
 
 /// Gregory twists of arbitrary vectors.
 pub fn gregory(rng: &Draws) {
     let d = 1 + small(rng) % 3;
-    let g = total(
+    // Sometimes one vector of another dimension.
+    let twist = |rng: &Draws| vector(rng, if rng.below(12) == 0 { d + 1 } else { d });
+    let Some(g) = ok(
         "coons::GregoryTwist::new",
         GregoryTwist::new(
-            std::array::from_fn(|_| vector(rng, d)),
-            std::array::from_fn(|_| vector(rng, d)),
+            std::array::from_fn(|_| twist(rng)),
+            std::array::from_fn(|_| twist(rng)),
         ),
-    );
+    ) else {
+        return;
+    };
     let corner = rng.pick(&Corner::ALL);
     let (u, v) = (parameter(rng), parameter(rng));
     total("coons::GregoryTwist::along_v", g.along_v());
@@ -387,9 +421,10 @@ pub fn gordon(rng: &Draws) {
         .map(|&s| boundary(rng, d, &at(s, p00, p01), &at(s, p10, p11)))
         .collect();
     let tolerance = rng.pick(&[Tolerance::default(), Tolerance::Relative(1e-6)]);
-    let Some(g) = any(
+    let Some(g) = ok_with(
         "gordon::GordonSurface::with_tolerance",
         GordonSurface::with_tolerance(un, vn, at_u, at_v, tolerance),
+        gordon_numbers,
     ) else {
         return;
     };
@@ -443,7 +478,11 @@ pub fn surfaces(rng: &Draws) {
     );
     if let Ok(c) = f.with_domain(mostly_finite(rng), mostly_finite(rng)) {
         curve_methods(rng, "param::FnCurve", &c);
-        if let Some(unit) = any("param::OnUnitInterval::new", OnUnitInterval::new(c, "c")) {
+        if let Some(unit) = ok_with(
+            "param::OnUnitInterval::new",
+            OnUnitInterval::new(c, "c"),
+            |u| u.original_domain(),
+        ) {
             total("param::OnUnitInterval::curve", unit.curve());
             total(
                 "param::OnUnitInterval::original_domain",
@@ -493,9 +532,10 @@ pub fn surfaces(rng: &Draws) {
     let coords: Vec<DMatrix<f64>> = (0..d)
         .map(|_| matrix(rng, 3 + small(rng) % 2, 3 + small(rng) % 2))
         .collect();
-    if let Some(p) = any(
+    if let Some(p) = ok_with(
         "surfaces::CubicMatrixPatch::new",
         CubicMatrixPatch::new(rng.pick(&forms), coords),
+        |p| p.coordinates().to_vec(),
     ) {
         total("surfaces::CubicMatrixPatch::form", p.form());
         ok(
@@ -507,9 +547,10 @@ pub fn surfaces(rng: &Draws) {
     let dim = 1 + small(rng) % 3;
     let v = |rng: &Draws| vector(rng, if rng.below(10) == 0 { dim + 1 } else { dim });
     let corners = |rng: &Draws| [[v(rng), v(rng)], [v(rng), v(rng)]];
-    if let Some(p) = any(
+    if let Some(p) = ok_with(
         "surfaces::FergusonPatch::new",
         FergusonPatch::new(&corners(rng), &corners(rng), &corners(rng), &corners(rng)),
+        |p| p.geometry().to_vec(),
     ) {
         ok(
             "surfaces::FergusonPatch::geometry",

@@ -157,6 +157,16 @@ pub fn size(rng: &Draws) -> usize {
     }
 }
 
+/// A degree for data drawn for degree `p` (knots, control points): `p` mostly, sometimes any
+/// [`size`] (up to `usize::MAX`: `p + 1` and `2p + 2` overflow).
+pub fn degree(rng: &Draws, p: usize) -> usize {
+    if rng.below(6) == 0 {
+        size(rng)
+    } else {
+        p
+    }
+}
+
 /// A size the callee allocates: small, or one no machine can hold (`usize::MAX`, 2⁴⁰, …),
 /// which must be refused before anything is allocated (sizes in between are allowed and
 /// merely slow).

@@ -27,11 +27,11 @@ pub fn lagrange(rng: &Draws) {
     let t = parameter(rng);
     ok(
         "lagrange::check_nodes",
-        check_nodes("x", &nodes, small(rng)).map(|()| 0.0),
+        check_nodes("x", &nodes, size(rng)).map(|()| 0.0),
     );
     ok(
         "lagrange::check_distinct_nodes",
-        check_distinct_nodes("x", &nodes, small(rng)).map(|()| 0.0),
+        check_distinct_nodes("x", &nodes, size(rng)).map(|()| 0.0),
     );
     ok(
         "lagrange::basis_product",

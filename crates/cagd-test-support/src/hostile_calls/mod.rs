@@ -25,6 +25,7 @@ pub mod coons;
 pub mod course;
 pub mod draws;
 pub mod interpolation;
+pub mod refine;
 
 pub use draws::Draws;
 
@@ -32,7 +33,7 @@ pub use draws::Draws;
 pub type Group = (&'static str, fn(&Draws));
 
 /// The groups of calls: each draws its arguments and calls a family of functions.
-pub const GROUPS: [Group; 22] = [
+pub const GROUPS: [Group; 23] = [
     ("Bézier curves and schemes", bezier::curves),
     ("matrix forms", bezier::matrix_forms),
     ("Bézier patches and schemes", bezier::patches),
@@ -61,6 +62,10 @@ pub const GROUPS: [Group; 22] = [
     ("continuity, integrals", basics::continuity),
     ("linspace, point grids", basics::grids),
     ("exact numbers, limits, costs, tolerances", basics::numbers),
+    (
+        "B-spline refinement, compatible curves, Coons patches in B-spline form",
+        refine::refinement,
+    ),
 ];
 
 /// The number of groups [`call`] chooses from.
