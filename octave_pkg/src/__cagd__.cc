@@ -19,13 +19,23 @@
 // the Octave error with error_with_id only after cagd_call has returned, so no C++ exception
 // ever unwinds through Rust frames, and the callbacks below are noexcept. A Rust panic is caught
 // on the Rust side and comes back as the error cagd:internal.
+//
+// Ctrl-C: long work on the Rust side asks the sink's `interrupted` callback every few
+// milliseconds. On Octave's thread the callback runs octave_quit (), which handles a pending
+// SIGINT by throwing Octave's interrupt exception; the callback keeps that exception and
+// answers "stop", the Rust call returns, and the gateway rethrows the exception: the function
+// stops exactly as Octave's own builtins stop on Ctrl-C (back to the prompt, not an error a
+// try/catch sees). Asked from another thread, the callback only reads whether the stop was
+// already seen.
 
 #include <cstring>
 #include <algorithm>
+#include <atomic>
+#include <exception>
 #include <list>
+#include <thread>
 #include <tuple>
 #include <typeinfo>
-#include <vector>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,6 +44,7 @@
 #include <octave/Cell.h>
 #include <octave/oct-map.h>
 #include <octave/ov-re-mat.h>
+#include <octave/quit.h>
 
 #include "cagd_octave_ffi.h"
 #include "cagd_twin_docs.h"
@@ -263,6 +274,11 @@ namespace
     std::size_t n = 0;
     std::list<std::pair<std::size_t, NDArray>> more;
     std::list<std::pair<std::size_t, octave_value>> others;
+    // Ctrl-C: Octave's thread, the exception octave_quit () threw there, and whether the
+    // work was told to stop (read from any thread).
+    std::thread::id octave_thread = std::this_thread::get_id ();
+    std::exception_ptr interrupt;
+    std::atomic<bool> stopped { false };
 
     double *
     add_real (std::size_t i, std::size_t ndims, const std::size_t *dims)
@@ -320,6 +336,31 @@ namespace
       }
   }
 
+  // Whether the user pressed Ctrl-C: on Octave's thread, Octave's own check (octave_quit
+  // throws its interrupt exception for a pending SIGINT; other signals it handles and
+  // returns), the exception kept for the gateway to rethrow; on another thread only whether
+  // that already happened.
+  extern "C" int
+  sink_interrupted (void *ctx) noexcept
+  {
+    outputs& out = *static_cast<outputs *> (ctx);
+    if (out.stopped.load ())
+      return 1;
+    if (std::this_thread::get_id () != out.octave_thread || ! octave_signal_caught)
+      return 0;
+    try
+      {
+        octave_quit ();
+        return 0;
+      }
+    catch (...)
+      {
+        out.interrupt = std::current_exception ();
+        out.stopped.store (true);
+        return 1;
+      }
+  }
+
   extern "C" int
   sink_strings (void *ctx, std::size_t index, std::size_t ndims, const std::size_t *dims,
                 const char *const *texts, const std::size_t *lens) noexcept
@@ -358,10 +399,16 @@ call_package (const std::string& name, const octave_value_list& args, octave_idx
     describe (args(i), values[i - first], a, 0);
 
   outputs out;
-  const cagd_sink sink = { &out, sink_real, sink_strings };
+  const cagd_sink sink = { &out, sink_real, sink_strings, sink_interrupted };
   cagd_error err = { nullptr, nullptr };
   const int status = cagd_call (name.data (), name.size (), values, nvals,
                                 nargout, &sink, &err);
+  if (out.interrupt)
+    {
+      // Ctrl-C: Octave's own interrupt, whatever the call returned.
+      cagd_error_free (&err);
+      std::rethrow_exception (out.interrupt);
+    }
   if (status != 0)
     {
       // Copy and free the Rust strings first: error_with_id does not return.

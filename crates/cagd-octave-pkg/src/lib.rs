@@ -50,5 +50,5 @@ pub mod thesis;
 pub mod value;
 
 pub use error::{Kind, PkgError, Result};
-pub use functions::{call, FUNCTIONS};
+pub use functions::{call, call_interruptible, FUNCTIONS};
 pub use value::{Output, Real, Sink, Value, VecSink};

@@ -21,7 +21,7 @@ pub fn execute<T: Number, O: Operation<T> + ?Sized>(
     names: Names,
     op: &O,
 ) -> Result<Report<T>> {
-    let mut cx = cagd_ops::Context::new(call.limits);
+    let mut cx = call.context();
     cagd_ops::execute(op, &mut cx)
         .map(|answer| answer.report)
         .map_err(|e| op_error(names, e))
@@ -29,7 +29,11 @@ pub fn execute<T: Number, O: Operation<T> + ?Sized>(
 
 /// An operation's error as the package raises it: `ARGUMENT: PROBLEM; expected FORM`, the
 /// argument named as the function's usage names it, a limit with the call that raises it.
-pub fn op_error(names: Names, e: OpError) -> PkgError {
+pub fn op_error(names: &[(Role, &str)], e: OpError) -> PkgError {
+    if e.kind == cagd_ops::Kind::Interrupted {
+        // Octave's own interrupt in the session; the same words as every other function.
+        return PkgError::new(Kind::Interrupted, "interrupted");
+    }
     let name = names
         .iter()
         .find(|(r, _)| *r == e.role)

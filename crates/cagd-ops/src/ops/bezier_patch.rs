@@ -102,10 +102,7 @@ impl<T: Scalar> Operation<T> for BezierPatchPoints<T> {
         };
         let cost: Cost = per_point(&us, &vs, self.steps).and(per_point(&pus, &pvs, false));
         cx.check_cost(Role::Grid, cost, T::EXACT)?;
-        cx.check_interrupt()?;
-        let grid = patch
-            .try_eval_grid(&us, &vs)
-            .map_err(lib(Role::Grid, "finite parameter values"))?;
+        let grid = grid_points(&patch, (&us, &vs), coefficients, cx)?;
         let mut report = Report::new();
         if self.steps {
             self.push_schemes(&mut report, &patch, (&us, &vs), single, cx)?;
@@ -220,6 +217,22 @@ impl<T: Scalar> BezierPatchPoints<T> {
             _ => drawing,
         }
     }
+}
+
+/// The patch on the grid `us × vs` (coefficients of `coefficients` bits), in bands of rows
+/// between which the front end may interrupt.
+fn grid_points<T: Scalar>(
+    patch: &BezierPatch<T>,
+    (us, vs): (&[T], &[T]),
+    coefficients: u128,
+    cx: &Context,
+) -> Result<PointGrid<T>> {
+    let one = patch.grid_cost(max_bits(us), max_bits(vs), coefficients);
+    super::grid_in_bands((us, vs), one.weigh(T::EXACT), cx, |band, vs| {
+        patch
+            .try_eval_grid(band, vs)
+            .map_err(lib(Role::Grid, "finite parameter values"))
+    })
 }
 
 #[cfg(test)]

@@ -22,24 +22,33 @@
 //! rounding of the scale of the data (4 ULPs or `1e-14` relative to the largest value of the
 //! array), which `octave_pkg/tests/` checks on the thesis's examples and on random cases.
 //!
+//! Each function prices its work with the core's own estimates, as the command line prices
+//! the same construction (de Casteljau points, a Bézier patch's grid or scheme, a Coons patch,
+//! a Gordon surface, a Lagrange basis), and refuses it above `max_work` with the same words.
+//! The grids and lists of points are evaluated in chunks of a few milliseconds between which
+//! Octave's Ctrl-C stops the function. A result that overflows the range of doubles
+//! (finite arguments, an infinite or NaN value) is refused with `cagd:overflow`, never
+//! returned.
+//!
 //! The drawing the originals did when called without an output is done by the package's `.m`
 //! files with Octave's own `plot3` and `surf`.
 
 use cagd::bezier::{BezierCurve, BezierPatch};
-use cagd::coons::{CoonsPatch, Tolerance};
-use cagd::param::SampledCurve;
+use cagd::lagrange::Lagrange;
 use cagd_octave::compat;
-use nalgebra::{DMatrix, DVector};
-use ndarray::{ArrayView, ArrayView2, Dimension};
+use nalgebra::DMatrix;
+use ndarray::{ArrayView, ArrayView1, ArrayView2, Dimension};
 
 use crate::args::Call;
 use crate::error::{PkgError, Result};
 use crate::value::Sink;
 
+mod grids;
+
+pub use grids::{krpa_coons, krpa_gordon, ploskev_b};
+
 /// The form of a packed control net.
 const NET_FORM: &str = "a packed net (m+1) × 3(n+1), B(i+1, 3j+1:3j+3) = b_ij";
-/// The form of a sampled curve.
-const SAMPLED_FORM: &str = "a 3 × N matrix of samples at linspace (0, 1, N)";
 /// The form of a corner or a point.
 const POINT_FORM: &str = "a d × 1 column";
 /// The form of a node vector.
@@ -58,13 +67,25 @@ fn twin<T>(result: cagd::Result<T>, twin_name: &str) -> Result<T> {
     })
 }
 
-/// Output `index`: the array `a` with Octave size `dims`, written column-major.
+/// Refuses a result `values` (output `what`) holding NaN or ±Inf: finite arguments whose
+/// result overflows the range of doubles (the core's [`cagd::Error::Overflow`],
+/// `cagd:overflow`).
+///
+/// # Errors
+/// [`Kind::Overflow`](crate::Kind::Overflow).
+fn finite_result<'a>(what: &'static str, values: impl IntoIterator<Item = &'a f64>) -> Result<()> {
+    Ok(cagd::error::check_overflow(what, values)?)
+}
+
+/// Output `index`: the array `a` with Octave size `dims`, written column-major, refused if it
+/// overflowed ([`finite_result`], `what` its name).
 pub(crate) fn emit_array<D: Dimension>(
     sink: &mut dyn Sink,
-    index: usize,
+    (index, what): (usize, &'static str),
     dims: &[usize],
     a: ArrayView<'_, f64, D>,
 ) -> Result<()> {
+    finite_result(what, a.iter())?;
     let out = sink.real(index, dims)?;
     // The reversed view in logical order visits the array in column-major order.
     for (o, x) in out.iter_mut().zip(a.t().iter()) {
@@ -97,7 +118,18 @@ fn net_degrees(b: &ArrayView2<'_, f64>) -> (usize, usize) {
     )
 }
 
-/// `T = deCasteljau (kontrolneT, N)`.
+/// The Bézier patch of a packed net (through the twin of `tenzor`, which checks it).
+fn packed_patch(b: ArrayView2<'_, f64>) -> Result<BezierPatch<f64>> {
+    let a = twin(compat::tenzor(b), "tenzor")?;
+    let (rows, cols, _) = a.dim();
+    let coords = (0..3)
+        .map(|c| DMatrix::from_fn(rows, cols, |i, j| a[[i, j, c]]))
+        .collect();
+    Ok(BezierPatch::new(coords)?)
+}
+
+/// `T = deCasteljau (kontrolneT, N)`: priced as de Casteljau's points
+/// ([`BezierCurve::eval_cost`], the command line's `decasteljau`).
 pub fn de_casteljau(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     call.nargin(2, 2, "T = deCasteljau (kontrolneT, N)")?;
     call.nargout_max(1)?;
@@ -107,67 +139,21 @@ pub fn de_casteljau(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     call.check_samples("N", n)?;
     let (d, points) = p.dim();
     call.check_degree("kontrolneT (degree)", points - 1)?;
-    call.check_work("N", n, points * (points + d))?;
     cagd::error::check_finite("kontrolneT", p.t().iter())?;
     let curve = BezierCurve::new(DMatrix::from_fn(d, points, |i, j| p[[i, j]]))?;
+    let per_point = curve.eval_cost(0, 0);
+    call.check_cost("N", per_point.times(n as u128))?;
     // `d × N` column-major is the core's `N × d` row-major: written in place.
-    let out = sink.real(0, &[d, n])?;
-    curve.eval_many_into(&cagd::linspace(0.0, 1.0, n), out)?;
-    Ok(())
-}
-
-/// Writes a grid held row-major as `(nu, nv, 3)` as Octave's `nu × nv × 3` array (the layout
-/// of `P` in `ploskevB`, `krpaCoons`, `krpaGordon`).
-fn emit_thesis_grid(
-    sink: &mut dyn Sink,
-    index: usize,
-    (nu, nv): (usize, usize),
-    grid: &[f64],
-) -> Result<()> {
-    let out = sink.real(index, &[nu, nv, 3])?;
-    for (k, x) in grid.iter().enumerate() {
-        let (point, c) = (k / 3, k % 3);
-        let (i, j) = (point / nv, point % nv);
-        out[i + nu * (j + nv * c)] = *x;
-    }
-    Ok(())
-}
-
-/// Writes a grid held row-major as `(N, N, 3)` as the packed `N × 3N` matrix `R` of
-/// `krpaCoons` and `krpaGordon`: `R(i, 3j+c) = P(i, j, c)`.
-fn emit_packed(sink: &mut dyn Sink, index: usize, n: usize, grid: &[f64]) -> Result<()> {
-    let out = sink.real(index, &[n, 3 * n])?;
-    for (k, x) in grid.iter().enumerate() {
-        let (point, c) = (k / 3, k % 3);
-        let (i, j) = (point / n, point % n);
-        out[i + n * (3 * j + c)] = *x;
-    }
-    Ok(())
-}
-
-/// `P = ploskevB (kontrolneT, N)`.
-pub fn ploskev_b(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
-    call.nargin(2, 2, "P = ploskevB (kontrolneT, N)")?;
-    call.nargout_max(1)?;
-    let b = net(call, 0, "kontrolneT", NET_FORM)?;
-    let n = call.count(1, "N")?;
-    call.check_grid("N", n, n)?;
-    let (dm, dn) = net_degrees(&b);
-    call.check_degree("kontrolneT (degree)", dm.max(dn))?;
-    call.check_work("N", n * n, (dm + dn + 2) * 3)?;
-    let a = twin(compat::tenzor(b), "tenzor")?;
-    let (rows, cols, _) = a.dim();
-    let coords = (0..3)
-        .map(|c| DMatrix::from_fn(rows, cols, |i, j| a[[i, j, c]]))
-        .collect();
-    let patch = BezierPatch::new(coords)?;
     let t = cagd::linspace(0.0, 1.0, n);
-    let mut grid = vec![0.0; n * n * 3];
-    patch.eval_grid_into(&t, &t, &mut grid)?;
-    emit_thesis_grid(sink, 0, (n, n), &grid)
+    let out = sink.real(0, &[d, n])?;
+    call.in_chunks((&t, per_point), (&mut *out, d), |ts, buffer| {
+        Ok(curve.eval_many_into(ts, buffer)?)
+    })?;
+    finite_result("T", out.iter())
 }
 
-/// `L = bilinearna (B, u, v, N)`.
+/// `L = bilinearna (B, u, v, N)`: priced as one point of a Bézier patch by its scheme
+/// ([`BezierPatch::scheme_cost`]).
 pub fn bilinearna(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     call.nargin(4, 4, "L = bilinearna (B, u, v, N)")?;
     call.nargout_max(1)?;
@@ -177,9 +163,9 @@ pub fn bilinearna(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     let n = call.count(3, "N")?;
     let (dm, dn) = net_degrees(&b);
     call.check_degree("B (degree)", dm.max(dn))?;
-    call.check_work("B", 1, (dm + 1) * (dn + 1) * (dm.min(dn) + 1) * 3)?;
+    call.check_cost("B", packed_patch(b)?.scheme_cost(0, 0, 0))?;
     let l = twin(compat::bilinearna(b, u, v, n), "bilinearna")?;
-    emit_array(sink, 0, &[1, 1, 3], l.view())
+    emit_array(sink, (0, "L"), &[1, 1, 3], l.view())
 }
 
 /// `A = tenzor (B)`.
@@ -188,66 +174,7 @@ pub fn tenzor(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     call.nargout_max(1)?;
     let b = net(call, 0, "B", NET_FORM)?;
     let a = twin(compat::tenzor(b), "tenzor")?;
-    emit_array(sink, 0, &octave_dims(a.shape()), a.view())
-}
-
-/// `[R, P] = krpaCoons (c1, c2, d1, d2, P1, P2, P3, P4)`.
-pub fn krpa_coons(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
-    call.nargin(8, 8, "[R, P] = krpaCoons (c1, c2, d1, d2, P1, P2, P3, P4)")?;
-    call.nargout_max(2)?;
-    const NAMES: [&str; 8] = ["c1", "c2", "d1", "d2", "P1", "P2", "P3", "P4"];
-    let mut views = Vec::with_capacity(8);
-    for (i, name) in NAMES.iter().enumerate() {
-        let form = if i < 4 { SAMPLED_FORM } else { POINT_FORM };
-        views.push(net(call, i, name, form)?);
-    }
-    let n = views[0].ncols();
-    for (k, v) in views.iter().enumerate() {
-        let want = if k < 4 { (3, n) } else { (3, 1) };
-        if v.dim() != want {
-            return Err(cagd::Error::ShapeMismatch {
-                what: NAMES[k],
-                expected: format!("{}×{}", want.0, want.1),
-                found: format!("{}×{}", v.nrows(), v.ncols()),
-            }
-            .into());
-        }
-        cagd::error::check_finite(NAMES[k], v.t().iter())?;
-    }
-    if n < 2 {
-        return Err(cagd::Error::TooFewPoints {
-            what: "c1 (samples N)",
-            min: 2,
-            found: n,
-        }
-        .into());
-    }
-    call.check_grid("c1 (samples N)", n, n)?;
-    let t = cagd::linspace(0.0, 1.0, n);
-    let curve = |v: &ArrayView2<'_, f64>| {
-        SampledCurve::new(t.clone(), DMatrix::from_fn(3, n, |i, j| v[[i, j]]))
-    };
-    let corner = |v: &ArrayView2<'_, f64>| DVector::from_fn(3, |i, _| v[[i, 0]]);
-    let patch = CoonsPatch::with_corners(
-        curve(&views[0])?,
-        curve(&views[1])?,
-        curve(&views[2])?,
-        curve(&views[3])?,
-        [
-            corner(&views[4]),
-            corner(&views[5]),
-            corner(&views[6]),
-            corner(&views[7]),
-        ],
-        Tolerance::default(),
-    )?;
-    let mut grid = vec![0.0; n * n * 3];
-    patch.eval_grid_into(&t, &t, &mut grid)?;
-    emit_packed(sink, 0, n, &grid)?;
-    if call.nargout > 1 {
-        emit_thesis_grid(sink, 1, (n, n), &grid)?;
-    }
-    Ok(())
+    emit_array(sink, (0, "A"), &octave_dims(a.shape()), a.view())
 }
 
 /// `[T, rc, rd, rcd] = vrednostCoons (u, v, c1, c2, d1, d2, P1, P2, P3, P4)`.
@@ -271,51 +198,37 @@ pub fn vrednost_coons(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
         ),
         "vrednost_coons",
     )?;
-    for (k, part) in [&r.t, &r.rc, &r.rd, &r.rcd]
-        .into_iter()
-        .enumerate()
-        .take(call.nargout)
-    {
-        emit_array(sink, k, &octave_dims(part.shape()), part.view())?;
+    let parts = [(&r.t, "T"), (&r.rc, "rc"), (&r.rd, "rd"), (&r.rcd, "rcd")];
+    for (part, name) in &parts {
+        finite_result(name, part.iter())?;
+    }
+    for (k, (part, name)) in parts.into_iter().enumerate().take(call.nargout) {
+        emit_array(sink, (k, name), &octave_dims(part.shape()), part.view())?;
     }
     Ok(())
 }
 
-/// `[R, P] = krpaGordon (g_u, g_v, g_uv, x_u, x_v, N)`.
-pub fn krpa_gordon(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
-    call.nargin(6, 6, "[R, P] = krpaGordon (g_u, g_v, g_uv, x_u, x_v, N)")?;
-    call.nargout_max(2)?;
-    let g_u = net(call, 0, "g_u", "a 3 × (n+1)N matrix [c_0 … c_n]")?;
-    let g_v = net(call, 1, "g_v", "a 3 × (m+1)N matrix [d_0 … d_m]")?;
-    let g_uv = net(call, 2, "g_uv", "an (m+1) × 3(n+1) matrix of crossings")?;
-    let x_u = net(call, 3, "x_u", NODES_FORM)?;
-    let x_v = net(call, 4, "x_v", NODES_FORM)?;
-    let n = call.count(5, "N")?;
-    call.check_grid("N", n, n)?;
-    call.check_degree("x_u (nodes - 1)", x_u.len().saturating_sub(1))?;
-    call.check_degree("x_v (nodes - 1)", x_v.len().saturating_sub(1))?;
-    call.check_work("N", n * n, (x_u.len() + x_v.len() + 2) * 3)?;
-    let s = twin(
-        compat::krpa_gordon(g_u, g_v, g_uv, x_u, x_v, n),
-        "krpa_gordon",
-    )?;
-    emit_array(sink, 0, &octave_dims(s.r.shape()), s.r.view())?;
-    if call.nargout > 1 {
-        emit_array(sink, 1, &octave_dims(s.p.shape()), s.p.view())?;
-    }
-    Ok(())
-}
-
-/// `v = Lagrange (x, m, u)`.
+/// `v = Lagrange (x, m, u)`: priced as the Lagrange basis at every parameter
+/// ([`Lagrange::basis_cost`]), evaluated in chunks of `u` (column-major) between which the
+/// function may be interrupted.
 pub fn lagrange(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     call.nargin(3, 3, "v = Lagrange (x, m, u)")?;
     call.nargout_max(1)?;
     let x = net(call, 0, "x", NODES_FORM)?;
     let m = call.count(1, "m")?;
-    let u_dims = call.real(2, "u", "an array of parameters")?.dims;
-    let u = call.view_dyn(2, "u", "an array of parameters")?;
+    let u = call.real(2, "u", "an array of parameters")?;
     call.check_degree("x (nodes - 1)", x.len().saturating_sub(1))?;
-    call.check_work("u", u.len(), x.len())?;
-    let v = twin(compat::lagrange(x, m, u), "lagrange")?;
-    emit_array(sink, 0, u_dims, v.view())
+    let per_point = Lagrange::<f64>::basis_cost(x.len(), 0, 0);
+    call.check_cost("u", per_point.times(u.len() as u128))?;
+    let lagrange = |part: &[f64]| twin(compat::lagrange(x, m, ArrayView1::from(part)), "lagrange");
+    // The nodes and the index first, then every parameter, as the twin checks them.
+    lagrange(&[])?;
+    twin(cagd::error::check_finite("lagrange: u", u.data), "lagrange")?;
+    let out = sink.real(0, u.dims)?;
+    call.in_chunks((u.data, per_point), (&mut *out, 1), |part, buffer| {
+        let v = lagrange(part)?;
+        buffer.copy_from_slice(v.as_slice().expect("a new 1-D array is contiguous"));
+        Ok(())
+    })?;
+    finite_result("v", out.iter())
 }
