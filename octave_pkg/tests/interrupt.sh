@@ -28,7 +28,8 @@ cleanup() {
 }
 trap cleanup EXIT
 mkfifo "$dir/in"
-octave --no-gui --no-window-system --quiet --norc < "$dir/in" > "$dir/log" 2>&1 &
+# In the temporary directory, so that nothing Octave may write stays behind.
+(cd "$dir" && exec octave --no-gui --no-window-system --quiet --norc < "$dir/in" > "$dir/log" 2>&1) &
 pid=$!
 exec 3> "$dir/in"
 
@@ -53,7 +54,7 @@ wait_for() {
     return 1
 }
 
-say "$setup pkg load cagd; pkg load nurbs;"
+say "crash_dumps_octave_core (false); $setup pkg load cagd; pkg load nurbs;"
 say "cagd_limits ('max_work', 1e15); cagd_limits ('max_samples', 1e8); cagd_limits ('max_grid_points', 1e8);"
 # The data: a degree-1000 curve, a degree-1000 NURBS surface (a Bézier patch as octave-nurbs
 # writes it), 1001 Lagrange nodes, a million parameters.

@@ -40,6 +40,7 @@ pub const FUNCTIONS: &[(&str, Function)] = &[
     ("cagd_bezier_patch", native::bezier_patch),
     ("cagd_coons", native::coons),
     ("cagd_gordon", native::gordon),
+    ("cagd_ruled", native::ruled),
     ("cagd_bspline", native::bspline),
     ("cagd_nurbs", native::nurbs_curve),
     ("cagd_spline", native::spline),
