@@ -89,7 +89,8 @@ impl<'c, 'a> Call<'c, 'a> {
     /// Fills `out` from `items` in chunks of work between which the user may interrupt:
     /// `fill(chunk, buffer)` for consecutive chunks of `items` and the matching buffers of `per`
     /// outputs per item, each chunk about [`cagd_ops::ops::CHECK_WORK`] operations of
-    /// `per_item` each (once with nothing for no items, so that `fill` checks what it checks).
+    /// `per_item` each (at once for a few items, and once with nothing for no items, so that
+    /// `fill` checks what it checks).
     ///
     /// # Errors
     /// `fill`'s; [`Kind::Interrupted`].
@@ -99,12 +100,15 @@ impl<'c, 'a> Call<'c, 'a> {
         (out, per): (&mut [O], usize),
         mut fill: impl FnMut(&[I], &mut [O]) -> Result<()>,
     ) -> Result<()> {
-        let chunk = cagd_ops::ops::chunk_points(per_item.weigh(false));
-        if items.is_empty() {
+        if items.len() <= cagd_octave::octave_nurbs::FEW_ITEMS {
             return fill(items, out);
         }
-        for (part, buffer) in items.chunks(chunk).zip(out.chunks_mut(chunk * per.max(1))) {
-            self.check_interrupt()?;
+        let chunk = cagd_ops::ops::chunk_points(per_item.weigh(false));
+        let size = chunk.saturating_mul(per.max(1));
+        for (k, (part, buffer)) in items.chunks(chunk).zip(out.chunks_mut(size)).enumerate() {
+            if k > 0 {
+                self.check_interrupt()?;
+            }
             fill(part, buffer)?;
         }
         Ok(())
@@ -284,9 +288,12 @@ impl<'c, 'a> Call<'c, 'a> {
     /// # Errors
     /// [`Kind::Limit`].
     pub fn check_cost(&self, what: &'static str, cost: Cost) -> Result<()> {
+        if cost.weigh(false) <= u128::from(self.limits.max_work) {
+            return Ok(());
+        }
         self.context()
             .check_cost(cagd_ops::Role::T, cost, false)
-            .map_err(|e| crate::ops::op_error(&[(cagd_ops::Role::T, what)], e))
+            .map_err(|e| crate::error::op_error(&[(cagd_ops::Role::T, what)], e))
     }
 }
 

@@ -204,6 +204,27 @@ impl From<cagd_ops::Kind> for Kind {
     }
 }
 
+/// An operation's error as the package raises it: `ARGUMENT: PROBLEM; expected FORM`, the
+/// argument named as the function's usage names it, a limit with the call that raises it.
+pub fn op_error(names: &[(cagd_ops::Role, &str)], e: cagd_ops::OpError) -> PkgError {
+    if e.kind == cagd_ops::Kind::Interrupted {
+        // Octave's own interrupt in the session; the same words as every other function.
+        return PkgError::new(Kind::Interrupted, "interrupted");
+    }
+    let name = names
+        .iter()
+        .find(|(r, _)| *r == e.role)
+        .map_or_else(|| e.role.key(), |(_, n)| *n);
+    let mut problem = e.problem;
+    if let Some(limit) = e.limit {
+        problem = format!(
+            "{problem} (raise it with cagd_limits (\"{}\", VALUE))",
+            limit.field()
+        );
+    }
+    PkgError::arg(Kind::from(e.kind), name, problem, &e.expected)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

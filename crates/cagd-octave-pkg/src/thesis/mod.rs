@@ -8,9 +8,9 @@
 //! | `P = ploskevB (kontrolneT, N)` | [`compat::tenzor`], [`BezierPatch::eval_grid_into`] |
 //! | `L = bilinearna (B, u, v, N)` | the twin [`compat::bilinearna`] |
 //! | `A = tenzor (B)` | the twin [`compat::tenzor`] |
-//! | `[R, P] = krpaCoons (c1, c2, d1, d2, P1, P2, P3, P4)` | [`CoonsPatch::with_corners`] of [`SampledCurve`]s, [`CoonsPatch::eval_grid_into`] |
+//! | `[R, P] = krpaCoons (c1, c2, d1, d2, P1, P2, P3, P4)` | [`CoonsPatch::with_corners`](cagd::coons::CoonsPatch::with_corners) of [`SampledCurve`](cagd::param::SampledCurve)s, [`CoonsPatch::eval_grid_into`](cagd::coons::CoonsPatch::eval_grid_into) |
 //! | `[T, rc, rd, rcd] = vrednostCoons (u, v, c1, c2, d1, d2, P1, P2, P3, P4)` | the twin [`compat::vrednost_coons`] |
-//! | `[R, P] = krpaGordon (g_u, g_v, g_uv, x_u, x_v, N)` | the twin [`compat::krpa_gordon`] |
+//! | `[R, P] = krpaGordon (g_u, g_v, g_uv, x_u, x_v, N)` | the twin's network [`compat::krpa_gordon_surface`], evaluated band by band |
 //! | `v = Lagrange (x, m, u)` | the twin [`compat::lagrange`] |
 //!
 //! The twins of `cagd_octave::compat` reproduce the fixed Octave code operation by operation

@@ -89,11 +89,9 @@ pub fn basisfun_into(
     };
     let (nv, rest) = nb.split_at_mut(p + 1);
     let (left, right) = rest.split_at_mut(p + 1);
-    let chunk = Interrupt::chunk(basisfun_cost(p).weigh(false));
+    let mut poll = interrupt.poll(n, || basisfun_cost(p).weigh(false));
     for (k, &u) in uv.iter().enumerate() {
-        if k % chunk == 0 {
-            interrupt.check()?;
-        }
+        poll.at(k)?;
         let s = truncate(if iv.len() == 1 { iv[0] } else { iv[k] });
         if p == 0 {
             nv[0] = 1.0;
@@ -155,11 +153,9 @@ pub fn basisfunder_into(
     }
     let n = uu.len();
     let mut work = DersWork::new(pl, nd);
-    let chunk = Interrupt::chunk(basisfunder_cost(pl, nd).weigh(false));
+    let mut poll = interrupt.poll(n, || basisfunder_cost(pl, nd).weigh(false));
     for (k, (&x, &u)) in ii.iter().zip(uu).enumerate() {
-        if k % chunk == 0 {
-            interrupt.check()?;
-        }
+        poll.at(k)?;
         let s = truncate(x);
         if x.is_nan() && pl > 0 || !span_has_knots(s, pl, knots.len()) {
             return Err(NurbsError::undefined(

@@ -196,11 +196,9 @@ pub fn bspeval_into(
     interrupt: Interrupt<'_>,
 ) -> Result<()> {
     let mut work = BasisWork::new(b.degree);
-    let chunk = Interrupt::chunk(b.point_cost().weigh(false));
+    let mut poll = interrupt.poll(u.len(), || b.point_cost().weigh(false));
     for (col, &x) in u.iter().enumerate() {
-        if col % chunk == 0 {
-            interrupt.check()?;
-        }
+        poll.at(col)?;
         let first = work.at(b, x)?;
         combine(
             b,
@@ -243,12 +241,11 @@ pub fn along_axis(
     let cols = b.cols;
     let nt = u.len();
     let mut work = BasisWork::new(b.degree);
-    let per = curve_point_cost(b.degree, lead.saturating_mul(trail), 0, 0, 0);
-    let chunk = Interrupt::chunk(per.weigh(false));
+    let mut poll = interrupt.poll(u.len(), || {
+        curve_point_cost(b.degree, lead.saturating_mul(trail), 0, 0, 0).weigh(false)
+    });
     for (j, &x) in u.iter().enumerate() {
-        if j % chunk == 0 {
-            interrupt.check()?;
-        }
+        poll.at(j)?;
         let first = work.at(b, x)?;
         let n = work.values();
         let terms = n.len().min(cols.saturating_sub(first));

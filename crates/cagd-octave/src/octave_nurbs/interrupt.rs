@@ -63,4 +63,58 @@ impl<'a> Interrupt<'a> {
     pub fn chunk(per_item: u128) -> usize {
         (CHECK_WORK / per_item.max(1)).clamp(1, MOST_ITEMS) as usize
     }
+
+    /// The questions of a loop over `items` items of `per_item()` operations each: after
+    /// every [`chunk`](Self::chunk) of them, none for [`FEW_ITEMS`] or fewer (a call for one
+    /// point neither asks nor estimates).
+    pub fn poll(self, items: usize, per_item: impl FnOnce() -> u128) -> Poll<'a> {
+        let chunk = if items > FEW_ITEMS {
+            Self::chunk(per_item())
+        } else {
+            usize::MAX
+        };
+        Poll {
+            interrupt: self,
+            chunk,
+            next: chunk,
+        }
+    }
+}
+
+/// Loops over this many items or fewer do not ask (at most a few milliseconds even for items
+/// of a million operations each, a point of degree 1000).
+pub const FEW_ITEMS: usize = 16;
+
+/// The questions of one loop ([`Interrupt::poll`]).
+///
+/// ```
+/// use cagd_octave::octave_nurbs::{Interrupt, NurbsError};
+/// let stop = || true;
+/// let mut poll = Interrupt::new(&stop).poll(10_000, || 1_000_000);
+/// // Asked after every 4 items of a million operations: item 4 is the first to stop.
+/// assert!((0..4).all(|k| poll.at(k).is_ok()));
+/// assert_eq!(poll.at(4), Err(NurbsError::Interrupted));
+/// let mut few = Interrupt::new(&stop).poll(16, || 1_000_000);
+/// assert!((0..16).all(|k| few.at(k).is_ok()));
+/// ```
+#[derive(Debug, Clone, Copy)]
+pub struct Poll<'a> {
+    interrupt: Interrupt<'a>,
+    chunk: usize,
+    next: usize,
+}
+
+impl Poll<'_> {
+    /// Before item `k` (counted from 0, increasing): asks at the end of each chunk.
+    ///
+    /// # Errors
+    /// [`NurbsError::Interrupted`].
+    #[inline]
+    pub fn at(&mut self, k: usize) -> Result<()> {
+        if k < self.next {
+            return Ok(());
+        }
+        self.next = k.saturating_add(self.chunk);
+        self.interrupt.check()
+    }
 }

@@ -62,7 +62,7 @@ pub use bspderiv::{bspderiv, bspderiv_into, check_bspderiv};
 pub use bspeval::{along_axis, bspeval_into, combine, BasisWork, Bsp};
 pub use bspkntins::bspkntins;
 pub use error::{NurbsError, Result};
-pub use interrupt::{Interrupt, CHECK_WORK};
+pub use interrupt::{Interrupt, Poll, CHECK_WORK, FEW_ITEMS};
 pub use nd::Nd;
 pub use nrb::{nrbmak, Kind, Knots, Nrb, NrbParts};
 pub use nrbcoons::nrbcoons;

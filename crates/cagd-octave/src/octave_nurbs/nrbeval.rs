@@ -286,8 +286,11 @@ impl<'a> NrbEval<'a> {
             Plan::Curve { b, .. } => std::slice::from_ref(b),
             Plan::Grid { dirs, .. } | Plan::Scattered { dirs, .. } => dirs,
         };
-        let degrees: Vec<(usize, u128)> = dirs.iter().map(|b| (b.degree, 0)).collect();
-        rational_point_cost(tensor_point_cost(&degrees, 4, 0, 0), 3)
+        let mut degrees = [(0, 0); 3];
+        for (d, b) in degrees.iter_mut().zip(dirs) {
+            d.0 = b.degree;
+        }
+        rational_point_cost(tensor_point_cost(&degrees[..dirs.len().min(3)], 4, 0, 0), 3)
     }
 
     /// The points into `p` (of [`p_dims`](Self::p_dims)) and, when homogeneous, the weights
@@ -304,7 +307,11 @@ impl<'a> NrbEval<'a> {
         w: Option<&mut [f64]>,
         interrupt: Interrupt<'_>,
     ) -> Result<()> {
-        let chunk = Interrupt::chunk(self.point_cost().weigh(false));
+        let chunk = if self.points() > super::FEW_ITEMS {
+            Interrupt::chunk(self.point_cost().weigh(false))
+        } else {
+            usize::MAX
+        };
         let run = Run { interrupt, chunk };
         match &self.plan {
             Plan::Curve { b, u } => self.curve_into(b, u, (p, w), run),
@@ -487,7 +494,7 @@ impl<'a> NrbEval<'a> {
         let mut firsts = [0usize; 3];
         let mut scratch = Vec::new();
         for (j, x) in pts.chunks_exact(dim).enumerate() {
-            if j % run.chunk == 0 {
+            if j > 0 && j % run.chunk == 0 {
                 run.interrupt.check()?;
             }
             for k in 0..dim {
@@ -517,18 +524,22 @@ struct Run<'i> {
 
 impl Run<'_> {
     /// `fill(part, buffer)` over the chunks of `items` and the matching chunks of `out`
-    /// (`per` numbers per item), `interrupt` asked before each.
+    /// (`per` numbers per item), `interrupt` asked between them.
     fn chunks(
         &self,
         items: &[f64],
         (out, per): (&mut [f64], usize),
         mut fill: impl FnMut(&[f64], &mut [f64]) -> Result<()>,
     ) -> Result<()> {
-        for (part, buffer) in items
+        let size = self.chunk.saturating_mul(per.max(1));
+        for (k, (part, buffer)) in items
             .chunks(self.chunk)
-            .zip(out.chunks_mut(self.chunk * per.max(1)))
+            .zip(out.chunks_mut(size))
+            .enumerate()
         {
-            self.interrupt.check()?;
+            if k > 0 {
+                self.interrupt.check()?;
+            }
             fill(part, buffer)?;
         }
         Ok(())

@@ -119,11 +119,11 @@ pub const WRITE_OPS: u128 = 100;
 const CHUNK: usize = 4096;
 
 /// The work, in operations of one `f64` each, between two interrupt checks: a few
-/// milliseconds (and far less for cheap points: at most [`CHUNK`] of them).
+/// milliseconds (and far less for cheap points: at most 4096 of them).
 pub const CHECK_WORK: u128 = 1 << 22;
 
 /// How many points of `per_point` operations each to evaluate between two interrupt checks:
-/// about [`CHECK_WORK`] operations, at least 1, at most [`CHUNK`] points. A curve of degree
+/// about [`CHECK_WORK`] operations, at least 1, at most 4096 points. A curve of degree
 /// 1000 (a million operations a point) is asked every 4 points, a cubic every 4096.
 ///
 /// ```
