@@ -5,12 +5,17 @@
 #      (never the system's): pkg install compiles the oct-file (cargo builds the Rust static
 #      library in release mode, mkoctfile links the gateway);
 #   3. runs every package test in live Octave, one process (octave_pkg/tests/cagd_run_tests.m):
-#      the functions' own test blocks, the thesis examples against octave_ref/expected, the
-#      differential test against octave_ref/fixed (>= 1000 random cases), the octave-nurbs twins
-#      (tests/cagd_test_nurbs.m: octave-nurbs' own test blocks and demos in a copy whose calls of
-#      the twinned functions are renamed to cagd_*, with each twin; ~2400 random calls of every
-#      argument form against octave-nurbs in the same session; cagd_nrbcoons against nrbcoons),
-#      the bad-input table.
+#      the functions' own test blocks and every %!demo (headless), the thesis examples against
+#      octave_ref/expected, the differential test against octave_ref/fixed (>= 1000 random
+#      cases), the octave-nurbs twins against octave-nurbs in the same session (~2400 random
+#      calls of every argument form; cagd_nrbcoons against nrbcoons), the bad-input table;
+#   4. octave-nurbs' own test blocks and demos on the twins, in a second process where
+#      octave-nurbs is not loaded (tests/cagd_test_nurbs_copies.m: a copy of the installed
+#      octave-nurbs whose calls of the twinned functions are renamed to cagd_*; the counts
+#      asserted; with each twin swapped in on its own as well, about 3 of the step's 5 minutes:
+#      CAGD_NURBS_EACH=0 leaves that breakdown out);
+#   5. Ctrl-C: long calls of native, thesis and twin functions stopped by SIGINT in a live
+#      session that goes on afterwards (tests/interrupt.sh).
 # Exits non-zero on any failure.
 #
 # Needs octave with octave-nurbs, mkoctfile (Debian: octave-dev, installed here if missing),
@@ -76,4 +81,19 @@ if ! grep -q "^cagd package tests: OK" "$tmp/tests.log"; then
     echo "ci.sh: package tests FAILED" >&2
     exit 1
 fi
+
+echo "== octave-nurbs' own tests and demos on the twins (a process without octave-nurbs loaded)"
+start=$SECONDS
+octave_run "$setup pkg load cagd; addpath ('$here/tests'); cagd_test_nurbs_copies ();" \
+    | tee "$tmp/copies.log"
+echo "(ran in $((SECONDS - start)) s)"
+if ! grep -q "^nurbs copies: OK" "$tmp/copies.log"; then
+    echo "ci.sh: octave-nurbs' tests on the twins FAILED" >&2
+    exit 1
+fi
+
+echo "== Ctrl-C: long calls stopped by SIGINT in a live session (tests/interrupt.sh)"
+start=$SECONDS
+bash "$here/tests/interrupt.sh" "$setup"
+echo "(ran in $((SECONDS - start)) s)"
 echo "ci.sh: OK"

@@ -34,6 +34,8 @@ endfunction
 %!error <m: expected the index of a node> Lagrange ([0 0.5 1], 4, 0.5)
 %!error <nodes 0 and 1 are equal> Lagrange ([1 1], 1, 0.5)
 %!error <u: value at index 1 is not finite> Lagrange ([0 1], 1, [0 Inf])
+## L_1 of the nodes 0, 1, 2 at 1e300 is (1e300 - 1)(1e300 - 2)/2: beyond the doubles.
+%!error id=cagd:overflow Lagrange ([0 1 2], 1, 1e300)
 
 %!demo
 %! ## The three quadratic Lagrange basis polynomials on the nodes 0, 1/2, 1.

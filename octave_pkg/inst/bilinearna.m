@@ -40,6 +40,7 @@ endfunction
 %! assert (squeeze (bilinearna (B, 0.5, 0.5, 10))', [0.5 0.5 0.5]);
 %!error <u: value 1 is not finite> bilinearna ([0 0 0], NaN, 0, 1)
 %!error <B: logical is not accepted> bilinearna (true (1, 3), 0, 0, 1)
+%!error id=cagd:overflow bilinearna ([0 0 0 1 0 0; 0 1 0 1 1 1], 1e308, 1e308, 3)
 
 %!demo
 %! ## The bilinear patch z = uv (thesis: bilinearna) on a 15 x 15 grid.

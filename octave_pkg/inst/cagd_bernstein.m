@@ -26,6 +26,7 @@ endfunction
 %! P = [0 0 8 4; 0 2 2 0; 0 2 0 0]; t = linspace (0, 1, 7);
 %! assert (P * cagd_bernstein (3, t), cagd_bezier (P, t), 1e-14);
 %!error <n: 1.5 is not a non-negative integer> cagd_bernstein (1.5, 0.5)
+%!error id=cagd:overflow cagd_bernstein (3, 1e103)
 
 %!demo
 %! ## The cubic Bernstein polynomials.

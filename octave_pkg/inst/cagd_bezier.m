@@ -40,6 +40,9 @@ endfunction
 %!error <t: value 2 is not finite> cagd_bezier (P, [0 NaN])
 %!error <called with 1 argument> cagd_bezier (P)
 %!error <P: .* does not parse|P: > cagd_bezier ("[0 1", 0.5, "exact")
+## A result beyond the doubles (finite control points, t = 5) is refused, not returned as Inf.
+%!error id=cagd:overflow cagd_bezier ([1e308 -1e308], 5)
+%!error <not a finite double> cagd_bezier ([1e308 -1e308], 5)
 
 %!demo
 %! ## Thesis Primer 2.4: the cubic and its control polygon.

@@ -36,6 +36,8 @@ endfunction
 %! assert (cagd_bezier_derivative (P, 0.3, 3), 6 * (P(:,4) - 3*P(:,3) + 3*P(:,2) - P(:,1)));
 %!assert (cagd_bezier_derivative (P, "1/3", 1, "exact"), {"28/3"; "2"; "0"})
 %!error <derivative order 4 exceeds the degree 3> cagd_bezier_derivative (P, 0.5, 4)
+## Differences of ±1.7e308 overflow: refused, not Inf.
+%!error id=cagd:overflow cagd_bezier_derivative ([1.7e308 -1.7e308 1.7e308], 0.5)
 
 %!demo
 %! ## A plane cubic with its tangent vectors (the hodograph's values) at 9 points.

@@ -38,6 +38,7 @@ endfunction
 %! X = cagd_bezier_patch (permute (tenzor (K), [3 1 2]), linspace (0, 1, 4), linspace (0, 1, 4));
 %! assert (permute (X, [2 3 1]), P, 1e-15);
 %!error <B: an array of size 3×2×2×2> cagd_bezier_patch (zeros (3, 2, 2, 2), 0, 0)
+%!error id=cagd:overflow cagd_bezier_patch (reshape ([1.7e308 -1.7e308 -1.7e308 1.7e308], 1, 2, 2), 5, 5)
 
 %!demo
 %! ## A bicubic Bezier patch on a 25 x 25 grid with its control net.

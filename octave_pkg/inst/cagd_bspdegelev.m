@@ -10,9 +10,10 @@
 ## not clamped at their end fail, and @var{ic} has the class of @var{c}, @var{ik} that of
 ## @var{k}.
 ##
-## Differences from octave-nurbs 1.4.3: with single, integer or logical @var{c} or @var{k}
-## octave-nurbs computes in that class's arithmetic, rounding at each step; this computes in
-## double and converts the results once.  Errors carry the identifiers @code{cagd:value},
+## Differences from octave-nurbs 1.4.3: with single, integer or logical @var{c} or @var{k},
+## or an integer degree @var{d}, octave-nurbs computes in that class's arithmetic, rounding
+## at each step (an int32 @var{d} gives control points and knots that do not fit together);
+## this computes with the values in double and converts the results once.  Errors carry the identifiers @code{cagd:value},
 ## @code{cagd:shape}, @code{cagd:class}.
 ##
 ## Example:

@@ -11,8 +11,12 @@
 ## outside @math{[k(1), k(end)]}, a NaN knot or no knot at all is an error; the result is
 ## double whatever the classes of the arguments.
 ##
-## Differences from octave-nurbs 1.4.3: none in the values; errors carry the identifiers
-## @code{cagd:value}, @code{cagd:shape}, @code{cagd:class}.
+## Differences from octave-nurbs 1.4.3: none in the values of double arguments.  With single
+## or integer knots or parameters octave-nurbs computes in that class's arithmetic, rounding
+## (integers: to whole numbers, so that the coefficients are not the curve's) at each step;
+## this computes with their values in double (single knots: within single precision of
+## octave-nurbs').  Errors carry the identifiers @code{cagd:value}, @code{cagd:shape},
+## @code{cagd:class}.
 ##
 ## Example:
 ## @example

@@ -28,6 +28,8 @@ endfunction
 %!assert (cagd_bspline (2, [0 1 2 3], "[0 0 0 1/3 1 1 1]", "1/3", "exact"), {"4/3"})
 %!error <expected 7 knots> cagd_bspline (2, [0 1 2 3], [0 0 0 1 1 1], 0.5)
 %!error <outside the domain> cagd_bspline (2, [0 1 2 3], [0 0 0 0.5 1 1 1], 1.5)
+## Knots 5e-324 apart: the basis would divide by a difference that is not a double.
+%!error id=cagd:overflow cagd_bspline (2, [0 1 2 3], [0 0 0 5e-324 1e-320 1e-320 1e-320], 1e-321)
 
 %!demo
 %! ## A quadratic B-spline with a double knot at 1/2 (a corner) and its control polygon.

@@ -31,6 +31,8 @@ endfunction
 %! assert (cagd_convert (cagd_convert (G, "bezier", "bspline"), "bspline", "bezier"), G, 1e-13);
 %!error <to: 'monomial'> cagd_convert ([0 1 2 4], "bezier", "monomial")
 %!error <G: 3 column\(s\) for the hermite form; expected 4 columns> cagd_convert ([0 1 2], "bezier", "hermite")
+## Finite Hermite data whose Bézier points x ± x'/3 overflow: refused, not Inf.
+%!error id=cagd:overflow cagd_convert (ones (2, 4) * 1.7e308, "hermite", "bspline")
 
 %!demo
 %! ## One cubic in three forms: Bezier control points, Hermite data, B-spline points.

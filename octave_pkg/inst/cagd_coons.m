@@ -85,6 +85,8 @@ endfunction
 %!error <do not meet at the corners> cagd_coons (c1, c2, d1, d2 + 1, 0.5, 0.5)
 %!error <c1: .*has no field 'order'> cagd_coons (struct ("coefs", [1 0; 0 1; 0 0; 1 1], "knots", [0 0 1 1]), c2, d1, d2, 0.5, 0.5)
 %!error <c2: .*not accepted> cagd_coons (c1, {c2}, d1, d2, 0.5, 0.5)
+## rc + rd of boundaries at 1.7e308 overflows before rcd is subtracted: refused, not Inf.
+%!error id=cagd:overflow cagd_coons (1.7e308 * ones (3, 2), 1.7e308 * ones (3, 2), 1.7e308 * ones (3, 2), 1.7e308 * ones (3, 2), 0.5, 0.5)
 
 %!demo
 %! ## Appendix C of the thesis: the Coons patch of c1 = (u, 0, u - u^2), c2 = (u, 1, u),

@@ -77,6 +77,7 @@ endfunction
 %!error <cu: double is not accepted> cagd_gordon ([0 1], c, x, x, 0.5, 0.5)
 %!error <nodes must increase> cagd_gordon (d, c, [0 1 0.5], x, 0.5, 0.5)
 %!error <cv: .*not a recognised NURBS> cagd_gordon (d, {c{1}, struct("form", "L-NURBS"), c{3}}, x, x, 0.5, 0.5)
+%!error id=cagd:overflow cagd_gordon ({[0 0; 0 1; 0 0], [1 1; 0 1; 0 0]}, {[0 1; 0 0; 0 0], [0 1; 1 1; 0 0]}, [0 1], [0 1], 1e308, 1e308)
 
 %!demo
 %! ## Appendix D's network: the Gordon surface (u, v, v + u - u^2) through six curves.

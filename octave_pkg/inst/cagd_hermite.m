@@ -31,6 +31,7 @@ endfunction
 %! assert (X, {"1/2"; "1/4"});
 %! assert (B, {"0", "1/3", "2/3", "1"; "0", "1/3", "1/3", "0"});
 %!error <Hermite cubic: expected four vectors of the same positive length> cagd_hermite ([0;0], [1;0;0], [1;1], [1;-1], 0.5)
+%!error id=cagd:overflow cagd_hermite (1.7e308, -1.7e308, 1.7e308, -1.7e308, 0.5)
 
 %!demo
 %! ## A Hermite (Ferguson) cubic from (0,0) to (1,0) with tangents (1,1) and (1,-1).

@@ -16,13 +16,17 @@
 ## @item max_degree
 ## degree of a curve, patch direction or basis, number of nodes − 1, default 1000;
 ## @item max_work
-## arithmetic operations of one call, estimated up front (exact fractions weigh more),
-## default 2e9;
+## arithmetic operations of one call, estimated up front by the library's own estimates (the
+## command line's and the page's, so that each refuses the same work with the same words;
+## exact fractions weigh more), default 2e9;
 ## @item max_expression_bytes, max_depth, max_elements
 ## text read in exact mode (@code{"[0 1/3 1]"});
 ## @item max_input_bytes, max_iterations, max_system_entries
 ## kept for the library's other readers.
 ## @end table
+##
+## A long computation allowed by raised limits can be stopped with Ctrl-C, as Octave's own
+## functions are: the package asks Octave every few milliseconds of work.
 ##
 ## Example:
 ## @example

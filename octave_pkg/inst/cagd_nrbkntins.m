@@ -13,8 +13,10 @@
 ## interval of definition"), knots may be inserted at the ends of the range and beyond the
 ## order (zero basis functions), and the coefficients become double.
 ##
-## Differences from octave-nurbs 1.4.3: none in the values; errors carry @code{cagd:}
-## identifiers.
+## Differences from octave-nurbs 1.4.3: none in the values of double knots.  With single or
+## integer knots to insert octave-nurbs computes in that class's arithmetic, rounding at each
+## step (integers: to whole numbers); this computes with their values in double.  Errors
+## carry @code{cagd:} identifiers.
 ##
 ## Example:
 ## @example

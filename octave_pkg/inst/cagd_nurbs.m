@@ -31,6 +31,12 @@ endfunction
 %!assert (cagd_nurbs (2, [0 1 2], [1 2 1], [], "1/3", "exact"), {"10/13"})
 %!error <weight 2 is 0> cagd_nurbs (2, [0 1 2], [1 0 1], [], 0.5)
 %!error <expected 3 weights> cagd_nurbs (2, [0 1 2], [1 1], [], 0.5)
+## Weights all 5e-324 are scaled exactly (a NURBS does not change when all its weights are
+## multiplied by one factor): the curve of weights 1, (3/4, 3/4) at 1/2, as an independent
+## Bernstein sum gives: (1·1/4 + 1·1/2 + 0·1/4, 0·1/4 + 1·1/2 + 1·1/4).
+%!assert (cagd_nurbs (2, [1 1 0; 0 1 1], [5e-324 5e-324 5e-324], [0 0 0 1 1 1], 0.5), [0.75; 0.75])
+## A weighted point w·P beyond the doubles: refused, not Inf.
+%!error id=cagd:overflow cagd_nurbs (1, [1e300 0], [1e10 1], [0 0 1 1], 0.5)
 
 %!demo
 %! ## A circle from four rational quadratic arcs (weights 1 and sqrt(2)/2).

@@ -43,6 +43,7 @@ endfunction
 %!error <ends: 'periodic'> cagd_spline ([0 1 0], 0.5, "periodic")
 %!assert (cagd_spline ([0 1 0], 2.5, "natural", "exact"), {"-11/16"})
 %!assert (cagd_spline ([1 0 -1 0; 0 1 0 -1], 5, "closed"), cagd_spline ([1 0 -1 0; 0 1 0 -1], 1, "closed"), 1e-15)
+%!error id=cagd:overflow cagd_spline ([1.7e308 -1.7e308 1.7e308], 0.5)
 
 %!demo
 %! ## The natural cubic spline through five points.

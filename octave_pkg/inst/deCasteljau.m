@@ -31,9 +31,11 @@
 ## @end example
 ##
 ## Errors (identifiers @code{cagd:class}, @code{cagd:empty}, @code{cagd:value},
-## @code{cagd:nonfinite}, @code{cagd:limit}): a class other than double, no control points, an
-## @var{N} that is not a non-negative integer, NaN or Inf, @var{N} above
-## @code{cagd_limits ().max_samples}.
+## @code{cagd:nonfinite}, @code{cagd:limit}, @code{cagd:overflow}): a class other than double,
+## no control points, an @var{N} that is not a non-negative integer, NaN or Inf, @var{N} above
+## @code{cagd_limits ().max_samples} or work above @code{cagd_limits ().max_work}, a result
+## beyond the range of doubles (refused, never returned as Inf). Ctrl-C stops it within a few
+## milliseconds, as it stops Octave's own functions.
 ## @seealso{cagd_bezier, cagd_bezier_derivative, cagd_limits}
 ## @end deftypefn
 
@@ -67,6 +69,8 @@ endfunction
 %!error <N: 2.5 is not a non-negative integer> deCasteljau ([0 1], 2.5)
 %!error <kontrolneT: empty> deCasteljau (zeros (3, 0), 3)
 %!error <not finite> deCasteljau ([0 NaN], 3)
+## Control points at the largest double: a sum of the Bernstein terms rounds past it.
+%!error id=cagd:overflow deCasteljau (1.7976931348623157e308 * ones (1, 30), 7)
 
 %!demo
 %! ## Thesis Primer 2.4 drawn by the thesis function itself (no output argument).

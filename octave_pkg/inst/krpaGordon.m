@@ -68,6 +68,8 @@ endfunction
 %!error <network> krpaGordon (g_u, g_v, g_uv + 0.25, x, x, N)
 %!error <nodes must increase> krpaGordon (g_u, g_v, g_uv, [0 1 0.5], x, N)
 %!error <g_u: expected 3×15> krpaGordon (g_u(:, 1:14), g_v, g_uv, x, x, N)
+## g1 + g2 of curves at 1.7e308 overflows before g12 is subtracted: refused, not Inf.
+%!error id=cagd:overflow krpaGordon (1.7e308 * ones (3, 10), 1.7e308 * ones (3, 10), 1.7e308 * ones (2, 6), [0 1], [0 1], 5)
 
 %!demo
 %! ## Appendix D of the thesis, drawn by krpaGordon itself (no output argument): the Gordon

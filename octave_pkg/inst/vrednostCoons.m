@@ -60,6 +60,8 @@ endfunction
 %!error <corners> vrednostCoons (0, 0.5, [1;0;0], [0;0;0], [0;0;0], [0;0;0], [0;0;0], [0;0;0], [0;0;0], [0;0;0])
 %!error <d2: expected a 3×1 column> vrednostCoons (0.5, 0.5, [0;0;0], [0;0;0], [0;0;0], [0;0], [0;0;0], [0;0;0], [0;0;0], [0;0;0])
 %!error <u: complex double is not accepted> vrednostCoons (1i, 0.5, [0;0;0], [0;0;0], [0;0;0], [0;0;0], [0;0;0], [0;0;0], [0;0;0], [0;0;0])
+## (1 - u) c1 + u c2 at u = 1e300 of unit vectors: Inf - Inf in the sum, refused.
+%!error id=cagd:overflow vrednostCoons (1e300, 1e300, [0;0;0], [1;0;0], [0;0;0], [0;1;0], [0;0;0], [0;1;0], [1;0;0], [1;1;0])
 
 %!demo
 %! ## Thesis Primer 4.3: the point x(0.2, 0.5) = (0.2, 0.3, 0.38) and its three parts.

@@ -19,13 +19,23 @@
 // the Octave error with error_with_id only after cagd_call has returned, so no C++ exception
 // ever unwinds through Rust frames, and the callbacks below are noexcept. A Rust panic is caught
 // on the Rust side and comes back as the error cagd:internal.
+//
+// Ctrl-C: long work on the Rust side asks the sink's `interrupted` callback every few
+// milliseconds. On Octave's thread the callback runs octave_quit (), which handles a pending
+// SIGINT by throwing Octave's interrupt exception; the callback keeps that exception and
+// answers "stop", the Rust call returns, and the gateway rethrows the exception: the function
+// stops exactly as Octave's own builtins stop on Ctrl-C (back to the prompt, not an error a
+// try/catch sees). Asked from another thread, the callback only reads whether the stop was
+// already seen.
 
 #include <cstring>
 #include <algorithm>
+#include <atomic>
+#include <exception>
 #include <list>
+#include <thread>
 #include <tuple>
 #include <typeinfo>
-#include <vector>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,6 +44,7 @@
 #include <octave/Cell.h>
 #include <octave/oct-map.h>
 #include <octave/ov-re-mat.h>
+#include <octave/quit.h>
 
 #include "cagd_octave_ffi.h"
 #include "cagd_twin_docs.h"
@@ -252,7 +263,9 @@ namespace
   // The outputs: real arrays (a Matrix for 2 dimensions, the cheaper object, else an
   // NDArray) that own their data while Rust fills them — an Octave value made at once would
   // copy a 1 x 1 array into a scalar — and cells of strings as Octave values. The first few
-  // in place, the others in lists (nothing allocated for the usual call).
+  // in place, the others in lists (nothing allocated for the usual call). An array made
+  // without a value is zero-filled once by its allocation (Array's elements are
+  // value-initialized); with the value 0.0 it would be filled a second time.
   struct outputs
   {
     static const std::size_t few = 6;
@@ -263,6 +276,11 @@ namespace
     std::size_t n = 0;
     std::list<std::pair<std::size_t, NDArray>> more;
     std::list<std::pair<std::size_t, octave_value>> others;
+    // Ctrl-C: Octave's thread, the exception octave_quit () threw there, and whether the
+    // work was told to stop (read from any thread).
+    std::thread::id octave_thread = std::this_thread::get_id ();
+    std::exception_ptr interrupt;
+    std::atomic<bool> stopped { false };
 
     double *
     add_real (std::size_t i, std::size_t ndims, const std::size_t *dims)
@@ -270,20 +288,20 @@ namespace
       if (n < few && ndims == 2)
         {
           Matrix *m = new (slots[n]) Matrix (static_cast<octave_idx_type> (dims[0]),
-                                             static_cast<octave_idx_type> (dims[1]), 0.0);
+                                             static_cast<octave_idx_type> (dims[1]));
           is_matrix[n] = true;
           index[n++] = i;
           return m->fortran_vec ();
         }
       if (n < few)
         {
-          NDArray *a = new (slots[n]) NDArray (size_of (ndims, dims), 0.0);
+          NDArray *a = new (slots[n]) NDArray (size_of (ndims, dims));
           is_matrix[n] = false;
           index[n++] = i;
           return a->fortran_vec ();
         }
       more.emplace_back (std::piecewise_construct, std::forward_as_tuple (i),
-                         std::forward_as_tuple (size_of (ndims, dims), 0.0));
+                         std::forward_as_tuple (size_of (ndims, dims)));
       return more.back ().second.fortran_vec ();
     }
 
@@ -320,6 +338,31 @@ namespace
       }
   }
 
+  // Whether the user pressed Ctrl-C: on Octave's thread, Octave's own check (octave_quit
+  // throws its interrupt exception for a pending SIGINT; other signals it handles and
+  // returns), the exception kept for the gateway to rethrow; on another thread only whether
+  // that already happened.
+  extern "C" int
+  sink_interrupted (void *ctx) noexcept
+  {
+    outputs& out = *static_cast<outputs *> (ctx);
+    if (out.stopped.load ())
+      return 1;
+    if (std::this_thread::get_id () != out.octave_thread || ! octave_signal_caught)
+      return 0;
+    try
+      {
+        octave_quit ();
+        return 0;
+      }
+    catch (...)
+      {
+        out.interrupt = std::current_exception ();
+        out.stopped.store (true);
+        return 1;
+      }
+  }
+
   extern "C" int
   sink_strings (void *ctx, std::size_t index, std::size_t ndims, const std::size_t *dims,
                 const char *const *texts, const std::size_t *lens) noexcept
@@ -343,8 +386,8 @@ namespace
 // The package function NAME called with args(first:end): the arguments described, the Rust
 // call, its error raised or its outputs returned.
 static octave_value_list
-call_package (const std::string& name, const octave_value_list& args, octave_idx_type first,
-              int nargout)
+call_package (const char *name, std::size_t name_len, const octave_value_list& args,
+              octave_idx_type first, int nargout)
 {
   arena a;
   // The top-level values: inline for up to 8 arguments.
@@ -358,10 +401,15 @@ call_package (const std::string& name, const octave_value_list& args, octave_idx
     describe (args(i), values[i - first], a, 0);
 
   outputs out;
-  const cagd_sink sink = { &out, sink_real, sink_strings };
+  const cagd_sink sink = { &out, sink_real, sink_strings, sink_interrupted };
   cagd_error err = { nullptr, nullptr };
-  const int status = cagd_call (name.data (), name.size (), values, nvals,
-                                nargout, &sink, &err);
+  const int status = cagd_call (name, name_len, values, nvals, nargout, &sink, &err);
+  if (out.interrupt)
+    {
+      // Ctrl-C: Octave's own interrupt, whatever the call returned.
+      cagd_error_free (&err);
+      std::rethrow_exception (out.interrupt);
+    }
   if (status != 0)
     {
       // Copy and free the Rust strings first: error_with_id does not return.
@@ -400,41 +448,42 @@ Use the package's functions (@code{help cagd_bezier}, @code{help deCasteljau}, @
 {
   if (args.length () < 1 || ! args(0).is_string ())
     error_with_id ("cagd:nargin", "__cagd__: the first argument must be a function name");
-  return call_package (args(0).string_value (), args, 1, nargout);
+  const std::string name = args(0).string_value ();
+  return call_package (name.data (), name.size (), args, 1, nargout);
 }
 
 // PKG_ADD: autoload ("cagd_bspeval", "__cagd__.oct");
 DEFUN_DLD (cagd_bspeval, args, nargout, CAGD_DOC_cagd_bspeval)
 {
-  return call_package ("cagd_bspeval", args, 0, nargout);
+  return call_package ("cagd_bspeval", sizeof "cagd_bspeval" - 1, args, 0, nargout);
 }
 
 // PKG_ADD: autoload ("cagd_basisfun", "__cagd__.oct");
 DEFUN_DLD (cagd_basisfun, args, nargout, CAGD_DOC_cagd_basisfun)
 {
-  return call_package ("cagd_basisfun", args, 0, nargout);
+  return call_package ("cagd_basisfun", sizeof "cagd_basisfun" - 1, args, 0, nargout);
 }
 
 // PKG_ADD: autoload ("cagd_basisfunder", "__cagd__.oct");
 DEFUN_DLD (cagd_basisfunder, args, nargout, CAGD_DOC_cagd_basisfunder)
 {
-  return call_package ("cagd_basisfunder", args, 0, nargout);
+  return call_package ("cagd_basisfunder", sizeof "cagd_basisfunder" - 1, args, 0, nargout);
 }
 
 // PKG_ADD: autoload ("cagd_bspderiv", "__cagd__.oct");
 DEFUN_DLD (cagd_bspderiv, args, nargout, CAGD_DOC_cagd_bspderiv)
 {
-  return call_package ("cagd_bspderiv", args, 0, nargout);
+  return call_package ("cagd_bspderiv", sizeof "cagd_bspderiv" - 1, args, 0, nargout);
 }
 
 // PKG_ADD: autoload ("cagd_findspan", "__cagd__.oct");
 DEFUN_DLD (cagd_findspan, args, nargout, CAGD_DOC_cagd_findspan)
 {
-  return call_package ("cagd_findspan", args, 0, nargout);
+  return call_package ("cagd_findspan", sizeof "cagd_findspan" - 1, args, 0, nargout);
 }
 
 // PKG_ADD: autoload ("cagd_nrbeval", "__cagd__.oct");
 DEFUN_DLD (cagd_nrbeval, args, nargout, CAGD_DOC_cagd_nrbeval)
 {
-  return call_package ("cagd_nrbeval", args, 0, nargout);
+  return call_package ("cagd_nrbeval", sizeof "cagd_nrbeval" - 1, args, 0, nargout);
 }

@@ -5,8 +5,10 @@
 %
 % The copy holds every .m file of octave-nurbs (and its private/ directory), its oct-files (run
 % as they are: their C++ cannot be renamed) and the test files its build extracted from the C++
-% sources (*-tst). octave-nurbs itself is not loaded: the copy is put on the path for the run
-% and removed afterwards, so each call of a renamed function reaches the cagd package.
+% sources (*-tst). The caller's process must not have octave-nurbs loaded
+% (cagd_test_nurbs_copies checks it): the copy is put on the path for the run and removed
+% afterwards, so each call of a renamed function reaches the cagd package, every other call the
+% copy.
 %
 % tests = [passed, total] over every %!test/%!assert/%!error/... block (Octave's test ()),
 % demos = [passed, total] over every %!demo block (each run in a function of its own, figures

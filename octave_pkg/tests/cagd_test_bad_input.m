@@ -56,6 +56,19 @@ function cagd_test_bad_input ()
     "Inf parameter",            @() cagd_bezier (P, Inf),                   "cagd:nonfinite", "t: value 1 is not finite (inf)"
     "NaN Lagrange parameter",   @() Lagrange ([0 1], 1, NaN),               "cagd:nonfinite", "not finite"
     "NaN B-spline parameter",   @() cagd_bspline (2, [0 1 2], [], NaN),     "cagd:nonfinite", "t: value 1 is not finite (NaN)"
+    % finite arguments, results beyond the doubles: refused, never returned as Inf or NaN
+    "Bezier at t = 5",          @() cagd_bezier ([1e308 -1e308], 5),        "cagd:overflow", "t: Bézier curve points: value at index 0 is not a finite double (-inf)"
+    "Hermite to B-spline",      @() cagd_convert (ones (2, 4) * 1.7e308, "hermite", "bspline"), "cagd:overflow", "G: the geometry's Bézier points"
+    "derivative of ±1.7e308",   @() cagd_bezier_derivative ([1.7e308 -1.7e308 1.7e308], 0.5), "cagd:overflow", "Bézier derivative control points"
+    "weighted point w P",       @() cagd_nurbs (1, [1e300 0], [1e10 1], [0 0 1 1], 0.5), "cagd:overflow", "w: NURBS weights"
+    "knots 5e-324 apart",       @() cagd_bspline (2, [0 1 2 3], [0 0 0 5e-324 1e-320 1e-320 1e-320], 1e-321), "cagd:overflow", "U: knot vector"
+    "Coons of 1.7e308",         @() cagd_coons (1.7e308 * ones (3, 2), 1.7e308 * ones (3, 2), 1.7e308 * ones (3, 2), 1.7e308 * ones (3, 2), 0.5, 0.5), "cagd:overflow", "X: the result overflows the range of doubles"
+    "Bernstein at 1e103",       @() cagd_bernstein (3, 1e103),              "cagd:overflow", "B: the result overflows"
+    "Lagrange at 1e300",        @() Lagrange ([0 1 2], 1, 1e300),           "cagd:overflow", "Lagrange basis value"
+    "vrednostCoons at 1e300",   @() vrednostCoons (1e300, 1e300, P1, P2, P1, P3, P1, P3, P2, P4), "cagd:overflow", "vrednostCoons: T: value at index 0 is not a finite double"
+    "bilinearna at 1e308",      @() bilinearna ([0 0 0 1 0 0; 0 1 0 1 1 1], 1e308, 1e308, 3), "cagd:overflow", "bilinearna: L:"
+    "krpaGordon of 1.7e308",    @() krpaGordon (1.7e308 * ones (3, 10), 1.7e308 * ones (3, 10), 1.7e308 * ones (2, 6), [0 1], [0 1], 5), "cagd:overflow", "krpaGordon: R:"
+    "deCasteljau at the max",   @() deCasteljau (realmax * ones (1, 30), 7), "cagd:overflow", "Bézier curve points"
     % values
     "fractional N",             @() deCasteljau ([0 1], 2.5),               "cagd:value", "N: 2.5 is not a non-negative integer"
     "negative N",               @() deCasteljau ([0 1], -1),                "cagd:value", "N: -1 is not a non-negative integer"
@@ -96,6 +109,8 @@ function cagd_test_bad_input ()
     "patch grid 25e6",          @() cagd_bezier_patch (ones (3, 2, 2), rand (1, 5000), rand (1, 5000)), "cagd:limit", "max_grid_points"
     "NURBS grid 16e6",          @() cagd_nrbeval (srf, {linspace(0, 1, 4000), linspace(0, 1, 4000)}), "cagd:limit", "16000000 exceeds the limit of 1000000"
     "exact work",               @() cagd_bezier (zeros (1, 1001), linspace (0, 1, 1e5), "exact"), "cagd:limit", "max_"
+    "thesis work",              @() deCasteljau (zeros (1, 1001), 1e6),     "cagd:limit", "N: estimated operations: 1002001000000 exceeds the limit of 2000000000 (raise it with cagd_limits (\"max_work\", VALUE)); expected fewer points or a lower degree"
+    "twin work",                @() cagd_bspeval (1000, zeros (1, 1001), [zeros(1, 1001) ones(1, 1001)], linspace (0, 1, 1e6)), "cagd:limit", "u: estimated operations:"
     % arguments
     "too few arguments",        @() deCasteljau ([0 1]),                    "cagd:nargin", "deCasteljau: called with 1 argument(s); expected 2"
     "too many arguments",       @() krpaCoons (1, 2, 3, 4, 5, 6, 7, 8, 9),  "cagd:nargin", "expected 8"

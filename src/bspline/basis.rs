@@ -325,12 +325,40 @@ pub fn curve_point_cost(
     knot_bits: u128,
     coefficient_bits: u128,
 ) -> Cost {
-    Cost::new(
-        basis_cost(p, param_bits, knot_bits)
-            .ops()
-            .saturating_add((2 * d as u128).saturating_mul(p as u128 + 1)),
-        polynomial_bits(p, span_bits(param_bits, knot_bits), coefficient_bits),
-    )
+    tensor_point_cost(&[(p, param_bits)], d, knot_bits, coefficient_bits)
+}
+
+/// The cost of the point of a tensor product of B-splines in `d` coordinates, one
+/// `(degree p_k, param_bits_k)` per direction (a curve, a surface, a volume): the basis of
+/// each direction ([`basis_cost`]) and their combination with the `Π (p_k + 1)` control
+/// points, `2d Π (p_k + 1)` operations, on numbers as large as the bases' together and
+/// `coefficient_bits`. One direction is [`curve_point_cost`], two
+/// [`BSplineSurface::point_cost`](crate::bspline::BSplineSurface::point_cost).
+///
+/// ```
+/// use cagd::cost::Cost;
+/// use cagd::bspline::{basis_cost, tensor_point_cost};
+/// // A tricubic volume in 3-D: three bases, then 2 · 3 · 64 products and sums.
+/// let c = tensor_point_cost(&[(3, 0), (3, 0), (3, 0)], 3, 0, 0);
+/// assert_eq!(c.ops(), 3 * basis_cost(3, 0, 0).ops() + 2 * 3 * 64);
+/// ```
+pub fn tensor_point_cost(
+    directions: &[(usize, u128)],
+    d: usize,
+    knot_bits: u128,
+    coefficient_bits: u128,
+) -> Cost {
+    let bases = directions
+        .iter()
+        .map(|&(p, bits)| basis_cost(p, bits, knot_bits));
+    let terms = directions
+        .iter()
+        .fold(1u128, |acc, &(p, _)| acc.saturating_mul(p as u128 + 1));
+    let (ops, bits) = bases.fold(
+        ((2 * d as u128).saturating_mul(terms), coefficient_bits),
+        |(ops, bits), b| (ops.saturating_add(b.ops()), bits.saturating_add(b.bits())),
+    );
+    Cost::new(ops, bits)
 }
 
 /// The bits of one level of the triangular scheme, `(u − u_i)/(u_{i+p} − u_i)`.

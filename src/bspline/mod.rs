@@ -30,7 +30,7 @@ mod triangle;
 
 pub use basis::{
     basis_all, basis_cost, basis_functions, basis_functions_into, cox_de_boor, curve_point_cost,
-    find_span,
+    find_span, tensor_point_cost,
 };
 pub use boehm_scheme::BoehmStep;
 pub use compatible::make_compatible;

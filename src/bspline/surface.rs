@@ -143,14 +143,11 @@ impl<T: Scalar> BSplineSurface<T> {
             .map(|c| crate::cost::max_bits(c.iter()))
             .max()
             .unwrap_or(0);
-        let (bu, bv) = (
-            super::basis_cost(p, u_bits, knot_bits),
-            super::basis_cost(q, v_bits, knot_bits),
-        );
-        let sum = 2 * (p as u128 + 1) * (q as u128 + 1) * self.coords.len() as u128;
-        crate::cost::Cost::new(
-            bu.ops().saturating_add(bv.ops()).saturating_add(sum),
-            bu.bits().saturating_add(bv.bits()).saturating_add(net_bits),
+        super::tensor_point_cost(
+            &[(p, u_bits), (q, v_bits)],
+            self.coords.len(),
+            knot_bits,
+            net_bits,
         )
     }
 

@@ -431,11 +431,7 @@ impl<T: Scalar> Curve<T> for NurbsCurve<T> {
     /// The homogeneous B-spline's cost ([`Curve::point_cost`] of
     /// [`homogeneous`](NurbsCurve::homogeneous)) and `d` divisions by the weight.
     fn point_cost(&self, param_bits: u128) -> crate::cost::Cost {
-        let h = Curve::point_cost(&self.homogeneous, param_bits);
-        h.and(crate::cost::Cost::new(
-            self.dim() as u128,
-            h.bits().saturating_mul(2),
-        ))
+        super::rational_point_cost(Curve::point_cost(&self.homogeneous, param_bits), self.dim())
     }
 
     /// [`NurbsCurve::eval_many_into`]: the fast batch (reciprocals per span, one division and no

@@ -60,6 +60,22 @@ pub fn homogenize<T: Scalar>(
     finish_homogeneous(what, h.nrows() - 1, h)
 }
 
+/// The cost of a rational point in `d` coordinates from its homogeneous point, whose cost is
+/// `homogeneous`: that, and `d` divisions by the weight on numbers twice as large.
+/// [`NurbsCurve`]'s and [`NurbsSurface`]'s `point_cost`.
+///
+/// ```
+/// use cagd::cost::Cost;
+/// let h = cagd::bspline::curve_point_cost(2, 4, 0, 0, 0);
+/// assert_eq!(cagd::nurbs::rational_point_cost(h, 3).ops(), h.ops() + 3);
+/// ```
+pub fn rational_point_cost(homogeneous: crate::cost::Cost, d: usize) -> crate::cost::Cost {
+    homogeneous.and(crate::cost::Cost::new(
+        d as u128,
+        homogeneous.bits().saturating_mul(2),
+    ))
+}
+
 /// The homogeneous control points `h` (weights in row `weight_row`) with the weights scaled
 /// into a safe range, then checked: a rational curve does not change when all its weights
 /// (and weighted points) are multiplied by one factor, so weights whose largest lies outside

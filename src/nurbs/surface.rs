@@ -170,11 +170,7 @@ impl<T: Scalar> NurbsSurface<T> {
     /// The cost of one point `S(u, v)`: the homogeneous surface's
     /// ([`BSplineSurface::point_cost`]) and `d` divisions by the weight.
     pub fn point_cost(&self, u_bits: u128, v_bits: u128) -> crate::cost::Cost {
-        let h = self.homogeneous.point_cost(u_bits, v_bits);
-        h.and(crate::cost::Cost::new(
-            self.dim() as u128,
-            h.bits().saturating_mul(2),
-        ))
+        super::rational_point_cost(self.homogeneous.point_cost(u_bits, v_bits), self.dim())
     }
 
     /// The point `S(u, v)` for `(u, v)` in the domain: [`eval`](Self::eval)'s value, bit for

@@ -7,6 +7,8 @@
  * error identifier and message in *error, which the caller frees with cagd_error_free after
  * copying them. No Rust panic leaves cagd_call (each is caught and reported as cagd:internal),
  * and the Rust side never raises an Octave error: the caller does, after cagd_call returned.
+ * Long work asks the sink's `interrupted` callback every few milliseconds and stops (the
+ * error cagd:interrupted) when it answers non-zero: the caller then raises Octave's interrupt.
  *
  * The layouts must match the #[repr(C)] structs of crates/cagd-octave-ffi/src/lib.rs.
  */
@@ -44,17 +46,21 @@ typedef struct cagd_value
   size_t n_items;
 } cagd_value;
 
-/* The outputs. Both callbacks must not throw (they return NULL / non-zero on failure).
+/* The outputs. The callbacks must not throw (they return NULL / non-zero on failure).
  * real: a new zero-filled real array of size dims as output `index`; returns its data
  *       (valid until the call returns), NULL if it could not be allocated.
  * strings: a cell array of size dims holding the texts as char rows as output `index`;
- *       returns 0, non-zero on failure. */
+ *       returns 0, non-zero on failure.
+ * interrupted: non-zero when the user asked to stop (Ctrl-C); asked every few milliseconds of
+ *       long work, from the calling thread or another one (it must be safe on any thread);
+ *       may be NULL (never interrupted). */
 typedef struct cagd_sink
 {
   void *ctx;
   double *(*real) (void *ctx, size_t index, size_t ndims, const size_t *dims);
   int (*strings) (void *ctx, size_t index, size_t ndims, const size_t *dims,
                   const char *const *texts, const size_t *lens);
+  int (*interrupted) (void *ctx);
 } cagd_sink;
 
 /* An error: Octave identifier ("cagd:shape") and one-line message, NUL-terminated, owned by

@@ -35,6 +35,13 @@
 //! guarantee it relies on. The functions themselves are `cagd_octave_pkg::call`, which is
 //! `#![forbid(unsafe_code)]`, as is the core.
 //!
+//! # Ctrl-C
+//! The sink's `interrupted` callback is asked every few milliseconds of long work (the
+//! package's [`call_interruptible`](cagd_octave_pkg::call_interruptible)); the gateway reads
+//! Octave's pending signals there (`octave_quit`, its exception kept) and, when the call
+//! stopped, rethrows Octave's own interrupt after this call returned: Ctrl-C stops a package
+//! function as it stops Octave's own.
+//!
 //! # The session's limits
 //! The resource limits (`cagd_limits` in Octave) are one [`cagd::Limits`] value held here for
 //! the Octave process and passed to every call.
@@ -107,6 +114,9 @@ pub type StringsFn = unsafe extern "C" fn(
     lens: *const usize,
 ) -> c_int;
 
+/// Whether the user asked to stop: non-zero for yes; safe on any thread.
+pub type InterruptedFn = unsafe extern "C" fn(ctx: *mut c_void) -> c_int;
+
 /// The outputs (`struct cagd_sink` in the header).
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
@@ -117,6 +127,29 @@ pub struct CagdSink {
     pub real: Option<RealFn>,
     /// Sets a cell array of strings.
     pub strings: Option<StringsFn>,
+    /// Asks whether the user asked to stop (Ctrl-C); null: never.
+    pub interrupted: Option<InterruptedFn>,
+}
+
+/// The gateway's interrupt callback with its context, asked by the computation between
+/// chunks of its work (on the calling thread, or on a worker thread of a parallel loop).
+struct Interrupt {
+    asked: Option<InterruptedFn>,
+    ctx: *mut c_void,
+}
+
+// SAFETY: the header requires the callback to be safe on any thread; the context pointer is
+// only handed back to it, never dereferenced here.
+unsafe impl Sync for Interrupt {}
+
+impl Interrupt {
+    fn asked(&self) -> bool {
+        match self.asked {
+            // SAFETY: the gateway's callback, noexcept and safe on any thread (header).
+            Some(f) => unsafe { f(self.ctx) != 0 },
+            None => false,
+        }
+    }
 }
 
 /// An error (`struct cagd_error` in the header): identifier and message, owned by this
@@ -188,19 +221,9 @@ unsafe fn value<'a>(v: &'a CagdValue, depth: usize) -> Result<Value<'a>, PkgErro
                 .map(|item| unsafe { value(item, depth + 1) })
                 .collect::<Result<_, _>>()?,
         }),
-        CAGD_STRUCT => {
-            let names = unsafe { slice(v.names, v.n_items) }?;
-            let mut fields = Vec::with_capacity(names.len());
-            for (name, item) in names.iter().zip(items()?) {
-                if name.is_null() {
-                    return Err(PkgError::new(Kind::Internal, "__cagd__: null field name"));
-                }
-                // SAFETY: a non-null NUL-terminated field name, valid for the call.
-                let name = unsafe { CStr::from_ptr(*name) }.to_str().unwrap_or("?");
-                fields.push((name, unsafe { value(item, depth + 1) }?));
-            }
-            Ok(Value::Struct { fields })
-        }
+        CAGD_STRUCT => Ok(Value::Struct {
+            fields: unsafe { fields(v, depth) }?,
+        }),
         CAGD_OTHER => Ok(Value::Other {
             class: std::str::from_utf8(text()?).unwrap_or("?"),
         }),
@@ -216,6 +239,29 @@ unsafe fn value<'a>(v: &'a CagdValue, depth: usize) -> Result<Value<'a>, PkgErro
             format!("__cagd__: malformed argument (kind {kind})"),
         )),
     }
+}
+
+/// The fields of a `CAGD_STRUCT` value: its names with their values.
+///
+/// # Safety
+/// As [`value`].
+unsafe fn fields<'a>(
+    v: &'a CagdValue,
+    depth: usize,
+) -> Result<Vec<(&'a str, Value<'a>)>, PkgError> {
+    // SAFETY: the names and items of a struct, as the header documents, valid for `'a`.
+    let names = unsafe { slice(v.names, v.n_items) }?;
+    let items = unsafe { slice(v.items, v.n_items) }?;
+    let mut fields = Vec::with_capacity(names.len());
+    for (name, item) in names.iter().zip(items) {
+        if name.is_null() {
+            return Err(PkgError::new(Kind::Internal, "__cagd__: null field name"));
+        }
+        // SAFETY: a non-null NUL-terminated field name, valid for the call.
+        let name = unsafe { CStr::from_ptr(*name) }.to_str().unwrap_or("?");
+        fields.push((name, unsafe { value(item, depth + 1) }?));
+    }
+    Ok(fields)
 }
 
 /// Arguments held without an allocation.
@@ -375,62 +421,34 @@ pub unsafe extern "C" fn cagd_call(
 ) -> c_int {
     let run = || -> Result<(), PkgError> {
         // SAFETY: the caller's guarantees above.
-        let name = unsafe { slice(name.cast::<u8>(), name_len) }?;
-        let name = if name.is_ascii() {
-            // SAFETY: ASCII is UTF-8.
-            unsafe { std::str::from_utf8_unchecked(name) }
-        } else {
-            std::str::from_utf8(name).unwrap_or("?")
-        };
+        let name = unsafe { name_str(name, name_len) }?;
         let raw_args = unsafe { slice(args, nargs) }?;
         // Up to 8 arguments without an allocation (a call for one point costs about a
         // microsecond; an allocation is a tenth of it).
-        let mut few = FewValues::new();
-        let mut many = Vec::new();
-        let values: &[Value<'_>] = if raw_args.len() <= FEW {
-            for v in raw_args {
-                few.push(unsafe { value(v, 0) }?);
-            }
-            few.as_slice()
-        } else {
-            for v in raw_args {
-                many.push(unsafe { value(v, 0) }?);
-            }
-            &many
-        };
+        let (mut few, mut many) = (FewValues::new(), Vec::new());
+        // SAFETY: the caller's guarantees above.
+        let values = unsafe { read_args(raw_args, &mut few, &mut many) }?;
         if sink.is_null() {
             return Err(PkgError::new(Kind::Internal, "__cagd__: no sink"));
         }
         // SAFETY: non-null, valid for the call.
-        let mut out = FfiSink {
-            raw: unsafe { &*sink },
+        let raw = unsafe { &*sink };
+        let interrupt = Interrupt {
+            asked: raw.interrupted,
+            ctx: raw.ctx,
         };
+        let mut out = FfiSink { raw };
         if name == "__panic__" {
             // The boundary's own test: a panic must come back as cagd:internal.
             panic!("a deliberate panic, to test the boundary");
         }
         let mut limits = LIMITS.lock().unwrap_or_else(|p| p.into_inner());
         let nargout = usize::try_from(nargout).unwrap_or(0);
-        cagd_octave_pkg::call(name, values, nargout, &mut limits, &mut out)
+        let asked = || interrupt.asked();
+        cagd_octave_pkg::call_interruptible(name, (values, nargout), &mut limits, &asked, &mut out)
     };
     quiet_panics();
-    let result = match catch_unwind(AssertUnwindSafe(run)) {
-        Ok(r) => r,
-        Err(payload) => {
-            let at = PANIC_AT
-                .with(|p| p.borrow_mut().take())
-                .map(|l| format!(" ({l})"))
-                .unwrap_or_default();
-            Err(PkgError::new(
-                Kind::Internal,
-                format!(
-                    "__cagd__: internal error: {}{at}; this is a bug in the cagd package",
-                    panic_message(payload.as_ref())
-                ),
-            ))
-        }
-    };
-    match result {
+    match catch_unwind(AssertUnwindSafe(run)).unwrap_or_else(|payload| Err(caught(payload))) {
         Ok(()) => 0,
         Err(e) => {
             if !error.is_null() {
@@ -445,6 +463,60 @@ pub unsafe extern "C" fn cagd_call(
             1
         }
     }
+}
+
+/// The name of a package function: `len` bytes at `name`, UTF-8 (`?` if not).
+///
+/// # Safety
+/// `name` points to `len` bytes valid for `'a` (or `len` is 0).
+unsafe fn name_str<'a>(name: *const c_char, len: usize) -> Result<&'a str, PkgError> {
+    // SAFETY: the caller's guarantee.
+    let name = unsafe { slice(name.cast::<u8>(), len) }?;
+    Ok(if name.is_ascii() {
+        // SAFETY: ASCII is UTF-8.
+        unsafe { std::str::from_utf8_unchecked(name) }
+    } else {
+        std::str::from_utf8(name).unwrap_or("?")
+    })
+}
+
+/// The arguments as [`Value`]s: in `few` (no allocation) for up to [`FEW`] of them, else in
+/// `many`.
+///
+/// # Safety
+/// As [`value`], for every argument.
+unsafe fn read_args<'a, 'v>(
+    raw: &'a [CagdValue],
+    few: &'v mut FewValues<'a>,
+    many: &'v mut Vec<Value<'a>>,
+) -> Result<&'v [Value<'a>], PkgError> {
+    if raw.len() <= FEW {
+        for v in raw {
+            // SAFETY: the caller's guarantee.
+            few.push(unsafe { value(v, 0) }?);
+        }
+        return Ok(few.as_slice());
+    }
+    for v in raw {
+        // SAFETY: the caller's guarantee.
+        many.push(unsafe { value(v, 0) }?);
+    }
+    Ok(many)
+}
+
+/// A caught panic as the error `cagd:internal`, with where it happened.
+fn caught(payload: Box<dyn std::any::Any + Send>) -> PkgError {
+    let at = PANIC_AT
+        .with(|p| p.borrow_mut().take())
+        .map(|l| format!(" ({l})"))
+        .unwrap_or_default();
+    PkgError::new(
+        Kind::Internal,
+        format!(
+            "__cagd__: internal error: {}{at}; this is a bug in the cagd package",
+            panic_message(payload.as_ref())
+        ),
+    )
 }
 
 /// Frees the strings of an error set by [`cagd_call`] (and nulls them).
@@ -475,6 +547,26 @@ mod tests {
     /// A sink over vectors, through the C callbacks.
     struct Outputs {
         real: Vec<(usize, Vec<usize>, Vec<f64>)>,
+        interrupted: Option<InterruptedFn>,
+        asked: std::sync::atomic::AtomicUsize,
+    }
+
+    impl Outputs {
+        fn new() -> Self {
+            Outputs {
+                real: vec![],
+                interrupted: None,
+                asked: std::sync::atomic::AtomicUsize::new(0),
+            }
+        }
+    }
+
+    /// Says "stop" from the third question on (as Ctrl-C pressed during the work).
+    unsafe extern "C" fn stop_on_third(ctx: *mut c_void) -> c_int {
+        // SAFETY: the test passes its `Outputs`; only the atomic counter is touched.
+        let out = unsafe { &*ctx.cast::<Outputs>() };
+        let k = out.asked.fetch_add(1, std::sync::atomic::Ordering::SeqCst);
+        c_int::from(k >= 2)
     }
 
     unsafe extern "C" fn real_cb(
@@ -512,6 +604,7 @@ mod tests {
             ctx: (out as *mut Outputs).cast(),
             real: Some(real_cb),
             strings: None,
+            interrupted: out.interrupted,
         };
         let mut error = CagdError {
             id: std::ptr::null_mut(),
@@ -550,7 +643,7 @@ mod tests {
         let n = [3.0];
         let (pd, nd) = ([3usize, 4], [1usize, 1]);
         let args = [real_value(&pd, &p), real_value(&nd, &n)];
-        let mut out = Outputs { real: vec![] };
+        let mut out = Outputs::new();
         call("deCasteljau", &args, &mut out).unwrap();
         assert_eq!(out.real[0].1, vec![3, 3]);
         assert_eq!(&out.real[0].2[3..6], &[3.5, 1.5, 0.75]);
@@ -558,7 +651,7 @@ mod tests {
 
     #[test]
     fn errors_and_panics_come_back_as_values() {
-        let mut out = Outputs { real: vec![] };
+        let mut out = Outputs::new();
         let (id, message) = call("deCasteljau", &[], &mut out).unwrap_err();
         assert_eq!(id, "cagd:nargin");
         assert!(
@@ -578,5 +671,28 @@ mod tests {
         let (id, message) = call("tenzor", &[other], &mut out).unwrap_err();
         assert_eq!(id, "cagd:class");
         assert!(message.contains("B: int32 is not accepted"), "{message}");
+    }
+
+    #[test]
+    fn long_work_asks_the_callback_and_stops() {
+        // deCasteljau of a degree-600 curve at 100 points: chunks of 11 points, the
+        // callback asked before each; it says stop on the third question.
+        let p = vec![1.0; 601];
+        let (pd, nd) = ([1usize, 601], [1usize, 1]);
+        let n = [100.0];
+        let args = [real_value(&pd, &p), real_value(&nd, &n)];
+        let mut out = Outputs::new();
+        out.interrupted = Some(stop_on_third);
+        let (id, message) = call("deCasteljau", &args, &mut out).unwrap_err();
+        assert_eq!(
+            (id.as_str(), message.as_str()),
+            ("cagd:interrupted", "deCasteljau: interrupted")
+        );
+        assert_eq!(out.asked.load(std::sync::atomic::Ordering::SeqCst), 3);
+        // Without the callback the same call runs to its end.
+        let mut out = Outputs::new();
+        call("deCasteljau", &args, &mut out).unwrap();
+        assert_eq!(out.real[0].2.len(), 100);
+        assert!(out.real[0].2.iter().all(|&x| (x - 1.0).abs() < 1e-12));
     }
 }

@@ -4,6 +4,7 @@
 //! (`cagd:empty`), a wrong size (`cagd:shape`), NaN and ±Inf (`cagd:nonfinite`) and counts
 //! that are not non-negative integers (`cagd:value`) before anything is computed or allocated.
 
+use cagd::cost::Cost;
 use cagd::limits::Limits;
 use nalgebra::DMatrix;
 use ndarray::{ArrayView2, ArrayViewD, IxDyn, ShapeBuilder};
@@ -16,7 +17,6 @@ use crate::value::{size_str, Real, Value};
 const MAX_EXACT_INTEGER: f64 = 9_007_199_254_740_992.0;
 
 /// The call of one package function.
-#[derive(Debug)]
 pub struct Call<'c, 'a> {
     /// The Octave name of the function (for messages).
     pub name: &'static str,
@@ -26,6 +26,24 @@ pub struct Call<'c, 'a> {
     pub nargout: usize,
     /// The resource limits of the session (`cagd_limits`).
     pub limits: Limits,
+    /// Whether the user asked to stop (Octave's Ctrl-C), asked every few milliseconds of work.
+    pub interrupt: &'c (dyn Fn() -> bool + Sync),
+}
+
+impl std::fmt::Debug for Call<'_, '_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Call")
+            .field("name", &self.name)
+            .field("args", &self.args)
+            .field("nargout", &self.nargout)
+            .field("limits", &self.limits)
+            .finish_non_exhaustive()
+    }
+}
+
+/// The interrupt of a call nobody can interrupt.
+fn never() -> bool {
+    false
 }
 
 /// The form of a real double array, for messages.
@@ -39,7 +57,61 @@ impl<'c, 'a> Call<'c, 'a> {
             args,
             nargout: nargout.max(1),
             limits,
+            interrupt: &never,
         }
+    }
+
+    /// The same call, asking `interrupted` between chunks of its work: when it answers `true`
+    /// the function stops with [`Kind::Interrupted`].
+    pub fn with_interrupt(self, interrupted: &'c (dyn Fn() -> bool + Sync)) -> Self {
+        Call {
+            interrupt: interrupted,
+            ..self
+        }
+    }
+
+    /// The operation layer's context of this call: its limits and its interrupt.
+    pub fn context(&self) -> cagd_ops::Context<'c> {
+        cagd_ops::Context::new(self.limits).with_interrupt(self.interrupt)
+    }
+
+    /// Stops with [`Kind::Interrupted`] if the user asked to.
+    ///
+    /// # Errors
+    /// [`Kind::Interrupted`].
+    pub fn check_interrupt(&self) -> Result<()> {
+        if (self.interrupt)() {
+            return Err(PkgError::new(Kind::Interrupted, "interrupted"));
+        }
+        Ok(())
+    }
+
+    /// Fills `out` from `items` in chunks of work between which the user may interrupt:
+    /// `fill(chunk, buffer)` for consecutive chunks of `items` and the matching buffers of `per`
+    /// outputs per item, each chunk about [`cagd_ops::ops::CHECK_WORK`] operations of
+    /// `per_item` each (at once for a few items, and once with nothing for no items, so that
+    /// `fill` checks what it checks).
+    ///
+    /// # Errors
+    /// `fill`'s; [`Kind::Interrupted`].
+    pub fn in_chunks<I, O>(
+        &self,
+        (items, per_item): (&[I], Cost),
+        (out, per): (&mut [O], usize),
+        mut fill: impl FnMut(&[I], &mut [O]) -> Result<()>,
+    ) -> Result<()> {
+        if items.len() <= cagd_octave::octave_nurbs::FEW_ITEMS {
+            return fill(items, out);
+        }
+        let chunk = cagd_ops::ops::chunk_points(per_item.weigh(false));
+        let size = chunk.saturating_mul(per.max(1));
+        for (k, (part, buffer)) in items.chunks(chunk).zip(out.chunks_mut(size)).enumerate() {
+            if k > 0 {
+                self.check_interrupt()?;
+            }
+            fill(part, buffer)?;
+        }
+        Ok(())
     }
 
     /// Checks the number of arguments: `min..=max`; `usage` names them.
@@ -138,6 +210,7 @@ impl<'c, 'a> Call<'c, 'a> {
             args: &self.args[..self.args.len().saturating_sub(1)],
             nargout: self.nargout,
             limits: self.limits,
+            interrupt: self.interrupt,
         }
     }
 
@@ -207,14 +280,20 @@ impl<'c, 'a> Call<'c, 'a> {
         Ok(self.limits.check_degree(what, degree)?)
     }
 
-    /// About `points · per_point` operations within the limits.
+    /// The work `cost` (in doubles) within the limits, refused as every front end refuses
+    /// it: the operation layer's check ([`cagd_ops::Context::check_cost`]) about the argument
+    /// `what`, `ARGUMENT: estimated operations: W exceeds the limit of L (raise it with
+    /// cagd_limits ("max_work", VALUE)); expected fewer points or a lower degree`.
     ///
     /// # Errors
     /// [`Kind::Limit`].
-    pub fn check_work(&self, what: &'static str, points: usize, per_point: usize) -> Result<()> {
-        Ok(self
-            .limits
-            .check_work(what, points as u128 * per_point as u128)?)
+    pub fn check_cost(&self, what: &'static str, cost: Cost) -> Result<()> {
+        if cost.weigh(false) <= u128::from(self.limits.max_work) {
+            return Ok(());
+        }
+        self.context()
+            .check_cost(cagd_ops::Role::T, cost, false)
+            .map_err(|e| crate::error::op_error(&[(cagd_ops::Role::T, what)], e))
     }
 }
 

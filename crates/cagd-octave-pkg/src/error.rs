@@ -43,6 +43,15 @@ pub enum Kind {
     Struct,
     /// A size over a resource limit (`cagd:limit`; see `cagd_limits`).
     Limit,
+    /// A result that overflows the range of doubles although the arguments are finite
+    /// (`cagd:overflow`): library error `Overflow`, the operation layer's check of every answer,
+    /// the thesis functions' check of their results.
+    Overflow,
+    /// The computation was interrupted (`cagd:interrupted`): in Octave, Ctrl-C stops the
+    /// function with Octave's own interrupt instead (the gateway rethrows it), so this
+    /// identifier is seen only by a caller of [`call_interruptible`](crate::call_interruptible)
+    /// whose interrupt answered `true`.
+    Interrupted,
     /// An output that could not be allocated (`cagd:memory`).
     Memory,
     /// A fault of the package itself, such as a caught Rust panic (`cagd:internal`).
@@ -51,7 +60,7 @@ pub enum Kind {
 
 impl Kind {
     /// Every kind.
-    pub const ALL: [Kind; 17] = [
+    pub const ALL: [Kind; 19] = [
         Kind::Nargin,
         Kind::Class,
         Kind::Empty,
@@ -67,6 +76,8 @@ impl Kind {
         Kind::Singular,
         Kind::Struct,
         Kind::Limit,
+        Kind::Overflow,
+        Kind::Interrupted,
         Kind::Memory,
         Kind::Internal,
     ];
@@ -89,6 +100,8 @@ impl Kind {
             Kind::Singular => "singular",
             Kind::Struct => "struct",
             Kind::Limit => "limit",
+            Kind::Overflow => "overflow",
+            Kind::Interrupted => "interrupted",
             Kind::Memory => "memory",
             Kind::Internal => "internal",
         }
@@ -174,7 +187,9 @@ impl From<cagd_ops::Kind> for Kind {
         use cagd_ops::Kind as K;
         match kind {
             K::Shape => Kind::Shape,
-            K::NonFinite | K::Overflow => Kind::NonFinite,
+            K::NonFinite => Kind::NonFinite,
+            K::Overflow => Kind::Overflow,
+            K::Interrupted => Kind::Interrupted,
             K::Domain => Kind::Domain,
             K::Knots => Kind::Knots,
             K::Weights => Kind::Weights,
@@ -187,6 +202,27 @@ impl From<cagd_ops::Kind> for Kind {
             _ => Kind::Value,
         }
     }
+}
+
+/// An operation's error as the package raises it: `ARGUMENT: PROBLEM; expected FORM`, the
+/// argument named as the function's usage names it, a limit with the call that raises it.
+pub fn op_error(names: &[(cagd_ops::Role, &str)], e: cagd_ops::OpError) -> PkgError {
+    if e.kind == cagd_ops::Kind::Interrupted {
+        // Octave's own interrupt in the session; the same words as every other function.
+        return PkgError::new(Kind::Interrupted, "interrupted");
+    }
+    let name = names
+        .iter()
+        .find(|(r, _)| *r == e.role)
+        .map_or_else(|| e.role.key(), |(_, n)| *n);
+    let mut problem = e.problem;
+    if let Some(limit) = e.limit {
+        problem = format!(
+            "{problem} (raise it with cagd_limits (\"{}\", VALUE))",
+            limit.field()
+        );
+    }
+    PkgError::arg(Kind::from(e.kind), name, problem, &e.expected)
 }
 
 #[cfg(test)]

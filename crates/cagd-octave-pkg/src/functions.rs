@@ -40,6 +40,7 @@ pub const FUNCTIONS: &[(&str, Function)] = &[
     ("cagd_bezier_patch", native::bezier_patch),
     ("cagd_coons", native::coons),
     ("cagd_gordon", native::gordon),
+    ("cagd_ruled", native::ruled),
     ("cagd_bspline", native::bspline),
     ("cagd_nurbs", native::nurbs_curve),
     ("cagd_spline", native::spline),
@@ -79,6 +80,37 @@ pub fn call(
     limits: &mut Limits,
     sink: &mut dyn Sink,
 ) -> Result<()> {
+    call_interruptible(name, (args, nargout), limits, &|| false, sink)
+}
+
+/// [`call`], asking `interrupted` every few milliseconds of long work (Octave's Ctrl-C, which
+/// the oct-file reads): when it answers `true` the function stops with
+/// [`Kind::Interrupted`] and writes nothing more.
+///
+/// # Errors
+/// As [`call`]; [`Kind::Interrupted`].
+///
+/// ```
+/// use cagd_octave_pkg::{call_interruptible, Kind, Real, Value, VecSink};
+/// let p = [0.0, 1.0];
+/// let t: Vec<f64> = (0..100_000).map(|k| k as f64 / 1e5).collect();
+/// let dims = [1, t.len()];
+/// let args = [
+///     Value::Real(Real { dims: &[1, 2], data: &p }),
+///     Value::Real(Real { dims: &dims, data: &t }),
+/// ];
+/// let mut limits = cagd::Limits::default();
+/// let e = call_interruptible("cagd_bezier", (&args, 1), &mut limits, &|| true, &mut VecSink::default())
+///     .unwrap_err();
+/// assert_eq!(e.kind, Kind::Interrupted);
+/// ```
+pub fn call_interruptible(
+    name: &str,
+    (args, nargout): (&[Value<'_>], usize),
+    limits: &mut Limits,
+    interrupted: &(dyn Fn() -> bool + Sync),
+    sink: &mut dyn Sink,
+) -> Result<()> {
     if name == "cagd_limits" {
         return limits::cagd_limits(args, nargout, limits, sink).map_err(|e| e.prefixed(name));
     }
@@ -99,7 +131,7 @@ pub fn call(
             format!("__cagd__: no package function '{name}'"),
         ));
     };
-    let c = Call::new(octave_name, args, nargout, *limits);
+    let c = Call::new(octave_name, args, nargout, *limits).with_interrupt(interrupted);
     function(&c, sink).map_err(|e| e.prefixed(octave_name))
 }
 

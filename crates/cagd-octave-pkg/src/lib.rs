@@ -17,8 +17,9 @@
 //!   `cagd_nrbkntins`, `cagd_nrbdegelev`, `cagd_nrbderiv`, `cagd_nrbdeval`, `cagd_nrbcoons`,
 //!   with the arguments, results and errors of octave-nurbs' functions of those names;
 //! - native functions ([`native`]): Bézier curves with derivatives, subdivision and
-//!   elevation, Bézier patches, Coons and Gordon patches with their parts, B-splines, NURBS,
-//!   interpolating splines, Hermite cubics, the cubic conversions, Bernstein values — exact
+//!   elevation, Bézier patches, Coons and Gordon patches with their parts, ruled surfaces,
+//!   B-splines, NURBS, interpolating splines, Hermite cubics, the cubic conversions, Bernstein
+//!   values — exact
 //!   with the option `"exact"` ([`number`]);
 //! - `cagd_limits`: the resource limits of the session ([`limits`]).
 //!
@@ -50,5 +51,5 @@ pub mod thesis;
 pub mod value;
 
 pub use error::{Kind, PkgError, Result};
-pub use functions::{call, FUNCTIONS};
+pub use functions::{call, call_interruptible, FUNCTIONS};
 pub use value::{Output, Real, Sink, Value, VecSink};

@@ -3,10 +3,10 @@
 //! outputs. Checks, their wording and the work estimates are the operation's; the package
 //! names each role as its function's usage does (`P`, `U`, `t`).
 
-use cagd_ops::{OpError, Operation, Report, Role};
+use cagd_ops::{Operation, Report, Role};
 
 use crate::args::Call;
-use crate::error::{Kind, PkgError, Result};
+use crate::error::Result;
 use crate::number::Number;
 
 /// How a function names the roles of its operation: `(role, Octave name)`.
@@ -21,25 +21,10 @@ pub fn execute<T: Number, O: Operation<T> + ?Sized>(
     names: Names,
     op: &O,
 ) -> Result<Report<T>> {
-    let mut cx = cagd_ops::Context::new(call.limits);
+    let mut cx = call.context();
     cagd_ops::execute(op, &mut cx)
         .map(|answer| answer.report)
         .map_err(|e| op_error(names, e))
 }
 
-/// An operation's error as the package raises it: `ARGUMENT: PROBLEM; expected FORM`, the
-/// argument named as the function's usage names it, a limit with the call that raises it.
-pub fn op_error(names: Names, e: OpError) -> PkgError {
-    let name = names
-        .iter()
-        .find(|(r, _)| *r == e.role)
-        .map_or_else(|| e.role.key(), |(_, n)| *n);
-    let mut problem = e.problem;
-    if let Some(limit) = e.limit {
-        problem = format!(
-            "{problem} (raise it with cagd_limits (\"{}\", VALUE))",
-            limit.field()
-        );
-    }
-    PkgError::arg(Kind::from(e.kind), name, problem, &e.expected)
-}
+pub use crate::error::op_error;

@@ -55,6 +55,9 @@ fn numbers(xs: &[f64]) -> String {
 enum Request {
     /// `decasteljau P --t t` / `cagd_bezier (P, t)` / `bezier_view (P, d, t, 11)`.
     Bezier { p: Points, t: f64 },
+    /// `decasteljau P --n n` / `cagd_bezier (P, linspace (0, 1, n))` /
+    /// `bezier_view (P, d, 0.5, n)`: `n` points of the curve.
+    BezierSamples { p: Points, n: usize },
     /// `bspline P --degree p --knots U --t 0.5` / `cagd_bspline (p, P, U, 0.5)` /
     /// `bspline_view (P, d, p, U, 11)`.
     BSpline {
@@ -109,6 +112,14 @@ fn through_cli(r: &Request) -> Option<Said> {
         Request::Bezier { p, t } => {
             vec!["decasteljau".into(), p.literal(), "--t".into(), number(*t)]
         }
+        Request::BezierSamples { p, n } => {
+            vec![
+                "decasteljau".into(),
+                p.literal(),
+                "--n".into(),
+                n.to_string(),
+            ]
+        }
         Request::BSpline { degree, p, knots } => vec![
             "bspline".into(),
             p.literal(),
@@ -150,6 +161,10 @@ fn through_octave(r: &Request) -> Option<Said> {
         Request::Bezier { p, t } => {
             vec![(vec![p.dim(), p.count()], p.flat()), (vec![1, 1], vec![*t])]
         }
+        Request::BezierSamples { p, n } => vec![
+            (vec![p.dim(), p.count()], p.flat()),
+            (vec![1, *n], cagd::linspace(0.0, 1.0, *n)),
+        ],
         Request::BSpline { degree, p, knots } => vec![
             (vec![1, 1], vec![*degree as f64]),
             (vec![p.dim(), p.count()], p.flat()),
@@ -170,7 +185,7 @@ fn through_octave(r: &Request) -> Option<Said> {
         ],
     };
     let name = match r {
-        Request::Bezier { .. } => "cagd_bezier",
+        Request::Bezier { .. } | Request::BezierSamples { .. } => "cagd_bezier",
         Request::BSpline { .. } => "cagd_bspline",
         Request::Nurbs { .. } => "cagd_nurbs",
     };
@@ -196,6 +211,7 @@ fn through_octave(r: &Request) -> Option<Said> {
 fn through_page(r: &Request) -> Option<String> {
     let answer = match r {
         Request::Bezier { p, t } => cagd_web::bezier_view(p.flat(), p.dim(), *t, 11),
+        Request::BezierSamples { p, n } => cagd_web::bezier_view(p.flat(), p.dim(), 0.5, *n),
         Request::BSpline { degree, p, knots } => {
             cagd_web::bspline_view(p.flat(), p.dim(), *degree, knots.clone(), 11)
         }
@@ -308,7 +324,7 @@ fn table() -> Vec<(&'static str, Request, &'static str)> {
                 p: Points(vec![vec![1e308, -1e308]]),
                 t: 5.0,
             },
-            "cagd:nonfinite",
+            "cagd:overflow",
         ),
         // B-spline curves: knots, degree, control points.
         (
@@ -621,4 +637,55 @@ fn the_front_ends_share_the_largest_allowed_request() {
             }
         }
     }
+}
+
+/// The largest Bézier request the default `max_work` allows — as many points as the core's
+/// estimate of de Casteljau's work ([`cagd::BezierCurve::eval_cost`]) allows for a curve of
+/// degree 99 in 101 dimensions — is computed by all three front ends, and one point more is
+/// refused by all three with the same words: each prices the work with the same estimate.
+#[test]
+fn the_front_ends_share_the_largest_allowed_work() {
+    let max = u128::from(cagd::Limits::default().max_work);
+    let p = Points(
+        (0..101)
+            .map(|r| (0..100).map(|j| ((r * 7 + j * 13) % 17) as f64).collect())
+            .collect(),
+    );
+    let curve = cagd::BezierCurve::new(nalgebra::DMatrix::from_row_slice(101, 100, &{
+        let rows: Vec<f64> = p.0.iter().flatten().copied().collect();
+        rows
+    }))
+    .unwrap();
+    let per_point = curve.eval_cost(0, 0).weigh(false);
+    let largest = usize::try_from(max / per_point).unwrap();
+    // 1980 points of 1 010 000 operations: within the page's 2000 samples, so that the page
+    // refuses the next request for its work, as the others do.
+    assert_eq!((per_point, largest), (1_010_000, 1980));
+    let allowed = Request::BezierSamples {
+        p: p.clone(),
+        n: largest,
+    };
+    let (cli, octave, page) = (
+        through_cli(&allowed),
+        through_octave(&allowed),
+        through_page(&allowed),
+    );
+    assert_eq!((&cli, &octave, &page), (&None, &None, &None));
+    let over = Request::BezierSamples { p, n: largest + 1 };
+    let (cli, octave, page) = (
+        through_cli(&over).unwrap(),
+        through_octave(&over).unwrap(),
+        through_page(&over).unwrap(),
+    );
+    assert_eq!(
+        (cli.kind.as_str(), octave.kind.as_str()),
+        ("cagd:limit", "cagd:limit")
+    );
+    let words = format!(
+        "estimated operations: {} exceeds the limit of {max}; expected fewer points or a lower degree",
+        per_point * (largest as u128 + 1)
+    );
+    assert_eq!(plain(&cli.words), words);
+    assert_eq!(plain(&octave.words), words);
+    assert_eq!(plain(&page), words);
 }

@@ -14,7 +14,7 @@ use super::bezier_curve;
 use crate::args::{nonempty_of, scalar_of, Call};
 use crate::error::{Kind, PkgError, Result};
 use crate::number::Number;
-use crate::value::Value;
+use crate::value::{Real, Value};
 
 /// The form of a curve argument.
 pub const CURVE_FORM: &str =
@@ -46,6 +46,27 @@ fn nurbs_curve<T: Number>(
     v: &Value<'_>,
     what: &'static str,
 ) -> Result<NurbsCurve<T>> {
+    let (order, knots, coefs) = nurbs_fields(v, what)?;
+    let degree = order - 1;
+    call.check_degree(what, degree)?;
+    let library =
+        |e: cagd::Error| PkgError::arg(Kind::of(&e), what, e.to_string(), NURBS_CURVE_FORM);
+    cagd::error::check_finite("NURBS coefs", coefs.data.iter()).map_err(library)?;
+    cagd::error::check_finite("NURBS knots", knots.data.iter()).map_err(library)?;
+    let h = DMatrix::from_column_slice(4, coefs.cols(), coefs.data).map(T::from_input);
+    let knots: Vec<T> = knots.data.iter().map(|&x| T::from_input(x)).collect();
+    BSplineCurve::new(degree, knots, h)
+        .and_then(NurbsCurve::from_homogeneous)
+        .map_err(library)
+}
+
+/// The fields of `nrbmak`'s structure of a curve: `order` (a positive integer), `knots` (a
+/// vector, not a cell) and `coefs` (`4 × n`), checked; `form`, if present, `"B-NURBS"`.
+///
+/// # Errors
+/// [`Kind::Struct`] for a missing field, another form or a surface; [`Kind::Value`] for an
+/// order that is not a positive integer; [`Kind::Shape`] for coefficients not `4 × n`.
+fn nurbs_fields<'a>(v: &Value<'a>, what: &str) -> Result<(usize, Real<'a>, Real<'a>)> {
     let field = |name: &str| {
         v.field(name).ok_or_else(|| {
             PkgError::arg(
@@ -95,15 +116,5 @@ fn nurbs_curve<T: Number>(
             NURBS_CURVE_FORM,
         ));
     }
-    let degree = order as usize - 1;
-    call.check_degree(what, degree)?;
-    let library =
-        |e: cagd::Error| PkgError::arg(Kind::of(&e), what, e.to_string(), NURBS_CURVE_FORM);
-    cagd::error::check_finite("NURBS coefs", coefs.data.iter()).map_err(library)?;
-    cagd::error::check_finite("NURBS knots", knots.data.iter()).map_err(library)?;
-    let h = DMatrix::from_column_slice(4, coefs.cols(), coefs.data).map(T::from_input);
-    let knots: Vec<T> = knots.data.iter().map(|&x| T::from_input(x)).collect();
-    BSplineCurve::new(degree, knots, h)
-        .and_then(NurbsCurve::from_homogeneous)
-        .map_err(library)
+    Ok((order as usize, knots, coefs))
 }

@@ -9,6 +9,7 @@
 //! | `X = cagd_bezier_patch (B, u, v)` | [`BezierPatch::eval_grid_into`](cagd::BezierPatch::eval_grid_into) |
 //! | `[X, rc, rd, rcd] = cagd_coons (c1, c2, d1, d2, u, v)` | [`cagd_ops::ops::Coons`] of Bézier or NURBS curves |
 //! | `[X, g1, g2, g12] = cagd_gordon (cu, cv, un, vn, u, v)` | [`cagd_ops::ops::Gordon`] of Bézier or NURBS curves |
+//! | `[X, C1, C2] = cagd_ruled (c1, c2, u, v)` | [`cagd_ops::ops::Ruled`] of Bézier or NURBS curves |
 //! | `X = cagd_bspline (p, P, U, t)` | [`BSplineCurve`](cagd::BSplineCurve) |
 //! | `X = cagd_nurbs (p, P, w, U, t)` | [`NurbsCurve`](cagd::NurbsCurve) |
 //! | `[X, D] = cagd_spline (Q, t, ends)` | [`CubicSpline`](cagd::CubicSpline) |
@@ -25,7 +26,7 @@ mod surfaces;
 
 pub use bezier::{bezier, bezier_derivative, bezier_elevate, bezier_patch, bezier_subdivide};
 pub use splines::{bernstein, bspline, convert, hermite, nurbs_curve, spline};
-pub use surfaces::{coons, gordon};
+pub use surfaces::{coons, gordon, ruled};
 
 use cagd::bezier::BezierCurve;
 

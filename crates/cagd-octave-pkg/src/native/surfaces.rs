@@ -1,10 +1,10 @@
-//! Coons and Gordon patches of Bézier or NURBS curves (octave-nurbs structures), with their
-//! parts: the operation layer's requests ([`Coons`], [`Gordon`]), as the command line runs
-//! them.
+//! Coons and Gordon patches and ruled surfaces of Bézier or NURBS curves (octave-nurbs
+//! structures), with their parts: the operation layer's requests ([`Coons`], [`Gordon`],
+//! [`Ruled`]), as the command line runs them.
 
 use cagd_ops::curves::CurveArg;
 use cagd_ops::ops::surface::SurfaceParams;
-use cagd_ops::ops::{Coons, Gordon};
+use cagd_ops::ops::{Coons, Gordon, Ruled};
 use cagd_ops::{Params, Role};
 
 use super::curve_value::{curve_value, CURVE_FORM};
@@ -63,6 +63,52 @@ const COONS_NAMES: Names = &[
     (Role::D1, "d1"),
     (Role::D2, "d2"),
     (Role::Boundary, "c1/c2/d1/d2"),
+    (Role::U, "u"),
+    (Role::V, "v"),
+    (Role::Grid, "u, v"),
+    (Role::Result, "X"),
+];
+
+native!(
+    /// `[X, C1, C2] = cagd_ruled (c1, c2, u, v)`: the ruled surface `x(u, v) = (1 − v) c1(u) +
+    /// v c2(u)` between two curves (Bézier control points or NURBS structures) on the grid
+    /// `u × v`, with the two curves at `u`.
+    ruled => ruled_t
+);
+
+fn ruled_t<T: Number>(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
+    call.nargin(
+        4,
+        4,
+        "[X, C1, C2] = cagd_ruled (c1, c2, u, v [, \"exact\"])",
+    )?;
+    call.nargout_max(3)?;
+    let mut op = Ruled::new(
+        curve_value::<T>(call, call.arg(0), "c1")?,
+        curve_value::<T>(call, call.arg(1), "c2")?,
+    );
+    op.at = SurfaceParams {
+        u: Params::Given(params::<T>(call, 2, "u")?),
+        v: Params::Given(params::<T>(call, 3, "v")?),
+        list: false,
+    };
+    op.steps = call.nargout > 1;
+    let report = execute(call, RULED_NAMES, &op)?;
+    for (k, name) in ["result", "first", "second"]
+        .into_iter()
+        .enumerate()
+        .take(call.nargout.max(1))
+    {
+        emit_item(sink, k, &report, name)?;
+    }
+    Ok(())
+}
+
+/// How `cagd_ruled` names its arguments.
+const RULED_NAMES: Names = &[
+    (Role::First, "c1"),
+    (Role::Second, "c2"),
+    (Role::Boundary, "c1, c2"),
     (Role::U, "u"),
     (Role::V, "v"),
     (Role::Grid, "u, v"),

@@ -1,7 +1,8 @@
 //! `cagd_findspan`, `cagd_basisfun`, `cagd_basisfunder`.
 
 use cagd_octave::octave_nurbs::{
-    basisfun_into, basisfunder_into, findspan as find_spans, truncate, NurbsError,
+    basisfun_cost, basisfun_into, basisfunder_cost, basisfunder_into, findspan as find_spans,
+    truncate, Interrupt, NurbsError,
 };
 
 use super::eval::degree;
@@ -25,9 +26,13 @@ pub fn findspan(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
         read::scalar(call.arg(0), "n", Classes::Numeric)?
     };
     call.check_samples("u", u.data.len())?;
-    let spans = find_spans(n, u.data, knots.data)?;
-    sink.real(0, u.dims)?.copy_from_slice(&spans);
-    Ok(())
+    let out = sink.real(0, u.dims)?;
+    // A binary search per parameter: chunks of the most parameters between two questions.
+    let per = cagd::bspline::basis_cost(0, 0, 0);
+    call.in_chunks((u.data, per), (out, 1), |part, buffer| {
+        buffer.copy_from_slice(&find_spans(n, part, knots.data)?);
+        Ok(())
+    })
 }
 
 /// `B = cagd_basisfun (iv, uv, p, U)`: octave-nurbs' `basisfun` ([`basisfun_into`]): `B` is
@@ -42,9 +47,10 @@ pub fn basisfun(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     let knots = read::real(call.arg(3), "U", Classes::Numeric)?;
     let n = uv.len();
     call.check_samples("uv", n)?;
-    call.check_work("uv", n, (p + 1) * (p + 1))?;
+    call.check_cost("uv", basisfun_cost(p).times(n as u128))?;
     let out = sink.real(0, &[n, p + 1])?;
-    basisfun_into(iv.data, uv.data, p, knots.data, out)?;
+    let interrupt = Interrupt::new(call.interrupt);
+    basisfun_into(iv.data, uv.data, p, knots.data, (out, interrupt))?;
     Ok(())
 }
 
@@ -62,9 +68,10 @@ pub fn basisfunder(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     call.check_degree("nd", nd)?;
     let n = uu.len();
     call.check_samples("uu", n)?;
-    call.check_work("uu", n, (pl + 1) * (pl + 1) * (nd + 2))?;
+    call.check_cost("uu", basisfunder_cost(pl, nd).times(n as u128))?;
     let out = sink.real(0, &[n, nd + 1, pl + 1])?;
-    basisfunder_into(ii.data, pl, uu.data, knots.data, nd, out)?;
+    let interrupt = Interrupt::new(call.interrupt);
+    basisfunder_into((ii.data, pl), uu.data, knots.data, nd, (out, interrupt))?;
     Ok(())
 }
 

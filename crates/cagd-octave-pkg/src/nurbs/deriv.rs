@@ -1,6 +1,6 @@
 //! `cagd_bspderiv`, `cagd_nrbderiv`, `cagd_nrbdeval`.
 
-use cagd_octave::octave_nurbs::{bspderiv_into, check_bspderiv};
+use cagd_octave::octave_nurbs::{bspderiv_into, check_bspderiv, Interrupt};
 
 use super::eval::degree;
 use super::read::{self, Classes};
@@ -71,7 +71,13 @@ pub fn nrbdeval(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
         .map(|k| read::ders(call.arg(k)))
         .collect::<Result<_>>()?;
     let tt = read::tt(call.arg(n - 2))?;
-    let r = deval(&nurbs, &ders[0], &ders[1..], &tt, nout)?;
+    let r = deval(
+        &nurbs,
+        (&ders[0], &ders[1..]),
+        &tt,
+        nout,
+        Interrupt::new(call.interrupt),
+    )?;
     let slots = [&r.hess, &r.third, &r.fourth];
     let status = sink.real(0, &[1, 3])?;
     for (s, slot) in status.iter_mut().zip(slots) {

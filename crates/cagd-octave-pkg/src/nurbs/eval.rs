@@ -1,6 +1,6 @@
 //! `cagd_nrbeval` and `cagd_bspeval`.
 
-use cagd_octave::octave_nurbs::{bspeval_into, Bsp, NrbEval};
+use cagd_octave::octave_nurbs::{bspeval_into, Bsp, Interrupt, NrbEval};
 
 use super::read::{self, Classes};
 use crate::args::Call;
@@ -20,14 +20,15 @@ pub fn nrbeval(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     let plan = NrbEval::new(&nurbs, &tt, homogeneous)?;
     let points = plan.points();
     call.check_samples("tt", points)?;
-    call.check_work("tt", points, plan.work_per_point())?;
+    call.check_cost("tt", plan.point_cost().times(points as u128))?;
+    let interrupt = Interrupt::new(call.interrupt);
     let p = sink.real(0, plan.p_dims())?;
     if homogeneous {
         let mut w = vec![0.0; points];
-        plan.eval_into(p, Some(&mut w))?;
+        plan.eval_into(p, Some(&mut w), interrupt)?;
         sink.real(1, plan.w_dims())?.copy_from_slice(&w);
     } else {
-        plan.eval_into(p, None)?;
+        plan.eval_into(p, None, interrupt)?;
     }
     Ok(())
 }
@@ -45,9 +46,9 @@ pub fn bspeval(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     let cols = c.cols();
     let b = Bsp::new(d, rows, cols, c.data, k.data)?;
     call.check_samples("u", u.data.len())?;
-    call.check_work("u", u.data.len(), (b.degree + 1) * (b.degree + 1 + rows))?;
+    call.check_cost("u", b.point_cost().times(u.data.len() as u128))?;
     let out = sink.real(0, &[rows, u.data.len()])?;
-    bspeval_into(&b, u.data, out)?;
+    bspeval_into(&b, u.data, out, Interrupt::new(call.interrupt))?;
     Ok(())
 }
 

@@ -40,6 +40,7 @@ impl From<NurbsError> for PkgError {
             NurbsError::Refused { .. } | NurbsError::Undefined { .. } => {
                 PkgError::new(Kind::Value, error.to_string())
             }
+            NurbsError::Interrupted => PkgError::new(Kind::Interrupted, error.to_string()),
         }
     }
 }

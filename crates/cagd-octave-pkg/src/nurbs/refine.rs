@@ -79,7 +79,8 @@ pub fn bspdegelev(call: &Call<'_, '_>, sink: &mut dyn Sink) -> Result<()> {
     let d = range_number(call.arg(0), "d")?;
     let c = read::real(call.arg(1), "c", Classes::Numeric)?;
     let k = read::real(call.arg(2), "k", Classes::Numeric)?;
-    let t = range_number(call.arg(3), "t")?;
+    // bspdegelev uses t in sums and max (i - t) only: logical t as well (octave-nurbs).
+    let t = read::scalar(call.arg(3), "t", Classes::Numeric)?;
     call.check_degree("t", t.max(0.0) as usize)?;
     call.check_degree("d", d.max(0.0) as usize)?;
     let (ic, cols, ik) = elevate(d, c.rows(), c.cols(), c.data, k.data, t)?;

@@ -8,7 +8,8 @@ use super::{
 };
 use crate::literal::LiteralScalar;
 use cagd::error::{Error, Result};
-use cagd::param::Surface;
+use cagd::gordon::GordonSurface;
+use cagd::param::{SampledCurve, Surface};
 
 /// The Gordon surface of a sampled curve network on `linspace(0,1,N)²`: the twin of the
 /// thesis's `krpaGordon` (appendix D, Algoritem 7), as fixed in `octave_ref/fixed/krpaGordon.m`.
@@ -98,6 +99,29 @@ pub fn krpa_gordon<T: LiteralScalar>(
     x_v: ArrayView2<'_, T>,
     n: usize,
 ) -> Result<SampledPatch<T>> {
+    let (surface, t) = krpa_gordon_surface(g_u, g_v, g_uv, x_u, x_v, n)?;
+    let p = crate::arrays::to_array3(surface.eval_grid(&t, &t));
+    let r = untenzor(p.view())?;
+    Ok(SampledPatch { r, p })
+}
+
+/// The Gordon surface of sampled curves that `krpaGordon` evaluates.
+pub type SampledGordon<T> = GordonSurface<SampledCurve<T>, T>;
+
+/// [`krpa_gordon`] up to its grid: the Gordon surface of the network, checked, and the
+/// samples `t = linspace(0,1,N)` at which `krpaGordon` evaluates it on `t × t`. For a caller
+/// that evaluates the grid itself (band by band, between which it may be interrupted).
+///
+/// # Errors
+/// As [`krpa_gordon`].
+pub fn krpa_gordon_surface<T: LiteralScalar>(
+    g_u: ArrayView2<'_, T>,
+    g_v: ArrayView2<'_, T>,
+    g_uv: ArrayView2<'_, T>,
+    x_u: ArrayView2<'_, T>,
+    x_v: ArrayView2<'_, T>,
+    n: usize,
+) -> Result<(SampledGordon<T>, Vec<T>)> {
     let u_nodes = node_vector("krpa_gordon: x_u", &x_u)?;
     let v_nodes = node_vector("krpa_gordon: x_v", &x_v)?;
     let (mu, nv) = (u_nodes.len(), v_nodes.len());
@@ -122,10 +146,7 @@ pub fn krpa_gordon<T: LiteralScalar>(
         v_nodes,
         |_, count| samples::<T>(count),
     )?;
-    let t = samples::<T>(n);
-    let p = crate::arrays::to_array3(network.surface()?.eval_grid(&t, &t));
-    let r = untenzor(p.view())?;
-    Ok(SampledPatch { r, p })
+    Ok((network.surface()?, samples::<T>(n)))
 }
 
 #[cfg(test)]

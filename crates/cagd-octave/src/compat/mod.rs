@@ -96,7 +96,7 @@ mod vrednost_coons;
 pub use bilinearna::bilinearna;
 pub use de_casteljau::de_casteljau;
 pub use krpa_coons::{krpa_coons, SampledPatch};
-pub use krpa_gordon::krpa_gordon;
+pub use krpa_gordon::{krpa_gordon, krpa_gordon_surface};
 pub use lagrange::lagrange;
 pub use linspace::linspace;
 pub use packed_network::PackedNetwork;

@@ -1,8 +1,10 @@
 //! The basis functions as octave-nurbs' compiled `basisfun` and `basisfunder` compute them.
 
-use cagd::bspline::basis_functions_into;
+use cagd::bspline::{basis_cost, basis_functions_into};
+use cagd::cost::Cost;
 
 use super::error::{NurbsError, Result};
+use super::interrupt::Interrupt;
 
 /// The degree or span of octave-nurbs' C++ code from an Octave number: truncated toward zero,
 /// as its `int_value` and `int (...)` conversions do (NaN reads as 0).
@@ -28,21 +30,23 @@ pub fn span_has_knots(s: i64, p: usize, nk: usize) -> bool {
 /// `uv(k)`, an empty span NaN or ±Inf — and `uv(k)` is not checked against the knots. Spans
 /// after the first `numel (uv)` are not used.
 ///
-/// One span for several parameters (`numel (iv) = 1`) is used for all of them.
+/// One span for several parameters (`numel (iv) = 1`) is used for all of them. The
+/// parameters are taken in chunks ([`basisfun_cost`] each), `interrupt` asked before each.
 ///
 /// # Errors
 /// [`NurbsError::Undefined`] where octave-nurbs reads outside its arrays: a span without the
 /// knots `U(s+1−p) … U(s+p)`, fewer spans than parameters (other than one span), a NaN span;
-/// [`NurbsError::Refused`] for a negative degree.
+/// [`NurbsError::Refused`] for a negative degree; [`NurbsError::Interrupted`].
 ///
 /// ```
-/// use cagd_octave::octave_nurbs::basisfun_into;
+/// use cagd_octave::octave_nurbs::{basisfun_into, Interrupt};
 /// let knots = [0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0];
 /// let mut b = [0.0; 3];
-/// basisfun_into(&[2.0], &[0.25], 2, &knots, &mut b)?;
+/// let never = Interrupt::never();
+/// basisfun_into(&[2.0], &[0.25], 2, &knots, (&mut b, never))?;
 /// assert_eq!(b, [0.25, 0.625, 0.125]);
 /// // A wrong span is taken as given (octave-nurbs: basisfun (1, 0.5, 2, U) = [Inf NaN Inf]).
-/// basisfun_into(&[1.0], &[0.5], 2, &knots, &mut b)?;
+/// basisfun_into(&[1.0], &[0.5], 2, &knots, (&mut b, never))?;
 /// assert!(b[0].is_infinite() && b[1].is_nan() && b[2].is_infinite());
 /// # Ok::<(), cagd_octave::octave_nurbs::NurbsError>(())
 /// ```
@@ -51,7 +55,7 @@ pub fn basisfun_into(
     uv: &[f64],
     p: usize,
     knots: &[f64],
-    out: &mut [f64],
+    (out, interrupt): (&mut [f64], Interrupt<'_>),
 ) -> Result<()> {
     let n = uv.len();
     if iv.len() < n && iv.len() != 1 {
@@ -85,7 +89,9 @@ pub fn basisfun_into(
     };
     let (nv, rest) = nb.split_at_mut(p + 1);
     let (left, right) = rest.split_at_mut(p + 1);
+    let mut poll = interrupt.poll(n, || basisfun_cost(p).weigh(false));
     for (k, &u) in uv.iter().enumerate() {
+        poll.at(k)?;
         let s = truncate(if iv.len() == 1 { iv[0] } else { iv[k] });
         if p == 0 {
             nv[0] = 1.0;
@@ -102,22 +108,38 @@ pub fn basisfun_into(
 /// Degrees below this use scratch on the stack.
 const SMALL: usize = 16;
 
+/// The cost of `basisfun` at one parameter: the core's estimate of the `p + 1` basis
+/// functions by the triangular scheme ([`basis_cost`]).
+pub fn basisfun_cost(p: usize) -> Cost {
+    basis_cost(p, 0, 0)
+}
+
+/// The cost of `basisfunder` at one parameter: A2.3 is the triangular scheme of the basis
+/// ([`basis_cost`]) and, for each of the `nd` orders, the differences of the `pl + 1`
+/// functions over rows of up to `pl + 1` entries: about the scheme again per order, so
+/// `nd + 1` schemes (and their scaling, one more).
+pub fn basisfunder_cost(pl: usize, nd: usize) -> Cost {
+    basis_cost(pl, 0, 0).times(nd as u128 + 2)
+}
+
 /// octave-nurbs' `ders = basisfunder (ii, pl, uu, U, nd)`: for each span `ii(k)` and
 /// parameter `uu(k)`, the basis functions of degree `pl` and their derivatives up to order
 /// `nd` by Piegl & Tiller A2.3 in octave-nurbs' operation order: `ders(k, r+1, j+1)` is the
 /// `r`-th derivative of `N_{s−pl+j}` (`numel (uu) × (nd+1) × (pl+1)`, column-major into
 /// `out`). Orders above `pl` are zero. Spans are truncated toward zero and taken as given.
+/// The parameters are taken in chunks ([`basisfunder_cost`] each), `interrupt` asked before
+/// each.
 ///
 /// # Errors
 /// [`NurbsError::Refused`] unless there are as many spans as parameters (octave-nurbs prints
-/// its usage); [`NurbsError::Undefined`] for a span without its knots or a NaN span.
+/// its usage); [`NurbsError::Undefined`] for a span without its knots or a NaN span;
+/// [`NurbsError::Interrupted`].
 pub fn basisfunder_into(
-    ii: &[f64],
-    pl: usize,
+    (ii, pl): (&[f64], usize),
     uu: &[f64],
     knots: &[f64],
     nd: usize,
-    out: &mut [f64],
+    (out, interrupt): (&mut [f64], Interrupt<'_>),
 ) -> Result<()> {
     if ii.len() != uu.len() {
         return Err(NurbsError::refused(
@@ -131,7 +153,9 @@ pub fn basisfunder_into(
     }
     let n = uu.len();
     let mut work = DersWork::new(pl, nd);
+    let mut poll = interrupt.poll(n, || basisfunder_cost(pl, nd).weigh(false));
     for (k, (&x, &u)) in ii.iter().zip(uu).enumerate() {
+        poll.at(k)?;
         let s = truncate(x);
         if x.is_nan() && pl > 0 || !span_has_knots(s, pl, knots.len()) {
             return Err(NurbsError::undefined(
@@ -296,20 +320,20 @@ mod tests {
         // [0.98 -0.14 0.16] (another span's pieces), basisfun (4, 0.3, 2, U) = [Inf -Inf Inf].
         let k = [0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0];
         let mut b = [0.0; 3];
-        basisfun_into(&[2.7], &[0.3], 2, &k, &mut b).unwrap();
+        basisfun_into(&[2.7], &[0.3], 2, &k, (&mut b, Interrupt::never())).unwrap();
         assert!((b[0] - 0.16).abs() < 1e-15 && (b[1] - 0.66).abs() < 1e-15);
-        basisfun_into(&[2.0], &[1.5], 2, &k, &mut b).unwrap();
+        basisfun_into(&[2.0], &[1.5], 2, &k, (&mut b, Interrupt::never())).unwrap();
         assert_eq!(b, [4.0, -7.5, 4.5]);
-        basisfun_into(&[3.0], &[0.3], 2, &k, &mut b).unwrap();
+        basisfun_into(&[3.0], &[0.3], 2, &k, (&mut b, Interrupt::never())).unwrap();
         assert!((b[0] - 0.98).abs() < 1e-15 && (b[1] + 0.14).abs() < 1e-15);
-        basisfun_into(&[4.0], &[0.3], 2, &k, &mut b).unwrap();
+        basisfun_into(&[4.0], &[0.3], 2, &k, (&mut b, Interrupt::never())).unwrap();
         assert!(b[0] == f64::INFINITY && b[1] == f64::NEG_INFINITY && b[2] == f64::INFINITY);
         // Spans without their knots: undefined in octave-nurbs.
-        assert!(basisfun_into(&[5.0], &[0.3], 2, &k, &mut b).is_err());
-        assert!(basisfun_into(&[0.0], &[0.3], 2, &k, &mut b).is_err());
+        assert!(basisfun_into(&[5.0], &[0.3], 2, &k, (&mut b, Interrupt::never())).is_err());
+        assert!(basisfun_into(&[0.0], &[0.3], 2, &k, (&mut b, Interrupt::never())).is_err());
         // p = 0: the one function is 1 whatever the span.
         let mut one = [0.0];
-        basisfun_into(&[-3.0], &[0.3], 0, &k, &mut one).unwrap();
+        basisfun_into(&[-3.0], &[0.3], 0, &k, (&mut one, Interrupt::never())).unwrap();
         assert_eq!(one, [1.0]);
     }
 
@@ -319,15 +343,22 @@ mod tests {
         // [0.18 1.2]); with nd = 5 the orders above 2 are zero.
         let k = [0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0];
         let mut d = [0.0; 6];
-        basisfunder_into(&[2.0], 2, &[0.3], &k, 1, &mut d).unwrap();
+        basisfunder_into((&[2.0], 2), &[0.3], &k, 1, (&mut d, Interrupt::never())).unwrap();
         let want = [0.16, -1.6, 0.66, 0.4, 0.18, 1.2];
         for (a, b) in d.iter().zip(want) {
             assert!((a - b).abs() < 1e-14, "{d:?}");
         }
         let mut d5 = [1.0; 18];
-        basisfunder_into(&[2.0], 2, &[0.3], &k, 5, &mut d5).unwrap();
+        basisfunder_into((&[2.0], 2), &[0.3], &k, 5, (&mut d5, Interrupt::never())).unwrap();
         assert_eq!(d5[3..6], [0.0; 3]);
-        assert!(basisfunder_into(&[2.0, 2.0], 2, &[0.3], &k, 1, &mut d).is_err());
+        assert!(basisfunder_into(
+            (&[2.0, 2.0], 2),
+            &[0.3],
+            &k,
+            1,
+            (&mut d, Interrupt::never())
+        )
+        .is_err());
     }
 
     #[test]

@@ -80,13 +80,20 @@ pub fn bspderiv_into(
 ) -> Result<()> {
     check_bspderiv(d, cols, k.len())?;
     let d = truncate(d) as usize;
-    for i in 0..cols - 1 {
-        let tmp = d as f64 / (k[i + d + 1] - k[i + 1]);
-        let (a, b) = (
-            &c[rows * i..rows * (i + 1)],
-            &c[rows * (i + 1)..rows * (i + 2)],
-        );
-        for (o, (x, y)) in dc[rows * i..rows * (i + 1)].iter_mut().zip(a.iter().zip(b)) {
+    if rows == 0 || cols < 2 {
+        return Ok(());
+    }
+    // Column i: d / (k(i+d+1) − k(i+1)) times c(:, i+1) − c(:, i) (0-based knots `k[i + 1]`
+    // and `k[i + d + 1]`, which check_bspderiv has checked exist).
+    let (lo, hi) = (&k[1..cols], &k[d + 1..d + cols]);
+    let columns = c.chunks_exact(rows).zip(c[rows..].chunks_exact(rows));
+    for ((out, (a, b)), (k0, k1)) in dc
+        .chunks_exact_mut(rows)
+        .zip(columns)
+        .zip(lo.iter().zip(hi))
+    {
+        let tmp = d as f64 / (k1 - k0);
+        for ((o, x), y) in out.iter_mut().zip(a).zip(b) {
             *o = tmp * (y - x);
         }
     }

@@ -1,9 +1,11 @@
 //! octave-nurbs' compiled `bspeval`, which `nrbeval` calls along each direction.
 
-use cagd::bspline::basis_functions_into;
+use cagd::bspline::{basis_functions_into, curve_point_cost};
+use cagd::cost::Cost;
 
 use super::basis::{existing_basis, truncate};
 use super::error::{NurbsError, Result};
+use super::interrupt::Interrupt;
 use super::span::{check_in_knots, eval_span, is_sorted};
 
 /// A B-spline as octave-nurbs' univariate functions take it: the degree `d`, the control
@@ -61,6 +63,12 @@ impl<'a> Bsp<'a> {
             knots,
             sorted: is_sorted(knots),
         })
+    }
+
+    /// The cost of one point, `bspeval`'s work at one parameter: the core's estimate of a
+    /// B-spline curve's point ([`curve_point_cost`]) of this degree in `rows` coordinates.
+    pub fn point_cost(&self) -> Cost {
+        curve_point_cost(self.degree, self.rows, 0, 0, 0)
     }
 
     /// The span and the `d + 1` basis values at `u` (into `n`, with scratch `left`, `right`),
@@ -162,25 +170,35 @@ impl BasisWork {
 /// basis — its values bit for bit. NaN gives NaN; a parameter past the last knot of the
 /// domain (inside the knots) continues the last span, an empty last span gives NaN, as there.
 ///
+/// The parameters are taken in chunks, `interrupt` asked before each.
+///
 /// # Errors
-/// [`NurbsError::OutsideKnots`] for a parameter outside `[U(1), U(end)]`.
+/// [`NurbsError::OutsideKnots`] for a parameter outside `[U(1), U(end)]`;
+/// [`NurbsError::Interrupted`].
 ///
 /// ```
-/// use cagd_octave::octave_nurbs::{bspeval_into, Bsp};
+/// use cagd_octave::octave_nurbs::{bspeval_into, Bsp, Interrupt};
 /// // The quadratic on knots [0 0 0 .4 .4 .4 1 1]: octave-nurbs gives NaN from 0.4 on,
 /// // where its span [0.4, 0.4] is empty.
 /// let c = [0.0, 1.0, 3.0, 4.0, 5.0];
 /// let k = [0.0, 0.0, 0.0, 0.4, 0.4, 0.4, 1.0, 1.0];
 /// let b = Bsp::new(2.0, 1, 5, &c, &k)?;
 /// let mut out = [0.0; 3];
-/// bspeval_into(&b, &[0.2, 0.4, 0.7], &mut out)?;
+/// bspeval_into(&b, &[0.2, 0.4, 0.7], &mut out, Interrupt::never())?;
 /// assert_eq!(out[0], 1.25);
 /// assert!(out[1].is_nan() && out[2].is_nan());
 /// # Ok::<(), cagd_octave::octave_nurbs::NurbsError>(())
 /// ```
-pub fn bspeval_into(b: &Bsp<'_>, u: &[f64], out: &mut [f64]) -> Result<()> {
+pub fn bspeval_into(
+    b: &Bsp<'_>,
+    u: &[f64],
+    out: &mut [f64],
+    interrupt: Interrupt<'_>,
+) -> Result<()> {
     let mut work = BasisWork::new(b.degree);
+    let mut poll = interrupt.poll(u.len(), || b.point_cost().weigh(false));
     for (col, &x) in u.iter().enumerate() {
+        poll.at(col)?;
         let first = work.at(b, x)?;
         combine(
             b,
@@ -215,16 +233,19 @@ pub fn combine(b: &Bsp<'_>, first: usize, n: &[f64], out: &mut [f64]) {
 /// As [`bspeval_into`].
 pub fn along_axis(
     b: &Bsp<'_>,
-    a: &[f64],
-    lead: usize,
-    trail: usize,
+    (a, lead, trail): (&[f64], usize, usize),
     u: &[f64],
     out: &mut [f64],
+    interrupt: Interrupt<'_>,
 ) -> Result<()> {
     let cols = b.cols;
     let nt = u.len();
     let mut work = BasisWork::new(b.degree);
+    let mut poll = interrupt.poll(u.len(), || {
+        curve_point_cost(b.degree, lead.saturating_mul(trail), 0, 0, 0).weigh(false)
+    });
     for (j, &x) in u.iter().enumerate() {
+        poll.at(j)?;
         let first = work.at(b, x)?;
         let n = work.values();
         let terms = n.len().min(cols.saturating_sub(first));
@@ -255,19 +276,25 @@ mod tests {
         let k = [0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0];
         let b = Bsp::new(2.0, 1, 4, &c, &k).unwrap();
         let mut out = [0.0; 4];
-        bspeval_into(&b, &[0.0, 0.5, 0.7, 1.0], &mut out).unwrap();
+        bspeval_into(&b, &[0.0, 0.5, 0.7, 1.0], &mut out, Interrupt::never()).unwrap();
         assert_eq!(out[0], 0.0);
         assert_eq!(out[3], 3.0);
         assert!((out[2] - 1.98).abs() < 1e-15);
         let b0 = Bsp::new(0.0, 1, 4, &c, &[0.0, 1.0, 2.0, 3.0, 4.0]).unwrap();
         let mut out = [0.0; 6];
-        bspeval_into(&b0, &[0.0, 0.5, 1.0, 1.5, 3.5, 4.0], &mut out).unwrap();
+        bspeval_into(
+            &b0,
+            &[0.0, 0.5, 1.0, 1.5, 3.5, 4.0],
+            &mut out,
+            Interrupt::never(),
+        )
+        .unwrap();
         assert_eq!(out, [0.0, 0.0, 1.0, 1.0, 3.0, 3.0]);
         // d = 2.5 is 2; inconsistent data and parameters outside the knots are refused.
         assert!(Bsp::new(2.5, 1, 4, &c, &k).is_ok());
         assert!(Bsp::new(3.0, 1, 4, &c, &k).is_err());
-        assert!(bspeval_into(&b, &[1.5], &mut out[..1]).is_err());
-        bspeval_into(&b, &[f64::NAN], &mut out[..1]).unwrap();
+        assert!(bspeval_into(&b, &[1.5], &mut out[..1], Interrupt::never()).is_err());
+        bspeval_into(&b, &[f64::NAN], &mut out[..1], Interrupt::never()).unwrap();
         assert!(out[0].is_nan());
     }
 
@@ -278,7 +305,7 @@ mod tests {
         let k = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0];
         let b = Bsp::new(2.0, 1, 4, &c, &k).unwrap();
         let mut out = [0.0; 3];
-        bspeval_into(&b, &[0.5, 1.5, 2.5], &mut out).unwrap();
+        bspeval_into(&b, &[0.5, 1.5, 2.5], &mut out, Interrupt::never()).unwrap();
         assert_eq!(out[0], 0.125);
         assert_eq!(out[1], 0.75 + 10.0 * 0.125);
         assert_eq!(out[2], 0.125 + 10.0 * 0.75 + 100.0 * 0.125);

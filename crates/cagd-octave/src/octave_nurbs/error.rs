@@ -50,6 +50,10 @@ pub enum NurbsError {
         /// Which read would leave the arrays.
         message: String,
     },
+    /// The caller asked to stop (Octave's Ctrl-C) between two chunks of the work
+    /// ([`Interrupt`](super::Interrupt)).
+    #[error("interrupted")]
+    Interrupted,
     /// An error of the core library.
     #[error(transparent)]
     Core(#[from] cagd::Error),

@@ -161,6 +161,25 @@ fn eval_runs(pieces: &[Piece], ts: &[f64], out: &mut [f64], w: &mut [f64]) -> ca
     Ok(())
 }
 
+/// The `v` rows per band of a surface grid `nu × nv` evaluated by the core's sweep of
+/// [`swapped_surface`] (`dh` numbers per control point) a band at a time, so that the
+/// evaluation can be stopped between bands: each band costs the sweep of its rows (per row,
+/// the `n1` columns of the net collapsed along `v` and the `nu` points summed along `u`) and
+/// the set-up every call of the core repeats (the net copied, the `u` basis of every `u`).
+/// The band is at least [`CHECK_WORK`](super::CHECK_WORK) and four times that set-up (so
+/// that the set-ups add at most a quarter); `None` when such a band would be longer than 16
+/// times [`CHECK_WORK`] (a net and degrees so large that only a finer evaluation stops
+/// quickly).
+pub fn grid_band_rows(bu: &Bsp<'_>, bv: &Bsp<'_>, nu: usize, dh: usize) -> Option<usize> {
+    let (p, q) = (bu.degree as u128 + 1, bv.degree as u128 + 1);
+    let (n1, n2, nu, dh) = (bu.cols as u128, bv.cols as u128, nu as u128, dh as u128);
+    let row = (n1 * q * dh + nu * p * dh + q * q).max(1);
+    let setup = n1 * n2 * dh + nu * p * p;
+    let rows = (super::CHECK_WORK / row).max(4 * setup / row + 1);
+    (rows.saturating_mul(row) <= 16 * super::CHECK_WORK || setup <= super::CHECK_WORK)
+        .then_some(rows.min(usize::MAX as u128) as usize)
+}
+
 /// The surface `S'(v, u) = S(u, v)` of the rows `0..rows` of 4-row coefficients (`4 × n1 ×
 /// n2`), directions swapped: the core's row-major `(nv, nu, rows)` grid of that surface is
 /// exactly Octave's `rows × nu × nv`, and its sums run along `v` first, then along `u`, as

@@ -41,6 +41,7 @@ mod bspeval;
 mod bspkntins;
 mod error;
 mod fast;
+mod interrupt;
 mod nd;
 mod nrb;
 mod nrbcoons;
@@ -52,12 +53,16 @@ mod refine;
 mod span;
 
 pub use along::Net;
-pub use basis::{basisfun_into, basisfunder_into, existing_basis, span_has_knots, truncate};
+pub use basis::{
+    basisfun_cost, basisfun_into, basisfunder_cost, basisfunder_into, existing_basis,
+    span_has_knots, truncate,
+};
 pub use bspdegelev::bspdegelev;
 pub use bspderiv::{bspderiv, bspderiv_into, check_bspderiv};
 pub use bspeval::{along_axis, bspeval_into, combine, BasisWork, Bsp};
 pub use bspkntins::bspkntins;
 pub use error::{NurbsError, Result};
+pub use interrupt::{Interrupt, Poll, CHECK_WORK, FEW_ITEMS};
 pub use nd::Nd;
 pub use nrb::{nrbmak, Kind, Knots, Nrb, NrbParts};
 pub use nrbcoons::nrbcoons;

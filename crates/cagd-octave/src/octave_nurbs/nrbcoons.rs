@@ -118,7 +118,7 @@ fn check_closed(
             false,
         )?;
         let mut p = vec![0.0; 3];
-        e.eval_into(&mut p, None)?;
+        e.eval_into(&mut p, None, super::Interrupt::never())?;
         Ok(p)
     };
     let pairs = [

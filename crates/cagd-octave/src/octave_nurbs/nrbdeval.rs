@@ -2,6 +2,7 @@
 //! from the structures of `nrbderiv`, by the quotient rule on homogeneous values.
 
 use super::error::{NurbsError, Result};
+use super::interrupt::Interrupt;
 use super::nd::Nd;
 use super::nrb::{Kind, NrbParts};
 use super::nrbeval::{NrbEval, Tt};
@@ -102,12 +103,19 @@ pub struct NrbDeval {
     pub fourth: Slot,
 }
 
+/// The parameters of `nrbdeval` and the interrupt its evaluations ask.
+#[derive(Debug, Clone, Copy)]
+struct At<'a> {
+    tt: &'a Tt<'a>,
+    interrupt: Interrupt<'a>,
+}
+
 /// Homogeneous values `(c, w(ones (3, 1), :…))` of a structure at `tt`.
-fn values(n: &NrbParts<'_>, tt: &Tt<'_>, colons: usize) -> Result<(Nd, Nd)> {
-    let e = NrbEval::new(n, tt, true)?;
+fn values(n: &NrbParts<'_>, tt: &At<'_>, colons: usize) -> Result<(Nd, Nd)> {
+    let e = NrbEval::new(n, tt.tt, true)?;
     let mut p = vec![0.0; e.p_dims().iter().product()];
     let mut w = vec![0.0; e.points()];
-    e.eval_into(&mut p, Some(&mut w))?;
+    e.eval_into(&mut p, Some(&mut w), tt.interrupt)?;
     Ok((Nd::new(e.p_dims(), p), Nd::new(e.w_dims(), w).rows3(colons)))
 }
 
@@ -121,14 +129,16 @@ fn values(n: &NrbParts<'_>, tt: &Tt<'_>, colons: usize) -> Result<(Nd, Nd)> {
 /// # Errors
 /// Where `nrbdeval` fails: an output whose structures were not given for a curve (octave-nurbs
 /// leaves it undefined), cells where structures are expected and the reverse, sizes its
-/// formulas cannot combine, and the errors of [`NrbEval`].
-pub fn nrbdeval(
+/// formulas cannot combine, and the errors of [`NrbEval`] (each structure evaluated with
+/// `interrupt` asked between chunks).
+pub fn nrbdeval<'a>(
     nurbs: &NrbParts<'_>,
-    dnurbs: &Ders<'_>,
-    higher: &[Ders<'_>],
-    tt: &Tt<'_>,
+    (dnurbs, higher): (&Ders<'_>, &[Ders<'_>]),
+    tt: &'a Tt<'a>,
     nout: usize,
+    interrupt: Interrupt<'a>,
 ) -> Result<NrbDeval> {
+    let tt = &At { tt, interrupt };
     match nurbs.kind() {
         Kind::Curve => curve(nurbs, dnurbs, higher, tt, nout),
         Kind::Surface => surface(nurbs, dnurbs, higher, tt, nout),
@@ -187,7 +197,7 @@ fn curve(
     nurbs: &NrbParts<'_>,
     dnurbs: &Ders<'_>,
     higher: &[Ders<'_>],
-    tt: &Tt<'_>,
+    tt: &At<'_>,
     nout: usize,
 ) -> Result<NrbDeval> {
     let (cp, temp) = values(nurbs, tt, 1)?;
@@ -250,7 +260,7 @@ fn surface(
     nurbs: &NrbParts<'_>,
     dnurbs: &Ders<'_>,
     higher: &[Ders<'_>],
-    tt: &Tt<'_>,
+    tt: &At<'_>,
     nout: usize,
 ) -> Result<NrbDeval> {
     let (cp, temp) = values(nurbs, tt, 2)?;
@@ -401,7 +411,7 @@ struct Fourth<'x> {
 
 impl Fourth<'_> {
     /// The 16 entries of the 2×2×2×2 cell in storage order.
-    fn eval(&self, d4: &Ders<'_>, tt: &Tt<'_>) -> Result<Vec<Nd>> {
+    fn eval(&self, d4: &Ders<'_>, tt: &At<'_>) -> Result<Vec<Nd>> {
         let (cp, temp) = (self.cp, self.temp);
         let (c1111, t1111) = values(d4.at(&[1, 1, 1, 1])?, tt, 2)?;
         let f1111 = subtract_terms(
@@ -485,7 +495,7 @@ fn volume(
     nurbs: &NrbParts<'_>,
     dnurbs: &Ders<'_>,
     higher: &[Ders<'_>],
-    tt: &Tt<'_>,
+    tt: &At<'_>,
     nout: usize,
 ) -> Result<NrbDeval> {
     let (cp, temp) = values(nurbs, tt, 3)?;

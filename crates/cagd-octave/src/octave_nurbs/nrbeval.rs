@@ -1,11 +1,16 @@
 //! octave-nurbs' `nrbeval`: NURBS curves, surfaces and volumes at parameters, on grids and at
 //! scattered points, with the homogeneous form `[p, w]`.
 
-use cagd::nurbs::{NurbsCurve, NurbsSurface};
+use cagd::bspline::tensor_point_cost;
+use cagd::cost::Cost;
+use cagd::nurbs::{rational_point_cost, NurbsCurve, NurbsSurface};
 
 use super::bspeval::{along_axis, bspeval_into, Bsp};
 use super::error::{NurbsError, Result};
-use super::fast::{bezier_pieces, eval_pieces, regular, rows_of, swapped_surface, PIECES_FROM};
+use super::fast::{
+    bezier_pieces, eval_pieces, grid_band_rows, regular, rows_of, swapped_surface, PIECES_FROM,
+};
+use super::interrupt::Interrupt;
 use super::nrb::{Kind, NrbParts};
 
 /// A real array of parameters: Octave's size and its values in storage order.
@@ -271,31 +276,53 @@ impl<'a> NrbEval<'a> {
         self.w_dims.iter().product()
     }
 
-    /// The operations per point, about (`4 ×` the terms of the tensor product).
-    pub fn work_per_point(&self) -> usize {
+    /// The cost of one point: the core's estimate of a NURBS point of these degrees
+    /// ([`rational_point_cost`] of the homogeneous tensor product, [`tensor_point_cost`]) —
+    /// for a curve or a surface what the core's [`NurbsCurve`] and [`NurbsSurface`] estimate
+    /// for themselves, so that the command line's `nurbs` and `nurbs-surface` price the same
+    /// points the same.
+    pub fn point_cost(&self) -> Cost {
         let dirs: &[Bsp<'_>] = match &self.plan {
             Plan::Curve { b, .. } => std::slice::from_ref(b),
             Plan::Grid { dirs, .. } | Plan::Scattered { dirs, .. } => dirs,
         };
-        4 * dirs.iter().map(|b| b.degree + 1).product::<usize>()
-            + 4 * dirs.len() * (dirs[0].degree + 1)
+        let mut degrees = [(0, 0); 3];
+        for (d, b) in degrees.iter_mut().zip(dirs) {
+            d.0 = b.degree;
+        }
+        rational_point_cost(tensor_point_cost(&degrees[..dirs.len().min(3)], 4, 0, 0), 3)
     }
 
     /// The points into `p` (of [`p_dims`](Self::p_dims)) and, when homogeneous, the weights
-    /// into `w` (of [`w_dims`](Self::w_dims)).
+    /// into `w` (of [`w_dims`](Self::w_dims)), in chunks of a few milliseconds of work,
+    /// `interrupt` asked before each.
     ///
     /// # Errors
     /// [`NurbsError::OutsideKnots`] for a parameter outside its knots (nothing else is left to
-    /// fail); the core's errors on the fast paths (none for the inputs they take).
-    pub fn eval_into(&self, p: &mut [f64], w: Option<&mut [f64]>) -> Result<()> {
+    /// fail); the core's errors on the fast paths (none for the inputs they take);
+    /// [`NurbsError::Interrupted`].
+    pub fn eval_into(
+        &self,
+        p: &mut [f64],
+        w: Option<&mut [f64]>,
+        interrupt: Interrupt<'_>,
+    ) -> Result<()> {
+        let chunk = if self.points() > super::FEW_ITEMS {
+            Interrupt::chunk(self.point_cost().weigh(false))
+        } else {
+            usize::MAX
+        };
+        let run = Run { interrupt, chunk };
         match &self.plan {
-            Plan::Curve { b, u } => self.curve_into(b, u, p, w),
+            Plan::Curve { b, u } => self.curve_into(b, u, (p, w), run),
             Plan::Grid {
                 dirs,
                 params,
                 numbers,
-            } => self.grid_into(dirs, params, numbers, p, w),
-            Plan::Scattered { dirs, pts, numbers } => self.scattered_into(dirs, pts, numbers, p, w),
+            } => self.grid_into((dirs, params, numbers), (p, w), run),
+            Plan::Scattered { dirs, pts, numbers } => {
+                self.scattered_into((dirs, pts, numbers), (p, w), run)
+            }
         }
     }
 
@@ -315,14 +342,14 @@ impl<'a> NrbEval<'a> {
         &self,
         b: &Bsp<'_>,
         u: &[f64],
-        p: &mut [f64],
-        w: Option<&mut [f64]>,
+        (p, w): (&mut [f64], Option<&mut [f64]>),
+        run: Run<'_>,
     ) -> Result<()> {
         if b.rows == 4 && regular(b, u) && self.finite_coefs() {
-            return self.curve_fast(b, u, p, w);
+            return self.curve_fast(b, u, (p, w), run);
         }
         let mut h = vec![0.0; b.rows * u.len()];
-        bspeval_into(b, u, &mut h)?;
+        bspeval_into(b, u, &mut h, run.interrupt)?;
         split(&h, b.rows, self.homogeneous, p, w);
         Ok(())
     }
@@ -331,8 +358,8 @@ impl<'a> NrbEval<'a> {
         &self,
         b: &Bsp<'_>,
         u: &[f64],
-        p: &mut [f64],
-        w: Option<&mut [f64]>,
+        (p, w): (&mut [f64], Option<&mut [f64]>),
+        run: Run<'_>,
     ) -> Result<()> {
         let nc = b.cols;
         let h = cagd::BSplineCurve::new(b.degree, b.knots.to_vec(), rows_of(b.coefs, 4, 4, nc))?;
@@ -341,7 +368,7 @@ impl<'a> NrbEval<'a> {
             let sorted = u.windows(2).all(|x| x[0] <= x[1]);
             if sorted && u.len() >= PIECES_FROM {
                 if let Some(pieces) = bezier_pieces(&h, unit)? {
-                    return eval_pieces(&pieces, u, p);
+                    return run.chunks(u, (p, 3), |part, out| eval_pieces(&pieces, part, out));
                 }
             }
             if unit {
@@ -350,33 +377,34 @@ impl<'a> NrbEval<'a> {
                     b.knots.to_vec(),
                     rows_of(b.coefs, 4, 3, nc),
                 )?;
-                xyz.eval_many_into(u, p)?;
-            } else {
-                NurbsCurve::from_homogeneous(h)?.eval_many_into(u, p)?;
+                return run.chunks(u, (p, 3), |part, out| Ok(xyz.eval_many_into(part, out)?));
             }
-            return Ok(());
+            let nurbs = NurbsCurve::from_homogeneous(h)?;
+            return run.chunks(u, (p, 3), |part, out| Ok(nurbs.eval_many_into(part, out)?));
         }
         let mut hv = vec![0.0; 4 * u.len()];
-        h.eval_many_into(u, &mut hv)?;
+        run.chunks(
+            u,
+            (&mut hv, 4),
+            |part, out| Ok(h.eval_many_into(part, out)?),
+        )?;
         split(&hv, 4, self.homogeneous, p, w);
         Ok(())
     }
 
     fn grid_into(
         &self,
-        dirs: &[Bsp<'_>],
-        params: &[&[f64]],
-        numbers: &[usize],
-        p: &mut [f64],
-        w: Option<&mut [f64]>,
+        (dirs, params, numbers): (&[Bsp<'_>], &[&[f64]], &[usize]),
+        (p, w): (&mut [f64], Option<&mut [f64]>),
+        run: Run<'_>,
     ) -> Result<()> {
         let fast = dirs.len() == 2
             && self.finite_coefs()
             && dirs.iter().zip(params).all(|(b, t)| regular(b, t));
         if fast {
-            return self.surface_grid_fast(dirs, params, numbers, p, w);
+            return self.surface_grid_fast((dirs, params, numbers), (p, w), run);
         }
-        let h = self.separable(dirs, params, numbers)?;
+        let h = self.separable(dirs, params, numbers, run.interrupt)?;
         split(&h, 4, self.homogeneous, p, w);
         Ok(())
     }
@@ -388,6 +416,7 @@ impl<'a> NrbEval<'a> {
         dirs: &[Bsp<'_>],
         params: &[&[f64]],
         numbers: &[usize],
+        interrupt: Interrupt<'_>,
     ) -> Result<Vec<f64>> {
         let mut sizes: Vec<usize> = numbers.to_vec();
         let mut a = self.coefs.to_vec();
@@ -395,46 +424,59 @@ impl<'a> NrbEval<'a> {
             let lead: usize = 4 * sizes[..k].iter().product::<usize>();
             let trail: usize = sizes[k + 1..].iter().product();
             let mut out = vec![0.0; lead * params[k].len() * trail];
-            along_axis(&dirs[k], &a, lead, trail, params[k], &mut out)?;
+            along_axis(&dirs[k], (&a, lead, trail), params[k], &mut out, interrupt)?;
             sizes[k] = params[k].len();
             a = out;
         }
         Ok(a)
     }
 
+    /// A surface grid by the core's tensor-product sweep of the surface with its directions
+    /// swapped (see [`swapped_surface`]), a band of `v` rows at a time.
     fn surface_grid_fast(
         &self,
-        dirs: &[Bsp<'_>],
-        params: &[&[f64]],
-        numbers: &[usize],
-        p: &mut [f64],
-        w: Option<&mut [f64]>,
+        (dirs, params, numbers): (&[Bsp<'_>], &[&[f64]], &[usize]),
+        (p, w): (&mut [f64], Option<&mut [f64]>),
+        run: Run<'_>,
     ) -> Result<()> {
         let (bu, bv) = (&dirs[0], &dirs[1]);
         let (us, vs) = (params[0], params[1]);
         let (n1, n2) = (numbers[0], numbers[1]);
-        if !self.homogeneous && self.unit_weights() {
-            swapped_surface(bu, bv, self.coefs, n1, n2, 3)?.eval_grid_into(vs, us, p)?;
+        let Some(rows) = grid_band_rows(bu, bv, us.len(), 4) else {
+            let h = self.separable(dirs, params, numbers, run.interrupt)?;
+            split(&h, 4, self.homogeneous, p, w);
             return Ok(());
+        };
+        let run = Run {
+            chunk: rows.saturating_mul(us.len()),
+            ..run
+        };
+        if !self.homogeneous && self.unit_weights() {
+            let s = swapped_surface(bu, bv, self.coefs, n1, n2, 3)?;
+            return run.bands((vs, us.len()), (p, 3), |band, out| {
+                Ok(s.eval_grid_into(band, us, out)?)
+            });
         }
         let s = swapped_surface(bu, bv, self.coefs, n1, n2, 4)?;
         if !self.homogeneous && self.positive_weights() {
-            NurbsSurface::from_homogeneous(s)?.eval_grid_into(vs, us, p)?;
-            return Ok(());
+            let s = NurbsSurface::from_homogeneous(s)?;
+            return run.bands((vs, us.len()), (p, 3), |band, out| {
+                Ok(s.eval_grid_into(band, us, out)?)
+            });
         }
         let mut h = vec![0.0; 4 * us.len() * vs.len()];
-        s.eval_grid_into(vs, us, &mut h)?;
+        run.bands((vs, us.len()), (&mut h, 4), |band, out| {
+            Ok(s.eval_grid_into(band, us, out)?)
+        })?;
         split(&h, 4, self.homogeneous, p, w);
         Ok(())
     }
 
     fn scattered_into(
         &self,
-        dirs: &[Bsp<'_>],
-        pts: &[f64],
-        numbers: &[usize],
-        p: &mut [f64],
-        w: Option<&mut [f64]>,
+        (dirs, pts, numbers): (&[Bsp<'_>], &[f64], &[usize]),
+        (p, w): (&mut [f64], Option<&mut [f64]>),
+        run: Run<'_>,
     ) -> Result<()> {
         let dim = dirs.len();
         let nt = pts.len() / dim.max(1);
@@ -452,6 +494,9 @@ impl<'a> NrbEval<'a> {
         let mut firsts = [0usize; 3];
         let mut scratch = Vec::new();
         for (j, x) in pts.chunks_exact(dim).enumerate() {
+            if j > 0 && j % run.chunk == 0 {
+                run.interrupt.check()?;
+            }
             for k in 0..dim {
                 firsts[k] = works[k].at(&dirs[k], x[k])?;
             }
@@ -466,6 +511,53 @@ impl<'a> NrbEval<'a> {
         }
         split(&h, 4, self.homogeneous, p, w);
         Ok(())
+    }
+}
+
+/// How the points are evaluated: `chunk` points at a time, `interrupt` asked before each
+/// chunk.
+#[derive(Debug, Clone, Copy)]
+struct Run<'i> {
+    interrupt: Interrupt<'i>,
+    chunk: usize,
+}
+
+impl Run<'_> {
+    /// `fill(part, buffer)` over the chunks of `items` and the matching chunks of `out`
+    /// (`per` numbers per item), `interrupt` asked between them.
+    fn chunks(
+        &self,
+        items: &[f64],
+        (out, per): (&mut [f64], usize),
+        mut fill: impl FnMut(&[f64], &mut [f64]) -> Result<()>,
+    ) -> Result<()> {
+        let size = self.chunk.saturating_mul(per.max(1));
+        for (k, (part, buffer)) in items
+            .chunks(self.chunk)
+            .zip(out.chunks_mut(size))
+            .enumerate()
+        {
+            if k > 0 {
+                self.interrupt.check()?;
+            }
+            fill(part, buffer)?;
+        }
+        Ok(())
+    }
+
+    /// [`chunks`](Self::chunks) of whole rows: `rows` of `row_len` points each (`per`
+    /// numbers per point), as many rows at a time as make a chunk of points (at least one).
+    fn bands(
+        &self,
+        (rows, row_len): (&[f64], usize),
+        (out, per): (&mut [f64], usize),
+        fill: impl FnMut(&[f64], &mut [f64]) -> Result<()>,
+    ) -> Result<()> {
+        let band = Run {
+            chunk: (self.chunk / row_len.max(1)).max(1),
+            ..*self
+        };
+        band.chunks(rows, (out, row_len * per), fill)
     }
 }
 

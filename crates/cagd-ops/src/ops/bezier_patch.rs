@@ -89,10 +89,8 @@ impl<T: Scalar> Operation<T> for BezierPatchPoints<T> {
         };
         let cost = cost(&patch, (&us, &vs), self.steps).and(cost(&patch, (&pus, &pvs), false));
         cx.check_cost(Role::Grid, cost, T::EXACT)?;
-        cx.check_interrupt()?;
-        let grid = patch
-            .try_eval_grid(&us, &vs)
-            .map_err(lib(Role::Grid, "finite parameter values"))?;
+        let coefficients = max_bits(patch.to_grid().iter());
+        let grid = grid_points(&patch, (&us, &vs), coefficients, cx)?;
         let report = self.report(&patch, (&us, &vs), &grid, cx)?;
         let mut answer = Answer {
             report,
@@ -246,6 +244,22 @@ impl<T: Scalar> BezierPatchPoints<T> {
             _ => drawing,
         }
     }
+}
+
+/// The patch on the grid `us × vs` (coefficients of `coefficients` bits), in bands of rows
+/// between which the front end may interrupt.
+fn grid_points<T: Scalar>(
+    patch: &BezierPatch<T>,
+    (us, vs): (&[T], &[T]),
+    coefficients: u128,
+    cx: &Context,
+) -> Result<PointGrid<T>> {
+    let one = patch.grid_cost(max_bits(us), max_bits(vs), coefficients);
+    super::grid_in_bands((us, vs), one.weigh(T::EXACT), cx, |band, vs| {
+        patch
+            .try_eval_grid(band, vs)
+            .map_err(lib(Role::Grid, "finite parameter values"))
+    })
 }
 
 #[cfg(test)]

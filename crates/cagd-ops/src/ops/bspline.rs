@@ -8,7 +8,7 @@
 //! The degree and the knots follow the one convention of [`crate::knots`].
 
 use cagd::bspline::{basis_cost, BSplineCurve, DeBoorScheme};
-use cagd::cost::max_bits;
+use cagd::cost::{max_bits, Cost};
 use cagd::{Curve, Scalar};
 use nalgebra::DMatrix;
 
@@ -108,7 +108,7 @@ impl<T: Scalar> Operation<T> for BSpline<T> {
         let cost = at(&ts, self.steps, self.basis).and(at(&dense, false, false));
         cx.check_cost(Role::T, cost, T::EXACT)?;
         let fill = |us: &[T], out: &mut [T]| curve.try_eval_many_into(us, out);
-        let values = points_in_order(curve.dim(), &ts, cx, &fill)?;
+        let values = points_in_order((curve.dim(), curve.point_cost(0)), &ts, cx, &fill)?;
         let mut report = Report::new();
         if self.basis || self.steps {
             let rows = (0..ts.len()).map(|k| curve.basis(&ts[k]));
@@ -209,7 +209,7 @@ pub(crate) fn picture_line<T: Scalar>(
         (a, b),
         PICTURE_SAMPLES,
         false,
-        |ts| points_in_order(dim, ts, cx, fill).map(|m| to_f64(&m)),
+        |ts| points_in_order((dim, point(0)), ts, cx, fill).map(|m| to_f64(&m)),
         |ts| crate::picture::allowed(cx, ts, &point),
     )
 }
@@ -228,25 +228,24 @@ pub(crate) fn picture<T: Scalar>(
         .points(to_f64(values), point_labels("t", ts), "points at t")
 }
 
-/// Points evaluated between interrupt checks.
-const CHUNK: usize = 4096;
-
 /// An evaluation of a spline at parameters into a buffer (`d` values per parameter).
 pub(crate) type Fill<'a, T> = dyn Fn(&[T], &mut [T]) -> cagd::Result<()> + 'a;
 
 /// The points at `ts` (in the domain) by `fill` — a spline's evaluation in the operation
 /// order of octave-nurbs (`bspeval`, `nrbeval`), the values of `try_eval` bit for bit —
-/// `d × k`, a chunk at a time between which the front end may interrupt.
+/// `d × k`, a chunk at a time between which the front end may interrupt (chunks of about
+/// [`CHECK_WORK`](super::CHECK_WORK) operations, each point weighing `per_point`).
 pub(crate) fn points_in_order<T: Scalar>(
-    d: usize,
+    (d, per_point): (usize, Cost),
     ts: &[T],
     cx: &Context,
     fill: &Fill<'_, T>,
 ) -> Result<DMatrix<T>> {
     let mut out = DMatrix::from_element(d, ts.len(), T::zero());
+    let chunk = super::chunk_points(per_point.weigh(T::EXACT));
     for (chunk, buffer) in ts
-        .chunks(CHUNK)
-        .zip(out.as_mut_slice().chunks_mut(CHUNK * d.max(1)))
+        .chunks(chunk)
+        .zip(out.as_mut_slice().chunks_mut(chunk * d.max(1)))
     {
         cx.check_interrupt()?;
         fill(chunk, buffer).map_err(lib(Role::T, DOMAIN_FORM))?;

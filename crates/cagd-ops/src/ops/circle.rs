@@ -90,7 +90,7 @@ impl Operation<f64> for Circle {
         let per = curve.point_cost(max_bits(&ts));
         cx.check_cost(Role::T, per.times((ts.len() + dense.len()) as u128), false)?;
         let fill = |us: &[f64], out: &mut [f64]| curve.try_eval_many_into(us, out);
-        let values = points_in_order(curve.dim(), &ts, cx, &fill)?;
+        let values = points_in_order((curve.dim(), curve.point_cost(0)), &ts, cx, &fill)?;
         let mut report = Report::new();
         if self.steps {
             report.push(

@@ -74,7 +74,15 @@ impl<T: Scalar> Operation<T> for Convert<T> {
         let (t, into, out) = form_conversion::<T>(self.from, self.to, k)
             .map_err(lib(Role::Control, GEOMETRY_FORM))?;
         let result = T::mat_mul(x, &t);
-        let bezier = BezierCurve::new(T::mat_mul(x, &into)).map_err(lib(
+        let control = T::mat_mul(x, &into);
+        // Finite geometry whose Bézier points overflow: an overflow, not a non-finite input.
+        cagd::error::check_overflow("the geometry's Bézier points", control.iter()).map_err(
+            lib(
+                Role::Control,
+                "a geometry whose Bézier points stay within ±1.8e308",
+            ),
+        )?;
+        let bezier = BezierCurve::new(control).map_err(lib(
             Role::Control,
             "a d×(n+1) geometry matrix of finite numbers",
         ))?;

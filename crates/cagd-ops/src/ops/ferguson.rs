@@ -130,7 +130,13 @@ impl<T: Scalar> Operation<T> for Ferguson<T> {
         }
         report.push("u", Value::row(&us));
         report.push("v", Value::row(&vs));
-        push_result(&mut report, &patch, (&us, &vs), (single, self.at.list), cx)?;
+        push_result(
+            &mut report,
+            (&patch, per_point),
+            (&us, &vs),
+            (single, self.at.list),
+            cx,
+        )?;
         let pictures = Pictures {
             at: (&us, &vs, single),
             grid: (&pus, &pvs),

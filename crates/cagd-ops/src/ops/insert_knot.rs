@@ -147,9 +147,11 @@ impl<T: Scalar> InsertKnot<T> {
         let eval = |us: &[T]| -> Result<DMatrix<T>> {
             if self.weights.is_some() {
                 let c = projected(curve)?;
-                points_in_order(c.dim(), us, cx, &|u, out| c.try_eval_many_into(u, out))
+                points_in_order((c.dim(), c.point_cost(0)), us, cx, &|u, out| {
+                    c.try_eval_many_into(u, out)
+                })
             } else {
-                points_in_order(curve.dim(), us, cx, &|u, out| {
+                points_in_order((curve.dim(), curve.point_cost(0)), us, cx, &|u, out| {
                     curve.try_eval_many_into(u, out)
                 })
             }

@@ -32,6 +32,7 @@
 //! | [`SurfaceSamples`] | a surface known by evaluation (a user's expression) on a grid |
 //! | [`Elevate`] | degree elevation of a Bézier or clamped B-spline curve |
 
+use cagd::grid::PointGrid;
 use cagd::{Curve, Scalar};
 use nalgebra::DMatrix;
 
@@ -114,8 +115,25 @@ pub const STEPS_FACTOR: u128 = 50;
 /// fill gigabytes is refused up front.
 pub const WRITE_OPS: u128 = 100;
 
-/// Points evaluated between two interrupt checks.
+/// Most points evaluated between two interrupt checks.
 const CHUNK: usize = 4096;
+
+/// The work, in operations of one `f64` each, between two interrupt checks: a few
+/// milliseconds (and far less for cheap points: at most 4096 of them).
+pub const CHECK_WORK: u128 = 1 << 22;
+
+/// How many points of `per_point` operations each to evaluate between two interrupt checks:
+/// about [`CHECK_WORK`] operations, at least 1, at most 4096 points. A curve of degree
+/// 1000 (a million operations a point) is asked every 4 points, a cubic every 4096.
+///
+/// ```
+/// use cagd_ops::ops::chunk_points;
+/// assert_eq!((chunk_points(1_000_000), chunk_points(16), chunk_points(0)), (4, 4096, 4096));
+/// assert_eq!(chunk_points(u128::MAX), 1);
+/// ```
+pub fn chunk_points(per_point: u128) -> usize {
+    (CHECK_WORK / per_point.max(1)).clamp(1, CHUNK as u128) as usize
+}
 
 /// The points of `curve` at `ts` (`d × k`, one per column), in chunks between which the
 /// front end may interrupt.
@@ -145,7 +163,8 @@ pub fn eval_points<T: Scalar, C: Curve<T> + ?Sized>(
     out.try_reserve_exact(len)
         .map_err(|_| too_large(len as u128))?;
     out.resize(len, T::zero());
-    for (chunk, buffer) in ts.chunks(CHUNK).zip(out.chunks_mut(CHUNK * d.max(1))) {
+    let chunk = chunk_points(curve.point_cost(cagd::cost::max_bits(ts)).weigh(T::EXACT));
+    for (chunk, buffer) in ts.chunks(chunk).zip(out.chunks_mut(chunk * d.max(1))) {
         cx.check_interrupt()?;
         curve
             .eval_many_into(chunk, buffer)
@@ -153,6 +172,38 @@ pub fn eval_points<T: Scalar, C: Curve<T> + ?Sized>(
     }
     // Row-major k × d is column-major d × k: one point per column.
     Ok(DMatrix::from_vec(d, ts.len(), out))
+}
+
+/// The grid `us × vs` (`nu × nv × d`) evaluated by `eval` a band of `u` rows at a time, each
+/// band about [`CHECK_WORK`] operations of `per_point` each, between which the front end may
+/// interrupt. `eval(band, vs)` gives the grid of its rows.
+///
+/// # Errors
+/// `eval`'s; [`Kind::Interrupted`](crate::Kind::Interrupted).
+pub fn grid_in_bands<T: Scalar>(
+    (us, vs): (&[T], &[T]),
+    per_point: u128,
+    cx: &Context,
+    eval: impl Fn(&[T], &[T]) -> Result<PointGrid<T>>,
+) -> Result<PointGrid<T>> {
+    let rows = chunk_points(per_point.saturating_mul(vs.len().max(1) as u128));
+    let mut bands = us.chunks(rows);
+    cx.check_interrupt()?;
+    let Some(first) = bands.next() else {
+        return eval(us, vs);
+    };
+    let first = eval(first, vs)?;
+    if first.dim().0 == us.len() {
+        return Ok(first);
+    }
+    let d = first.dim().2;
+    let mut data = first.into_vec();
+    for band in bands {
+        cx.check_interrupt()?;
+        data.extend(eval(band, vs)?.into_vec());
+    }
+    Ok(PointGrid::from_vec((us.len(), vs.len(), d), data)
+        .expect("bands of u rows make the whole grid"))
 }
 
 /// Labels `t = 1/2` of the points at `values`, named `name`.

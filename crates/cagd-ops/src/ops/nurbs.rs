@@ -130,7 +130,7 @@ impl<T: Scalar> Operation<T> for Nurbs<T> {
         let cost = at(&ts, self.basis || self.steps).and(at(&dense, false));
         cx.check_cost(Role::T, cost, T::EXACT)?;
         let fill = |us: &[T], out: &mut [T]| curve.try_eval_many_into(us, out);
-        let values = points_in_order(curve.dim(), &ts, cx, &fill)?;
+        let values = points_in_order((curve.dim(), curve.point_cost(0)), &ts, cx, &fill)?;
         let mut report = Report::new();
         if self.basis || self.steps {
             let rows = (0..ts.len()).map(|k| curve.basis(&ts[k]));

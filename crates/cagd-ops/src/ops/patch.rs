@@ -15,10 +15,11 @@ use crate::error::Result;
 use crate::{Answer, Context, Report, Value};
 
 /// Pushes `result`: at a single point (and no `list`) the `d × 1` column, else the grid
-/// `us × vs × d` (or with `list` one row `u v x y z` per point).
+/// `us × vs × d` (or with `list` one row `u v x y z` per point), evaluated in bands of rows
+/// between which the front end may interrupt (`per_point` the cost of one point).
 pub fn push_result<T: Scalar, S: Surface<T>>(
     report: &mut Report<T>,
-    surface: &S,
+    (surface, per_point): (&S, Cost),
     (us, vs): (&[T], &[T]),
     (single, list): (bool, bool),
     cx: &Context,
@@ -30,8 +31,10 @@ pub fn push_result<T: Scalar, S: Surface<T>>(
         );
         return Ok(());
     }
-    cx.check_interrupt()?;
-    push_surface(report, "result", (us, vs), surface.eval_grid(us, vs), list);
+    let grid = super::grid_in_bands((us, vs), per_point.weigh(T::EXACT), cx, |band, vs| {
+        Ok(surface.eval_grid(band, vs))
+    })?;
+    push_surface(report, "result", (us, vs), grid, list);
     Ok(())
 }
 

@@ -103,7 +103,7 @@ impl<T: Scalar> Operation<T> for Ruled<T> {
         }
         push_result(
             &mut report,
-            &surface,
+            (&surface, per_point),
             (&us, &vs),
             (single, self.at.list),
             cx,
