@@ -32,8 +32,8 @@ endfunction
 %!assert (Lagrange ([0 0.5 1]', 1, [0; 1]), [1; 0])
 %!assert (size (Lagrange ([0 1], 1, zeros (2, 3, 4))), [2 3 4])
 %!error <m: expected the index of a node> Lagrange ([0 0.5 1], 4, 0.5)
-%!error <nodes 0 and 1 are equal> Lagrange ([1 1], 1, 0.5)
-%!error <u: value at index 1 is not finite> Lagrange ([0 1], 1, [0 Inf])
+%!error <nodes 1 and 2 are equal> Lagrange ([1 1], 1, 0.5)
+%!error <u: value 2 is not finite> Lagrange ([0 1], 1, [0 Inf])
 ## L_1 of the nodes 0, 1, 2 at 1e300 is (1e300 - 1)(1e300 - 2)/2: beyond the doubles.
 %!error id=cagd:overflow Lagrange ([0 1 2], 1, 1e300)
 

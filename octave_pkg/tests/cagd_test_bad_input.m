@@ -52,12 +52,12 @@ function cagd_test_bad_input ()
     "empty nodes",              @() krpaGordon (g_u, g_v, g_uv, [], x, N),  "cagd:empty", "x_u: empty"
     "empty knots (twin)",       @() cagd_bspeval (2, [0 1 2], [], 0.5),     "cagd:value", "k: degree 2 and 3 control points need 6 knots, not 0"
     % not finite
-    "NaN control point",        @() deCasteljau ([0 NaN], 3),               "cagd:nonfinite", "kontrolneT: value at index 1 is not finite (NaN)"
+    "NaN control point",        @() deCasteljau ([0 NaN], 3),               "cagd:nonfinite", "kontrolneT: value 2 is not finite (NaN)"
     "Inf parameter",            @() cagd_bezier (P, Inf),                   "cagd:nonfinite", "t: value 1 is not finite (inf)"
     "NaN Lagrange parameter",   @() Lagrange ([0 1], 1, NaN),               "cagd:nonfinite", "not finite"
     "NaN B-spline parameter",   @() cagd_bspline (2, [0 1 2], [], NaN),     "cagd:nonfinite", "t: value 1 is not finite (NaN)"
     % finite arguments, results beyond the doubles: refused, never returned as Inf or NaN
-    "Bezier at t = 5",          @() cagd_bezier ([1e308 -1e308], 5),        "cagd:overflow", "t: Bézier curve points: value at index 0 is not a finite double (-inf)"
+    "Bezier at t = 5",          @() cagd_bezier ([1e308 -1e308], 5),        "cagd:overflow", "t: Bézier curve points: value 1 is not a finite double (-inf)"
     "Hermite to B-spline",      @() cagd_convert (ones (2, 4) * 1.7e308, "hermite", "bspline"), "cagd:overflow", "G: the geometry's Bézier points"
     "derivative of ±1.7e308",   @() cagd_bezier_derivative ([1.7e308 -1.7e308 1.7e308], 0.5), "cagd:overflow", "Bézier derivative control points"
     "weighted point w P",       @() cagd_nurbs (1, [1e300 0], [1e10 1], [0 0 1 1], 0.5), "cagd:overflow", "w: NURBS weights"
@@ -65,7 +65,7 @@ function cagd_test_bad_input ()
     "Coons of 1.7e308",         @() cagd_coons (1.7e308 * ones (3, 2), 1.7e308 * ones (3, 2), 1.7e308 * ones (3, 2), 1.7e308 * ones (3, 2), 0.5, 0.5), "cagd:overflow", "X: the result overflows the range of doubles"
     "Bernstein at 1e103",       @() cagd_bernstein (3, 1e103),              "cagd:overflow", "B: the result overflows"
     "Lagrange at 1e300",        @() Lagrange ([0 1 2], 1, 1e300),           "cagd:overflow", "Lagrange basis value"
-    "vrednostCoons at 1e300",   @() vrednostCoons (1e300, 1e300, P1, P2, P1, P3, P1, P3, P2, P4), "cagd:overflow", "vrednostCoons: T: value at index 0 is not a finite double"
+    "vrednostCoons at 1e300",   @() vrednostCoons (1e300, 1e300, P1, P2, P1, P3, P1, P3, P2, P4), "cagd:overflow", "vrednostCoons: T: value 1 is not a finite double"
     "bilinearna at 1e308",      @() bilinearna ([0 0 0 1 0 0; 0 1 0 1 1 1], 1e308, 1e308, 3), "cagd:overflow", "bilinearna: L:"
     "krpaGordon of 1.7e308",    @() krpaGordon (1.7e308 * ones (3, 10), 1.7e308 * ones (3, 10), 1.7e308 * ones (2, 6), [0 1], [0 1], 5), "cagd:overflow", "krpaGordon: R:"
     "deCasteljau at the max",   @() deCasteljau (realmax * ones (1, 30), 7), "cagd:overflow", "Bézier curve points"
@@ -94,7 +94,7 @@ function cagd_test_bad_input ()
     "span beyond the knots",    @() cagd_findspan (3, 2, 0.5, [0 0 1 1]),   "cagd:shape", "index 5 is out of bound 4"
     "negative weight",          @() cagd_nurbs (2, [0 1 2], [1 -1 1], [], 0.5), "cagd:weights", "weight 2 is -1; weights must be positive"
     "zero weight in NURBS",     @() cagd_nurbs (2, [1 0 0; 0 0 1], [1 0 1], [], 0.5), "cagd:weights", "weights must be positive"
-    "repeated nodes",           @() Lagrange ([1 1], 1, 0.5),               "cagd:nodes", "nodes 0 and 1 are equal (1)"
+    "repeated nodes",           @() Lagrange ([1 1], 1, 0.5),               "cagd:nodes", "nodes 1 and 2 are equal (1)"
     "unsorted nodes",           @() krpaGordon (g_u, g_v, g_uv, [0 1 0.5], x, N), "cagd:nodes", "nodes must increase"
     % constructions
     "corners do not meet",      @() krpaCoons (c1, c2, d1, d2, P1, P2, [1;1;1], P4), "cagd:corners", "do not meet at the corners"

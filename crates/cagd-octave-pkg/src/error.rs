@@ -1,7 +1,8 @@
 //! The package's errors: an Octave identifier `cagd:<kind>` and a one-line message.
 //!
-//! A library error ([`cagd::Error`]) keeps its own text, which is the text the command line
-//! prints after the argument name (`cagd: error: ARG: PROBLEM; expected FORM`); in Octave it
+//! A library error ([`cagd::Error`]) keeps its own text with indices counted from 1
+//! ([`cagd_ops::error::counted_from_one`]), which is the text the command line prints after the
+//! argument name (`cagd: error: ARG: PROBLEM; expected FORM`); in Octave it
 //! reads `FUNCTION: PROBLEM`. Errors found by the package itself (a wrong class, an empty
 //! array, a size) read `FUNCTION: ARGUMENT: PROBLEM; expected FORM`, the command line's form.
 
@@ -167,7 +168,8 @@ impl From<cagd::Error> for PkgError {
                 "{what}: {requested} exceeds the limit of {limit} (raise it with cagd_limits (\"{}\", VALUE))",
                 which.field()
             ),
-            other => other.to_string(),
+            // Indices counted from 1, as Octave counts and as the operations word them.
+            other => cagd_ops::error::counted_from_one(other),
         };
         PkgError::new(kind, message)
     }

@@ -241,12 +241,31 @@ impl OpError {
 }
 
 /// The words of a library error whose index counts from 0, counted from 1 as every index in
-/// these words is (a value, a weight, a node): the library's own `Display` otherwise.
-fn counted_from_one(error: &cagd::Error) -> String {
+/// these words is (a value, a weight, a node, a knot): the library's own `Display` otherwise.
+/// The Octave package words the errors of its thesis functions with it too.
+///
+/// ```
+/// let e = cagd::Error::Overflow { what: "T", index: 0, value: f64::INFINITY };
+/// assert!(cagd_ops::error::counted_from_one(&e).starts_with("T: value 1 is not a finite double (inf)"));
+/// ```
+pub fn counted_from_one(error: &cagd::Error) -> String {
     match error {
         cagd::Error::NonFinite { what, index, value } => {
             format!("{what}: value {} is not finite ({value})", index + 1)
         }
+        cagd::Error::Overflow { what, index, value } => format!(
+            "{what}: value {} is not a finite double ({value}): the input's magnitudes are too large (or too close together) for double precision",
+            index + 1
+        ),
+        cagd::Error::DecreasingKnots {
+            what,
+            index,
+            previous,
+            next,
+        } => format!(
+            "{what}: knot {} ({next}) is below the knot before it ({previous}); knots must be non-decreasing",
+            index + 1
+        ),
         cagd::Error::NonPositiveWeight { what, index, value } => format!(
             "{what}: weight {} is {value}; weights must be positive",
             index + 1

@@ -121,9 +121,14 @@ pub static PHRASES: &[Phrase] = &[
         "očekávaný počet vah je {0} (jedna na řídicí bod), nalezeno: {1}",
     ),
     p(
-        "value at index {0} is not finite ({1})",
-        "vrednost z indeksom {0} ni končna ({1})",
-        "hodnota s indexem {0} není konečná ({1})",
+        "value {0} is not finite ({1})",
+        "vrednost {0} ni končna ({1})",
+        "hodnota {0} není konečná ({1})",
+    ),
+    p(
+        "value {0} is not a finite double ({1}): the input's magnitudes are too large (or too close together) for double precision",
+        "vrednost {0} ni končno število v dvojni natančnosti ({1}): velikosti vnosa so za dvojno natančnost prevelike (ali preblizu skupaj)",
+        "hodnota {0} není konečné číslo ve dvojité přesnosti ({1}): velikosti vstupu jsou pro dvojitou přesnost příliš velké (nebo příliš blízko u sebe)",
     ),
     p(
         "derivative order {0} exceeds the degree {1}",
