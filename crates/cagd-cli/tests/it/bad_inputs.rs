@@ -1082,7 +1082,7 @@ fn cases(dir: &Path) -> Vec<(Vec<String>, &'static str, &'static str)> {
                 "--rows",
                 "--interval=-1e308,1e308",
             ]),
-            "CONTROL",
+            "--interval",
             "Library::Overflow",
         ),
         (

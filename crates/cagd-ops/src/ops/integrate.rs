@@ -213,8 +213,15 @@ impl<T: Scalar> Integrate<T> {
             .interval
             .clone()
             .unwrap_or_else(|| (T::zero(), T::one()));
-        let curve = BezierCurve::new_on_interval(control.clone(), a.clone(), b.clone())
-            .map_err(lib(Role::Control, CONTROL_FORM))?;
+        // The control points and the interval checked apart, each error naming its own
+        // argument (an interval [-1e308, 1e308] is the interval's fault, not the points').
+        let curve = BezierCurve::new(control.clone())
+            .map_err(lib(Role::Control, CONTROL_FORM))?
+            .with_interval(a.clone(), b.clone())
+            .map_err(lib(
+                Role::Interval,
+                "two finite ends a < b whose width b - a is a finite double",
+            ))?;
         let sums =
             "control points and an interval whose integrals stay within the range of doubles";
         let anti = bezier_antiderivative(&curve).map_err(lib(Role::Control, sums))?;
