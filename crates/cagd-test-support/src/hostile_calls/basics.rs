@@ -290,6 +290,25 @@ pub fn numbers(rng: &Draws) {
     let big = cagd::bernstein::binomial(small(rng) * 40, small(rng) * 20);
     total("scalar::Scalar::from_biguint", f64::from_biguint(&big));
     total("scalar::Scalar::vectorized", f64::vectorized(|| x + 1.0));
+    // The batch kernels' scans: any values, any length; the answers agree with the plain
+    // definitions (a first non-finite value, all within [lo, hi] with NaN never within).
+    let xs = values(rng, small(rng) * 100);
+    let first = total(
+        "scalar::Scalar::first_non_finite",
+        f64::first_non_finite(&xs),
+    );
+    assert_eq!(first, xs.iter().position(|x| !x.is_finite()), "{xs:?}");
+    let (lo, hi) = (value(rng), value(rng));
+    let within = total("scalar::Scalar::all_within", f64::all_within(&xs, &lo, &hi));
+    assert_eq!(
+        within,
+        xs.iter().all(|x| lo <= *x && *x <= hi),
+        "{xs:?} in [{lo}, {hi}]"
+    );
+    ok(
+        "error::check_finite_slice",
+        cagd::error::check_finite_slice("xs", &xs).map(|()| 0.0),
+    );
     let tol = rng.pick(&[
         Tolerance::Absolute(x),
         Tolerance::Relative(x),

@@ -1,6 +1,6 @@
 //! Bézier curves, their schemes and matrix forms; Bézier patches and their schemes.
 
-use cagd::bezier::{bilinear_interpolate, BezierCurve, BezierPatch, Edge, MatrixForm};
+use cagd::bezier::{bilinear_interpolate, BezierCurve, BezierPatch, Direction, Edge, MatrixForm};
 use cagd::grid::PointGrid;
 use cagd::{Curve, CurveDeriv, Surface};
 
@@ -196,6 +196,30 @@ pub fn patches(rng: &Draws) {
         p.derivative(size(rng), size(rng)),
     );
     ok("bezier::BezierPatch::twist", p.twist());
+    // Degree elevation, subdivision and integration through the control curves.
+    let (r, s) = (degree(rng, 2), degree(rng, 2));
+    ok("bezier::BezierPatch::elevate", p.elevate(r, s));
+    total(
+        "bezier::BezierPatch::elevate_cost",
+        p.elevate_cost(size(rng), size(rng), 64),
+    );
+    let dir = rng.pick(&[Direction::U, Direction::V]);
+    total("bezier::BezierPatch::control_curves", p.control_curves(dir));
+    ok(
+        "bezier::BezierPatch::subdivide",
+        p.subdivide(dir, value(rng)),
+    );
+    total(
+        "bezier::BezierPatch::subdivide_cost",
+        p.subdivide_cost(dir, 64, 64),
+    );
+    ok("bezier::BezierPatch::antiderivative", p.antiderivative(dir));
+    total(
+        "bezier::BezierPatch::antiderivative_cost",
+        p.antiderivative_cost(dir, 64),
+    );
+    ok("bezier::BezierPatch::integral", p.integral());
+    total("bezier::BezierPatch::integral_cost", p.integral_cost(64));
     let edge = rng.pick(&Edge::ALL);
     ok(
         "bezier::BezierPatch::boundary",

@@ -66,6 +66,15 @@ pub fn bases(rng: &Draws) {
         "bspline::curve_point_cost",
         curve_point_cost(size(rng), size(rng), 64, 64, 64),
     );
+    let directions: Vec<(usize, u128)> = (0..small(rng) % 4).map(|_| (size(rng), 64)).collect();
+    let tensor = total(
+        "bspline::tensor_point_cost",
+        cagd::bspline::tensor_point_cost(&directions, size(rng), 64, 64),
+    );
+    total(
+        "nurbs::rational_point_cost",
+        cagd::nurbs::rational_point_cost(tensor, size(rng)),
+    );
 }
 
 /// A B-spline curve from arbitrary knots and control points, clamped, uniform or from a
