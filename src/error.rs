@@ -445,14 +445,11 @@ pub fn check_finite<'a, T: Scalar>(
 /// # Errors
 /// [`Error::NonFinite`] naming `what` and the first NaN or infinite value.
 pub fn check_finite_slice<T: Scalar>(what: &'static str, values: &[T]) -> Result<()> {
-    match T::first_non_finite(values) {
-        None => Ok(()),
-        Some(index) => Err(Error::NonFinite {
-            what,
-            index,
-            value: values[index].to_f64(),
-        }),
+    if T::first_non_finite(values).is_none() {
+        return Ok(());
     }
+    // The error as check_finite words it (the scan again, only on the way out).
+    check_finite(what, values)
 }
 
 /// Checks that every value a computation produced is finite; reports the first one that is not.
