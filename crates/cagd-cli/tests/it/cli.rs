@@ -959,7 +959,7 @@ fn thesis_prints_every_example_and_writes_valid_files() {
         let mesh = &models[0].mesh;
         assert_eq!(mesh.positions.len(), 3 * n * n, "{name}.obj");
         assert_eq!(mesh.indices.len(), 3 * faces, "{name}.obj");
-        let parser = ply_rs::parser::Parser::<ply_rs::ply::DefaultElement>::new();
+        let parser = ply_rs_bw::parser::Parser::<ply_rs_bw::ply::DefaultElement>::new();
         let ply = parser
             .read_ply(&mut std::fs::File::open(out_dir.join(format!("{name}.ply"))).unwrap())
             .unwrap();

@@ -125,13 +125,13 @@ fn obj_reads_back_exactly() {
     }
 }
 
-fn read_ply(bytes: &[u8]) -> ply_rs::ply::Ply<ply_rs::ply::DefaultElement> {
-    let parser = ply_rs::parser::Parser::<ply_rs::ply::DefaultElement>::new();
+fn read_ply(bytes: &[u8]) -> ply_rs_bw::ply::Ply<ply_rs_bw::ply::DefaultElement> {
+    let parser = ply_rs_bw::parser::Parser::<ply_rs_bw::ply::DefaultElement>::new();
     parser.read_ply(&mut Cursor::new(bytes)).unwrap()
 }
 
 fn check_ply(grid: &PointGrid<f64>, bytes: &[u8], faces: usize) {
-    use ply_rs::ply::Property;
+    use ply_rs_bw::ply::Property;
     let (nu, nv, _) = grid.dim();
     let ply = read_ply(bytes);
     let vertices = &ply.payload["vertex"];
