@@ -150,6 +150,26 @@ impl CliError {
             _ => 2,
         }
     }
+
+    /// The resource limit that refused the request, if a limit did (`--max-work`, …).
+    ///
+    /// ```
+    /// use cagd::limits::Limit;
+    /// let e = cagd_cli::run(["cagd", "bernstein", "--degree", "3", "--n", "101", "--max-work", "10"])
+    ///     .unwrap_err();
+    /// assert_eq!(e.limit(), Some(Limit::Work));
+    /// let e = cagd_cli::run(["cagd", "bernstein", "--degree", "-1"]).unwrap_err();
+    /// assert_eq!(e.limit(), None);
+    /// ```
+    pub fn limit(&self) -> Option<cagd::limits::Limit> {
+        match &self.kind {
+            ErrorKind::Library(e) => match **e {
+                cagd::Error::TooLarge { which, .. } => Some(which),
+                _ => None,
+            },
+            _ => None,
+        }
+    }
 }
 
 /// How an I/O error reads in a message, and its kind.

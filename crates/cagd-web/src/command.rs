@@ -17,7 +17,8 @@ thread_local! {
 /// - `{"ok": true, "stdout": TEXT, "warnings": [LINE…], "files": [{"path": P, "size": N}…]}`,
 ///   the warnings as the program prints them (`cagd: warning: …`), the files staged (read each
 ///   with [`file_bytes`]);
-/// - `{"ok": false, "error": "cagd: error: ARG: PROBLEM; expected FORM", "code": 2}`.
+/// - `{"ok": false, "error": "cagd: error: ARG: PROBLEM; expected FORM", "code": 2, "limit": L}`,
+///   `L` the resource limit that refused the request (e.g. `"max_work"`), else `null`.
 ///
 /// ```
 /// let answer = cagd_web::run(
@@ -65,6 +66,7 @@ pub fn run(argv: Vec<String>, names: Vec<String>, texts: Vec<String>) -> String 
                 "ok": false,
                 "error": format!("cagd: error: {e}"),
                 "code": e.exit_code(),
+                "limit": e.limit().map(|l| l.field()),
             })
         }
     };
@@ -122,7 +124,21 @@ mod tests {
         assert_eq!(v["code"], 2);
         let e = v["error"].as_str().unwrap();
         assert!(e.starts_with("cagd: error: CONTROL: "), "{e}");
+        assert!(v["limit"].is_null());
         assert!(file_bytes(0).is_empty());
+        // A limit names itself, so that the page can run a command on its main thread under a
+        // small work limit and hand the ones above it to a worker.
+        let v = answer(&[
+            "bernstein",
+            "--degree",
+            "3",
+            "--n",
+            "101",
+            "--max-work",
+            "10",
+        ]);
+        assert_eq!(v["limit"], "max_work");
+        assert!(v["error"].as_str().unwrap().contains("--max-work"));
         let v = answer(&["serve"]);
         assert!(v["error"]
             .as_str()

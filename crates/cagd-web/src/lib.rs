@@ -9,7 +9,9 @@
 //!   (the page shows it under the label of the view's field);
 //! - what the page builds itself from ([`schema`]: every subcommand's arguments, for the forms,
 //!   with their Slovenian and Czech labels; [`step_tables`]: the labels of the steps in
-//!   English, Slovenian and Czech) and [`message_in`]: a message in Slovenian or Czech.
+//!   English, Slovenian and Czech; both read once by `web/build.sh` into `pkg/tables.json`,
+//!   which the page fetches while the .wasm compiles) and [`message_in`]: a message in
+//!   Slovenian or Czech.
 //!
 //! Everything is plain Rust that also builds natively (`cargo test -p cagd-web` checks the
 //! answers); `#[wasm_bindgen]` turns the functions into JavaScript exports when the target is

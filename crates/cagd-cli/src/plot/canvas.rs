@@ -171,7 +171,15 @@ impl<DB: DrawingBackend> DrawingBackend for Fine<DB> {
         text: &str,
         style: &TStyle,
     ) -> Result<(u32, u32), DrawingErrorKind<Self::ErrorType>> {
-        self.0.estimate_text_size(text, style)
+        // In WebAssembly plotters would measure with the page's DOM (super::text_size).
+        #[cfg(target_arch = "wasm32")]
+        {
+            Ok(super::text_size::from_table(style.size(), text))
+        }
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            self.0.estimate_text_size(text, style)
+        }
     }
 
     fn blit_bitmap(&mut self, pos: BackendCoord, size: (u32, u32), src: &[u8]) -> Drawn<DB> {

@@ -9,6 +9,7 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use super::canvas::{font, px};
 use super::model::{Colour, Figure, Layer};
 use super::render::{drawing, rgb};
+use super::text_size::text_size;
 use super::PlotError;
 
 impl Figure {
@@ -172,7 +173,7 @@ where
         };
         let mut marks = Vec::with_capacity(labels.len());
         for (p, text) in layer.points().into_iter().zip(labels) {
-            let (w, h) = desc.box_size(text).map_err(drawing)?;
+            let (w, h) = text_size(&desc, text).map_err(drawing)?;
             let (x, y) = (px(9), px(-18));
             let corners = [
                 (x - px(2), y - px(1)),
@@ -225,7 +226,7 @@ where
         let text = font(15.0).into_font();
         let widest = labels
             .iter()
-            .map(|l| text.box_size(l).map(|(w, _)| w as i32))
+            .map(|l| text_size(&text, l).map(|(w, _)| w as i32))
             .try_fold(0, |m, w| w.map(|w| m.max(w)))
             .map_err(drawing)?;
         let (area_w, _) = self.chart.plotting_area().dim_in_pixel();

@@ -53,6 +53,7 @@ mod chart_3d;
 mod layers;
 mod model;
 mod render;
+mod text_size;
 
 pub use model::{Colour, Figure, ImageKind, Layer};
 

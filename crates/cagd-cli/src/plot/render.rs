@@ -17,10 +17,16 @@ use super::PlotError;
 static FONT: &[u8] = include_bytes!("../../assets/DejaVuSans.ttf");
 static REGISTER_FONT: Once = Once::new();
 
+#[cfg(test)]
+pub(super) fn register_font_for_tests() {
+    register_font();
+}
+
 fn register_font() {
     REGISTER_FONT.call_once(|| {
         // The embedded font is a valid TrueType file; should registration ever fail, text is
-        // simply not drawn. (In the browser plotters measures text with the page's fonts.)
+        // simply not drawn. (In the browser the page's fonts draw the text, and its size comes
+        // from the font's advances: super::text_size.)
         #[cfg(not(target_arch = "wasm32"))]
         let _ = plotters::style::register_font(super::canvas::FAMILY, FontStyle::Normal, FONT);
     });
