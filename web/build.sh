@@ -3,7 +3,8 @@
 # command line, profile `web`), its JavaScript glue (wasm-bindgen, ES module), and the page's
 # static files. Installs what is missing: the wasm32-unknown-unknown target (rustup) and the
 # wasm-bindgen-cli of exactly the version of the wasm-bindgen crate (cargo install). wasm-opt
-# (Debian package binaryen) shrinks the .wasm further when it is installed.
+# (Debian package binaryen) shrinks the .wasm further when it is installed. Needs node (the
+# forms' tables are read from the .wasm at build time, and the files are compressed with it).
 #
 #   bash web/build.sh          then   cagd serve   (or copy web/dist/ to any static host)
 set -euo pipefail
@@ -34,6 +35,11 @@ if [ "$(wasm-bindgen --version 2>/dev/null | awk '{print $2}')" != "$version" ];
         cargo install wasm-bindgen-cli --version "$version"
 fi
 
+if ! command -v node >/dev/null 2>&1; then
+    echo "web/build.sh: node is needed (it reads the forms' tables from the .wasm): apt-get install nodejs" >&2
+    exit 1
+fi
+
 echo "== cargo build -p cagd-web --target wasm32-unknown-unknown --profile web"
 cargo build -p cagd-web --target wasm32-unknown-unknown --profile web
 
@@ -58,28 +64,41 @@ fi
 cp web/index.html web/style.css web/sw.js "$dist/"
 cp -r web/js "$dist/js"
 
+echo "== pkg/tables.json (the forms' schema and the steps' labels, read from the .wasm by node)"
+# What the page builds its forms from, computed once here by the same WebAssembly instead of on
+# every visitor's main thread: the page fetches it while the .wasm compiles.
+node --input-type=module -e '
+    import { readFileSync, writeFileSync } from "node:fs";
+    import { pathToFileURL } from "node:url";
+    const [glue, wasm, out] = process.argv.slice(1);
+    const bindings = await import(pathToFileURL(glue));
+    bindings.initSync({ module: readFileSync(wasm) });
+    const tables = { schema: JSON.parse(bindings.schema()), steps: JSON.parse(bindings.step_tables()) };
+    writeFileSync(out, JSON.stringify(tables));
+' "$dist/pkg/cagd_web.js" "$wasm" "$dist/pkg/tables.json"
+
 echo "== hashed file names"
-build=$(cat "$dist"/js/*.js "$dist"/pkg/*.js "$wasm" "$dist/style.css" "$dist/index.html" "$dist/sw.js" |
+build=$(cat "$dist"/js/*.js "$dist"/pkg/*.js "$dist/pkg/tables.json" "$wasm" "$dist/style.css" "$dist/index.html" "$dist/sw.js" |
     sha256sum | cut -c1-16)
 for f in "$dist"/js/*.js "$dist/pkg/cagd_web.js"; do
     mv "$f" "${f%.js}.$build.js"
 done
 mv "$wasm" "$dist/pkg/cagd_web_bg.$build.wasm"
+mv "$dist/pkg/tables.json" "$dist/pkg/tables.$build.json"
 wasm="$dist/pkg/cagd_web_bg.$build.wasm"
 mv "$dist/style.css" "$dist/style.$build.css"
 # Module specifiers ("./plane.js", "../pkg/cagd_web.js") and the .wasm's name, in every module;
 # not the glue's "./cagd_web_bg.js", the name of the .wasm's imports (no file has it).
-sed -i -E "s#([\"'])(\.{1,2}/[A-Za-z0-9_/-]+)\.js\1#\1\2.$build.js\1#g; s#cagd_web_bg\.$build\.js#cagd_web_bg.js#g; s#cagd_web_bg\.wasm#cagd_web_bg.$build.wasm#g" \
+sed -i -E "s#([\"'])(\.{1,2}/[A-Za-z0-9_/-]+)\.js\1#\1\2.$build.js\1#g; s#cagd_web_bg\.$build\.js#cagd_web_bg.js#g; s#cagd_web_bg\.wasm#cagd_web_bg.$build.wasm#g; s#pkg/tables\.json#pkg/tables.$build.json#g" \
     "$dist"/js/*.js "$dist"/pkg/*.js
-sed -i -E "s#\"(js/[A-Za-z0-9_-]+|pkg/cagd_web)\.js\"#\"\1.$build.js\"#g; s#pkg/cagd_web_bg\.wasm#pkg/cagd_web_bg.$build.wasm#; s#style\.css#style.$build.css#" \
+sed -i -E "s#\"(js/[A-Za-z0-9_-]+|pkg/cagd_web)\.js\"#\"\1.$build.js\"#g; s#pkg/cagd_web_bg\.wasm#pkg/cagd_web_bg.$build.wasm#; s#pkg/tables\.json#pkg/tables.$build.json#; s#style\.css#style.$build.css#" \
     "$dist/index.html"
 files=$(cd "$dist" && { echo "./"; echo "index.html"; find js pkg -type f -name "*.$build.*"; echo "style.$build.css"; } |
     sed 's/.*/"&"/' | paste -sd, -)
 sed -i "s#__BUILD__#$build#; s#__FILES__#[$files]#" "$dist/sw.js"
 
-if command -v node >/dev/null 2>&1; then
-    echo "== brotli (node's zlib, quality 11)"
-    (cd "$dist" && find . -type f \( -name "*.js" -o -name "*.css" -o -name "*.html" -o -name "*.wasm" \) -print0 |
+echo "== brotli (node's zlib, quality 11)"
+    (cd "$dist" && find . -type f \( -name "*.js" -o -name "*.css" -o -name "*.html" -o -name "*.wasm" -o -name "*.json" \) -print0 |
         xargs -0 node -e '
             const fs = require("fs"), zlib = require("zlib");
             for (const f of process.argv.slice(1)) {
@@ -90,7 +109,6 @@ if command -v node >/dev/null 2>&1; then
                     [zlib.constants.BROTLI_PARAM_SIZE_HINT]: bytes.length } });
                 if (br.length < bytes.length) fs.writeFileSync(f + ".br", br);
             }')
-fi
 
 bytes=$(wc -c <"$wasm")
 gz=$(gzip -9 -c "$wasm" | wc -c)

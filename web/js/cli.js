@@ -5,6 +5,10 @@
 // one WebAssembly module the page compiled (no second download). A worker that cannot start
 // is reported once and not retried until the next command asks for it (no request loops when
 // the page is offline), and Stop ends a worker without starting another until it is needed.
+// Until a lane's worker is ready (the first command of a page load), a command is first tried
+// on the main thread under a small work limit (`quick`): a student's small construction answers
+// at once, and one above the limit (the operation layer estimates every construction's work
+// before it starts) goes to the worker.
 
 import { t } from "./i18n.js";
 
@@ -15,6 +19,11 @@ class Lane {
     this.ready = null;
     this.current = null;
     this.nextId = 1;
+    /** Whether the worker has its WebAssembly instantiated. */
+    this.started = false;
+    /** The commands asked of this lane so far, and the one Stop ended last. */
+    this.tickets = 0;
+    this.stoppedTicket = 0;
   }
 
   /** Starts the worker (if there is none) and resolves when its WebAssembly is ready. */
@@ -25,8 +34,10 @@ class Lane {
     this.ready = new Promise((resolve, reject) => {
       worker.onmessage = ({ data }) => {
         if ("ready" in data) {
-          if (data.ready) resolve();
-          else this.fail(data.error, reject);
+          if (data.ready) {
+            this.started = true;
+            resolve();
+          } else this.fail(data.error, reject);
           return;
         }
         if (!this.current || data.id !== this.current.id) return;
@@ -42,7 +53,10 @@ class Lane {
     });
     // Nobody may be waiting when a worker fails between commands.
     this.ready.catch(() => {});
-    worker.postMessage({ init: this.module });
+    Promise.resolve(this.module).then(
+      (module) => worker.postMessage({ init: module }),
+      (e) => this.fail(e?.message ?? String(e)),
+    );
     return this.ready;
   }
 
@@ -59,6 +73,7 @@ class Lane {
     this.worker?.terminate();
     this.worker = null;
     this.ready = null;
+    this.started = false;
   }
 
   async run(argv, files) {
@@ -91,9 +106,15 @@ class Lane {
 }
 
 export class CommandLine {
-  /** @param {WebAssembly.Module} module the page's compiled WebAssembly */
-  constructor(module) {
+  /**
+   * @param {Promise<WebAssembly.Module>} module the page's compiled WebAssembly, once the main
+   *   thread has instantiated it
+   * @param {(argv: string[], files: object[]) => object | null} quick runs a command on the
+   *   main thread under a small work limit: its answer, or null when the command is above it
+   */
+  constructor(module, quick = () => null) {
     this.module = module;
+    this.quick = quick;
     this.lanes = new Map();
   }
 
@@ -109,14 +130,40 @@ export class CommandLine {
       .catch(() => {});
   }
 
-  /** Runs `argv` (starting with "cagd") with input files [{name, text}] in `owner`'s lane. */
-  run(argv, files = [], owner = "command") {
-    return this.lane(owner).run(argv, files);
+  /**
+   * Runs `argv` (starting with "cagd") with input files [{name, text}] in `owner`'s lane; while
+   * its worker is still starting and nothing runs there, a small command answers on the main
+   * thread.
+   */
+  async run(argv, files = [], owner = "command") {
+    const lane = this.lane(owner);
+    // Commands waiting for the WebAssembly keep the lane's rule: the newest wins, Stop stops.
+    const ticket = ++lane.tickets;
+    if (!lane.started && !lane.current) {
+      try {
+        await this.module;
+      } catch (e) {
+        return { ok: false, code: 1, error: t("workerFailed", { reason: e?.message ?? String(e) }) };
+      }
+      if (lane.tickets !== ticket) {
+        const stopped = lane.stoppedTicket === ticket;
+        return { ok: false, stopped: true, superseded: !stopped, error: t("stopped") };
+      }
+      if (!lane.started && !lane.current) {
+        const answer = this.quick(argv, files);
+        if (answer) return answer;
+      }
+    }
+    return lane.run(argv, files);
   }
 
   /** Stops `owner`'s running command (its promise answers {stopped: true}). */
   stop(owner = "command") {
-    this.lanes.get(owner)?.stop();
+    const lane = this.lanes.get(owner);
+    if (!lane) return;
+    lane.stoppedTicket = lane.tickets;
+    lane.tickets += 1;
+    lane.stop();
   }
 
   /** Whether `owner` has a command running. */

@@ -199,6 +199,8 @@ export class CommandView {
     result.dataset.run = String(++this.runs);
     result.dataset.ok = String(!!answer.ok);
     result.dataset.line = line;
+    // Where it ran: "main" (a small command before the worker was ready) or "worker".
+    result.dataset.thread = answer.thread ?? "worker";
     this.app.answered();
   }
 

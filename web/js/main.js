@@ -11,6 +11,14 @@ import { applyStatic, chooseLang, lang, LANG_NAMES, LANGS, setLang, setMessageTr
 const $ = (id) => document.getElementById(id);
 const started = performance.now();
 const WASM_URL = new URL("../pkg/cagd_web_bg.wasm", import.meta.url);
+/** The forms' schema and the steps' labels, read from the WebAssembly by web/build.sh. */
+const TABLES_URL = new URL("../pkg/tables.json", import.meta.url);
+/**
+ * The estimated operations (`--max-work`) a command may take on the main thread before the
+ * workers are ready: tens of milliseconds at most (the default limit, 2·10⁹, is seconds), so
+ * a page load never freezes noticeably.
+ */
+const QUICK_WORK = 10_000_000;
 
 const viewModules = {
   bezier: () => import("./bezier.js"),
@@ -102,6 +110,20 @@ const app = {
       return { ok: false, code: 1, error: panicMessage ?? `cagd: internal error: ${e}; this is a bug in cagd` };
     }
   },
+  /**
+   * A command line on the main thread under the work limit QUICK_WORK, with the files it
+   * writes: its answer, or null when it is above the limit (or sets its own) and belongs in a
+   * worker.
+   */
+  runQuick(argv, files = []) {
+    // A limit of its own, or arguments after `--` (where an option reads as a value): the worker.
+    if (argv.some((a) => a === "--" || a === "--max-work" || a.startsWith("--max-work="))) return null;
+    const answer = app.runHere([...argv, "--max-work", String(QUICK_WORK)], files);
+    if (!answer.ok) return answer.limit === "max_work" || answer.code !== 2 ? null : { ...answer, thread: "main" };
+    answer.files = answer.files.map((f, i) => ({ ...f, bytes: wasm.file_bytes(i) }));
+    answer.thread = "main";
+    return answer;
+  },
   /** The items of a command's answer as data (`--format json`): {ok, data} or {ok: false, error}. */
   data(argv) {
     const answer = app.runHere([...argv, "--format", "json"]);
@@ -118,6 +140,9 @@ const app = {
       app.firstAnswer = performance.now();
       document.documentElement.dataset.firstAnswerMs = app.firstAnswer.toFixed(1);
       document.documentElement.dataset.scriptAnswerMs = (app.firstAnswer - started).toFixed(1);
+      // The command view's worker, the service worker and the views' modules start once the
+      // first answer is on the screen: before, they would compete with it for the processor.
+      app.cli.warm();
       registerServiceWorker();
       warmViews();
     }
@@ -158,8 +183,8 @@ function viewOf(name) {
   // Panels built by their module are empty until then; the Coons and Gordon panels have markup.
   const empty = !panel.querySelector(":scope > :not(.view-message)");
   placeholder(panel, empty ? { role: "status", class: "loading" } : null, t("viewLoading"));
-  building[name] = viewModules[name]()
-    .then((module) => {
+  building[name] = Promise.all([viewModules[name](), app.wasmReady])
+    .then(([module]) => {
       placeholder(panel, null);
       app.views[name] = new module.default(app);
       return app.views[name];
@@ -201,7 +226,7 @@ async function show(name, state = {}) {
   const view = name === "command" ? app.views.command : await viewOf(name);
   if (!view || app.current !== name) return null;
   if (state.cmd && view.load) view.load(state.cmd);
-  else if (view.activate) view.activate();
+  else if (view.activate && !state.routed) view.activate();
   return view;
 }
 
@@ -211,7 +236,8 @@ async function route() {
   const h = readHash();
   const name = h.view ?? "command";
   if (name === "command") {
-    await show("command");
+    // The link says what runs here (its command, or the form's example): not the view's own.
+    await show("command", { routed: true });
     if (h.cmd) app.views.command.runTyped(h.cmd, h.file ? [{ name: "data.m", text: h.file }] : null, false);
     else app.views.command.runForm(false);
   } else {
@@ -281,6 +307,13 @@ function languageSwitch() {
   });
 }
 
+/** The forms' schema and the steps' labels ({schema, steps}), fetched while the .wasm compiles. */
+async function tables() {
+  const response = await fetch(TABLES_URL);
+  if (!response.ok) throw new Error(`${TABLES_URL.pathname}: HTTP ${response.status}`);
+  return response.json();
+}
+
 /** The page's WebAssembly, downloaded and compiled once for the main thread and the workers. */
 async function compile() {
   const response = await fetch(WASM_URL);
@@ -316,23 +349,31 @@ async function main() {
   languageSwitch();
   tabs();
   copyButtons();
-  let module;
-  try {
-    module = await compile();
+  // The .wasm compiles in the background while the page builds the linked command's form from
+  // the tables; a command waits for it (app.wasmReady), a view is built once it is there.
+  app.wasmReady = compile().then(async (module) => {
     await init({ module_or_path: module });
+    performance.mark("cagd:wasm-ready");
+    setMessageTranslator((message, code) => wasm.message_in(message, code));
+    return module;
+  });
+  const failed = (e) => {
+    $("loading").textContent = t("wasmFailed", { reason: e?.message ?? e });
+  };
+  try {
+    ({ schema: app.schema, steps: app.steps } = await tables());
   } catch (e) {
-    $("loading").textContent = t("wasmFailed", { reason: e.message ?? e });
+    failed(e);
     return;
   }
-  setMessageTranslator((message, code) => wasm.message_in(message, code));
-  app.schema = JSON.parse(wasm.schema());
-  app.steps = JSON.parse(wasm.step_tables());
-  app.cli = new CommandLine(module);
-  app.cli.warm();
-  $("loading").hidden = true;
+  app.cli = new CommandLine(app.wasmReady, app.runQuick);
+  app.wasmReady.then(() => {
+    $("loading").hidden = true;
+  }, failed);
   app.views.command = new CommandView(app);
   window.addEventListener("popstate", route);
   window.addEventListener("hashchange", route);
+  performance.mark("cagd:form-ready");
   await route();
 }
 

@@ -1,10 +1,12 @@
 // Text measurement for the picture code inside a Web Worker.
 //
-// Compiled to WebAssembly, plotters (the drawing library of the cagd program) sizes the text of
-// a picture with the page's DOM: it appends a <span> to document.body, reads offsetWidth and
-// offsetHeight, and removes it. A worker has no DOM, so this gives it just those pieces,
-// measuring with an OffscreenCanvas (same fonts as the page). On the main thread, where the
-// real DOM exists, nothing is installed.
+// Compiled to WebAssembly, plotters (the drawing library of the cagd program) sizes text with
+// the page's DOM: it appends a <span> to document.body, reads offsetWidth and offsetHeight, and
+// removes it. The picture code measures its own labels from the font's advances
+// (crates/cagd-cli/src/plot/text_size.rs); only plotters' legend box still asks the DOM. A
+// worker has no DOM, so this gives it just those pieces, measuring with an OffscreenCanvas
+// (same fonts as the page). On the main thread, where the real DOM exists, nothing is
+// installed.
 
 if (typeof document === "undefined") {
   const context = typeof OffscreenCanvas === "function" ? new OffscreenCanvas(1, 1).getContext("2d") : null;

@@ -57,6 +57,35 @@ test("Primer 2.4: the point (7/2, 3/2, 3/4) and the whole de Casteljau scheme, f
   await page.close();
 });
 
+test("a link's first command answers on the main thread when its estimated work is small, in a worker when not; the same answers", async () => {
+  // Primer 2.4 is small: answered before the worker is ready, the same text as the program.
+  let page = await openPage(chrome.context, server.url, link(PRIMER_2_4));
+  assert.equal(await page.locator("#result").getAttribute("data-thread"), "main");
+  const args = ["decasteljau", "[0 0 0; 0 2 2; 8 2 0; 4 0 0]'", "--t", "0.5", "--steps", "--exact", "--plot", "decasteljau.svg"];
+  assert.equal(await stdout(page), runBinary(args).stdout);
+  await page.locator("#pictures img").waitFor();
+  // An error of the command itself is answered there too, in the program's words.
+  await page.evaluate(() => window.cagdApp.openCommand(`cagd decasteljau "[1 2; 3]"`));
+  await page.waitForFunction(() => document.querySelector("#result").dataset.run === "2");
+  assert.match(await page.locator("#error").textContent(), /^cagd: error: CONTROL: /);
+  assert.deepEqual(page.errors, []);
+  await page.close();
+  // Exact Bernstein polynomials of degree 100: estimated above the main thread's work limit,
+  // so the worker runs it; no word of that limit reaches the student.
+  const big = ["bernstein", "--degree", "100", "--t", "0.5", "--exact"];
+  page = await openPage(chrome.context, server.url, link(`cagd ${big.join(" ")}`));
+  assert.equal(await page.locator("#result").getAttribute("data-ok"), "true");
+  assert.equal(await page.locator("#result").getAttribute("data-thread"), "worker");
+  assert.equal(await stdout(page), runBinary(big).stdout);
+  assert.equal(await page.locator("#warnings li").count(), 0);
+  // A command with a work limit of its own goes to the worker, where that limit answers.
+  await page.evaluate(() => window.cagdApp.openCommand("cagd bernstein --degree 3 --n 101 --max-work 10"));
+  await page.waitForFunction(() => document.querySelector("#result").dataset.run === "2");
+  assert.match(await page.locator("#error").textContent(), /exceeds the limit of 10 \(raise it with --max-work/);
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
 test("Primer 4.3: x(0.2, 0.5) = (1/5, 3/10, 19/50) with r_c, r_d and r_cd", async () => {
   const page = await openPage(chrome.context, server.url, link(PRIMER_4_3));
   const text = await stdout(page);
