@@ -4,6 +4,7 @@ use super::*;
 use cagd::grid::PointGrid;
 use nalgebra::DMatrix;
 use plotters::prelude::{RGBColor, WHITE};
+use plotters::style::IntoFont;
 use std::path::Path;
 
 fn helix() -> DMatrix<f64> {
@@ -162,4 +163,49 @@ fn marked_points_too_far_to_draw_are_left_out_and_the_legend_says_so() {
         .render(ImageKind::Svg)
         .unwrap_err();
     assert!(matches!(e, PlotError::OutOfRange { .. }), "{e}");
+}
+
+/// Every advance of the table is the embedded font's, at the pictures' sizes; words of the
+/// pictures in the three languages are within their kerning of the font's measure.
+#[test]
+fn the_table_is_the_embedded_fonts() {
+    super::render::register_font_for_tests();
+    let exact = ("sans-serif", text_size::HEIGHT_UNITS).into_font();
+    for c in ' '..='~' {
+        assert_eq!(
+            exact.box_size(&c.to_string()).unwrap(),
+            text_size::from_table(text_size::HEIGHT_UNITS, &c.to_string()),
+            "{c:?}"
+        );
+    }
+    for c in "áčďéěíňóřšťúůýžÁČĎÉĚÍŇÓŘŠŤÚŮÝŽ−×".chars() {
+        let (w, _) = exact.box_size(&c.to_string()).unwrap();
+        assert_eq!(
+            w,
+            text_size::from_table(text_size::HEIGHT_UNITS, &c.to_string()).0,
+            "{c:?}"
+        );
+    }
+    for size in [14.0, 15.0, 16.0, 18.0] {
+        let font = ("sans-serif", size * 20.0).into_font();
+        for text in [
+            "x(t)",
+            "-0.5",
+            "1.25",
+            "b(1/2)",
+            "Bézier curve",
+            "Bézierova krivulja",
+            "Beziérova křivka",
+            "control polygon",
+            "u = 0.2, v = 0.5",
+        ] {
+            let (w, h) = font.box_size(text).unwrap();
+            let (tw, th) = text_size::from_table(size * 20.0, text);
+            assert_eq!(th, h, "{text}");
+            assert!(
+                (f64::from(tw) - f64::from(w)).abs() <= 0.02 * f64::from(w) + 1.0,
+                "{text}: {tw} against {w}"
+            );
+        }
+    }
 }

@@ -24,7 +24,7 @@ const ADVANCES: [u16; 95] = [
 ];
 
 /// DejaVu Sans' height, ascent − descent, in font units: the scale of a text's size.
-const HEIGHT_UNITS: f64 = 2384.0;
+pub(super) const HEIGHT_UNITS: f64 = 2384.0;
 
 /// The advance of `c` in font units: the table's for ASCII, the base letter's for the accented
 /// letters of the course's languages (DejaVu Sans gives them the same advance), the plus sign's
@@ -87,53 +87,5 @@ pub(super) fn text_size(
     #[cfg(not(target_arch = "wasm32"))]
     {
         font.box_size(text)
-    }
-}
-
-#[cfg(all(test, not(target_arch = "wasm32")))]
-mod tests {
-    use plotters::style::IntoFont;
-
-    use super::*;
-
-    /// Every advance of the table is the embedded font's, at the pictures' sizes; words of the
-    /// pictures in the three languages are within their kerning of the font's measure.
-    #[test]
-    fn the_table_is_the_embedded_fonts() {
-        super::super::render::register_font_for_tests();
-        let exact = ("sans-serif", HEIGHT_UNITS).into_font();
-        for c in ' '..='~' {
-            assert_eq!(
-                exact.box_size(&c.to_string()).unwrap(),
-                from_table(HEIGHT_UNITS, &c.to_string()),
-                "{c:?}"
-            );
-        }
-        for c in "áčďéěíňóřšťúůýžÁČĎÉĚÍŇÓŘŠŤÚŮÝŽ−×".chars() {
-            let (w, _) = exact.box_size(&c.to_string()).unwrap();
-            assert_eq!(w, from_table(HEIGHT_UNITS, &c.to_string()).0, "{c:?}");
-        }
-        for size in [14.0, 15.0, 16.0, 18.0] {
-            let font = ("sans-serif", size * 20.0).into_font();
-            for text in [
-                "x(t)",
-                "-0.5",
-                "1.25",
-                "b(1/2)",
-                "Bézier curve",
-                "Bézierova krivulja",
-                "Beziérova křivka",
-                "control polygon",
-                "u = 0.2, v = 0.5",
-            ] {
-                let (w, h) = font.box_size(text).unwrap();
-                let (tw, th) = from_table(size * 20.0, text);
-                assert_eq!(th, h, "{text}");
-                assert!(
-                    (f64::from(tw) - f64::from(w)).abs() <= 0.02 * f64::from(w) + 1.0,
-                    "{text}: {tw} against {w}"
-                );
-            }
-        }
     }
 }
