@@ -86,6 +86,29 @@ impl PendingWrites {
         self.dirs.push((argument.into(), path.into()));
     }
 
+    /// Refuses, before any work, a folder that cannot be created: the same error as when the
+    /// files are committed ([`PendingWrites::commit_with`]). The folders it had to create are
+    /// removed again, so that nothing is left when the command fails later.
+    ///
+    /// ```
+    /// use cagd_cli::PendingWrites;
+    /// let e = PendingWrites::check_dir("--out /proc/x", std::path::Path::new("/proc/x/y")).unwrap_err();
+    /// assert!(e.to_string().starts_with("--out /proc/x: "), "{e}");
+    /// let dir = tempfile::tempdir().unwrap();
+    /// PendingWrites::check_dir("--out", &dir.path().join("a/b")).unwrap();
+    /// assert!(!dir.path().join("a").exists());
+    /// ```
+    pub fn check_dir(argument: &str, dir: &Path) -> Result<(), CliError> {
+        let probe = PendingWrites {
+            dirs: vec![(argument.to_string(), dir.to_path_buf())],
+            files: Vec::new(),
+        };
+        for created in probe.create_dirs()?.iter().rev() {
+            let _ = std::fs::remove_dir(created);
+        }
+        Ok(())
+    }
+
     /// Whether no file was added.
     pub fn is_empty(&self) -> bool {
         self.files.is_empty()

@@ -63,6 +63,8 @@ fn f64m(m: &DMatrix<Q>) -> DMatrix<f64> {
 
 /// The worked examples of the course notes.
 pub fn course(limits: &Limits, cmd: &CourseCommand) -> Result<Outcome, CliError> {
+    // A folder that cannot be created is refused before the examples are computed.
+    PendingWrites::check_dir(&format!("--out {}", cmd.out.display()), &cmd.out)?;
     let mut out = String::new();
     let mut files = Files {
         dir: &cmd.out,

@@ -97,6 +97,8 @@ fn expr_curve<T: LiteralScalar>(
 const INTERNAL: &str = "a valid built-in example";
 
 pub fn thesis(limits: &Limits, cmd: &ThesisCommand) -> Result<Outcome, CliError> {
+    // A folder that cannot be created is refused before the examples are computed.
+    PendingWrites::check_dir(&format!("--out {}", cmd.out.display()), &cmd.out)?;
     let mut out = String::new();
     let mut files = Files {
         dir: &cmd.out,
