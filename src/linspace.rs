@@ -140,9 +140,20 @@ pub fn linspace_in<T: Scalar>(a: &T, b: &T, n: usize) -> crate::Result<Vec<T>> {
     }
     let mut out = crate::grid::try_filled("linspace samples", n, b.clone())?;
     if n > 1 {
-        let step = (b.clone() - a.clone()) / T::from_usize(n - 1);
-        for (i, x) in out.iter_mut().enumerate().take(n - 1) {
-            *x = a.clone() + step.clone() * T::from_usize(i);
+        // a + (b − a)·i/(n − 1), the fraction i/(n − 1) reduced in machine integers: on [0, 1]
+        // (the usual case) no big-number arithmetic but the fraction's own.
+        let span = b.clone() - a.clone();
+        let (from_zero, unit) = (a.is_zero(), span == T::one());
+        let last = i64::try_from(n - 1).map_err(|_| crate::Error::TooLarge {
+            what: "linspace samples",
+            requested: n as u128,
+            limit: i64::MAX as u128,
+            which: crate::limits::Limit::Samples,
+        })?;
+        for (i, x) in (0..last).zip(out.iter_mut()) {
+            let f = T::from_ratio(i, last);
+            let f = if unit { f } else { span.clone() * f };
+            *x = if from_zero { f } else { a.clone() + f };
         }
     }
     Ok(out)
@@ -151,6 +162,34 @@ pub fn linspace_in<T: Scalar>(a: &T, b: &T, n: usize) -> crate::Result<Vec<T>> {
 #[cfg(test)]
 mod tests {
     use super::linspace;
+
+    /// Exact samples are `a + i (b − a)/(n − 1)` for any rational ends (start at zero or
+    /// not, a span of one or not, decreasing), checked against that formula term by term.
+    #[test]
+    fn exact_samples_are_the_formula() {
+        use crate::Scalar;
+        use num_rational::BigRational;
+        let q = |n, d| <BigRational as Scalar>::from_ratio(n, d);
+        for (a, b) in [
+            (q(0, 1), q(1, 1)),
+            (q(-1, 3), q(2, 1)),
+            (q(5, 7), q(-3, 4)),
+            (q(1, 2), q(3, 2)),
+            (q(0, 1), q(7, 3)),
+        ] {
+            for n in [2usize, 3, 8, 13] {
+                let got = super::linspace_in(&a, &b, n).unwrap();
+                for (i, x) in got.iter().enumerate() {
+                    let want = a.clone() + (b.clone() - a.clone()) * q(i as i64, n as i64 - 1);
+                    assert_eq!(*x, want, "a = {a}, b = {b}, n = {n}, i = {i}");
+                }
+            }
+        }
+        // Reduced like any other rational: 2/4 is 1/2, and a negative denominator is moved up.
+        assert_eq!(q(2, 4), q(1, 2));
+        assert_eq!(q(3, -6), q(-1, 2));
+        assert_eq!(q(i64::MIN, -1).to_string(), "9223372036854775808");
+    }
 
     #[test]
     fn ends_are_exact() {

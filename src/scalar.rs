@@ -242,7 +242,17 @@ impl Scalar for BigRational {
         <BigRational as FromPrimitive>::from_f64(x)
     }
     fn from_ratio(num: i64, den: i64) -> Self {
-        BigRational::new(BigInt::from(num), BigInt::from(den))
+        // Reduced in machine integers first (no big-integer gcd); i128 holds -i64::MIN.
+        let (mut n, mut d) = (i128::from(num), i128::from(den));
+        if d == 0 {
+            return BigRational::new(BigInt::from(num), BigInt::from(den)); // its own panic
+        }
+        let g = num_integer::Integer::gcd(&n, &d);
+        (n, d) = (n / g, d / g);
+        if d < 0 {
+            (n, d) = (-n, -d);
+        }
+        BigRational::new_raw(BigInt::from(n), BigInt::from(d))
     }
     fn to_f64(&self) -> f64 {
         ToPrimitive::to_f64(self).unwrap_or(f64::NAN)
