@@ -305,17 +305,20 @@ impl<T: LiteralScalar> Script<T> {
                 } => self.assign_element(name, *at, index, value)?,
                 Stmt::For { var, range, body } => {
                     let values = self.value_of(range)?;
+                    // The loop's steps are counted before the first one: a loop that would
+                    // pass the limit is refused before it runs, not after a million steps.
+                    let limit = self.env.limits().max_iterations;
+                    let after = self.iterations.saturating_add(values.ncols());
+                    if after > limit {
+                        return Err(LiteralError::TooLarge {
+                            at: range.position(),
+                            what: "the loops of the script".into(),
+                            count: after as u128,
+                            limit,
+                        });
+                    }
+                    self.iterations = after;
                     for j in 0..values.ncols() {
-                        self.iterations += 1;
-                        let limit = self.env.limits().max_iterations;
-                        if self.iterations > limit {
-                            return Err(LiteralError::TooLarge {
-                                at: range.position(),
-                                what: "the loops of the script".into(),
-                                count: self.iterations as u128,
-                                limit,
-                            });
-                        }
                         self.check_not_read(var, range.position())?;
                         self.functions.remove(var);
                         self.env.bind(var, values.columns(j, 1).into_owned());
