@@ -3,8 +3,9 @@
 // nothing), then {id, argv, files}; the worker answers {ready} once, then {id, ok, stdout,
 // warnings, files, error} per command. A fault in the WebAssembly (a bug) is answered with the
 // program's internal-error line and `fatal: true`, after which the page ends this worker.
+// The WebAssembly asks nothing of the DOM (the pictures measure their text from the font's
+// advances), so the same module runs here as on the page.
 
-import "./text-shim.js";
 import init, { file_bytes, run } from "../pkg/cagd_web.js";
 
 let panicMessage = null;

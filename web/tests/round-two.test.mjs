@@ -3,10 +3,10 @@
 // every subcommand, languages, the phone layout, history entries, and the screenshots.
 
 import assert from "node:assert/strict";
-import { writeFileSync } from "node:fs";
+import { readdirSync, readFileSync, writeFileSync } from "node:fs";
 import { join } from "node:path";
 import { after, before, test } from "node:test";
-import { browser, openPage, resultsDir, runBinary, runOnPage, serve } from "./helpers.mjs";
+import { browser, openPage, resultsDir, runBinary, runOnPage, serve, webDir } from "./helpers.mjs";
 
 let server;
 let chrome;
@@ -560,4 +560,14 @@ test("every page word exists in the three languages, every subcommand has an exp
   );
   writeFileSync(join(resultsDir, "languages.json"), JSON.stringify({ keys: keys.en.length, explained }, null, 2));
   await page.close();
+});
+
+test("the WebAssembly asks nothing of the DOM: a picture's texts (its legend too) are measured from the font, so drawing one forces no layout of the page and runs the same in a worker", () => {
+  const pkg = join(webDir, "dist", "pkg");
+  const glue = readdirSync(pkg).find((f) => /^cagd_web\.[0-9a-f]+\.js$/.test(f));
+  assert.ok(glue, "the built glue (web/build.sh)");
+  const text = readFileSync(join(pkg, glue), "utf8");
+  for (const name of ["document", "createElement", "offsetWidth", "offsetHeight", "getBoundingClientRect", "HTMLElement"]) {
+    assert.ok(!text.includes(name), `the WebAssembly's imports name ${name}`);
+  }
 });

@@ -69,7 +69,7 @@ impl Figure {
             .axis_desc_style(font(16.0))
             .draw()
             .map_err(drawing)?;
-        self.draw_layers(&mut chart, to2, false, surface_2d)?;
+        self.draw_layers(&mut chart, to2, false, surface_fill().filled(), surface_2d)?;
         if side > 0 {
             let (xs, ys) = chart.plotting_area().get_pixel_range();
             self.legend_beside(root, (xs.end + px(12), ys.start))?;
@@ -108,11 +108,15 @@ impl Figure {
     }
 }
 
+/// The light viridis colour of a surface's cells (and of its mark in the legend).
+fn surface_fill() -> RGBAColor {
+    viridis(0.6).mix(0.35)
+}
+
 /// A surface: its cells filled in a light viridis colour, its net drawn over them.
 fn surface_2d<'a, DB: DrawingBackend + 'a>(
     chart: &mut ChartContext<'a, DB, Coord2>,
     grid: &PointGrid<f64>,
-    label: &str,
 ) -> Result<(), PlotError> {
     let (nu, nv, _) = grid.dim();
     let p = |i: usize, j: usize| (grid[[i, j, 0]], grid[[i, j, 1]]);
@@ -122,19 +126,13 @@ fn surface_2d<'a, DB: DrawingBackend + 'a>(
             cells.push([p(i, j), p(i + 1, j), p(i + 1, j + 1), p(i, j + 1)]);
         }
     }
-    let fill = viridis(0.6).mix(0.35);
-    let anno = chart
+    chart
         .draw_series(
             cells
                 .iter()
-                .map(|q| Polygon::new(q.to_vec(), fill.filled())),
+                .map(|q| Polygon::new(q.to_vec(), surface_fill().filled())),
         )
         .map_err(drawing)?;
-    if !label.is_empty() {
-        anno.label(label).legend(move |(x, y)| {
-            Rectangle::new([(x, y - px(6)), (x + px(20), y + px(6))], fill.filled())
-        });
-    }
     chart
         .draw_series(
             net_lines(grid).into_iter().map(|l| {

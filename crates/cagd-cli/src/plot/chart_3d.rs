@@ -46,9 +46,13 @@ impl Figure {
             .map_err(drawing)?;
         }
         // A 3-D net also marks its points.
-        self.draw_layers(&mut chart, to3, true, |chart, grid, label| {
-            surface_3d(chart, grid, label, bz)
-        })
+        self.draw_layers(
+            &mut chart,
+            to3,
+            true,
+            viridis(0.6).filled(),
+            |chart, grid| surface_3d(chart, grid, bz),
+        )
     }
 }
 
@@ -98,24 +102,15 @@ type Cell = (i32, f64, [(f64, f64, f64); 4]);
 fn surface_3d<'a, DB: DrawingBackend + 'a>(
     chart: &mut ChartContext<'a, DB, Coord3>,
     grid: &PointGrid<f64>,
-    label: &str,
     (zlo, zhi): (f64, f64),
 ) -> Result<(), PlotError> {
     let cells = depth_sorted_cells(chart.as_coord_spec(), grid);
-    let anno = chart
+    chart
         .draw_series(cells.iter().map(|(_, height, quad)| {
             let c = viridis((height - zlo) / (zhi - zlo));
             Polygon::new(quad.to_vec(), c.filled())
         }))
         .map_err(drawing)?;
-    if !label.is_empty() {
-        anno.label(label).legend(|(x, y)| {
-            Rectangle::new(
-                [(x, y - px(6)), (x + px(20), y + px(6))],
-                viridis(0.6).filled(),
-            )
-        });
-    }
     chart
         .draw_series(cells.iter().map(|(_, _, quad)| {
             let mut ring = quad.to_vec();

@@ -2,7 +2,6 @@
 //! (the surface is the chart's own), then the legend.
 
 use cagd::grid::PointGrid;
-use plotters::chart::SeriesAnno;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
@@ -15,17 +14,15 @@ use super::PlotError;
 impl Figure {
     /// Draws the layers in order on a 2-D or 3-D chart, then the legend. `project` maps a
     /// point (padded to 3-D) to the chart's coordinates; `surface` draws a surface layer,
-    /// which differs between the two kinds of chart; `net_points` marks the points of a net.
+    /// which differs between the two kinds of chart, and `surface_fill` is its mark in the
+    /// legend; `net_points` marks the points of a net.
     pub(super) fn draw_layers<'a, DB, CT, P>(
         &self,
         chart: &mut ChartContext<'a, DB, CT>,
         project: impl Fn([f64; 3]) -> P + Copy,
         net_points: bool,
-        mut surface: impl FnMut(
-            &mut ChartContext<'a, DB, CT>,
-            &PointGrid<f64>,
-            &str,
-        ) -> Result<(), PlotError>,
+        surface_fill: ShapeStyle,
+        mut surface: impl FnMut(&mut ChartContext<'a, DB, CT>, &PointGrid<f64>) -> Result<(), PlotError>,
     ) -> Result<(), PlotError>
     where
         DB: DrawingBackend + 'a,
@@ -43,41 +40,31 @@ impl Figure {
         };
         for layer in self.ordered() {
             match layer {
-                Layer::Surface { grid, label } => surface(&mut *painter.chart, grid, label)?,
-                Layer::Net {
-                    grid,
-                    colour,
-                    label,
-                } => {
-                    painter.net(grid, *colour, label)?;
+                Layer::Surface { grid, .. } => surface(&mut *painter.chart, grid)?,
+                Layer::Net { grid, colour, .. } => {
+                    painter.net(grid, *colour)?;
                     if net_points {
                         painter.net_points(layer, *colour)?;
                     }
                 }
-                Layer::Curve {
-                    colour,
-                    width,
-                    label,
-                    ..
-                } => painter.curve(layer, *colour, *width, label)?,
-                Layer::Points { labels, label, .. } => painter.points(layer, labels, label)?,
-                Layer::ControlPolygon { label, .. } => painter.control_polygon(layer, label)?,
+                Layer::Curve { colour, width, .. } => painter.curve(layer, *colour, *width)?,
+                Layer::Points { labels, .. } => painter.points(layer, labels)?,
+                Layer::ControlPolygon { .. } => painter.control_polygon(layer)?,
             }
         }
         // A graph's legend stands beside the chart, drawn on the whole picture
         // ([`Figure::legend_beside`]).
         if self.has_legend() && self.legend_width() == 0 {
-            painter.legend(&self.legend_labels())?;
+            painter.legend(&self.labelled(), surface_fill)?;
         }
         Ok(())
     }
 
-    /// The labels of the legend, in drawing order.
-    fn legend_labels(&self) -> Vec<&str> {
+    /// The layers with a label (the legend's lines), in drawing order.
+    fn labelled(&self) -> Vec<&Layer> {
         self.ordered()
             .into_iter()
-            .map(Layer::label)
-            .filter(|l| !l.is_empty())
+            .filter(|l| !l.label().is_empty())
             .collect()
     }
 }
@@ -98,16 +85,16 @@ where
     F: Fn([f64; 3]) -> P + Copy,
 {
     /// A net: its grid lines in `colour`, one pixel wide.
-    fn net(&mut self, grid: &PointGrid<f64>, colour: Colour, label: &str) -> Result<(), PlotError> {
+    fn net(&mut self, grid: &PointGrid<f64>, colour: Colour) -> Result<(), PlotError> {
         let project = self.project;
         let style = rgb(colour).stroke_width(1);
-        let anno =
-            self.chart
-                .draw_series(net_lines(grid).into_iter().map(|l| {
+        self.chart
+            .draw_series(
+                net_lines(grid).into_iter().map(|l| {
                     PathElement::new(l.into_iter().map(project).collect::<Vec<_>>(), style)
-                }))
-                .map_err(drawing)?;
-        line_legend(anno, label, style);
+                }),
+            )
+            .map_err(drawing)?;
         Ok(())
     }
 
@@ -126,32 +113,23 @@ where
     }
 
     /// A curve: a line through its points in `colour`, `width` pixels wide.
-    fn curve(
-        &mut self,
-        layer: &Layer,
-        colour: Colour,
-        width: u32,
-        label: &str,
-    ) -> Result<(), PlotError> {
+    fn curve(&mut self, layer: &Layer, colour: Colour, width: u32) -> Result<(), PlotError> {
         let style = rgb(colour).stroke_width(width);
-        let anno = self
-            .chart
+        self.chart
             .draw_series(LineSeries::new(
                 layer.points().into_iter().map(self.project),
                 style,
             ))
             .map_err(drawing)?;
-        line_legend(anno, label, style);
         Ok(())
     }
 
     /// Marked points: black discs, each with its text beside it (on a light box over a
     /// surface).
-    fn points(&mut self, layer: &Layer, labels: &[String], label: &str) -> Result<(), PlotError> {
+    fn points(&mut self, layer: &Layer, labels: &[String]) -> Result<(), PlotError> {
         let project = self.project;
         let black = rgb(Colour::Black);
-        let anno = self
-            .chart
+        self.chart
             .draw_series(
                 layer
                     .points()
@@ -159,10 +137,6 @@ where
                     .map(|p| Circle::new(project(p), px(6), black.filled())),
             )
             .map_err(drawing)?;
-        if !label.is_empty() {
-            anno.label(label)
-                .legend(move |(x, y)| Circle::new((x + px(10), y), px(5), black.filled()));
-        }
         let desc = font(14.0).into_font();
         let style = desc.color(&black);
         // On a surface each label stands on a light box, legible over the dark cells.
@@ -190,23 +164,15 @@ where
     }
 
     /// A control polygon: red lines between its points, each point a red ring.
-    fn control_polygon(&mut self, layer: &Layer, label: &str) -> Result<(), PlotError> {
+    fn control_polygon(&mut self, layer: &Layer) -> Result<(), PlotError> {
         let project = self.project;
         let red = rgb(Colour::Red);
-        let anno = self
-            .chart
+        self.chart
             .draw_series(LineSeries::new(
                 layer.points().into_iter().map(project),
                 red.stroke_width(1),
             ))
             .map_err(drawing)?;
-        if !label.is_empty() {
-            anno.label(label).legend(move |(x, y)| {
-                EmptyElement::at((x, y))
-                    + PathElement::new(vec![(0, 0), (px(20), 0)], red.stroke_width(1))
-                    + Circle::new((px(10), 0), px(4), red.stroke_width(2))
-            });
-        }
         self.chart
             .draw_series(
                 layer
@@ -218,29 +184,54 @@ where
         Ok(())
     }
 
-    /// The legend of the layers labelled `labels`, in the upper right corner on a light
-    /// background, 5 pixels in from the corner. (Plotters' own corner positions keep 5 canvas
-    /// units, half a pixel here: the box is placed at that corner from the width plotters gives
-    /// it, the widest label and the margins and sample lines.)
-    fn legend(&mut self, labels: &[&str]) -> Result<(), PlotError> {
-        let text = font(15.0).into_font();
-        let widest = labels
+    /// The legend of `layers` in the upper right corner of the plotting area, 5 pixels in from
+    /// the corner, on a light background: one line per layer, its mark (as on the chart, a
+    /// surface's in `surface_fill`) and its label. The layout is plotters' series labels' (lines
+    /// 1.25 font sizes apart, a margin of 10 pixels, 30 for the marks), drawn here so that every
+    /// text is measured by [`text_size`]: compiled to WebAssembly, plotters' own legend asked the
+    /// page's DOM for its lines' sizes, a forced layout of the whole page before the picture.
+    fn legend(&mut self, layers: &[&Layer], surface_fill: ShapeStyle) -> Result<(), PlotError> {
+        let desc = font(15.0).into_font();
+        let sizes = layers
             .iter()
-            .map(|l| text_size(&text, l).map(|(w, _)| w as i32))
-            .try_fold(0, |m, w| w.map(|w| m.max(w)))
+            .map(|l| text_size(&desc, l.label()))
+            .collect::<Result<Vec<_>, _>>()
             .map_err(drawing)?;
-        let (area_w, _) = self.chart.plotting_area().dim_in_pixel();
-        let x = area_w as i32 - (widest + px(30) + 2 * px(10)) - px(5);
-        self.chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::Coordinate(x, px(5)))
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK.mix(0.5))
-            .label_font(font(15.0))
-            .margin(px(10))
-            .legend_area_size(px(30))
-            .draw()
-            .map_err(drawing)
+        let line = desc.get_size() * 1.25;
+        let tops: Vec<i32> = (0..layers.len())
+            .map(|k| (k as f64 * line).round() as i32)
+            .collect();
+        let widest = sizes.iter().map(|&(w, _)| w as i32).max().unwrap_or(0);
+        let tallest = tops
+            .iter()
+            .zip(&sizes)
+            .map(|(top, &(_, h))| top + h as i32)
+            .max()
+            .unwrap_or(0);
+        let (margin, marks) = (px(10), px(30));
+        let (w, h) = (widest + marks + 2 * margin, tallest + 2 * margin);
+        let area = self.chart.plotting_area().strip_coord_spec();
+        let (x, y) = (area.dim_in_pixel().0 as i32 - w - px(5), px(5));
+        let corners = [(x, y), (x + w, y + h)];
+        area.draw(&Rectangle::new(corners, WHITE.mix(0.85).filled()))
+            .and_then(|()| area.draw(&Rectangle::new(corners, BLACK.mix(0.5))))
+            .map_err(drawing)?;
+        let style = TextStyle::from(desc.clone());
+        for (layer, top) in layers.iter().zip(&tops) {
+            let at = (x + marks + margin, y + margin + top);
+            area.draw(&Text::new(layer.label(), at, style.clone()))
+                .map_err(drawing)?;
+        }
+        for ((layer, top), &(_, h)) in layers.iter().zip(&tops).zip(&sizes) {
+            let y0 = y + margin + top;
+            legend_mark(
+                &area,
+                layer,
+                (x + margin, (2 * y0 + h as i32) / 2),
+                surface_fill,
+            )?;
+        }
+        Ok(())
     }
 }
 
@@ -254,11 +245,7 @@ impl Figure {
         root: &DrawingArea<DB, plotters::coord::Shift>,
         (x, y): (i32, i32),
     ) -> Result<(), PlotError> {
-        let labelled: Vec<&Layer> = self
-            .ordered()
-            .into_iter()
-            .filter(|l| !l.label().is_empty())
-            .collect();
+        let labelled = self.labelled();
         let (w, h) = (
             px(self.legend_width() as i32 - 24),
             px(12 + 22 * labelled.len() as i32),
@@ -274,7 +261,7 @@ impl Figure {
             .pos(Pos::new(HPos::Left, VPos::Center));
         for (k, layer) in labelled.into_iter().enumerate() {
             let at = (x + px(8), y + px(17 + 22 * k as i32));
-            legend_mark(root, layer, at)?;
+            legend_mark(root, layer, at, super::render::viridis(0.6).filled())?;
             let text = Text::new(
                 layer.label().to_string(),
                 (at.0 + px(30), at.1),
@@ -287,11 +274,12 @@ impl Figure {
 }
 
 /// Draws the mark of `layer` in a legend on `root`, its left end at `(x, y)`: as the layer is
-/// drawn on the chart.
+/// drawn on the chart (a surface as a patch of `surface_fill`).
 fn legend_mark<DB: DrawingBackend>(
     root: &DrawingArea<DB, plotters::coord::Shift>,
     layer: &Layer,
     (x, y): (i32, i32),
+    surface_fill: ShapeStyle,
 ) -> Result<(), PlotError> {
     let line = |style: ShapeStyle| PathElement::new(vec![(x, y), (x + px(20), y)], style);
     match layer {
@@ -305,22 +293,10 @@ fn legend_mark<DB: DrawingBackend>(
         }
         Layer::Surface { .. } => root.draw(&Rectangle::new(
             [(x, y - px(6)), (x + px(20), y + px(6))],
-            super::render::viridis(0.6).filled(),
+            surface_fill,
         )),
     }
     .map_err(drawing)
-}
-
-/// The legend entry of a line drawn in `style`: a short stretch of it (none without a label).
-fn line_legend<'a, DB: DrawingBackend + 'a>(
-    anno: &mut SeriesAnno<'a, DB>,
-    label: &str,
-    style: ShapeStyle,
-) {
-    if !label.is_empty() {
-        anno.label(label)
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + px(20), y)], style));
-    }
 }
 
 /// The grid lines of a net: every row `i` and every column `j`, as 3-D points.

@@ -7,8 +7,8 @@
 //! document and its `offsetWidth` read): a forced layout of the page for every label, and no
 //! DOM at all in a worker. There the same widths come from DejaVu Sans' advances below, so that
 //! the page places labels as the program does, the same in a worker as on the page's main
-//! thread. (Plotters' legend box still measures its own lines: `web/js/text-shim.js` gives a
-//! worker what it asks for.)
+//! thread. Every text of a picture is measured here (the legend too, drawn by the picture code
+//! rather than by plotters), so the WebAssembly never asks the DOM.
 
 use plotters::style::FontDesc;
 
