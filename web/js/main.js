@@ -221,7 +221,9 @@ async function show(name, state = {}) {
     tab.setAttribute("aria-selected", String(on));
     tab.tabIndex = on ? 0 : -1;
     $(tab.getAttribute("aria-controls")).hidden = !on;
-    if (on) tab.scrollIntoView?.({ block: "nearest", inline: "nearest" });
+    // In the next frame, when the page is laid out anyway: asked now, the position of the tab
+    // would force a layout of the whole page before the view's first answer.
+    if (on) requestAnimationFrame(() => tab.scrollIntoView?.({ block: "nearest", inline: "nearest" }));
   }
   const view = name === "command" ? app.views.command : await viewOf(name);
   if (!view || app.current !== name) return null;
@@ -309,6 +311,7 @@ function languageSwitch() {
 
 /** The forms' schema and the steps' labels ({schema, steps}), fetched while the .wasm compiles. */
 async function tables() {
+  if (window.cagdEarly) return window.cagdEarly.tables;
   const response = await fetch(TABLES_URL);
   if (!response.ok) throw new Error(`${TABLES_URL.pathname}: HTTP ${response.status}`);
   return response.json();
@@ -316,6 +319,8 @@ async function tables() {
 
 /** The page's WebAssembly, downloaded and compiled once for the main thread and the workers. */
 async function compile() {
+  // Started by index.html as the page began to load.
+  if (window.cagdEarly) return window.cagdEarly.wasm;
   const response = await fetch(WASM_URL);
   if (!response.ok) throw new Error(`${WASM_URL.pathname}: HTTP ${response.status}`);
   if (WebAssembly.compileStreaming && response.headers.get("content-type")?.startsWith("application/wasm"))
