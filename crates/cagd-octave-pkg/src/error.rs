@@ -226,35 +226,3 @@ pub fn op_error(names: &[(cagd_ops::Role, &str)], e: cagd_ops::OpError) -> PkgEr
     }
     PkgError::arg(Kind::from(e.kind), name, problem, &e.expected)
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn identifiers_and_library_messages() {
-        let e: PkgError = cagd::Error::DerivativeOrder {
-            order: 4,
-            degree: 3,
-        }
-        .into();
-        assert_eq!(e.identifier(), "cagd:value");
-        assert_eq!(e.message, "derivative order 4 exceeds the degree 3");
-        let e: PkgError = cagd::Error::TooLarge {
-            what: "N",
-            requested: 20,
-            limit: 10,
-            which: Limit::Samples,
-        }
-        .into();
-        assert_eq!(e.identifier(), "cagd:limit");
-        assert!(
-            e.message.contains("cagd_limits (\"max_samples\", VALUE)"),
-            "{e}"
-        );
-        let names: std::collections::HashSet<_> = Kind::ALL.iter().map(|k| k.name()).collect();
-        assert_eq!(names.len(), Kind::ALL.len());
-        assert_eq!(limit_by_name("max_degree"), Some(Limit::Degree));
-        assert_eq!(limit_by_name("degree"), None);
-    }
-}
