@@ -1,5 +1,6 @@
 //! The integration tests of the command line, one module per subject: snapshots of every
-//! subcommand, bad inputs, limits, atomic output, meshes, fuzzing regressions.
+//! subcommand, bad inputs, limits, atomic output, meshes, fuzzing regressions; and the operation
+//! layer's own tests ([`operations`]).
 
 mod any_curve;
 mod atomic_output;
@@ -15,6 +16,7 @@ mod lang;
 mod limits;
 mod mesh;
 mod non_finite;
+mod operations;
 mod packed_network;
 mod pictures;
 mod regressions;
