@@ -8,6 +8,11 @@ pub const WORKER_THREADS: usize = 2;
 pub const FILE_THREADS: usize = 4;
 /// The most connections served at once; further clients wait in the listening queue.
 pub const MAX_CONNECTIONS: usize = 256;
+/// The listening queue: connections the system has completed and the server not yet taken.
+/// The standard library's and tokio's 128 overflowed under a burst of clients while all
+/// [`MAX_CONNECTIONS`] were busy, and a client whose connection found the queue full was
+/// dropped and tried again only a second later; the system caps it (`somaxconn`).
+pub const ACCEPT_QUEUE: u32 = 4096;
 /// A connection that makes no progress (no byte read or written) for this long is closed: a
 /// client that stopped reading its answers, or an idle kept-alive connection.
 pub const STALL_TIMEOUT: Duration = Duration::from_secs(15);

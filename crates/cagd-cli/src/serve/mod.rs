@@ -10,7 +10,7 @@
 //!
 //! **No client can take it down.** It is hyper's HTTP/1 server on a tokio runtime of
 //! [`WORKER_THREADS`] threads: every connection is its own task, at most [`MAX_CONNECTIONS`]
-//! at once (further clients wait in the listening queue), so a client that pipelines
+//! at once (further clients wait in the listening queue of [`ACCEPT_QUEUE`]), so a client that pipelines
 //! requests and never reads its answers, or reads a large file slowly, holds one task and
 //! nobody else. A connection that makes no progress for [`STALL_TIMEOUT`] in either direction,
 //! takes longer than [`HEADER_TIMEOUT`] to send a request head, or has been open for
@@ -49,8 +49,8 @@ mod http;
 mod negotiate;
 
 pub use budget::{
-    FILE_THREADS, HEADER_TIMEOUT, MAX_CACHED_FILE_BYTES, MAX_CONNECTIONS, MAX_CONNECTION_TIME,
-    STALL_TIMEOUT, WORKER_THREADS,
+    ACCEPT_QUEUE, FILE_THREADS, HEADER_TIMEOUT, MAX_CACHED_FILE_BYTES, MAX_CONNECTIONS,
+    MAX_CONNECTION_TIME, STALL_TIMEOUT, WORKER_THREADS,
 };
 pub use files::{content_type, is_hashed_name, resolve};
 
@@ -142,16 +142,14 @@ pub fn serve(cmd: &ServeCommand) -> Result<(), CliError> {
         .enable_all()
         .build()
         .map_err(|e| CliError::io("serve", &e, "a system that can start threads"))?;
-    let listener = runtime
-        .block_on(tokio::net::TcpListener::bind(("127.0.0.1", cmd.port)))
-        .map_err(|e| {
-            CliError::new(
-                format!("--port {}", cmd.port),
-                format!("cannot listen on 127.0.0.1:{}: {e}", cmd.port),
-                "a free port, such as --port 8001 (or --port 0 for any free one)",
-                ErrorKind::Io(e.kind()),
-            )
-        })?;
+    let listener = runtime.block_on(async { listen(cmd.port) }).map_err(|e| {
+        CliError::new(
+            format!("--port {}", cmd.port),
+            format!("cannot listen on 127.0.0.1:{}: {e}", cmd.port),
+            "a free port, such as --port 8001 (or --port 0 for any free one)",
+            ErrorKind::Io(e.kind()),
+        )
+    })?;
     let address = listener
         .local_addr()
         .map(|a| a.to_string())
@@ -166,6 +164,16 @@ pub fn serve(cmd: &ServeCommand) -> Result<(), CliError> {
     drop(stdout);
     runtime.block_on(http::accept_loop(listener, std::sync::Arc::new(page)));
     Ok(())
+}
+
+/// Listens on 127.0.0.1:`port` (0: any free port) with a queue of [`ACCEPT_QUEUE`]
+/// connections (in the tokio runtime that will serve them).
+fn listen(port: u16) -> std::io::Result<tokio::net::TcpListener> {
+    let socket = tokio::net::TcpSocket::new_v4()?;
+    // As the standard library and tokio do: the port again at once after a restart.
+    socket.set_reuseaddr(true)?;
+    socket.bind(std::net::SocketAddr::from(([127, 0, 0, 1], port)))?;
+    socket.listen(ACCEPT_QUEUE)
 }
 
 #[cfg(test)]
