@@ -88,19 +88,30 @@ fn iso_v(p: &BezierPatch, v0: f64) -> BezierCurve {
 
 const F64: usize = std::mem::size_of::<f64>();
 
+/// The side of the largest grids: 250 000 points, far above [`cagd::grid::PARALLEL_MIN_WORK`],
+/// so that they are cut into blocks for the thread pool as the 10⁶-point grids were (the
+/// claims do not depend on the size beyond that: an allocation per point or per grid line
+/// would show as 250 000 or 500 allocations against bounds of a few dozen, and bytes growing
+/// like N² as 2 500 times those of a 10² grid against the bound of 200 times). A quarter of
+/// the work of 1000² grids in an unoptimised test build.
+const LARGE: usize = 500;
+/// The points of the largest curve batches (a quarter of 10⁶, for the same reasons).
+const MANY: usize = LARGE * LARGE;
+
 #[test]
 fn grid_evaluation_allocates_basis_rows_not_points() {
-    // Start the thread pool (its one-time setup is not part of any evaluation).
+    // Start the thread pool (its one-time setup is not part of any evaluation): any grid large
+    // enough to be evaluated on it.
     let warm = patch(3, 3);
-    let ts = cagd::linspace(0.0, 1.0, 1000);
-    let mut out = vec![0.0; 1000 * 1000 * 3];
+    let ts = cagd::linspace(0.0, 1.0, 200);
+    let mut out = vec![0.0; 200 * 200 * 3];
     warm.eval_grid_into(&ts, &ts, &mut out).unwrap();
 
     // Bézier patches, sequential (small) and threaded (large) grids, degrees 3 and 20.
     for (m, n) in [(3, 3), (20, 20)] {
         let p = patch(m, n);
         let mut seen = Vec::new();
-        for size in [10, 40, 200, 1000] {
+        for size in [10, 40, 200, LARGE] {
             let ts = cagd::linspace(0.0, 1.0, size);
             let mut out = vec![0.0; size * size * 3];
             let (allocs, bytes) = count(|| p.eval_grid_into(&ts, &ts, &mut out).unwrap());
@@ -116,7 +127,7 @@ fn grid_evaluation_allocates_basis_rows_not_points() {
             );
             seen.push((size, allocs, bytes));
         }
-        // No growth with the number of points: a 1000² grid (10⁶ points) allocates about as
+        // No growth with the number of points: a 500² grid (250 000 points) allocates about as
         // often as a 10² grid; bytes grow like N, not N².
         println!("Bézier ({m},{n}): (N, allocations, bytes) = {seen:?}");
         let (small, large) = (seen[0], seen[3]);
@@ -138,12 +149,12 @@ fn grid_evaluation_allocates_basis_rows_not_points() {
         "{bytes} vs output {output}"
     );
 
-    // 10⁶ points of a cubic curve: one basis scratch per block of points.
+    // 250 000 points of a cubic curve: one basis scratch per block of points.
     let c = iso_u(&p, 0.3);
-    let ts = cagd::linspace(0.0, 1.0, 1_000_000);
+    let ts = cagd::linspace(0.0, 1.0, MANY);
     let mut out = vec![0.0; ts.len() * 3];
     let (allocs, bytes) = count(|| c.eval_many_into(&ts, &mut out).unwrap());
-    println!("curve 10⁶ points: {allocs} allocations, {bytes} bytes");
+    println!("curve {MANY} points: {allocs} allocations, {bytes} bytes");
     assert!(allocs <= 48, "{allocs}");
     assert!(bytes <= 48 * 256 * 4 * F64, "{bytes}");
 
@@ -163,7 +174,7 @@ fn grid_evaluation_allocates_basis_rows_not_points() {
         nodes.iter().map(|&v| iso_v(&p, v)).collect(),
     )
     .unwrap();
-    for size in [100, 1000] {
+    for size in [100, LARGE] {
         let ts = cagd::linspace(0.0, 1.0, size);
         let mut out = vec![0.0; size * size * 3];
         let (allocs, bytes) = count(|| coons.eval_grid_into(&ts, &ts, &mut out).unwrap());
@@ -206,7 +217,7 @@ fn splines_allocate_per_line_not_per_point() {
         ("NURBS", &n as &dyn Surface),
     ] {
         let mut seen = Vec::new();
-        for size in [10, 40, 200, 1000] {
+        for size in [10, 40, 200, LARGE] {
             let ts = cagd::linspace(0.0, 1.0, size);
             let mut out = vec![0.0; size * size * 3];
             let (allocs, bytes) = count(|| surface.eval_grid_into(&ts, &ts, &mut out).unwrap());
@@ -229,7 +240,7 @@ fn splines_allocate_per_line_not_per_point() {
         assert!(large.1 <= small.1 + 2 * blocks, "{seen:?}");
     }
 
-    // 10⁶ points of a cubic B-spline / NURBS curve and of an interpolating spline.
+    // 250 000 points of a cubic B-spline / NURBS curve and of an interpolating spline.
     let control = DMatrix::from_fn(3, 10, |c, i| ((i * 5 + c) % 7) as f64);
     let c = BSplineCurve::new(3, ku.clone(), control.clone()).unwrap();
     let r = NurbsCurve::new(
@@ -241,25 +252,17 @@ fn splines_allocate_per_line_not_per_point() {
     .unwrap();
     let sp = CubicSpline::interpolate(control, EndCondition::Natural).unwrap();
     for (name, curve, ts) in [
-        (
-            "B-spline",
-            &c as &dyn Curve,
-            cagd::linspace(0.0, 1.0, 1_000_000),
-        ),
-        (
-            "NURBS",
-            &r as &dyn Curve,
-            cagd::linspace(0.0, 1.0, 1_000_000),
-        ),
+        ("B-spline", &c as &dyn Curve, cagd::linspace(0.0, 1.0, MANY)),
+        ("NURBS", &r as &dyn Curve, cagd::linspace(0.0, 1.0, MANY)),
         (
             "spline",
             &sp as &dyn Curve,
-            cagd::linspace(-1.0, 10.0, 1_000_000),
+            cagd::linspace(-1.0, 10.0, MANY),
         ),
     ] {
         let mut out = vec![0.0; ts.len() * 3];
         let (allocs, bytes) = count(|| curve.eval_many_into(&ts, &mut out).unwrap());
-        println!("{name} curve 10⁶ points: {allocs} allocations, {bytes} bytes");
+        println!("{name} curve {MANY} points: {allocs} allocations, {bytes} bytes");
         // Four scratch vectors of p + 1 or d + 1 numbers per block; the spline's segment
         // coefficients (9 segments · 3 coordinates · 4).
         assert!(allocs <= 8 + 4 * blocks, "{name}: {allocs}");
