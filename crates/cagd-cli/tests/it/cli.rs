@@ -886,11 +886,25 @@ fn subcommand_help_documents_layout_and_example() {
 // ---------------------------------------------------------------------------------------
 // The main job: `cagd thesis`
 
+/// `cagd thesis --out DIR`, run once for the tests that read what it writes (the one below
+/// and [`super::slips::the_thesis_picture_of_primer_2_4_marks_b_one_half_where_it_is`]): its
+/// standard output and `DIR`, a fresh folder in cargo's folder for the tests' files.
+pub(super) fn thesis_out() -> &'static (String, PathBuf) {
+    static OUT: std::sync::OnceLock<(String, PathBuf)> = std::sync::OnceLock::new();
+    OUT.get_or_init(|| {
+        let out_dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("cli-thesis-pictures");
+        match std::fs::remove_dir_all(&out_dir) {
+            Err(e) if e.kind() != std::io::ErrorKind::NotFound => panic!("{out_dir:?}: {e}"),
+            _ => {}
+        }
+        let out = ok(&["thesis", "--out", out_dir.to_str().unwrap()]);
+        (out, out_dir)
+    })
+}
+
 #[test]
 fn thesis_prints_every_example_and_writes_valid_files() {
-    let dir = tempfile::tempdir().unwrap();
-    let out_dir = dir.path().join("pictures");
-    let out = ok(&["thesis", "--out", out_dir.to_str().unwrap()]);
+    let (out, out_dir) = thesis_out();
     for expected in [
         "(4, 0, 0)   (6, 1, 0)   (5, 3/2, 1/2)   (7/2, 3/2, 3/4)",
         "b(1/2) =\n\n    7/2\n    3/2\n    3/4\n",
@@ -967,7 +981,7 @@ fn thesis_prints_every_example_and_writes_valid_files() {
         assert_eq!(ply.payload["face"].len(), faces, "{name}.ply");
     }
     // Only the listed files, no temporary leftovers.
-    assert_eq!(std::fs::read_dir(&out_dir).unwrap().count(), 5 * 2 + 4 * 3);
+    assert_eq!(std::fs::read_dir(out_dir).unwrap().count(), 5 * 2 + 4 * 3);
 }
 
 #[test]

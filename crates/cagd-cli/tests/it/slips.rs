@@ -1096,9 +1096,9 @@ fn the_thesis_picture_of_primer_2_4_marks_b_one_half_where_it_is() {
     // Bernstein weights are (1, 3, 3, 1)/8. The picture is a 3-D view, an affine map of the
     // points to pixels, which keeps affine combinations: the mark of b(1/2) lies at
     // (p0 + 3 p1 + 3 p2 + p3)/8 of the control points' pixels p0..p3.
-    let dir = tempfile::tempdir().unwrap();
-    let out = dir.path().join("thesis");
-    binary(&["thesis", "--out", out.to_str().unwrap()]);
+    // The picture that `cagd thesis --out` writes (run once for this test and the command
+    // line's test of every thesis file).
+    let (_, out) = super::cli::thesis_out();
     let text = std::fs::read_to_string(out.join("primer_2_4.svg")).unwrap();
     let all = circles(&text);
     let control: Vec<_> = all
