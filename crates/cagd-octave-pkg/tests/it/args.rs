@@ -4,16 +4,15 @@
 use cagd_octave_pkg::args::{count_of, nonempty_of, real_of, scalar_of, view2_of, REAL_FORM};
 use cagd_octave_pkg::{Kind, Real, Value};
 
+use crate::values::real;
+
 #[test]
 fn readers_refuse_up_front() {
     let dims = [1usize, 1];
     let two = [2.5];
     let neg = [-1.0];
     let nan = [f64::NAN];
-    let half = Value::Real(Real {
-        dims: &dims,
-        data: &two,
-    });
+    let half = real(&dims, &two);
     let e = count_of(&half, "N").unwrap_err();
     assert_eq!(
         (e.kind, e.message.as_str()),
@@ -22,23 +21,9 @@ fn readers_refuse_up_front() {
             "N: 2.5 is not a non-negative integer; expected a count 0, 1, 2, …"
         )
     );
-    let e = count_of(
-        &Value::Real(Real {
-            dims: &dims,
-            data: &neg,
-        }),
-        "N",
-    )
-    .unwrap_err();
+    let e = count_of(&real(&dims, &neg), "N").unwrap_err();
     assert_eq!(e.kind, Kind::Value);
-    let e = scalar_of(
-        &Value::Real(Real {
-            dims: &dims,
-            data: &nan,
-        }),
-        "u",
-    )
-    .unwrap_err();
+    let e = scalar_of(&real(&dims, &nan), "u").unwrap_err();
     assert_eq!(e.kind, Kind::NonFinite);
     let e = scalar_of(&Value::Other { class: "int32" }, "u").unwrap_err();
     assert_eq!(
@@ -49,15 +34,7 @@ fn readers_refuse_up_front() {
     assert_eq!(e.kind, Kind::Class);
     assert!(e.message.contains("a struct without fields"));
     let empty_dims = [0usize, 3];
-    let e = nonempty_of(
-        &Value::Real(Real {
-            dims: &empty_dims,
-            data: &[],
-        }),
-        "P",
-        REAL_FORM,
-    )
-    .unwrap_err();
+    let e = nonempty_of(&real(&empty_dims, &[]), "P", REAL_FORM).unwrap_err();
     assert_eq!(
         (e.kind, e.message.as_str()),
         (Kind::Empty, "P: empty (0×3); expected a real double array")

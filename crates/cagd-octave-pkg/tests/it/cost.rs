@@ -4,12 +4,14 @@
 //! same points, and one more is refused by both.
 
 use cagd::grid::PointGrid;
-use cagd_octave_pkg::{call, Kind, Real, Value, VecSink};
+use cagd_octave_pkg::{call, Kind, Value, VecSink};
 use cagd_ops::knots::Degree;
 use cagd_ops::ops::surface::SurfaceParams;
 use cagd_ops::ops::{BSpline, BSplineSurface, BezierPatchPoints, DeCasteljau, Nurbs, NurbsSurface};
 use cagd_ops::{execute, Context, Operation, Params};
 use nalgebra::DMatrix;
+
+use crate::values::{nrbmak, real};
 
 /// A `max_work` small enough that the largest requests stay cheap in a test build.
 const WORK: u64 = 3_000_000;
@@ -58,10 +60,6 @@ fn pkg_accepts(name: &str, args: &[Value<'_>]) -> bool {
         }
         Err(e) => panic!("{e}"),
     }
-}
-
-fn real<'a>(dims: &'a [usize], data: &'a [f64]) -> Value<'a> {
-    Value::Real(Real { dims, data })
 }
 
 /// Control points `d × n`, column-major.
@@ -189,21 +187,12 @@ impl Nrb {
                 items: knots,
             }
         };
-        Value::Struct {
-            fields: vec![
-                (
-                    "form",
-                    Value::Char {
-                        dims: &[1, 7],
-                        bytes: b"B-NURBS",
-                    },
-                ),
-                ("coefs", real(&self.dims, &self.coefs)),
-                ("knots", knots),
-                ("order", real(&self.row_dims, &self.order)),
-                ("number", real(&self.row_dims, &self.number)),
-            ],
-        }
+        nrbmak([
+            ("coefs", real(&self.dims, &self.coefs)),
+            ("knots", knots),
+            ("order", real(&self.row_dims, &self.order)),
+            ("number", real(&self.row_dims, &self.number)),
+        ])
     }
 }
 

@@ -9,6 +9,8 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 use cagd_octave_pkg::{call_interruptible, Kind, Real, Value, VecSink};
 
+use crate::values::nrbmak;
+
 /// An argument's storage: Octave's size and the values, column-major.
 struct Arg {
     dims: Vec<usize>,
@@ -103,21 +105,12 @@ impl Nrb {
                 items: self.knots.iter().map(value).collect(),
             }
         };
-        Value::Struct {
-            fields: vec![
-                (
-                    "form",
-                    Value::Char {
-                        dims: &[1, 7],
-                        bytes: b"B-NURBS",
-                    },
-                ),
-                ("number", value(&self.number)),
-                ("coefs", value(&self.coefs)),
-                ("knots", knots),
-                ("order", value(&self.order)),
-            ],
-        }
+        nrbmak([
+            ("number", value(&self.number)),
+            ("coefs", value(&self.coefs)),
+            ("knots", knots),
+            ("order", value(&self.order)),
+        ])
     }
 }
 

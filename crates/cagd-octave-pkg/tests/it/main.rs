@@ -12,3 +12,4 @@ mod number;
 mod nurbs;
 mod splines;
 mod surfaces;
+mod values;

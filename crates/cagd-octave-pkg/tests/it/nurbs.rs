@@ -4,40 +4,15 @@
 use cagd::Limits;
 use cagd_octave_pkg::{native, nurbs, Output, Real, Value, VecSink};
 
+use crate::values::{nrbmak, real};
+
 /// `nrbmak ([0 1 3 4; 0 2 -1 1; 0 1 2 0; 1 1 1 1], [0 0 0 0 1 1 1 1])` as Octave passes it.
 fn cubic<'a>(coefs: &'a [f64], knots: &'a [f64]) -> Value<'a> {
-    Value::Struct {
-        fields: vec![
-            (
-                "form",
-                Value::Char {
-                    dims: &[1, 7],
-                    bytes: b"B-NURBS",
-                },
-            ),
-            (
-                "coefs",
-                Value::Real(Real {
-                    dims: &[4, 4],
-                    data: coefs,
-                }),
-            ),
-            (
-                "knots",
-                Value::Real(Real {
-                    dims: &[1, 8],
-                    data: knots,
-                }),
-            ),
-            (
-                "order",
-                Value::Real(Real {
-                    dims: &[1, 1],
-                    data: &[4.0],
-                }),
-            ),
-        ],
-    }
+    nrbmak([
+        ("coefs", real(&[4, 4], coefs)),
+        ("knots", real(&[1, 8], knots)),
+        ("order", real(&[1, 1], &[4.0])),
+    ])
 }
 
 const COEFS: [f64; 16] = [

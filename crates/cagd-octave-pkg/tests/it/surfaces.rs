@@ -4,7 +4,9 @@
 use cagd::Limits;
 use cagd_octave_pkg::args::Call;
 use cagd_octave_pkg::native::{coons, gordon};
-use cagd_octave_pkg::{Real, Value, VecSink};
+use cagd_octave_pkg::{Value, VecSink};
+
+use crate::values::{nrbmak, real};
 
 /// Calls `f` as Octave would with `args` and `nargout` outputs.
 fn call(
@@ -29,42 +31,11 @@ const KNOTS: [f64; 6] = [0.0, 0.0, 0.0, 1.0, 1.0, 1.0];
 
 /// `nrbmak (coefs, [0 0 0 1 1 1])` as the package receives it.
 fn nurbs(coefs: &[f64]) -> Value<'_> {
-    Value::Struct {
-        fields: vec![
-            (
-                "form",
-                Value::Char {
-                    dims: &[1, 7],
-                    bytes: b"B-NURBS",
-                },
-            ),
-            (
-                "coefs",
-                Value::Real(Real {
-                    dims: &[4, 3],
-                    data: coefs,
-                }),
-            ),
-            (
-                "knots",
-                Value::Real(Real {
-                    dims: &[1, 6],
-                    data: &KNOTS,
-                }),
-            ),
-            (
-                "order",
-                Value::Real(Real {
-                    dims: &[1, 1],
-                    data: &[3.0],
-                }),
-            ),
-        ],
-    }
-}
-
-fn real<'a>(dims: &'a [usize], data: &'a [f64]) -> Value<'a> {
-    Value::Real(Real { dims, data })
+    nrbmak([
+        ("coefs", real(&[4, 3], coefs)),
+        ("knots", real(&[1, 6], &KNOTS)),
+        ("order", real(&[1, 1], &[3.0])),
+    ])
 }
 
 #[test]
