@@ -10,9 +10,6 @@ import { applyStatic, chooseLang, lang, LANG_NAMES, LANGS, setLang, setMessageTr
 
 const $ = (id) => document.getElementById(id);
 const started = performance.now();
-const WASM_URL = new URL("../pkg/cagd_web_bg.wasm", import.meta.url);
-/** The forms' schema and the steps' labels, read from the WebAssembly by web/build.sh. */
-const TABLES_URL = new URL("../pkg/tables.json", import.meta.url);
 /**
  * The estimated operations (`--max-work`) a command may take on the main thread before the
  * workers are ready: tens of milliseconds at most (the default limit, 2·10⁹, is seconds), so
@@ -309,24 +306,14 @@ function languageSwitch() {
   });
 }
 
-/** The forms' schema and the steps' labels ({schema, steps}), fetched while the .wasm compiles. */
-async function tables() {
-  if (window.cagdEarly) return window.cagdEarly.tables;
-  const response = await fetch(TABLES_URL);
-  if (!response.ok) throw new Error(`${TABLES_URL.pathname}: HTTP ${response.status}`);
-  return response.json();
-}
-
-/** The page's WebAssembly, downloaded and compiled once for the main thread and the workers. */
-async function compile() {
-  // Started by index.html as the page began to load.
-  if (window.cagdEarly) return window.cagdEarly.wasm;
-  const response = await fetch(WASM_URL);
-  if (!response.ok) throw new Error(`${WASM_URL.pathname}: HTTP ${response.status}`);
-  if (WebAssembly.compileStreaming && response.headers.get("content-type")?.startsWith("application/wasm"))
-    return WebAssembly.compileStreaming(response);
-  return WebAssembly.compile(await response.arrayBuffer());
-}
+/**
+ * The forms' schema and the steps' labels ({schema, steps}; pkg/tables.json, read from the
+ * WebAssembly by web/build.sh) and the page's WebAssembly module
+ * (compiled once for the main thread and the workers): both asked for by index.html's first
+ * script as the page began to load, while these modules were still on their way.
+ */
+const tables = () => window.cagdEarly.tables;
+const compile = () => window.cagdEarly.wasm;
 
 /**
  * The views' modules, fetched and evaluated once the first answer is on the screen (when the
